@@ -1,0 +1,57 @@
+"""Bytes to text: the first stage of the pipeline.
+
+Real axis lists are Latin-1 (µ and ° appear in comments), newer ones may be
+UTF-8. Decoding picks the first codec that reads the bytes exactly and
+remembers it, so that writing the text back reproduces the original bytes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+UTF8_BOM = b"\xef\xbb\xbf"
+_WIDE_BOMS = {
+    b"\xff\xfe\x00\x00": "UTF-32",
+    b"\x00\x00\xfe\xff": "UTF-32",
+    b"\xff\xfe": "UTF-16",
+    b"\xfe\xff": "UTF-16",
+}
+
+
+class UnreadableInput(Exception):
+    """The input cannot be read as a parameter list at all (exit code 2)."""
+
+
+@dataclass(frozen=True, slots=True)
+class SourceText:
+    """Decoded text plus what is needed to turn it back into the same bytes."""
+
+    text: str
+    encoding: str
+    bom: bool = False
+
+    def encode(self, text: str | None = None) -> bytes:
+        body = (self.text if text is None else text).encode(self.encoding)
+        return UTF8_BOM + body if self.bom else body
+
+
+def decode(data: bytes) -> SourceText:
+    """Decode list bytes: UTF-8 (with or without BOM), else cp1252, else Latin-1.
+
+    Latin-1 maps every byte, so any byte string decodes; only UTF-16/32 files
+    are refused, because reading them byte-wise would turn every line into
+    noise instead of a useful diagnostic.
+    """
+    for bom, name in _WIDE_BOMS.items():
+        if data.startswith(bom):
+            raise UnreadableInput(
+                f"the file is {name} encoded; the CNC reads ASCII/Latin-1 lists, save it as ANSI/Latin-1"
+            )
+    bom = data.startswith(UTF8_BOM)
+    body = data[len(UTF8_BOM):] if bom else data
+    for codec in ("utf-8", "cp1252", "latin-1"):
+        try:
+            return SourceText(body.decode(codec), codec, bom)
+        except UnicodeDecodeError:
+            continue
+    raise AssertionError("latin-1 decodes every byte string")  # pragma: no cover

@@ -1,0 +1,74 @@
+"""The diagnostic model shared by rules, the engine and every reporter."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import Enum
+
+# Rule documentation lives in the repository (generated from the rule modules).
+DOCS_URL = "docs/rules.md#{anchor}"
+
+
+class Severity(str, Enum):
+    ERROR = "error"
+    WARNING = "warning"
+    INFO = "info"
+
+    @property
+    def rank(self) -> int:
+        return {"error": 3, "warning": 2, "info": 1}[self.value]
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """Replace the text between two 1-based positions (end exclusive) by `content`."""
+
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+    content: str
+
+
+@dataclass(frozen=True, slots=True)
+class Fix:
+    applicability: str  # "safe" or "unsafe"
+    description: str
+    edits: tuple[Edit, ...] = ()
+    remove_bom: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Related:
+    path: str
+    line: int
+    column: int
+    parameter: str | None = None
+    message: str = ""
+
+
+@dataclass(slots=True)
+class Diagnostic:
+    path: str
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+    code: str
+    severity: Severity
+    message: str
+    parameter: str | None = None
+    p_axis: str | None = None
+    related: list[Related] = field(default_factory=list)
+    fix: Fix | None = None
+
+    @property
+    def url(self) -> str:
+        return rule_url(self.code)
+
+    def sort_key(self) -> tuple:
+        return (self.path, self.line, self.column, self.code)
+
+
+def rule_url(code: str) -> str:
+    return DOCS_URL.format(anchor=code.lower())

@@ -1,0 +1,82 @@
+"""The rule registry: every rule module, listed explicitly and in code order.
+
+A rule is a module with `CODE`, `NAME`, `SEVERITY`, `FIX` ("none", "safe",
+"unsafe" or "sometimes"), `SUMMARY`, a docstring with the sections
+What / Why / Example / Use instead / Reference, and a `check(ctx)` generator
+of diagnostics. `achslint rule CODE` prints that docstring.
+"""
+
+from __future__ import annotations
+
+import importlib
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from types import ModuleType
+from typing import Callable, Iterable
+
+from ..diagnostics import Severity
+
+RULE_MODULES = (
+    "lis001_syntax_error",
+    "lis002_missing_end_marker",
+    "lis003_content_after_end",
+    "lis004_misspelt_end_marker",
+    "lis005_duplicate_parameter",
+    "lis006_byte_order_mark",
+    "lis007_text_after_string",
+    "lis008_mixed_style",
+    "lis101_unknown_parameter",
+    "lis102_old_syntax",
+    "lis103_alias_conflict",
+    "lis104_index_out_of_bounds",
+    "lis105_not_effective_for_drive",
+    "lis201_wrong_type",
+    "lis202_out_of_range",
+    "lis203_unknown_symbol",
+    "lis204_achs_mode_bits",
+    "lis205_bad_reference",
+    "lis206_string_too_long",
+)
+
+SECTIONS = ("What", "Why", "Example", "Use instead", "Reference")
+
+
+@dataclass(frozen=True)
+class Rule:
+    code: str
+    name: str
+    severity: Severity
+    fix: str
+    summary: str
+    doc: str
+    check: Callable
+    module: ModuleType
+
+    def section(self, title: str) -> str:
+        """The text of one docstring section ("What", "Why", ...)."""
+        match = re.search(rf"^{re.escape(title)}\n-+\n(.*?)(?=^\S[^\n]*\n-+\n|\Z)", self.doc, re.M | re.S)
+        return match.group(1).strip() if match else ""
+
+
+@lru_cache(maxsize=1)
+def registry() -> dict[str, Rule]:
+    rules: dict[str, Rule] = {}
+    for module_name in RULE_MODULES:
+        module = importlib.import_module(f"{__name__}.{module_name}")
+        rules[module.CODE] = Rule(
+            code=module.CODE,
+            name=module.NAME,
+            severity=Severity(module.SEVERITY),
+            fix=module.FIX,
+            summary=module.SUMMARY,
+            doc=(module.__doc__ or "").strip(),
+            check=module.check,
+            module=module,
+        )
+    return rules
+
+
+def matches(code: str, selectors: Iterable[str]) -> bool:
+    """True when a code is picked by any selector: "ALL", a full code or a prefix (LIS1, LIS20)."""
+    return any(s == "ALL" or code.startswith(s.upper()) for s in selectors)

@@ -1,0 +1,69 @@
+"""
+What
+----
+The same parameter (same path and indices) is assigned more than once in a
+list. It is a warning when every assignment has the same value and an error
+when the values differ.
+
+Why
+---
+The CNC keeps one of the values (which one is not documented; most likely the
+last) and does not tell you. With different values the list says two things at
+once and the next person to edit it may change the one that has no effect.
+
+Example
+-------
+```
+kenngr.antr_typ        8
+...
+kenngr.antr_typ        2
+```
+
+Use instead
+-----------
+```
+kenngr.antr_typ        2
+```
+
+Reference
+---------
+List format facts §7 (repetition); SDK message 2056 "parameter already has a value".
+"""
+
+from __future__ import annotations
+
+from ..diagnostics import Severity
+
+CODE = "LIS005"
+NAME = "duplicate-parameter"
+SEVERITY = "warning"
+FIX = "none"
+SUMMARY = "Parameter assigned more than once"
+
+
+def check(ctx):
+    for canonical, group in ctx.analysis.by_canonical().items():
+        if len(group) < 2:
+            continue
+        values = {repr(s.comparable) for s in group}
+        spellings = {s.spelling for s in group}
+        if len(values) > 1 and "old" in spellings and len(spellings) > 1:
+            continue  # an alias and its parameter disagree: LIS103 reports it
+        first = group[0]
+        for setting in group[1:]:
+            differs = repr(setting.comparable) != repr(first.comparable)
+            others = [s for s in group if s is not setting]
+            places = ", ".join(str(s.line.number) for s in others)
+            if differs:
+                message = (
+                    f"`{canonical}` is assigned again with a different value (`{setting.written_value}`, "
+                    f"before: `{first.written_value}` on line {first.line.number}); keep only the one you mean"
+                )
+            else:
+                message = f"`{canonical}` is assigned again with the same value (also on line {places}); delete the repetition"
+            start, end = ctx.path_span(setting.line)
+            yield ctx.report(
+                CODE, setting.line, message, column=start, end_column=end, setting=setting,
+                severity=Severity.ERROR if differs else Severity.WARNING,
+                related=[ctx.related(s) for s in others],
+            )

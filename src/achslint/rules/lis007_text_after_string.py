@@ -1,0 +1,48 @@
+"""
+What
+----
+Text after the value of a string parameter that does not start with `(`,
+including `name   # comment` written to mean "empty string".
+
+Why
+---
+After a numeric value anything after a blank is a comment, but after a string
+value only `(` starts a comment. The CNC reads `# text` or `/* text` as part of
+the string (or rejects the line), so the parameter gets a value nobody meant.
+
+Example
+-------
+```
+kopf.log_achs_name                      X_Achse   # main axis
+antr.fixed_stop.drive_ident[0].rd_ident           # empty string
+```
+
+Use instead
+-----------
+```
+kopf.log_achs_name                      X_Achse   ( main axis
+antr.fixed_stop.drive_ident[0].rd_ident           ( empty string
+```
+
+Reference
+---------
+TF5200 external variables / tool data manuals, comment rules for string values;
+documented inconsistency E.49.
+"""
+
+from __future__ import annotations
+
+CODE = "LIS007"
+NAME = "text-after-string"
+SEVERITY = "warning"
+FIX = "none"
+SUMMARY = "Text after a string value that is not a `(` comment"
+
+
+def check(ctx):
+    for setting in ctx.settings:
+        problem = setting.problem(CODE)
+        if problem is not None:
+            line = setting.line
+            start, _end = ctx.problem_span(line, problem.span)
+            yield ctx.report(CODE, line, problem.message, column=start, end_column=line.end_column, setting=setting)

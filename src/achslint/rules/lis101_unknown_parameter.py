@@ -1,0 +1,108 @@
+"""
+What
+----
+A parameter name the catalogue does not know. The message names the closest
+known parameter: a typo (`kenngr.ref_ricth`), a manual misprint
+(`antr_simu.rpf_weg_bis_nip`), a member in the wrong group
+(`kenngr.vb_reflow`), or an index where none belongs / a missing index.
+When the intended name is unambiguous, a safe fix renames it.
+
+Severity follows the `unknown-parameters` setting (warn, error or ignore).
+
+Why
+---
+The CNC reports an unknown name while reading the list and ignores the line,
+so the value you wrote never takes effect, and the parameter you meant keeps
+its default.
+
+Example
+-------
+```
+kenngr.ref_ricth                1
+antr_simu.rpf_weg_bis_nip       200
+```
+
+Use instead
+-----------
+```
+kenngr.ref_richt                1
+antr.simu.rpf_weg_bis_nip       200
+```
+
+Reference
+---------
+Parameter catalogue (P-AXIS ids and paths); documented inconsistencies A.1–A.9.
+"""
+
+from __future__ import annotations
+
+import difflib
+
+from .. import syntax
+from ..catalogue import fill_indices
+from ..diagnostics import Severity
+from ._common import replace_path_fix
+
+CODE = "LIS101"
+NAME = "unknown-parameter"
+SEVERITY = "warning"
+FIX = "sometimes"
+SUMMARY = "Unknown parameter name"
+
+
+def _with_indices(pattern: str, indices: tuple[int, ...]) -> tuple[str, bool]:
+    """Fill the written indices into a suggested pattern; False when they do not fit."""
+    count = pattern.count("[i]")
+    if count == len(indices):
+        return fill_indices(pattern, indices), True
+    return fill_indices(pattern, (0,) * count), False
+
+
+def _diagnose(ctx, setting):
+    """(message, suggestion, fix applicability or None) for an unknown path."""
+    path = setting.line.path
+    cat = ctx.catalogue
+    pattern, indices = syntax.path_pattern(path)
+    if setting.misspelt:
+        target = setting.resolution.canonical
+        return f"unknown parameter `{path}` (a spelling found in manuals); the CNC name is `{target}`", target, "safe"
+    shape = cat.by_unindexed.get(pattern.replace("[i]", ""))
+    if shape and len(shape) == 1:
+        right = shape[0].path
+        count = right.count("[i]")
+        if count == 0:
+            return f"`{shape[0].path}` is not an array; remove the index from `{path}`", right, "safe"
+        suggestion, _ = _with_indices(right, indices)
+        return (
+            f"`{path}` needs {count} index{'es' if count > 1 else ''}: write `{suggestion}` "
+            f"(indices are zero-based)",
+            suggestion,
+            None,
+        )
+    candidates = cat.suggest(path)
+    if not candidates:
+        return f"unknown parameter `{path}`; check the spelling against `achslint explain`", None, None
+    best, fits = _with_indices(candidates[0], indices)
+    ratio = difflib.SequenceMatcher(None, pattern, candidates[0]).ratio()
+    runner_up = difflib.SequenceMatcher(None, pattern, candidates[1]).ratio() if len(candidates) > 1 else 0.0
+    unambiguous = fits and (candidates[0] == pattern.lower() or (ratio >= 0.85 and ratio - runner_up >= 0.05))
+    message = f"unknown parameter `{path}`; did you mean `{best}`?"
+    if len(candidates) > 1 and not unambiguous:
+        others = ", ".join(f"`{_with_indices(c, indices)[0]}`" for c in candidates[1:])
+        message += f" (other candidates: {others})"
+    return message, best, "safe" if unambiguous else None
+
+
+def check(ctx):
+    mode = ctx.options.unknown_parameters
+    if mode == "ignore":
+        return
+    severity = Severity.ERROR if mode == "error" else Severity.WARNING
+    for setting in ctx.settings:
+        if setting.known or syntax.is_misspelt_end(setting.line):
+            continue
+        message, suggestion, applicability = _diagnose(ctx, setting)
+        line = setting.line
+        start, end = ctx.path_span(line)
+        fix = replace_path_fix(line, suggestion, applicability) if suggestion and applicability else None
+        yield ctx.report(CODE, line, message, column=start, end_column=end, severity=severity, fix=fix)

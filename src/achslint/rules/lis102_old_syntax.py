@@ -1,0 +1,52 @@
+"""
+What
+----
+A parameter written with its old name, which the CNC still accepts, for
+example `kenngr.homing_type` for `kenngr.homing.homing_type`.
+
+Why
+---
+The old names keep working, but the manuals, the catalogue and newer tools use
+the new ones; mixing both in one machine makes lists hard to compare and hides
+duplicates. A safe fix renames it.
+
+Example
+-------
+```
+kenngr.homing_type             CNC_CONTROLLED
+```
+
+Use instead
+-----------
+```
+kenngr.homing.homing_type      CNC_CONTROLLED
+```
+
+Reference
+---------
+P-AXIS-00299 (footnote on the older notation); documented inconsistency A.2.
+"""
+
+from __future__ import annotations
+
+from ._common import replace_path_fix
+
+CODE = "LIS102"
+NAME = "old-syntax"
+SEVERITY = "info"
+FIX = "safe"
+SUMMARY = "Old parameter name (still accepted)"
+
+
+def check(ctx):
+    for setting in ctx.settings:
+        if setting.known and setting.spelling == "old":
+            line = setting.line
+            start, end = ctx.path_span(line)
+            yield ctx.report(
+                CODE, line,
+                f"`{line.path}` is the old name of {setting.parameter.id} `{setting.canonical}`; "
+                f"it still works, but prefer the current name",
+                column=start, end_column=end, setting=setting,
+                fix=replace_path_fix(line, setting.canonical, "safe"),
+            )

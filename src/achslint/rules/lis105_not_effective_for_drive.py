@@ -1,0 +1,72 @@
+"""
+What
+----
+A parameter that, according to the catalogue, has no effect for the axis's
+drive type (`kenngr.antr_typ`) or axis type (`kenngr.achs_typ`): for example a
+SERCOS-only parameter on a CANopen axis, or a parameter for linear and rotary
+axes set on a spindle. The check only runs when the list sets the drive or
+axis type itself.
+
+Why
+---
+The value is ignored by the CNC. Often it is left over from a copied list of
+another axis, and someone reading the list believes it matters.
+
+Example
+-------
+```
+kenngr.antr_typ                  8      ( CANopen
+antr.sercos.drive_supports_cnc_homing 1
+```
+
+Use instead
+-----------
+Remove the parameter, or check that the drive type is the one you meant.
+
+Reference
+---------
+"Drive types" and "Axis types" rows of the P-AXIS parameter pages (catalogue
+`drive_types`, `axis_types`); the drive type lists are incomplete in places
+(documented inconsistency C.36), so this is advice only.
+"""
+
+from __future__ import annotations
+
+from ..catalogue import AXIS_TYPE_NAMES
+
+CODE = "LIS105"
+NAME = "not-effective-for-drive"
+SEVERITY = "info"
+FIX = "none"
+SUMMARY = "Parameter has no effect for this drive type or axis type"
+
+# Parameters that describe the drive or axis itself are never "not effective".
+_DEFINING = {"P-AXIS-00018", "P-AXIS-00020"}
+
+
+def check(ctx):
+    analysis = ctx.analysis
+    drive = analysis.drive_type
+    names = ctx.catalogue.drive_type_names
+    for setting in ctx.settings:
+        if not setting.known or setting.parameter.id in _DEFINING:
+            continue
+        parameter = setting.parameter
+        line = setting.line
+        start, end = ctx.path_span(line)
+        if drive is not None and parameter.drive_types and drive not in parameter.drive_types:
+            wanted = ", ".join(names.get(code, str(code)) for code in parameter.drive_types)
+            yield ctx.report(
+                CODE, line,
+                f"`{setting.canonical}` only takes effect with drive types {wanted}; this axis has "
+                f"kenngr.antr_typ {drive} ({names.get(drive, 'unknown')})",
+                column=start, end_column=end, setting=setting,
+            )
+        elif analysis.axis_type_known and parameter.axis_types and analysis.axis_type not in parameter.axis_types:
+            wanted = ", ".join(AXIS_TYPE_NAMES[a] for a in parameter.axis_types)
+            yield ctx.report(
+                CODE, line,
+                f"`{setting.canonical}` only takes effect on {wanted} axes; this axis is a "
+                f"{AXIS_TYPE_NAMES[analysis.axis_type]} axis (kenngr.achs_typ)",
+                column=start, end_column=end, setting=setting,
+            )

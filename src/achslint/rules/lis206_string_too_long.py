@@ -1,0 +1,41 @@
+"""
+What
+----
+A string value longer than the parameter can hold: axis names (15
+characters), drive ident names (29), telegram element names (29) and so on.
+
+Why
+---
+The CNC keeps the text in a fixed-size field; a longer value is cut off or
+rejected, and a cut drive ident no longer names the drive parameter you meant.
+
+Example
+-------
+```
+kopf.log_achs_name     Spindle_Main_Left_Side
+```
+
+Use instead
+-----------
+```
+kopf.log_achs_name     S1_LEFT
+```
+
+Reference
+---------
+Maximum string lengths of the parameter metadata (e.g. P-AXIS-00297: 15 characters).
+"""
+
+from __future__ import annotations
+
+from ._common import value_problems
+
+CODE = "LIS206"
+NAME = "string-too-long"
+SEVERITY = "error"
+FIX = "none"
+SUMMARY = "String longer than the parameter allows"
+
+
+def check(ctx):
+    yield from value_problems(ctx, CODE)

@@ -1,0 +1,267 @@
+"""Text to a lossless syntax tree, using the Lark grammar in grammars/achsmds.lark.
+
+The tree is flat because the format is: a list of `Line` objects, each holding
+the exact text of its parts (indent, path, separators, value, trailing text,
+line break). Joining the parts of every line gives back the input, character
+for character; columns are derived from the part lengths, so they are exact
+for tabs and for any line-break style.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from typing import Iterator
+
+BLANK = "blank"
+COMMENT = "comment"
+END = "end"
+ASSIGNMENT = "assignment"
+
+# Value kinds, as named by the grammar's value alternatives.
+INT, HEX, REAL, REFERENCE, STRING, BAD_STRING, SYMBOL = (
+    "int", "hex", "real", "reference", "string", "bad_string", "symbol",
+)
+NUMERIC_KINDS = frozenset({INT, HEX, REAL})
+
+GRAMMAR_NAME = "achsmds.lark"
+
+
+@dataclass(slots=True, eq=False)
+class Line:
+    """One physical line. Text parts are kept verbatim; `None` means absent."""
+
+    kind: str
+    indent: str = ""
+    path: str | None = None
+    path_ok: bool = True
+    sep: str = ""
+    value: str | None = None
+    value_kind: str | None = None
+    sep2: str = ""
+    rest: str | None = None
+    comment: str | None = None
+    newline: str = ""
+    number: int = 0
+    offset: int = 0
+
+    @property
+    def body(self) -> str:
+        """The line without its line break."""
+        if self.kind == COMMENT:
+            return self.indent + (self.comment or "")
+        parts = [self.indent, self.path or "", self.sep, self.value or "", self.sep2, self.rest or ""]
+        return "".join(parts)
+
+    @property
+    def text(self) -> str:
+        return self.body + self.newline
+
+    @property
+    def path_column(self) -> int:
+        return len(self.indent) + 1
+
+    @property
+    def value_column(self) -> int:
+        return self.path_column + len(self.path or "") + len(self.sep)
+
+    @property
+    def rest_column(self) -> int:
+        return self.value_column + len(self.value or "") + len(self.sep2)
+
+    @property
+    def end_column(self) -> int:
+        """Column just after the last character of the line (before the break)."""
+        return len(self.body) + 1
+
+
+@dataclass(slots=True, eq=False)
+class ListFile:
+    """A parsed list: the lines plus where the text came from."""
+
+    name: str
+    lines: list[Line]
+    encoding: str = "utf-8"
+    bom: bool = False
+    end_index: int | None = field(default=None)
+
+    def unparse(self) -> str:
+        return "".join(line.text for line in self.lines)
+
+    def assignments(self) -> Iterator[Line]:
+        """Assignments the CNC reads: those before the end marker."""
+        stop = self.end_index if self.end_index is not None else len(self.lines)
+        for line in self.lines[:stop]:
+            if line.kind == ASSIGNMENT:
+                yield line
+
+
+def _grammar_text() -> str:
+    try:
+        packaged = resources.files("achslint").joinpath("grammars", GRAMMAR_NAME)
+        if packaged.is_file():
+            return packaged.read_text(encoding="utf-8")
+    except (ModuleNotFoundError, FileNotFoundError):  # pragma: no cover - defensive
+        pass
+    # Source checkout / editable install: the grammar lives at the repository root.
+    return (Path(__file__).resolve().parents[2] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
+
+
+class _Builder:
+    """Inline transformer: builds `Line` objects while Lark reduces the rules."""
+
+    # Value alternatives all become a (kind, text) pair.
+    def _value(kind: str):  # noqa: N805 - factory used in the class body
+        def build(self, children):
+            return (kind, str(children[0]))
+
+        return build
+
+    int = _value(INT)
+    hex = _value(HEX)
+    real = _value(REAL)
+    reference = _value(REFERENCE)
+    string = _value(STRING)
+    bad_string = _value(BAD_STRING)
+    symbol = _value(SYMBOL)
+    del _value
+
+    def valid_path(self, children):
+        return (True, str(children[0]))
+
+    def bad_path(self, children):
+        return (False, str(children[0]))
+
+    def comment(self, children):
+        return Line(COMMENT, comment=str(children[0]))
+
+    def end_marker(self, children):
+        line = Line(END, path=str(children[0]))
+        if len(children) > 1:
+            line.sep = str(children[1])
+        if len(children) > 2:
+            line.rest = str(children[2])
+        return line
+
+    def assignment(self, children):
+        ok, path = children[0]
+        line = Line(ASSIGNMENT, path=path, path_ok=ok)
+        if len(children) > 1:
+            line.sep = str(children[1])
+        if len(children) > 2:
+            line.value_kind, line.value = children[2]
+        if len(children) > 3:
+            line.sep2 = str(children[3])
+        if len(children) > 4:
+            line.rest = str(children[4])
+        return line
+
+    def line(self, children):
+        if not children:
+            return Line(BLANK)
+        first = children[0]
+        if isinstance(first, Line):
+            return first
+        indent = str(first)
+        if len(children) == 1:
+            return Line(BLANK, indent=indent)
+        stmt = children[1]
+        stmt.indent = indent
+        return stmt
+
+    def start(self, children):
+        return children
+
+
+@lru_cache(maxsize=1)
+def parser():
+    """The Lark LALR parser, built once per process."""
+    from lark import Lark
+
+    return Lark(
+        _grammar_text(),
+        parser="lalr",
+        lexer="contextual",
+        transformer=_Builder(),
+        maybe_placeholders=False,
+    )
+
+
+def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bom: bool = False) -> ListFile:
+    """Parse list text (already decoded, without BOM) into a `ListFile`."""
+    children = parser().parse(text)
+    lines: list[Line] = []
+    offset = 0
+    end_index = None
+    current = children[0]
+    for child in children[1:]:
+        if isinstance(child, Line):
+            current = child
+            continue
+        current.newline = str(child)
+        _place(current, lines, offset)
+        offset += len(current.body) + len(current.newline)
+        current = None
+    if current is not None:
+        _place(current, lines, offset)
+    for index, line in enumerate(lines):
+        if line.kind == END:
+            end_index = index
+            break
+    return ListFile(name=name, lines=lines, encoding=encoding, bom=bom, end_index=end_index)
+
+
+def _place(line: Line, lines: list[Line], offset: int) -> None:
+    line.number = len(lines) + 1
+    line.offset = offset
+    lines.append(line)
+
+
+def parse_bytes(data: bytes, name: str = "<bytes>") -> ListFile:
+    """Decode and parse list bytes. Raises `decode.UnreadableInput` for UTF-16/32."""
+    from .decode import decode
+
+    source = decode(data)
+    return parse_text(source.text, name, encoding=source.encoding, bom=source.bom)
+
+
+_SEGMENT = re.compile(r"([A-Za-z_][A-Za-z0-9_\-]*)((?:\[[0-9]+\])*)")
+
+
+def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
+    """Split a valid path into (member, indices) pairs: `a[1].b` -> [("a", (1,)), ("b", ())]."""
+    parts = []
+    for segment in path.split("."):
+        match = _SEGMENT.fullmatch(segment)
+        if match is None:
+            raise ValueError(f"not a valid path: {path!r}")
+        indices = tuple(int(i) for i in re.findall(r"\[([0-9]+)\]", match.group(2)))
+        parts.append((match.group(1), indices))
+    return parts
+
+
+def path_pattern(path: str) -> tuple[str, tuple[int, ...]]:
+    """Replace every index by `[i]`: `getriebe[2].vb_reflow` -> (`getriebe[i].vb_reflow`, (2,))."""
+    indices: list[int] = []
+
+    def repl(match: re.Match) -> str:
+        indices.append(int(match.group(1)))
+        return "[i]"
+
+    return _INDEX.sub(repl, path), tuple(indices)
+
+
+_INDEX = re.compile(r"\[([0-9]+)\]")
+
+
+def is_misspelt_end(line: Line) -> bool:
+    """A line that was meant as the end marker: `End`, `END`, `ende` ... alone on the line."""
+    return (
+        line.kind == ASSIGNMENT
+        and line.value is None
+        and (line.path or "").lower() in ("end", "ende")
+        and line.path != "Ende"
+    )
