@@ -1,0 +1,27 @@
+"""achslint: parse, validate and lint TwinCAT 3 CNC / ISG CNC axis parameter lists.
+
+The package import is kept light; the library functions load their stages on
+first use:
+
+    import achslint
+    axis = achslint.load("achsmds1.lis")          # typed AxisParameters
+    diagnostics = achslint.lint("achsmds1.lis")   # list[Diagnostic]
+"""
+
+__version__ = "0.1.0"
+
+__all__ = ["__version__", "load", "lint"]
+
+
+def load(source, *, defaults=None):
+    """Parse a list (path, bytes or text) into a typed `AxisParameters` model."""
+    from .api import load as _load
+
+    return _load(source, defaults=defaults)
+
+
+def lint(source, *, select=None, ignore=None, name=None):
+    """Lint a list (path, bytes or text) and return its diagnostics."""
+    from .api import lint as _lint
+
+    return _lint(source, select=select, ignore=ignore, name=name)

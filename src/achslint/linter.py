@@ -32,11 +32,15 @@ class FileResult:
     name: str
     diagnostics: list[Diagnostic]
     error: str | None = None  # the file could not be read or decoded at all
+    source_lines: list[str] = field(default_factory=list)  # kept for code frames when there are findings
 
 
-def lint_bytes(data: bytes, name: str, selection: Selection | None = None, options: Options | None = None) -> list[Diagnostic]:
-    """Lint the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
-    file = parse_bytes(data, name)
+def check_bytes(data: bytes, name: str, selection: Selection | None = None, options: Options | None = None) -> FileResult:
+    """Lint the bytes of one list; unreadable input becomes a result with `error` set."""
+    try:
+        file = parse_bytes(data, name)
+    except UnreadableInput as exc:
+        return FileResult(name, [], f"{name}: {exc}")
     ctx = Context(name, file, options or Options())
     selection = selection or Selection()
     diagnostics: list[Diagnostic] = []
@@ -44,7 +48,16 @@ def lint_bytes(data: bytes, name: str, selection: Selection | None = None, optio
         if selection.enabled(code):
             diagnostics.extend(rule.check(ctx))
     diagnostics.sort(key=Diagnostic.sort_key)
-    return diagnostics
+    lines = [line.body for line in file.lines] if diagnostics else []
+    return FileResult(name, diagnostics, None, lines)
+
+
+def lint_bytes(data: bytes, name: str, selection: Selection | None = None, options: Options | None = None) -> list[Diagnostic]:
+    """Diagnostics for the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
+    result = check_bytes(data, name, selection, options)
+    if result.error:
+        raise UnreadableInput(result.error)
+    return result.diagnostics
 
 
 def lint_path(path: Path, name: str | None = None, selection: Selection | None = None, options: Options | None = None) -> FileResult:
@@ -53,10 +66,7 @@ def lint_path(path: Path, name: str | None = None, selection: Selection | None =
         data = path.read_bytes()
     except OSError as exc:
         return FileResult(display, [], f"cannot read {display}: {exc.strerror or exc}")
-    try:
-        return FileResult(display, lint_bytes(data, display, selection, options))
-    except UnreadableInput as exc:
-        return FileResult(display, [], f"{display}: {exc}")
+    return check_bytes(data, display, selection, options)
 
 
 def worst(diagnostics: list[Diagnostic]) -> Severity | None:

@@ -1,0 +1,54 @@
+"""Human output: each diagnostic with a code frame and a caret under the fault."""
+
+from __future__ import annotations
+
+from ..diagnostics import Severity
+
+_STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
+
+
+def _frame(lines: list[str], d) -> list[tuple[str, str]]:
+    """(gutter, text) rows: the faulty line and one line of context before it."""
+    rows = []
+    first = max(d.line - 1, 1)
+    width = len(str(d.line))
+    for number in range(first, d.line + 1):
+        if number - 1 < len(lines):
+            rows.append((f"{number:>{width}} │ ", lines[number - 1].expandtabs(1)))
+    return rows
+
+
+def report(results, stream, *, color: bool = False, sources: dict[str, list[str]] | None = None, **_options) -> None:
+    from rich.console import Console
+    from rich.text import Text
+
+    console = Console(file=stream, force_terminal=color, no_color=not color, highlight=False, soft_wrap=True,
+                      width=max(80, 200))
+    sources = sources or {}
+    total = {"error": 0, "warning": 0, "info": 0}
+    for result in results:
+        lines = sources.get(result.name, [])
+        for d in result.diagnostics:
+            total[d.severity.value] += 1
+            head = Text()
+            head.append(f"{d.path}:{d.line}:{d.column}: ", style="bold")
+            head.append(f"{d.code} ", style=_STYLE[d.severity])
+            head.append(f"{d.severity.value}: ", style=_STYLE[d.severity])
+            head.append(d.message)
+            console.print(head)
+            for gutter, text in _frame(lines, d):
+                console.print(Text(gutter, style="blue") + Text(text))
+            if lines and d.line - 1 < len(lines):
+                width = len(str(d.line))
+                span = max((d.end_column if d.end_line == d.line else len(lines[d.line - 1]) + 1) - d.column, 1)
+                caret = " " * (d.column - 1) + "^" * span
+                console.print(Text(" " * width + " │ ", style="blue") + Text(caret, style=_STYLE[d.severity]))
+            for related in d.related:
+                console.print(Text(f"  related: {related.path}:{related.line}:{related.column}", style="dim")
+                              + Text(f" {related.parameter or ''} {related.message}".rstrip(), style="dim"))
+            if d.fix is not None:
+                console.print(Text(f"  fix ({d.fix.applicability}): {d.fix.description}", style="green"))
+            console.print()
+    summary = ", ".join(f"{count} {name}{'s' if count != 1 else ''}" for name, count in total.items())
+    files = len(results)
+    console.print(Text(f"{files} file{'s' if files != 1 else ''} checked: {summary}", style="bold"))
