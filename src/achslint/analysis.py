@@ -121,7 +121,7 @@ def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
     cat = cat or catalogue()
     settings = [Setting(line, cat.resolve(line.path)) for line in file.assignments() if line.path_ok]
     analysis = Analysis(file, settings)
-    _axis_and_drive(analysis)
+    _axis_and_drive(analysis, cat)
     for setting in settings:
         if setting.known:
             _check_value(setting, analysis, cat)
@@ -142,12 +142,14 @@ def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
     return value
 
 
-def _axis_and_drive(analysis: Analysis) -> None:
+def _axis_and_drive(analysis: Analysis, cat: Catalogue) -> None:
     axis_code = _last_int(analysis.settings, "P-AXIS-00018")
     if axis_code in AXIS_TYPE_CODES:
         analysis.axis_type = AXIS_TYPE_CODES[axis_code]
         analysis.axis_type_known = True
-    analysis.drive_type = _last_int(analysis.settings, "P-AXIS-00020")
+    drive = _last_int(analysis.settings, "P-AXIS-00020")
+    # An invalid drive type is reported by the range check; nothing is inferred from it.
+    analysis.drive_type = drive if drive in cat.by_id["P-AXIS-00020"].allowed else None
 
 
 def _as_int(line: syntax.Line) -> int | None:
@@ -191,7 +193,7 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
             problems.append(
                 ValueProblem(
                     "LIS007",
-                    f"`{name}` is a string parameter: the CNC reads `{text}` as its value, not as a comment "
+                    f"`{name}` is a string parameter: the CNC reads `{_value_and_rest(line)}` as its value, not as a comment "
                     f"(after a string only `(` starts a comment); to leave it empty write nothing after the name "
                     f"or start the comment with `(`",
                 )
@@ -228,6 +230,10 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
                 span="rest",
             )
         )
+
+
+def _value_and_rest(line: syntax.Line) -> str:
+    return (line.value or "") + line.sep2 + (line.rest or "")
 
 
 def _expected(parameter: Parameter) -> str:
@@ -384,8 +390,8 @@ def _unknown_symbol(setting: Setting, text: str) -> None:
         match = upper
     message = f"`{text}` is not a value of `{setting.canonical}`"
     if match:
-        message += f"; did you mean `{match[0]}`?"
-    message += " Accepted: " + ", ".join(choices)
+        message += f" (did you mean `{match[0]}`?)"
+    message += "; accepted: " + ", ".join(choices)
     if parameter.symbol_codes:
         message += " (or their numbers " + ", ".join(str(c) for c in parameter.symbol_codes.values()) + ")"
     strong = difflib.get_close_matches(text, choices, n=2, cutoff=0.8)

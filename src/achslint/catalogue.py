@@ -83,7 +83,11 @@ class Parameter:
 
     @property
     def summary(self) -> str:
-        return self.description or self.title
+        """Our description, else the manual's title, else a label made from the path."""
+        if self.description or self.title:
+            return self.description or self.title
+        group = self.path.rsplit(".", 1)[0] if "." in self.path else "axis"
+        return f"parameter `{self.member}` of `{group}` (no description in the catalogue yet)"
 
     @property
     def member(self) -> str:
@@ -121,6 +125,25 @@ class Parameter:
     @property
     def strict_positive_real(self) -> bool:
         return self.kind == REAL and self.min == 0 and self.min_strict
+
+    @property
+    def typed_default(self):
+        """The built-in default as a Python value of the parameter's kind, or None."""
+        value = self.default
+        if value is None or (isinstance(value, str) and value.startswith("P-AXIS-")):
+            return None
+        kind = self.kind
+        if kind == BOOL:
+            if isinstance(value, str):
+                return self.symbols.index(value) == 1 if value in self.symbols else None
+            return bool(value)
+        if kind == SYMBOL:
+            return value if value in self.symbols else None
+        if kind == REAL:
+            return float(value)
+        if kind == INTEGER:
+            return value if isinstance(value, (int, str)) else int(value)
+        return str(value)
 
     def unit(self, axis_type: str = "T") -> str | None:
         return self.units.get(axis_type) if self.units else None

@@ -103,25 +103,6 @@ def _leaf_type(parameter: Parameter) -> tuple[Any, dict]:
     return str, constraints
 
 
-def default_value(parameter: Parameter) -> Any:
-    """The built-in default in the model's type, or None when there is none."""
-    value = parameter.default
-    kind = parameter.kind
-    if value is None or (isinstance(value, str) and value.startswith("P-AXIS-")):
-        return None
-    if kind == BOOL:
-        if isinstance(value, str):
-            return parameter.symbols.index(value) == 1 if value in parameter.symbols else None
-        return bool(value)
-    if kind == SYMBOL:
-        return value if value in parameter.symbols else None
-    if kind == INTEGER:
-        return value if isinstance(value, (int, str)) else int(value)
-    if kind == REAL:
-        return float(value)
-    return str(value)
-
-
 def _description(parameter: Parameter) -> str:
     text = f"{parameter.id}: {parameter.summary}".rstrip(": ")
     unit = parameter.unit("T")
@@ -138,7 +119,7 @@ def _build(node: _Node, path: list[str]) -> type[BaseModel]:
         if child.parameter is not None:
             parameter = child.parameter
             annotation, constraints = _leaf_type(parameter)
-            default = default_value(parameter)
+            default = parameter.typed_default
             if default is None:
                 annotation = Optional[annotation]
             description = _description(parameter)

@@ -63,8 +63,16 @@ def to_human(value: float, unit: str | None) -> str | None:
 
 
 def describe(value: float, unit: str | None) -> str:
-    """A value with its list unit and, where useful, its human form: `20000 µm/s (20 mm/s = 1.2 m/min)`."""
+    """A value with its list unit and, where useful, its human form.
+
+    `20000, "um/s"` -> `20000 µm/s (= 20 mm/s = 1.2 m/min)`;
+    `1500, "0.1%"` -> `1500 [0.1 %] (= 150 %)`.
+    """
+    if not isinstance(value, (int, float)):
+        return str(value)
     label = unit_label(unit)
-    text = f"{_number(value)} {label}".rstrip() if isinstance(value, (int, float)) else str(value)
-    human = to_human(value, unit)
-    return f"{text} ({human})" if human else text
+    if not label:
+        return _number(value)
+    text = f"{_number(value)} [{label}]" if label[0].isdigit() else f"{_number(value)} {label}"
+    human = to_human(value, unit) if value else None
+    return f"{text} (= {human})" if human else text

@@ -9,7 +9,8 @@ axis type itself.
 
 Why
 ---
-The value is ignored by the CNC. Often it is left over from a copied list of
+The value is ignored by the CNC. (A parameter set to its default value is not
+reported: it changes nothing either way.) Often it is left over from a copied list of
 another axis, and someone reading the list believes it matters.
 
 Example
@@ -51,6 +52,8 @@ def check(ctx):
     for setting in ctx.settings:
         if not setting.known or setting.parameter.id in _DEFINING:
             continue
+        if setting.value is not None and setting.value == setting.parameter.typed_default:
+            continue  # writing the default changes nothing, effective or not
         parameter = setting.parameter
         line = setting.line
         start, end = ctx.path_span(line)
