@@ -55,24 +55,21 @@ class Setting:
     resolution: Resolution | None
     value: object = None
     problems: list[ValueProblem] = field(default_factory=list)
+    misspelt: bool = field(init=False)
+    canonical: str | None = field(init=False)  # canonical concrete path; None when unknown
+
+    def __post_init__(self) -> None:
+        resolution = self.resolution
+        self.misspelt = bool(resolution and resolution.alias and resolution.alias.kind == "misspelling")
+        self.canonical = None if resolution is None or self.misspelt else resolution.canonical
 
     @property
     def parameter(self) -> Parameter | None:
         return self.resolution.parameter if self.resolution else None
 
     @property
-    def canonical(self) -> str | None:
-        if self.resolution is None or self.misspelt:
-            return None
-        return self.resolution.canonical
-
-    @property
-    def misspelt(self) -> bool:
-        return bool(self.resolution and self.resolution.alias and self.resolution.alias.kind == "misspelling")
-
-    @property
     def known(self) -> bool:
-        return self.resolution is not None and not self.misspelt
+        return self.canonical is not None
 
     @property
     def written_value(self) -> str:

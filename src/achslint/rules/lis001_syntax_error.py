@@ -49,6 +49,8 @@ SUMMARY = "Line is not a valid `path value [comment]` assignment"
 
 def explain_bad_path(path: str) -> str:
     """Say in words what is wrong with a path the grammar rejected."""
+    if path.startswith(";"):
+        return "`;` does not start a comment in CNC lists; use `#` at the start of the line"
     if re.fullmatch(r"\.{3,}.*", path) or "...." in path:
         return "dot leaders or an elision (`...`) are not part of the list syntax; delete them"
     index = re.search(r"\[([^\]]*)\]", path)

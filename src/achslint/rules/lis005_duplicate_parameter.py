@@ -52,18 +52,20 @@ def check(ctx):
         first = group[0]
         for setting in group[1:]:
             differs = repr(setting.comparable) != repr(first.comparable)
-            others = [s for s in group if s is not setting]
-            places = ", ".join(str(s.line.number) for s in others)
             if differs:
                 message = (
                     f"`{canonical}` is assigned again with a different value (`{setting.written_value}`, "
-                    f"before: `{first.written_value}` on line {first.line.number}); keep only the one you mean"
+                    f"first: `{first.written_value}` on line {first.line.number}); keep only the one you mean"
                 )
             else:
-                message = f"`{canonical}` is assigned again with the same value (also on line {places}); delete the repetition"
+                message = (
+                    f"`{canonical}` is assigned again with the same value (first on line {first.line.number}); "
+                    f"delete the repetition"
+                )
             start, end = ctx.path_span(setting.line)
+            # Only the first assignment is related: a list repeated n times stays linear.
             yield ctx.report(
                 CODE, setting.line, message, column=start, end_column=end, setting=setting,
                 severity=Severity.ERROR if differs else Severity.WARNING,
-                related=[ctx.related(s) for s in others],
+                related=[ctx.related(first, "first assignment")],
             )
