@@ -298,6 +298,9 @@ def build(tsv: Path, overrides_path: Path) -> dict:
             codes = drive_codes(row["drive_types"])
             if codes:
                 entry["drive_types"] = codes
+            for prefix, group_codes in overrides.get("drive_groups", {}).items():
+                if path.startswith(prefix):
+                    entry["drive_group"] = group_codes
             if "axis_types" in notes:
                 entry["axis_types"] = notes["axis_types"]
             if notes.get("not_for_spindles"):

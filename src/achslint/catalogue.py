@@ -62,6 +62,7 @@ class Parameter:
     range_text: str = ""
     units: dict = field(default_factory=dict)
     drive_types: tuple[int, ...] = ()
+    drive_group: tuple[int, ...] = ()  # drive types of a drive-specific group (antr.sercos. -> SERCOS)
     axis_types: tuple[str, ...] = ()
     restart: bool = False
     errors: tuple[str, ...] = ()
@@ -193,7 +194,7 @@ class Catalogue:
         values = dict(raw)
         values["aliases"] = tuple(Alias(**a) for a in raw.get("aliases", ()))
         values["index_bounds"] = tuple(tuple(b) for b in raw.get("index_bounds", ()))
-        for key in ("symbols", "allowed", "drive_types", "axis_types", "errors"):
+        for key in ("symbols", "allowed", "drive_types", "drive_group", "axis_types", "errors"):
             values[key] = tuple(raw.get(key, ()))
         return Parameter(**values)
 

@@ -1,16 +1,18 @@
 """
 What
 ----
-A parameter that, according to the catalogue, has no effect for the axis's
-drive type (`kenngr.antr_typ`) or axis type (`kenngr.achs_typ`): for example a
-SERCOS-only parameter on a CANopen axis, or a parameter for linear and rotary
-axes set on a spindle. The check only runs when the list sets the drive or
-axis type itself.
+A parameter that has no effect for the axis's drive type (`kenngr.antr_typ`)
+or axis type (`kenngr.achs_typ`): a parameter of a drive interface group
+(`antr.sercos.*`, `antr.canopen.*`, `antr.profibus.*`, `antr.simu.*`,
+`antr.terminal.*`, `antr.dse.*`, `antr.generic.*`) on an axis with another
+drive, or a parameter documented for linear and rotary axes only set on a
+spindle. The check only runs when the list sets the drive or axis type itself,
+and a parameter set to its default value is not reported (it changes nothing
+either way).
 
 Why
 ---
-The value is ignored by the CNC. (A parameter set to its default value is not
-reported: it changes nothing either way.) Often it is left over from a copied list of
+The value is ignored by the CNC. Often it is left over from a copied list of
 another axis, and someone reading the list believes it matters.
 
 Example
@@ -26,9 +28,11 @@ Remove the parameter, or check that the drive type is the one you meant.
 
 Reference
 ---------
-"Drive types" and "Axis types" rows of the P-AXIS parameter pages (catalogue
-`drive_types`, `axis_types`); the drive type lists are incomplete in places
-(documented inconsistency C.36), so this is advice only.
+P-AXIS-00020 drive type codes; "Axis types" rows of the P-AXIS parameter
+pages (catalogue `axis_types`). The per-parameter drive-type rows are
+incomplete (documented inconsistency C.36: P-AXIS-00219 omits the drives with
+CNC-controlled homing), so only the drive interface groups are used here; which
+homing parameters matter for the configured strategy is LIS401's job.
 """
 
 from __future__ import annotations
@@ -57,11 +61,11 @@ def check(ctx):
         parameter = setting.parameter
         line = setting.line
         start, end = ctx.path_span(line)
-        if drive is not None and parameter.drive_types and drive not in parameter.drive_types:
-            wanted = ", ".join(names.get(code, str(code)) for code in parameter.drive_types)
+        if drive is not None and parameter.drive_group and drive not in parameter.drive_group:
+            wanted = ", ".join(names.get(code, str(code)) for code in parameter.drive_group)
             yield ctx.report(
                 CODE, line,
-                f"`{setting.canonical}` only takes effect with drive types {wanted}; this axis has "
+                f"`{setting.canonical}` only takes effect with drive type {wanted}; this axis has "
                 f"kenngr.antr_typ {drive} ({names.get(drive, 'unknown')})",
                 column=start, end_column=end, setting=setting,
             )
