@@ -174,6 +174,58 @@ def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> Non
     typer.echo(rule_text(found))
 
 
+class ExplainFormat(str, Enum):
+    text = "text"
+    json = "json"
+
+
+@app.command()
+def explain(
+    target: str = typer.Argument(..., help="An axis list file, or a parameter: name, alias or id (vb_reflow, getriebe[0].vb_reflow, P-AXIS-00218)."),
+    output_format: ExplainFormat = typer.Option(ExplainFormat.text, "--format", "--output-format", help="text or json."),
+    gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing speeds are shown."),
+    color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+) -> None:
+    """Explain the homing configuration of a list, or describe one parameter."""
+    import json
+    from pathlib import Path
+
+    from .explain import explain_list, parameter_card, render_card, render_list
+
+    path = Path(target)
+    if path.is_file():
+        try:
+            report = explain_list(path.read_bytes(), target, gear)
+        except OSError as exc:
+            _fail(f"cannot read {target}: {exc.strerror or exc}")
+        except Exception as exc:  # noqa: BLE001 - UnreadableInput and friends become one line
+            from .decode import UnreadableInput
+
+            if isinstance(exc, UnreadableInput):
+                _fail(f"{target}: {exc}")
+            raise
+        render = render_list
+    else:
+        from .catalogue import catalogue
+
+        parameter = catalogue().find(target)
+        if parameter is None:
+            hint = ""
+            suggestions = catalogue().suggest(target)
+            if suggestions:
+                hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?"
+            _fail(f"{target!r} is neither a file nor a known parameter{hint}")
+        report = parameter_card(parameter)
+        render = render_card
+    if output_format == ExplainFormat.json:
+        typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
+        return
+    from rich.console import Console
+
+    use = _use_color(color, sys.stdout)
+    render(report, Console(force_terminal=use, no_color=not use, highlight=False, width=160 if not sys.stdout.isatty() else None))
+
+
 @app.command()
 def schema() -> None:
     """Print the JSON Schema of the axis parameter model."""

@@ -32,6 +32,20 @@ class Context:
     def analysis(self) -> Analysis:
         return analyse(self.file, self.catalogue)
 
+    @cached_property
+    def values(self):
+        """Effective values of the axis (defaults filled in, references resolved)."""
+        from .effective import AxisValues
+
+        return AxisValues(self.analysis, cat=self.catalogue)
+
+    @cached_property
+    def strategy(self):
+        """The homing strategy the axis is configured for (gear stage 0)."""
+        from .strategy import classify
+
+        return classify(self.values)
+
     @property
     def settings(self) -> list[Setting]:
         return self.analysis.settings
@@ -81,6 +95,33 @@ class Context:
     def value_span(self, line: syntax.Line) -> tuple[int, int]:
         start = line.value_column
         return start, start + max(len(line.value or ""), 1)
+
+    def show(self, path: str) -> str:
+        """`path = value unit (human)` for messages, marked "(default)" when the list does not set it."""
+        from .units import describe
+
+        values = self.values
+        value = values.get(path)
+        unit = values.parameter(path).unit(values.axis_type)
+        shown = describe(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else (
+            str(int(value)) if isinstance(value, bool) else str(value))
+        origin = "" if values.is_set(path) else " (default)"
+        return f"`{path}` = {shown}{origin}"
+
+    def cross(self, code: str, message: str, paths: list[str], *, severity: Severity | None = None) -> Diagnostic:
+        """A diagnostic about several parameters: at the first one the list sets, the others related."""
+        present = [s for s in (self.values.in_list(p) for p in paths) if s is not None]
+        main = present[0] if present else None
+        line = main.line if main else self.file.lines[0]
+        column, end = self.path_span(line) if main else (1, line.end_column)
+        seen = {id(main)}
+        related = []
+        for setting in present[1:]:
+            if id(setting) not in seen:
+                seen.add(id(setting))
+                related.append(self.related(setting))
+        return self.report(code, line, message, column=column, end_column=max(end, column + 1),
+                           severity=severity, setting=main, related=related)
 
     def problem_span(self, line: syntax.Line, span: str) -> tuple[int, int]:
         if span == "rest" and line.rest is not None:

@@ -40,8 +40,7 @@ def unit_label(unit: str | None) -> str:
 def _number(value: float) -> str:
     if value == int(value) and abs(value) < 1e15:
         return str(int(value))
-    text = f"{value:.6g}"
-    return text
+    return f"{value:.4g}" if abs(value) < 1e6 else f"{value:.6g}"
 
 
 def to_human(value: float, unit: str | None) -> str | None:

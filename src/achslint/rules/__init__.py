@@ -37,6 +37,26 @@ RULE_MODULES = (
     "lis204_achs_mode_bits",
     "lis205_bad_reference",
     "lis206_string_too_long",
+    "lis301_cam_free_needs_one_phase",
+    "lis302_reflow_above_refmax",
+    "lis303_refmax_above_limits",
+    "lis304_torq_distances",
+    "lis305_homing_type_vs_drive",
+    "lis306_torq_drive_type",
+    "lis307_ignore_abs_pos_incremental",
+    "lis308_disabled_incremental",
+    "lis309_homing_max_movement_dist",
+    "lis310_reference_check",
+    "lis311_encoder_overflow",
+    "lis312_sercos_drive_latch",
+    "lis313_refpkt_outside_limits",
+    "lis314_spindle_homing",
+    "lis315_fixed_stop_setup",
+    "lis316_gantry_slave_no_homing",
+    "lis401_parameter_without_effect",
+    "lis402_one_phase_with_cam",
+    "lis403_cam_edge_repeatability",
+    "lis404_homing_acceleration_fallback",
 )
 
 SECTIONS = ("What", "Why", "Example", "Use instead", "Reference")
@@ -52,6 +72,7 @@ class Rule:
     doc: str
     check: Callable
     module: ModuleType
+    parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
 
     def section(self, title: str) -> str:
         """The text of one docstring section ("What", "Why", ...)."""
@@ -73,6 +94,7 @@ def registry() -> dict[str, Rule]:
             doc=(module.__doc__ or "").strip(),
             check=module.check,
             module=module,
+            parameters=tuple(getattr(module, "PARAMETERS", ())),
         )
     return rules
 

@@ -1,0 +1,241 @@
+"""`achslint explain`: what an axis list configures for homing, and parameter cards.
+
+`explain_list` returns plain data (rendered as text or JSON by the CLI): the
+homing strategy with its phases in words, and every homing parameter with its
+value, where it came from, its unit and human unit, and whether it takes effect
+under the strategy, with the reason.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from .analysis import analyse
+from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue
+from .effective import AxisValues
+from .rules import registry
+from .strategy import HOMING_PARAMETERS, classify, effectiveness, homing_parameter_paths
+from .syntax import parse_bytes
+from .units import describe, to_human, unit_label
+
+
+def _plain(value):
+    if isinstance(value, bool):
+        return int(value)
+    return value
+
+
+def _speed_words(value: float | None, axis_type: str) -> str:
+    if value is None:
+        return ""
+    unit = "um/s" if axis_type == "T" else "0.001deg/s"
+    return describe(value, unit)
+
+
+def explain_list(data: bytes, name: str, gear: int = 0) -> dict:
+    """Everything `explain FILE` shows, as JSON-ready data."""
+    analysis = analyse(parse_bytes(data, name))
+    values = AxisValues(analysis)
+    strategy = classify(values, gear)
+    axis_type = values.axis_type
+    phases = []
+    for number, phase in enumerate(strategy.phases, 1):
+        speed = _speed_words(phase.velocity, axis_type)
+        where = phase.velocity_parameter or ""
+        text = f"{number}. {phase.name}: move {phase.direction} at {speed} ({where}) until {phase.ends_when}"
+        if phase.note:
+            text += f" — {phase.note}"
+        phases.append({
+            "number": number, "name": phase.name, "direction": phase.direction,
+            "velocity_parameter": phase.velocity_parameter, "velocity": phase.velocity,
+            "velocity_human": to_human(phase.velocity, "um/s" if axis_type == "T" else "0.001deg/s") if phase.velocity else None,
+            "ends_when": phase.ends_when, "note": phase.note, "text": text,
+        })
+    parameters = []
+    for path in homing_parameter_paths(gear):
+        parameter = values.parameter(path)
+        value = values.get(path)
+        unit = parameter.unit(axis_type)
+        origin = values.origin(path)
+        effective, reason = effectiveness(strategy, values, path)
+        parameters.append({
+            "parameter": path,
+            "p_axis": parameter.id,
+            "value": _plain(value),
+            "unit": unit_label(unit) or None,
+            "human": to_human(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else None,
+            "source": {"kind": origin.kind, "line": origin.setting.line.number if origin.setting else None},
+            "effective": effective,
+            "reason": reason,
+        })
+    drive = values.drive_type
+    return {
+        "version": 1,
+        "file": name,
+        "gear": gear,
+        "axis": {
+            "name": values.get("kopf.log_achs_name"),
+            "number": values.get("kopf.achs_nr"),
+            "axis_type": AXIS_TYPE_NAMES[axis_type],
+            "drive_type": drive,
+            "drive": values.drive_name(),
+            "drive_type_set": values.drive_type_known,
+            "homing_type": values.homing_type,
+            "homing_type_set": not values.homing_type_is_default,
+        },
+        "strategy": {
+            "id": strategy.id, "title": strategy.title, "description": strategy.description,
+            "controlled_by": strategy.controlled_by, "manual_type": strategy.manual_type,
+            "variants": strategy.variants,
+        },
+        "phases": phases,
+        "parameters": parameters,
+    }
+
+
+def render_list(report: dict, console) -> None:
+    from rich.table import Table
+    from rich.text import Text
+
+    axis = report["axis"]
+    console.print(Text(f"{report['file']}", style="bold"))
+    drive_note = "" if axis["drive_type_set"] else " (not set in the list: CNC default)"
+    console.print(f"Axis {axis['name']} (logical axis {axis['number']}): {axis['axis_type']} axis, "
+                  f"drive type {axis['drive_type']} = {axis['drive']}{drive_note}")
+    type_note = "" if axis["homing_type_set"] else " (not set: the drive type's default)"
+    strategy = report["strategy"]
+    console.print(Text(f"Homing: {strategy['title']}", style="bold") +
+                  Text(f" — homing_type {axis['homing_type']}{type_note}"))
+    console.print(strategy["description"])
+    for variant in strategy["variants"]:
+        console.print(f"  • {variant}")
+    if report["phases"]:
+        console.print(Text(f"Phases (gear stage {report['gear']}):", style="bold"))
+        for phase in report["phases"]:
+            console.print("  " + phase["text"])
+        console.print("  After the reference event the axis brakes, so it stops beyond the reference position "
+                      "by its braking distance.")
+    table = Table(title=f"Homing parameters (gear stage {report['gear']})", title_justify="left", show_lines=False)
+    for column in ("parameter", "id", "value", "unit", "human", "source", "effective", "why"):
+        table.add_column(column, overflow="fold")
+    for row in report["parameters"]:
+        source = "default" if row["source"]["kind"] == "default" else f"line {row['source']['line']}"
+        table.add_row(
+            row["parameter"], row["p_axis"], str(row["value"]), row["unit"] or "", row["human"] or "", source,
+            Text("yes", style="green") if row["effective"] else Text("no", style="red"), row["reason"],
+        )
+    console.print(table)
+
+
+# --- parameter cards --------------------------------------------------------------------------
+
+_PROBES = {
+    "three-phase, cam + zero pulse (III)": "",
+    "three-phase, cam only (I)": "kenngr.homing_without_zero_pulse 1\n",
+    "zero pulse only (II)": "kenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n",
+    "one-phase with cam": "kenngr.ref_ohne_rev 1\n",
+    "encoder overflow": "kenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 20\n",
+    "spindle flying homing": "kenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\n",
+    "simulated drive": "kenngr.antr_typ 4\n",
+    "fixed stop (TORQ)": "kenngr.homing.homing_type TORQ\n",
+    "drive-controlled": "kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\n",
+    "absolute axis": "kenngr.abs_pos_gueltig 1\n",
+}
+
+
+@lru_cache(maxsize=1)
+def _probe_values() -> dict[str, AxisValues]:
+    result = {}
+    for label, body in _PROBES.items():
+        text = "kenngr.antr_typ 1\n" + body if "antr_typ" not in body else body
+        result[label] = AxisValues(analyse(parse_bytes((text + "Ende\n").encode(), label)))
+    return result
+
+
+def strategies_using(parameter: Parameter) -> list[str] | None:
+    """Strategy labels under which a homing parameter takes effect; None for non-homing parameters."""
+    generic = parameter.path.replace("lr_hw[i]", "lr_hw[0]")
+    if generic not in HOMING_PARAMETERS:
+        return None
+    concrete = generic.replace("[i]", "[0]")
+    used = []
+    for label, values in _probe_values().items():
+        if effectiveness(classify(values), values, concrete)[0]:
+            used.append(label)
+    return used
+
+
+def rules_checking(parameter: Parameter) -> list[str]:
+    codes = []
+    kind = parameter.kind
+    if kind in (BOOL, INTEGER, REAL, SYMBOL):
+        codes.append("LIS201")
+    if kind in (INTEGER, REAL):
+        codes.append("LIS202")
+    if kind == SYMBOL or parameter.symbols:
+        codes.append("LIS203")
+    if parameter.max_length:
+        codes.append("LIS206")
+    if parameter.id == "P-AXIS-00015":
+        codes.append("LIS204")
+    for code, rule in registry().items():
+        if parameter.path in rule.parameters and code not in codes:
+            codes.append(code)
+    return codes
+
+
+def parameter_card(parameter: Parameter) -> dict:
+    low, high = parameter.limits
+    drives = catalogue().drive_type_names
+    return {
+        "p_axis": parameter.id,
+        "path": parameter.path,
+        "aliases": [{"path": a.path, "kind": a.kind} for a in parameter.aliases],
+        "type": parameter.type,
+        "range": parameter.range_text or None,
+        "checked_range": None if low is None and high is None else {"min": low, "max": high},
+        "accepted_values": list(parameter.allowed) or None,
+        "symbols": list(parameter.symbols) or None,
+        "max_length": parameter.max_length,
+        "default": _plain(parameter.typed_default) if parameter.typed_default is not None else parameter.default,
+        "units": {AXIS_TYPE_NAMES[k]: unit_label(v) for k, v in parameter.units.items() if v} or None,
+        "index_bounds": [list(b) for b in parameter.index_bounds] or None,
+        "drive_types": [f"{code} {drives.get(code, '')}".strip() for code in parameter.drive_types] or None,
+        "axis_types": [AXIS_TYPE_NAMES[a] for a in parameter.axis_types] or None,
+        "restart_required": parameter.restart,
+        "description": parameter.summary,
+        "manual_title": parameter.title or None,
+        "manual": parameter.source or None,
+        "strategies": strategies_using(parameter),
+        "rules": rules_checking(parameter),
+    }
+
+
+def render_card(card: dict, console) -> None:
+    from rich.text import Text
+
+    console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))
+    console.print(card["description"])
+    rows = [
+        ("type", card["type"]),
+        ("range (manual)", card["range"]),
+        ("checked range", card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}"),
+        ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
+        ("symbols", card["symbols"] and ", ".join(card["symbols"])),
+        ("max length", card["max_length"]),
+        ("default", card["default"]),
+        ("units", card["units"] and ", ".join(f"{k}: {v}" for k, v in card["units"].items())),
+        ("indices", card["index_bounds"] and ", ".join(f"{a}..{b}" for a, b in card["index_bounds"])),
+        ("aliases", ", ".join(f"{a['path']} ({a['kind']})" for a in card["aliases"])),
+        ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
+        ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
+        ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
+        ("matters for", card["strategies"] is not None and (", ".join(card["strategies"]) or "no homing strategy")),
+        ("checked by", card["rules"] and ", ".join(card["rules"])),
+        ("manual title", card["manual_title"]),
+        ("manual", card["manual"]),
+    ]
+    width = max(len(k) for k, _ in rows)
+    for key, value in rows:
+        if value not in (None, "", False, [], {}):
+            console.print(Text(f"  {key:<{width}}  ", style="bold") + Text(str(value)))

@@ -1,0 +1,55 @@
+"""
+What
+----
+Fixed-stop homing: the minimum travel before stop detection
+(`kenngr.homing.torq_min_distance`) is not smaller than the maximum travel
+(`kenngr.homing.torq_max_distance`).
+
+Why
+---
+Detection is only armed after torq_min_distance and homing aborts after
+torq_max_distance, so with min ≥ max the stop can never be detected.
+
+Example
+-------
+```
+kenngr.homing.torq_min_distance     200000
+kenngr.homing.torq_max_distance     100000
+```
+
+Use instead
+-----------
+```
+kenngr.homing.torq_min_distance     0
+kenngr.homing.torq_max_distance     200000
+```
+
+Reference
+---------
+P-AXIS-00344 range (0 ≤ torq_min_distance ≤ P-AXIS-00345); TF5200 homing manual §2.3.3.4.
+"""
+
+from __future__ import annotations
+
+CODE = "LIS304"
+NAME = "torq-distances"
+SEVERITY = "error"
+FIX = "none"
+PARAMETERS = ("kenngr.homing.torq_min_distance", "kenngr.homing.torq_max_distance")  # parameters this rule reads
+SUMMARY = "`torq_min_distance` not below `torq_max_distance`"
+
+MIN, MAX = "kenngr.homing.torq_min_distance", "kenngr.homing.torq_max_distance"
+
+
+def check(ctx):
+    values = ctx.values
+    if not (values.is_set(MIN) or values.is_set(MAX)):
+        return
+    low, high = values.get(MIN), values.get(MAX)
+    if (low or high) and low >= high:
+        yield ctx.cross(
+            CODE,
+            f"{ctx.show(MIN)} is not below {ctx.show(MAX)}: stop detection starts only after the minimum travel "
+            "and homing aborts at the maximum, so the stop is never found; make the maximum larger",
+            [MIN, MAX],
+        )

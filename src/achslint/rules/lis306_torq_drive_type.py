@@ -1,0 +1,50 @@
+"""
+What
+----
+Homing to a fixed stop (`TORQ`) on a drive type that cannot do it. Fixed-stop
+homing works with SERCOS and CANopen drives, the DSE / generic drive interface
+and simulated drives. Checked when the list sets `kenngr.antr_typ`.
+
+Why
+---
+The CNC rejects it with P-ERR-110371; the axis cannot be homed as configured.
+
+Example
+-------
+```
+kenngr.antr_typ                 1          ( conventional
+kenngr.homing.homing_type       TORQ
+```
+
+Use instead
+-----------
+A cam-based CNC-controlled homing (`CNC_CONTROLLED`) on this drive, or a drive
+type that supports fixed-stop homing.
+
+Reference
+---------
+TF5200 homing manual §2.3.3.4 (only SERCOS and CANopen; P-ERR-110371) and §2.3.3.5 (DSE: simulation and generic drive interface).
+"""
+
+from __future__ import annotations
+
+CODE = "LIS306"
+NAME = "torq-drive-type"
+SEVERITY = "error"
+FIX = "none"
+PARAMETERS = ("kenngr.homing.homing_type", "kenngr.antr_typ")  # parameters this rule reads
+SUMMARY = "`TORQ` homing on a drive type without fixed-stop homing"
+
+TORQ_DRIVES = {2, 4, 8, 9, 17}
+
+
+def check(ctx):
+    values = ctx.values
+    if values.drive_type_known and values.homing_type == "TORQ" and values.drive_type not in TORQ_DRIVES:
+        yield ctx.cross(
+            CODE,
+            f"fixed-stop homing (TORQ) is not possible with kenngr.antr_typ {values.drive_type} "
+            f"({values.drive_name()}); the CNC rejects it with P-ERR-110371. It works with SERCOS, CANopen, "
+            "DSE/generic and simulated drives",
+            ["kenngr.homing.homing_type", "kenngr.antr_typ"],
+        )

@@ -1,0 +1,68 @@
+"""
+What
+----
+`kenngr.homing_max_movement_dist` (path monitoring during homing) set to a
+value other than 0 on a linear axis, or, on a rotary axis or spindle, set
+smaller than the modulo range (`getriebe[0].moduloo - getriebe[0].modulou`).
+
+Why
+---
+Path monitoring only works for rotary axes and spindles: on a linear axis the
+CNC reports P-ERR-110545 and forces the value to 0. On rotary axes the homing
+move may need up to a whole revolution to find cam and zero pulse; a shorter
+limit aborts homing with P-ERR-70394 although nothing is wrong.
+
+Example
+-------
+```
+kenngr.achs_typ                 2          ( rotary axis
+getriebe[0].moduloo             3600000    ( 360°
+kenngr.homing_max_movement_dist 1800000    ( 180°
+```
+
+Use instead
+-----------
+```
+kenngr.homing_max_movement_dist 3600000    ( at least one revolution
+```
+
+Reference
+---------
+P-AXIS-00412 (axis types R, S; set at least to the modulo range); CNC messages P-ERR-110545, P-ERR-70394.
+"""
+
+from __future__ import annotations
+
+CODE = "LIS309"
+NAME = "homing-max-movement-dist"
+SEVERITY = "error"
+FIX = "none"
+PARAMETERS = ("kenngr.homing_max_movement_dist", "kenngr.achs_typ", "getriebe[i].moduloo", "getriebe[i].modulou")  # parameters this rule reads
+SUMMARY = "Homing path monitoring on a linear axis or shorter than the modulo range"
+
+DIST = "kenngr.homing_max_movement_dist"
+
+
+def check(ctx):
+    values = ctx.values
+    limit = values.get(DIST)
+    if not limit:
+        return
+    if values.axis_type == "T":
+        assumed = "" if values.is_set("kenngr.achs_typ") else " (kenngr.achs_typ is not set, so the CNC takes the axis as linear)"
+        yield ctx.cross(
+            CODE,
+            f"{ctx.show(DIST)} on a linear axis{assumed}: path monitoring only works for rotary axes and spindles; "
+            "the CNC reports P-ERR-110545 and sets it to 0. Remove the line",
+            [DIST, "kenngr.achs_typ"],
+        )
+        return
+    upper, lower = "getriebe[0].moduloo", "getriebe[0].modulou"
+    span = values.get(upper) - values.get(lower)
+    if limit < span:
+        yield ctx.cross(
+            CODE,
+            f"{ctx.show(DIST)} is shorter than the modulo range ({ctx.show(upper)} - {ctx.show(lower)} = {span}); "
+            f"homing may need a full revolution and would abort with P-ERR-70394; use at least {span}",
+            [DIST, upper, lower],
+        )

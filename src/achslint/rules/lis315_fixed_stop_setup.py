@@ -1,0 +1,91 @@
+"""
+What
+----
+Homing to a fixed stop (`TORQ`) without what it needs: no detection criterion
+at all (neither a homing-specific one — `torq_detect_time`,
+`torq_detect_pos_lag_limit`, `torq_detect_velocity_limit`,
+`torq_detect_torque_limit` — nor a general one under
+`antr.fixed_stop.detect.*`), a simulated drive without
+`kenngr.homing.torq_distance_to_block`, or a move speed / acceleration not
+below the axis's `vb_max` / `a_max`.
+
+Why
+---
+Without a criterion the stop is never recognised and the axis pushes against
+it until the maximum distance aborts homing. The simulated drive needs the
+distance at which its simulated stop sits. The move values must stay below the
+axis limits (ranges of P-AXIS-00333 and P-AXIS-00334).
+
+Example
+-------
+```
+kenngr.homing.homing_type            TORQ
+kenngr.homing.torq_max_distance      200000
+```
+
+Use instead
+-----------
+```
+kenngr.homing.homing_type                  TORQ
+kenngr.homing.torq_max_distance            200000
+kenngr.homing.torq_detect_time             25000
+kenngr.homing.torq_detect_velocity_limit   300
+```
+
+Reference
+---------
+TF5200 homing manual §2.3.3.4.2 (at least one criterion; general detection parameters P-AXIS-00769/00817/00818)
+and §2.3.3.4.4 (P-AXIS-00822 for simulation); ranges of P-AXIS-00333 and P-AXIS-00334.
+"""
+
+from __future__ import annotations
+
+CODE = "LIS315"
+NAME = "fixed-stop-setup"
+SEVERITY = "error"
+FIX = "none"
+PARAMETERS = ("kenngr.homing.torq_detect_time", "kenngr.homing.torq_detect_pos_lag_limit", "kenngr.homing.torq_detect_velocity_limit", "kenngr.homing.torq_detect_torque_limit", "kenngr.homing.torq_distance_to_block", "getriebe[i].homing.torq_move_velocity", "getriebe[i].homing.torq_move_acceleration")  # parameters this rule reads
+SUMMARY = "Fixed-stop homing without a detection criterion or with impossible move values"
+
+SPECIFIC = ["kenngr.homing.torq_detect_time", "kenngr.homing.torq_detect_pos_lag_limit",
+            "kenngr.homing.torq_detect_velocity_limit", "kenngr.homing.torq_detect_torque_limit"]
+GENERAL = ["antr.fixed_stop.detect.pos_lag_limit", "antr.fixed_stop.detect.detect_velocity_limit",
+           "antr.fixed_stop.detect.detect_torque_limit"]
+
+
+def _active(path: str, value) -> bool:
+    if value is None:
+        return False
+    if path.endswith("detect.detect_velocity_limit"):
+        return value < 1000  # 1000 = not active
+    return value > 0
+
+
+def check(ctx):
+    values = ctx.values
+    if values.homing_type != "TORQ":
+        return
+    stage_criteria = [f"getriebe[{g}].homing.torq_detect_torque_limit" for g in values.gear_stages_set("homing.torq_detect_torque_limit")]
+    criteria = SPECIFIC + stage_criteria + GENERAL
+    if not any(_active(p, values.get(p)) for p in criteria):
+        yield ctx.cross(
+            CODE,
+            "fixed-stop homing (TORQ) has no detection criterion: set at least one of torq_detect_time, "
+            "torq_detect_pos_lag_limit, torq_detect_velocity_limit, torq_detect_torque_limit "
+            "(or the general antr.fixed_stop.detect.* values); otherwise the stop is never recognised",
+            ["kenngr.homing.homing_type"],
+        )
+    if values.drive_type == 4 and not values.get("kenngr.homing.torq_distance_to_block"):
+        yield ctx.cross(
+            CODE,
+            "a simulated drive homing to a fixed stop needs `kenngr.homing.torq_distance_to_block` "
+            "(P-AXIS-00822), the distance at which the simulated stop is hit",
+            ["kenngr.homing.torq_distance_to_block", "kenngr.antr_typ", "kenngr.homing.homing_type"],
+        )
+    for gear in values.gear_stages_set("homing.torq_move_velocity", "homing.torq_move_acceleration", "dynamik.vb_max", "dynamik.a_max"):
+        speed, vmax = f"getriebe[{gear}].homing.torq_move_velocity", f"getriebe[{gear}].dynamik.vb_max"
+        accel, amax = f"getriebe[{gear}].homing.torq_move_acceleration", f"getriebe[{gear}].dynamik.a_max"
+        if values.get(speed) >= values.get(vmax):
+            yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(speed)} must be below {ctx.show(vmax)}", [speed, vmax])
+        if values.get(accel) >= values.get(amax):
+            yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(accel)} must be below {ctx.show(amax)}", [accel, amax])

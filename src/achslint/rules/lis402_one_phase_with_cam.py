@@ -1,0 +1,53 @@
+"""
+What
+----
+CNC-controlled homing in one phase with a reference cam
+(`kenngr.ref_ohne_rev = 1`, `kenngr.ref_ohne_nocken = 0`) on a linear or
+rotary axis.
+
+Why
+---
+The manual offers this variant but advises against it in practice: the single
+phase never reverses, so an axis that starts on the cam (after a power failure
+or an emergency stop) references at the wrong place. The PLC has to prevent
+starting on the cam. Three-phase homing handles that case by itself.
+
+Example
+-------
+```
+kenngr.ref_ohne_nocken          0
+kenngr.ref_ohne_rev             1
+```
+
+Use instead
+-----------
+```
+kenngr.ref_ohne_nocken          0
+kenngr.ref_ohne_rev             0
+```
+
+Reference
+---------
+TF5200 homing manual §2.3.3.2 (notice on referencing in one phase).
+"""
+
+from __future__ import annotations
+
+CODE = "LIS402"
+NAME = "one-phase-with-cam"
+SEVERITY = "warning"
+FIX = "none"
+PARAMETERS = ("kenngr.ref_ohne_rev", "kenngr.ref_ohne_nocken")  # parameters this rule reads
+SUMMARY = "One-phase homing with a cam (advised against by the manual)"
+
+
+def check(ctx):
+    strategy = ctx.strategy
+    if strategy.id.startswith("one_phase"):
+        yield ctx.cross(
+            CODE,
+            "one-phase homing with a reference cam (ref_ohne_rev 1, ref_ohne_nocken 0): the axis must never start on "
+            "the cam, which the PLC has to ensure; the manual advises against this variant, prefer three-phase "
+            "homing (ref_ohne_rev 0)",
+            ["kenngr.ref_ohne_rev", "kenngr.ref_ohne_nocken"],
+        )

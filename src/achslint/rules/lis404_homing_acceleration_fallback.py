@@ -1,0 +1,66 @@
+"""
+What
+----
+CNC-controlled homing with no homing acceleration (`getriebe[i].a_ref` not
+set or 0). The message reports the value the CNC uses instead: the smaller of
+the two rapid-traverse accelerations of the linear slope,
+`lslope_profil.a_grenz_stufe_1` and `a_grenz_stufe_2`.
+
+Why
+---
+Nothing is wrong, but the homing moves then accelerate with a value that was
+tuned for rapid traverse, which is easy to overlook when the braking distance
+after the reference event matters (the axis stops that far beyond the
+reference position).
+
+Example
+-------
+```
+getriebe[0].lslope_profil.a_grenz_stufe_1   2000
+getriebe[0].lslope_profil.a_grenz_stufe_2   1000
+```
+
+Use instead
+-----------
+```
+getriebe[0].a_ref                           500
+```
+
+Reference
+---------
+TF5200 homing manual §3.2.4 (homing acceleration P-AXIS-00285, fallback min(P-AXIS-00005, P-AXIS-00006)).
+"""
+
+from __future__ import annotations
+
+CODE = "LIS404"
+NAME = "homing-acceleration-fallback"
+SEVERITY = "info"
+FIX = "none"
+PARAMETERS = ("getriebe[i].a_ref", "getriebe[i].lslope_profil.a_grenz_stufe_1", "getriebe[i].lslope_profil.a_grenz_stufe_2")  # parameters this rule reads
+SUMMARY = "Homing acceleration not set: the CNC's fallback is used"
+
+
+def homing_acceleration(values, gear: int = 0) -> tuple[float, bool]:
+    """(acceleration in mm/s² or °/s², True when it is the fallback)."""
+    own = values.get(f"getriebe[{gear}].a_ref")
+    if own:
+        return own, False
+    return min(values.get(f"getriebe[{gear}].lslope_profil.a_grenz_stufe_1"),
+               values.get(f"getriebe[{gear}].lslope_profil.a_grenz_stufe_2")), True
+
+
+def check(ctx):
+    strategy = ctx.strategy
+    if strategy.controlled_by != "cnc" or not strategy.moves or strategy.id in ("fixed_stop", "simulation"):
+        return
+    values = ctx.values
+    acceleration, fallback = homing_acceleration(values)
+    if fallback:
+        one, two = "getriebe[0].lslope_profil.a_grenz_stufe_1", "getriebe[0].lslope_profil.a_grenz_stufe_2"
+        yield ctx.cross(
+            CODE,
+            f"`getriebe[0].a_ref` is not set: homing accelerates with min({ctx.show(one)}, {ctx.show(two)}) = "
+            f"{acceleration:g} {'mm/s²' if values.axis_type == 'T' else '°/s²'}; set a_ref to choose it",
+            ["getriebe[0].a_ref", one, two],
+        )
