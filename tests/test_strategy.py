@@ -118,3 +118,5 @@ def test_simulation_only_uses_rpf_weg_bis_nip():
     assert effectiveness(strategy, values, "antr.simu.rpf_weg_bis_nip")[0] is True
     assert effectiveness(strategy, values, "getriebe[0].vb_refmax")[0] is False
     assert effectiveness(strategy, values, "lr_hw[0].cam_level")[0] is False
+    assert effectiveness(strategy, values, "kenngr.fast_from_cam")[0] is False
+    assert strategy.phases[0].ends_when.endswith("200 [0.1 µm] (= 0.02 mm)")

@@ -25,6 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .effective import SIMULATION, AxisValues
+from .units import describe
 
 POSITIVE, NEGATIVE = "positive", "negative"
 
@@ -124,12 +125,13 @@ def _simulation(values: AxisValues, gear: int) -> HomingStrategy:
     direction = _direction(values)
     path, speed = _speed(values, gear, "vb_reflow")
     distance = values.get("antr.simu.rpf_weg_bis_nip")
+    unit = values.parameter("antr.simu.rpf_weg_bis_nip").unit(values.axis_type)
     return HomingStrategy(
         "simulation", "simulated drive: single phase",
         "The drive is simulated: homing runs in one phase without a cam and sets the reference after the "
         "simulated distance to the zero pulse (rpf_weg_bis_nip); the other homing parameters are not used.",
         "cnc", phases=[Phase("to the simulated zero pulse", direction, path, speed,
-                             f"the simulated zero pulse after rpf_weg_bis_nip = {distance}",
+                             f"the simulated zero pulse after rpf_weg_bis_nip = {describe(distance, unit)}",
                              "the manual does not name the speed of this phase; vb_reflow is assumed")],
         gear=gear, with_zero_pulse=True, one_phase=True,
     )
@@ -158,6 +160,7 @@ def _fixed_stop(values: AxisValues, gear: int) -> HomingStrategy:
     direction = POSITIVE if values.get("kenngr.homing.torq_homing_dir") else NEGATIVE
     path, speed = _speed(values, gear, "homing.torq_move_velocity")
     retraction = values.get("kenngr.homing.torq_retraction_distance")
+    unit = values.parameter("kenngr.homing.torq_retraction_distance").unit(values.axis_type)
     return HomingStrategy(
         "fixed_stop", "homing to a fixed stop (TORQ)",
         "The axis moves with limited torque towards a mechanical stop; when the stop is detected, the position "
@@ -167,7 +170,7 @@ def _fixed_stop(values: AxisValues, gear: int) -> HomingStrategy:
             Phase("to the fixed stop", direction, path, speed,
                   "the stop is detected (after torq_min_distance; abort after torq_max_distance)"),
             Phase("retract from the stop", _opposite(direction), path, speed,
-                  f"torq_retraction_distance = {retraction} travelled"),
+                  f"torq_retraction_distance = {describe(retraction, unit)} is travelled"),
         ],
         gear=gear,
     )
@@ -283,6 +286,8 @@ def effectiveness(strategy: HomingStrategy, values: AxisValues, path: str) -> tu
         return strategy.controlled_by != "drive", "decides how the reference position is applied"
     if strategy.id in _NO_MOVE:
         return False, _NO_MOVE[strategy.id]
+    if generic == "getriebe[i].vb_not_referenced":
+        return True, "caps every move of the axis while it is not homed (also the homing speeds)"
     if strategy.controlled_by == "drive":
         if generic == "getriebe[i].pos_refpkt":
             return bool(values.get("kenngr.write_reference_position_to_drive")), "sent to the drive only with write_reference_position_to_drive = 1"
@@ -294,14 +299,16 @@ def effectiveness(strategy: HomingStrategy, values: AxisValues, path: str) -> tu
             if generic == "kenngr.homing.torq_distance_to_block":
                 return values.drive_type == SIMULATION, "distance to the simulated stop, simulated drives only"
             return True, "parameter of homing to a fixed stop"
-        if generic in ("getriebe[i].vb_not_referenced", "getriebe[i].a_ref", "getriebe[i].tr_ref"):
-            return generic == "getriebe[i].vb_not_referenced", "fixed-stop homing uses its own speed and acceleration"
+        if generic in ("getriebe[i].a_ref", "getriebe[i].tr_ref"):
+            return False, "fixed-stop homing uses its own speed and acceleration"
         return False, "fixed-stop homing uses only the torq_* parameters"
     if generic in _TORQ:
         return False, "only used by fixed-stop homing (TORQ)"
     if strategy.id == "simulation":
         if generic in ("antr.simu.rpf_weg_bis_nip", "getriebe[i].pos_refpkt"):
             return True, "simulated homing: distance to the zero pulse and reference position"
+        if generic in ("kenngr.ref_richt", "getriebe[i].vb_reflow"):
+            return True, "direction / speed of the simulated move (assumed: the manual names only rpf_weg_bis_nip)"
         return False, "simulated drives home in one phase over rpf_weg_bis_nip; other homing parameters are ignored (§3.4)"
     if generic == "antr.simu.rpf_weg_bis_nip":
         return False, "only used by simulated drives"

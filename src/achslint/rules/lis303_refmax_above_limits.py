@@ -7,9 +7,10 @@ are not yet homed (`vb_not_referenced`, when it is set).
 
 Why
 ---
-The range of P-AXIS-00219 ends at P-AXIS-00212, and the CNC caps vb_refmax at
-vb_not_referenced with warning P-ERR-110421. Either way the axis does not
-home at the speed written in the list.
+The range of P-AXIS-00219 ends at P-AXIS-00212 (an error). Above
+vb_not_referenced the CNC caps vb_refmax and warns with P-ERR-110421, so that
+case is reported as a warning. Either way the axis does not home at the speed
+written in the list.
 
 Example
 -------
@@ -31,6 +32,8 @@ P-AXIS-00219 range (P-AXIS-00218 ≤ vb_refmax ≤ P-AXIS-00212); P-AXIS-00268; 
 """
 
 from __future__ import annotations
+
+from ..diagnostics import Severity
 
 CODE = "LIS303"
 NAME = "refmax-above-limits"
@@ -57,5 +60,5 @@ def check(ctx):
                 CODE,
                 f"gear stage {gear}: fast homing speed {ctx.show(fast)} is above the limit for unreferenced axes "
                 f"{ctx.show(unref)}; the CNC caps it (P-ERR-110421), lower vb_refmax",
-                [fast, unref],
+                [fast, unref], severity=Severity.WARNING,
             )
