@@ -127,3 +127,12 @@ def test_statistics(cli):
     bad = FIXTURES / "rules" / "LIS205" / "bad.lis"
     out = cli("lint", str(bad), "--format", "concise", "--statistics").stdout.decode()
     assert "     5  LIS205  bad-reference" in out
+
+
+def test_cycle_time_and_tolerance_options_drive_lis403(cli):
+    bad = FIXTURES / "rules" / "LIS403" / "bad.lis"  # vb_reflow 100000 µm/s
+    assert "LIS403" in cli("lint", str(bad), "--format", "concise").stdout.decode()
+    relaxed = cli("lint", str(bad), "--format", "concise", "--repeatability-tolerance-um", "150")
+    assert "LIS403" not in relaxed.stdout.decode()
+    slower = cli("lint", str(bad), "--format", "concise", "--repeatability-tolerance-um", "150", "--cycle-time-us", "2000")
+    assert "about 200 µm" in slower.stdout.decode()

@@ -20,6 +20,8 @@ class LintRequest:
     unknown_parameters: str = "warn"
     include: str = "achsmds*.lis"
     stdin_filename: str | None = None
+    cycle_time_us: int = 1000
+    repeatability_tolerance_um: float = 20.0
 
     @property
     def selection(self) -> Selection:
@@ -27,7 +29,11 @@ class LintRequest:
 
     @property
     def options(self) -> Options:
-        return Options(unknown_parameters=self.unknown_parameters)
+        return Options(
+            unknown_parameters=self.unknown_parameters,
+            cycle_time_us=self.cycle_time_us,
+            repeatability_tolerance_um=self.repeatability_tolerance_um,
+        )
 
 
 @dataclass

@@ -101,6 +101,8 @@ def lint(
     exit_zero: bool = typer.Option(False, "--exit-zero", help="Exit 0 even when diagnostics are found."),
     unknown_parameters: UnknownParameters = typer.Option(UnknownParameters.warn, "--unknown-parameters", help="How to report unknown parameter names."),
     include: str = typer.Option("achsmds*.lis", "--include", help="File name pattern used when searching directories."),
+    cycle_time_us: int = typer.Option(1000, "--cycle-time-us", min=1, help="CNC cycle time in µs (for LIS403)."),
+    repeatability_tolerance_um: float = typer.Option(20.0, "--repeatability-tolerance-um", min=0.0, help="Required homing repeatability in µm (for LIS403)."),
     stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name to report for input read from -."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the full output (honours NO_COLOR and FORCE_COLOR)."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing; only the exit code tells the result."),
@@ -117,6 +119,8 @@ def lint(
         ignore=_codes(ignore),
         unknown_parameters=unknown_parameters.value,
         include=include,
+        cycle_time_us=cycle_time_us,
+        repeatability_tolerance_um=repeatability_tolerance_um,
         stdin_filename=stdin_filename,
     )
     fmt = output_format.value if output_format else ("full" if sys.stdout.isatty() else "concise")
