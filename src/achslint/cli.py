@@ -31,6 +31,10 @@ class OutputFormat(str, Enum):
     full = "full"
     concise = "concise"
     json = "json"
+    sarif = "sarif"
+    github = "github"
+    gitlab = "gitlab"
+    junit = "junit"
 
 
 class FailOn(str, Enum):
@@ -63,7 +67,13 @@ def _fail(message: str) -> None:
 def _codes(values: Optional[List[str]]) -> list[str]:
     codes: list[str] = []
     for value in values or []:
-        codes.extend(part.strip().upper() for part in value.split(",") if part.strip())
+        for part in value.split(","):
+            code = part.strip().upper()
+            if not code:
+                continue
+            if not (code == "ALL" or (code.startswith("LIS") and code[3:].isdigit())):
+                raise UsageError(f"{part.strip()!r} is not a rule code or prefix (such as LIS2 or LIS202)")
+            codes.append(code)
     return codes
 
 
@@ -90,20 +100,28 @@ def main_callback(
     """achslint: the linter for CNC axis parameter lists."""
 
 
+def _default_format(stream) -> str:
+    if os.environ.get("GITHUB_ACTIONS") == "true":
+        return "github"
+    return "full" if stream.isatty() else "concise"
+
+
 @app.command()
 def lint(
     paths: List[str] = typer.Argument(..., help="Files, directories (searched recursively) or - for standard input."),
-    output_format: Optional[OutputFormat] = typer.Option(None, "--format", "--output-format", help="Output format (default: full on a terminal, concise otherwise)."),
+    output_format: Optional[OutputFormat] = typer.Option(None, "--format", "--output-format", help="Output format (default: github under GitHub Actions, full on a terminal, concise otherwise)."),
+    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
     select: Optional[List[str]] = typer.Option(None, "--select", help="Only these rule codes or prefixes (comma-separated, e.g. LIS1,LIS202)."),
     extend_select: Optional[List[str]] = typer.Option(None, "--extend-select", help="Add rule codes or prefixes to the selection."),
     ignore: Optional[List[str]] = typer.Option(None, "--ignore", help="Skip these rule codes or prefixes."),
-    fail_on: FailOn = typer.Option(FailOn.error, "--fail-on", help="Lowest severity that makes the exit code 1."),
+    fail_on: Optional[FailOn] = typer.Option(None, "--fail-on", help="Lowest severity that makes the exit code 1 (default: error)."),
     exit_zero: bool = typer.Option(False, "--exit-zero", help="Exit 0 even when diagnostics are found."),
-    unknown_parameters: UnknownParameters = typer.Option(UnknownParameters.warn, "--unknown-parameters", help="How to report unknown parameter names."),
-    include: str = typer.Option("achsmds*.lis", "--include", help="File name pattern used when searching directories."),
-    cycle_time_us: int = typer.Option(1000, "--cycle-time-us", min=1, help="CNC cycle time in µs (for LIS403)."),
-    repeatability_tolerance_um: float = typer.Option(20.0, "--repeatability-tolerance-um", min=0.0, help="Required homing repeatability in µm (for LIS403)."),
-    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name to report for input read from -."),
+    unknown_parameters: Optional[UnknownParameters] = typer.Option(None, "--unknown-parameters", help="How to report unknown parameter names (default: warn)."),
+    include: Optional[str] = typer.Option(None, "--include", help="File name pattern used when searching directories (default: achsmds*.lis)."),
+    cycle_time_us: Optional[int] = typer.Option(None, "--cycle-time-us", min=1, help="CNC cycle time in µs (for LIS403; default 1000)."),
+    repeatability_tolerance_um: Optional[float] = typer.Option(None, "--repeatability-tolerance-um", min=0.0, help="Required homing repeatability in µm (for LIS403; default 20)."),
+    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name to report (and to find the configuration) for input read from -."),
+    jobs: Optional[int] = typer.Option(None, "--jobs", "-j", min=1, help="Worker processes (default: all cores)."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the full output (honours NO_COLOR and FORCE_COLOR)."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing; only the exit code tells the result."),
     statistics: bool = typer.Option(False, "--statistics", help="Print the number of diagnostics per rule code."),
@@ -111,22 +129,27 @@ def lint(
 ) -> None:
     """Lint axis parameter lists."""
     from .api import LintRequest, run_lint
+    from .config import ConfigError, Overrides
 
-    request = LintRequest(
-        paths=paths,
-        select=_codes(select) or None,
-        extend_select=_codes(extend_select),
-        ignore=_codes(ignore),
-        unknown_parameters=unknown_parameters.value,
-        include=include,
-        cycle_time_us=cycle_time_us,
-        repeatability_tolerance_um=repeatability_tolerance_um,
-        stdin_filename=stdin_filename,
-    )
-    fmt = output_format.value if output_format else ("full" if sys.stdout.isatty() else "concise")
     try:
-        outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None)
+        overrides = Overrides(
+            select=_codes(select) or None,
+            extend_select=_codes(extend_select),
+            ignore=_codes(ignore),
+            fail_on=fail_on.value if fail_on else None,
+            unknown_parameters=unknown_parameters.value if unknown_parameters else None,
+            cycle_time_us=cycle_time_us,
+            repeatability_tolerance_um=repeatability_tolerance_um,
+            include=include,
+        )
     except UsageError as exc:
+        _fail(str(exc))
+    request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs)
+    fmt = output_format.value if output_format else _default_format(sys.stdout)
+    try:
+        with _progress(quiet) as progress:
+            outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
+    except ConfigError as exc:
         _fail(str(exc))
     for message in outcome.errors:
         typer.echo(f"achslint: {message}", err=True)
@@ -140,9 +163,42 @@ def lint(
         raise typer.Exit(EXIT_ERROR)
     from .diagnostics import Severity
 
-    threshold = Severity(fail_on.value).rank
+    threshold = Severity(outcome.fail_on).rank
     failing = any(d.severity.rank >= threshold for r in outcome.results for d in r.diagnostics)
     raise typer.Exit(EXIT_FINDINGS if failing and not exit_zero else EXIT_OK)
+
+
+class _progress:
+    """A rich progress bar on stderr for long runs on a terminal; otherwise nothing."""
+
+    MIN_FILES = 50
+
+    def __init__(self, quiet: bool):
+        self.enabled = not quiet and sys.stderr.isatty()
+        self.bar = None
+        self.task = None
+
+    def __enter__(self):
+        return self.advance if self.enabled else None
+
+    def advance(self, total: int) -> None:
+        if self.bar is None:
+            if total < self.MIN_FILES:
+                self.enabled = False
+                return
+            from rich.progress import Progress
+
+            from rich.console import Console
+
+            self.bar = Progress(console=Console(stderr=True), transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task("linting", total=total)
+        self.bar.advance(self.task)
+
+    def __exit__(self, *exc):
+        if self.bar is not None:
+            self.bar.stop()
+        return False
 
 
 def _print_statistics(results) -> None:
@@ -228,6 +284,28 @@ def explain(
 
     use = _use_color(color, sys.stdout)
     render(report, Console(force_terminal=use, no_color=not use, highlight=False, width=160 if not sys.stdout.isatty() else None))
+
+
+@app.command("config")
+def config_command(
+    show: bool = typer.Option(False, "--show", help="Print the resolved settings."),
+    path: str = typer.Argument(".", help="File or folder whose configuration is shown."),
+    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
+) -> None:
+    """Show the configuration that applies to a path."""
+    import json
+    from pathlib import Path
+
+    from .config import ConfigError, discover, load_file
+
+    if not show:
+        _fail("nothing to do; use `achslint config --show [PATH]`")
+    try:
+        resolved = load_file(Path(config)) if config else discover(Path(path))
+    except ConfigError as exc:
+        _fail(str(exc))
+    typer.echo(f"# configuration: {resolved.path or 'built-in defaults'}")
+    typer.echo(json.dumps(resolved.settings.model_dump(by_alias=True), indent=2, ensure_ascii=False))
 
 
 @app.command()

@@ -1,10 +1,15 @@
-"""The lint engine: one readable loop from bytes to sorted diagnostics."""
+"""The lint engine: one readable loop from bytes to sorted diagnostics.
+
+    parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
+          -> rules about suppressions (LIS009) -> sort
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from . import suppression
 from .context import Context, Options
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
@@ -28,6 +33,15 @@ class Selection:
 
 
 @dataclass
+class FileSettings:
+    """Everything that decides what is reported for one file."""
+
+    selection: Selection = field(default_factory=Selection)
+    options: Options = field(default_factory=Options)
+    severity: dict[str, str] = field(default_factory=dict)  # code -> severity override
+
+
+@dataclass
 class FileResult:
     name: str
     diagnostics: list[Diagnostic]
@@ -35,39 +49,47 @@ class FileResult:
     source_lines: list[str] = field(default_factory=list)  # kept for code frames when there are findings
 
 
-def check_bytes(data: bytes, name: str, selection: Selection | None = None, options: Options | None = None) -> FileResult:
+def check_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> FileResult:
     """Lint the bytes of one list; unreadable input becomes a result with `error` set."""
+    settings = settings or FileSettings()
     try:
         file = parse_bytes(data, name)
     except UnreadableInput as exc:
         return FileResult(name, [], f"{name}: {exc}")
-    ctx = Context(name, file, options or Options())
-    selection = selection or Selection()
+    ctx = Context(name, file, settings.options)
+    enabled = settings.selection.enabled
+    rules = registry()
     diagnostics: list[Diagnostic] = []
-    for code, rule in registry().items():
-        if selection.enabled(code):
+    for code, rule in rules.items():
+        if rule.check is not None and enabled(code):
             diagnostics.extend(rule.check(ctx))
+    directives = suppression.directives(file)
+    if directives:
+        diagnostics = suppression.apply(diagnostics, directives)
+    for code, rule in rules.items():
+        if rule.check_after is not None and enabled(code):
+            diagnostics.extend(rule.check_after(ctx, directives, enabled))
+    for diagnostic in diagnostics:
+        override = settings.severity.get(diagnostic.code)
+        if override:
+            diagnostic.severity = Severity(override)
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = [line.body for line in file.lines] if diagnostics else []
     return FileResult(name, diagnostics, None, lines)
 
 
-def lint_bytes(data: bytes, name: str, selection: Selection | None = None, options: Options | None = None) -> list[Diagnostic]:
+def lint_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
     """Diagnostics for the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
-    result = check_bytes(data, name, selection, options)
+    result = check_bytes(data, name, settings)
     if result.error:
         raise UnreadableInput(result.error)
     return result.diagnostics
 
 
-def lint_path(path: Path, name: str | None = None, selection: Selection | None = None, options: Options | None = None) -> FileResult:
+def lint_path(path: Path, name: str | None = None, settings: FileSettings | None = None) -> FileResult:
     display = name or str(path)
     try:
         data = path.read_bytes()
     except OSError as exc:
         return FileResult(display, [], f"cannot read {display}: {exc.strerror or exc}")
-    return check_bytes(data, display, selection, options)
-
-
-def worst(diagnostics: list[Diagnostic]) -> Severity | None:
-    return max((d.severity for d in diagnostics), key=lambda s: s.rank, default=None)
+    return check_bytes(data, display, settings)

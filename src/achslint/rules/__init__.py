@@ -3,7 +3,9 @@
 A rule is a module with `CODE`, `NAME`, `SEVERITY`, `FIX` ("none", "safe",
 "unsafe" or "sometimes"), `SUMMARY`, a docstring with the sections
 What / Why / Example / Use instead / Reference, and a `check(ctx)` generator
-of diagnostics. `achslint rule CODE` prints that docstring.
+of diagnostics — or, for rules about the other rules' results (LIS009), a
+`check_after(ctx, directives, enabled)` generator that runs after
+suppressions were applied. `achslint rule CODE` prints that docstring.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ RULE_MODULES = (
     "lis006_byte_order_mark",
     "lis007_text_after_string",
     "lis008_mixed_style",
+    "lis009_unused_noqa",
     "lis101_unknown_parameter",
     "lis102_old_syntax",
     "lis103_alias_conflict",
@@ -70,9 +73,10 @@ class Rule:
     fix: str
     summary: str
     doc: str
-    check: Callable
+    check: Callable | None
     module: ModuleType
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
+    check_after: Callable | None = None
 
     def section(self, title: str) -> str:
         """The text of one docstring section ("What", "Why", ...)."""
@@ -92,9 +96,10 @@ def registry() -> dict[str, Rule]:
             fix=module.FIX,
             summary=module.SUMMARY,
             doc=(module.__doc__ or "").strip(),
-            check=module.check,
+            check=getattr(module, "check", None),
             module=module,
             parameters=tuple(getattr(module, "PARAMETERS", ())),
+            check_after=getattr(module, "check_after", None),
         )
     return rules
 

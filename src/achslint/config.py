@@ -1,0 +1,203 @@
+"""Configuration files: `[tool.achslint]` in pyproject.toml, achslint.toml or .achslint.toml.
+
+The configuration that applies to a list is the nearest one found walking up
+from the list's folder (`.achslint.toml` before `achslint.toml` before a
+pyproject.toml that has a `[tool.achslint]` table); `--config FILE` replaces
+the search. Keys are validated with pydantic: an unknown key or a bad value is
+a configuration error (exit code 2) naming the file and the key.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path, PurePosixPath
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
+SeverityName = Literal["error", "warning", "info"]
+
+
+class ConfigError(Exception):
+    """A configuration file that cannot be used (exit code 2)."""
+
+
+def _codes(values: list[str]) -> list[str]:
+    cleaned = []
+    for value in values:
+        code = value.strip().upper()
+        if not code or not (code == "ALL" or (code.startswith("LIS") and code[3:].isdigit())):
+            raise ValueError(f"{value!r} is not a rule code or prefix (such as LIS2 or LIS202)")
+        cleaned.append(code)
+    return cleaned
+
+
+class Settings(BaseModel):
+    """The keys of an achslint configuration (see README, Configuration)."""
+
+    model_config = ConfigDict(extra="forbid", populate_by_name=True, frozen=True)
+
+    select: list[str] | None = None
+    extend_select: list[str] = Field(default_factory=list, alias="extend-select")
+    ignore: list[str] = Field(default_factory=list)
+    per_file_ignores: dict[str, list[str]] = Field(default_factory=dict, alias="per-file-ignores")
+    severity: dict[str, SeverityName] = Field(default_factory=dict)
+    fail_on: SeverityName = Field("error", alias="fail-on")
+    include: list[str] = Field(default_factory=lambda: ["achsmds*.lis"])
+    exclude: list[str] = Field(default_factory=list)
+    unknown_parameters: Literal["warn", "error", "ignore"] = Field("warn", alias="unknown-parameters")
+    cycle_time_us: int = Field(1000, alias="cycle-time-us", gt=0)
+    repeatability_tolerance_um: float = Field(20.0, alias="repeatability-tolerance-um", ge=0)
+    scenario: dict[str, Any] = Field(default_factory=dict, description="Scenario defaults for dry-run.")
+
+    @field_validator("select", "extend_select", "ignore")
+    @classmethod
+    def _check_codes(cls, value):
+        return None if value is None else _codes(value)
+
+    @field_validator("per_file_ignores")
+    @classmethod
+    def _check_per_file(cls, value):
+        return {pattern: _codes(codes) for pattern, codes in value.items()}
+
+    @field_validator("severity")
+    @classmethod
+    def _check_severity_codes(cls, value):
+        return {code: level for code, level in zip(_codes(list(value)), value.values())}
+
+
+@dataclass(frozen=True)
+class ResolvedConfig:
+    """Settings plus the file they came from (None: built-in defaults)."""
+
+    settings: Settings
+    path: Path | None = None
+
+    @property
+    def root(self) -> Path:
+        return self.path.parent if self.path else Path.cwd()
+
+    def relative(self, target: Path) -> str:
+        try:
+            return PurePosixPath(Path(target).resolve().relative_to(self.root.resolve())).as_posix()
+        except ValueError:
+            return PurePosixPath(Path(target)).as_posix()
+
+    def ignored_for(self, target: Path) -> list[str]:
+        """Codes ignored for one file by `per-file-ignores`."""
+        codes: list[str] = []
+        for pattern, ignored in self.settings.per_file_ignores.items():
+            if matches_glob(self.relative(target), pattern):
+                codes.extend(ignored)
+        return codes
+
+    def excluded(self, target: Path) -> bool:
+        return any(matches_glob(self.relative(target), pattern) for pattern in self.settings.exclude)
+
+
+def matches_glob(relative: str, pattern: str) -> bool:
+    """Glob match on the path relative to the config folder; a pattern without `/` also matches any file name."""
+    if fnmatch.fnmatch(relative, pattern):
+        return True
+    if "/" not in pattern:
+        return fnmatch.fnmatch(relative.rsplit("/", 1)[-1], pattern)
+    return fnmatch.fnmatch(relative, pattern.lstrip("./")) or fnmatch.fnmatch(relative, pattern.rstrip("/") + "/*")
+
+
+def _format_error(path: Path, error: ValidationError) -> str:
+    problems = []
+    for item in error.errors():
+        key = ".".join(str(part) for part in item["loc"]) or "(top level)"
+        if item["type"] == "extra_forbidden":
+            allowed = ", ".join(sorted(f.alias or name for name, f in Settings.model_fields.items()))
+            problems.append(f"unknown key `{key}` (known keys: {allowed})")
+        else:
+            problems.append(f"key `{key}`: {item['msg']}")
+    return f"configuration error in {path}: " + "; ".join(problems)
+
+
+def load_file(path: Path) -> ResolvedConfig:
+    """Read one configuration file (pyproject.toml: its [tool.achslint] table)."""
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise ConfigError(f"cannot read configuration {path}: {exc.strerror or exc}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ConfigError(f"configuration {path} is not valid TOML: {exc}") from None
+    if path.name == "pyproject.toml":
+        data = data.get("tool", {}).get("achslint", {})
+    try:
+        return ResolvedConfig(Settings.model_validate(data), path)
+    except ValidationError as exc:
+        raise ConfigError(_format_error(path, exc)) from None
+
+
+def _has_table(pyproject: Path) -> bool:
+    try:
+        return "achslint" in tomllib.loads(pyproject.read_text(encoding="utf-8")).get("tool", {})
+    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
+        return False
+
+
+@lru_cache(maxsize=256)
+def _config_in(folder: Path) -> Path | None:
+    for name in CONFIG_NAMES:
+        candidate = folder / name
+        if candidate.is_file() and (name != "pyproject.toml" or _has_table(candidate)):
+            return candidate
+    return None
+
+
+def discover(start: Path) -> ResolvedConfig:
+    """The nearest configuration above `start` (a file or folder), or the defaults."""
+    folder = start.resolve()
+    if not folder.is_dir():
+        folder = folder.parent
+    for candidate in (folder, *folder.parents):
+        found = _config_in(candidate)
+        if found is not None:
+            return _load_cached(found)
+    return ResolvedConfig(Settings())
+
+
+@lru_cache(maxsize=64)
+def _load_cached(path: Path) -> ResolvedConfig:
+    return load_file(path)
+
+
+@dataclass
+class Overrides:
+    """What the command line says; None means "use the configuration"."""
+
+    select: list[str] | None = None
+    extend_select: list[str] = field(default_factory=list)
+    ignore: list[str] = field(default_factory=list)
+    fail_on: str | None = None
+    unknown_parameters: str | None = None
+    cycle_time_us: int | None = None
+    repeatability_tolerance_um: float | None = None
+    include: str | None = None
+
+    def apply(self, settings: Settings) -> Settings:
+        changes: dict[str, Any] = {}
+        if self.select is not None:
+            changes["select"] = self.select
+        if self.extend_select:
+            changes["extend_select"] = [*settings.extend_select, *self.extend_select]
+        if self.ignore:
+            changes["ignore"] = [*settings.ignore, *self.ignore]
+        for name in ("fail_on", "unknown_parameters", "cycle_time_us", "repeatability_tolerance_um"):
+            value = getattr(self, name)
+            if value is not None:
+                changes[name] = value
+        if self.include is not None:
+            changes["include"] = [self.include]
+        return settings.model_copy(update=changes)

@@ -1,0 +1,42 @@
+"""GitLab Code Quality report (a JSON array of issues with stable fingerprints)."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+
+from ..diagnostics import Severity
+
+SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
+
+
+def fingerprint(path: str, code: str, anchor: str, occurrence: int) -> str:
+    """Stable across unrelated edits: built from the file, the rule, what it is about and the
+    occurrence number of that combination, not from the line number."""
+    return hashlib.sha256(f"{path}\0{code}\0{anchor}\0{occurrence}".encode("utf-8")).hexdigest()
+
+
+def issues(results) -> list[dict]:
+    found = []
+    for result in results:
+        seen: dict[tuple, int] = {}
+        for d in result.diagnostics:
+            source = result.source_lines[d.line - 1].strip() if d.line - 1 < len(result.source_lines) else ""
+            anchor = d.parameter or source
+            key = (d.path, d.code, anchor)
+            seen[key] = seen.get(key, 0) + 1
+            found.append({
+                "type": "issue",
+                "check_name": d.code,
+                "description": f"{d.code} {d.message}",
+                "categories": ["Bug Risk"] if d.severity is Severity.ERROR else ["Style"],
+                "severity": SEVERITIES[d.severity],
+                "fingerprint": fingerprint(d.path, d.code, anchor, seen[key]),
+                "location": {"path": d.path, "lines": {"begin": d.line, "end": d.end_line}},
+            })
+    return found
+
+
+def report(results, stream, **_options) -> None:
+    json.dump(issues(results), stream, ensure_ascii=False, indent=2)
+    stream.write("\n")

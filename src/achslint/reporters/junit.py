@@ -1,0 +1,44 @@
+"""JUnit XML: one test suite per file, one failing test case per diagnostic (Jenkins, GitLab, Azure)."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+
+def document(results) -> ET.Element:
+    root = ET.Element("testsuites", name="achslint")
+    total = failures = 0
+    for result in results:
+        suite = ET.SubElement(root, "testsuite", name=result.name)
+        cases = 0
+        if result.error:
+            case = ET.SubElement(suite, "testcase", classname=result.name, name="read")
+            ET.SubElement(case, "error", message=result.error).text = result.error
+            cases, failed = 1, 1
+        elif not result.diagnostics:
+            ET.SubElement(suite, "testcase", classname=result.name, name="achslint")
+            cases, failed = 1, 0
+        else:
+            failed = 0
+            for d in result.diagnostics:
+                case = ET.SubElement(suite, "testcase", classname=result.name, name=f"{d.code} line {d.line}:{d.column}")
+                failure = ET.SubElement(case, "failure", message=d.message, type=f"{d.code} ({d.severity.value})")
+                failure.text = f"{d.path}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {d.message}"
+                cases += 1
+                failed += 1
+        suite.set("tests", str(cases))
+        suite.set("failures", str(failed if not result.error else 0))
+        suite.set("errors", "1" if result.error else "0")
+        total += cases
+        failures += failed
+    root.set("tests", str(total))
+    root.set("failures", str(failures))
+    return root
+
+
+def report(results, stream, **_options) -> None:
+    root = document(results)
+    ET.indent(root)
+    stream.write('<?xml version="1.0" encoding="UTF-8"?>\n')
+    stream.write(ET.tostring(root, encoding="unicode"))
+    stream.write("\n")

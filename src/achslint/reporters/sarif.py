@@ -1,0 +1,102 @@
+"""SARIF 2.1.0, as GitHub code scanning and other SARIF viewers read it."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path, PurePosixPath
+
+from .. import __version__
+from ..diagnostics import Severity, rule_url
+
+SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
+LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
+
+
+def artifact_uri(path: str) -> str:
+    """A relative path stays relative (resolved against the checkout by viewers); absolute ones become file URIs."""
+    if path.startswith("<"):
+        return PurePosixPath(path.strip("<>")).as_posix()
+    candidate = Path(path)
+    return candidate.as_uri() if candidate.is_absolute() else PurePosixPath(*candidate.parts).as_posix()
+
+
+def _region(line: int, column: int, end_line: int, end_column: int) -> dict:
+    return {"startLine": line, "startColumn": column, "endLine": end_line, "endColumn": max(end_column, column)}
+
+
+def _rules() -> list[dict]:
+    from ..docs import rule_text
+    from ..rules import registry
+
+    rules = []
+    for rule in registry().values():
+        rules.append({
+            "id": rule.code,
+            "name": rule.name,
+            "shortDescription": {"text": rule.summary},
+            "fullDescription": {"text": rule.section("What") or rule.summary},
+            "help": {"text": rule_text(rule), "markdown": rule_text(rule)},
+            "helpUri": rule_url(rule.code),
+            "defaultConfiguration": {"level": LEVELS[rule.severity]},
+            "properties": {"fix": rule.fix},
+        })
+    return rules
+
+
+def document(results) -> dict:
+    rules = _rules()
+    index = {rule["id"]: position for position, rule in enumerate(rules)}
+    sarif_results = []
+    for result in results:
+        for d in result.diagnostics:
+            entry = {
+                "ruleId": d.code,
+                "ruleIndex": index.get(d.code, -1),
+                "level": LEVELS[d.severity],
+                "message": {"text": d.message},
+                "locations": [{
+                    "physicalLocation": {
+                        "artifactLocation": {"uri": artifact_uri(d.path)},
+                        "region": _region(d.line, d.column, d.end_line, d.end_column),
+                    },
+                    **({"logicalLocations": [{"name": d.parameter, "kind": "variable"}]} if d.parameter else {}),
+                }],
+            }
+            if d.related:
+                entry["relatedLocations"] = [
+                    {
+                        "id": number,
+                        "physicalLocation": {
+                            "artifactLocation": {"uri": artifact_uri(r.path)},
+                            "region": {"startLine": r.line, "startColumn": r.column},
+                        },
+                        "message": {"text": r.message or (r.parameter or "related")},
+                    }
+                    for number, r in enumerate(d.related, 1)
+                ]
+            if d.p_axis:
+                entry["properties"] = {"p_axis": d.p_axis}
+            sarif_results.append(entry)
+    invocation = {"executionSuccessful": not any(r.error for r in results)}
+    notifications = [{"level": "error", "message": {"text": r.error}} for r in results if r.error]
+    if notifications:
+        invocation["toolExecutionNotifications"] = notifications
+    return {
+        "$schema": SCHEMA,
+        "version": "2.1.0",
+        "runs": [{
+            "tool": {"driver": {
+                "name": "achslint",
+                "version": __version__,
+                "informationUri": "https://pypi.org/project/achslint/",
+                "rules": rules,
+            }},
+            "invocations": [invocation],
+            "results": sarif_results,
+        }],
+    }
+
+
+def report(results, stream, **_options) -> None:
+    json.dump(document(results), stream, ensure_ascii=False, indent=2)
+    stream.write("\n")

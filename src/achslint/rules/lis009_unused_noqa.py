@@ -1,0 +1,56 @@
+"""
+What
+----
+A `noqa` suppression that suppresses nothing: an end-of-line `# noqa: CODE`
+on a line without such a diagnostic, or a file-level `# achslint: noqa: CODE`
+in a file without one. Codes of rules that are not selected in this run are
+not counted as unused.
+
+Why
+---
+Stale suppressions hide the next real problem on that line and make readers
+think something is wrong there. Remove them once the finding is fixed.
+
+Example
+-------
+```
+getriebe[0].vb_refmax        80000     ( noqa: LIS303
+```
+(when vb_refmax is below vb_max, nothing is suppressed)
+
+Use instead
+-----------
+```
+getriebe[0].vb_refmax        80000
+```
+
+Reference
+---------
+achslint suppression comments (README, Suppressions).
+"""
+
+from __future__ import annotations
+
+CODE = "LIS009"
+NAME = "unused-noqa"
+SEVERITY = "warning"
+FIX = "none"
+SUMMARY = "Suppression comment that suppresses nothing"
+
+
+def check_after(ctx, directives, enabled):
+    """Runs after the other rules and the suppressions, with every `noqa` directive of the file."""
+    for directive in directives:
+        if directive.codes is None:
+            if not directive.used:
+                yield _report(ctx, directive, "this `noqa` suppresses no diagnostic; remove it")
+            continue
+        unused = [code for code in directive.codes if code not in directive.used and enabled(code)]
+        if unused:
+            where = "in this file" if directive.file_level else "on this line"
+            yield _report(ctx, directive, f"`noqa` for {', '.join(unused)} suppresses nothing {where}; remove "
+                                          f"{'it' if len(unused) == len(directive.codes) else 'those codes'}")
+
+
+def _report(ctx, directive, message):
+    return ctx.report(CODE, directive.line, message, column=directive.column, end_column=directive.end_column)

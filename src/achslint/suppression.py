@@ -1,0 +1,79 @@
+"""`# noqa` suppressions in lists.
+
+* End of line: `# noqa: LIS302` or `# noqa: LIS302, LIS303` after a value, also
+  inside a `(` comment (`( fast cam search  noqa: LIS303`); a bare `noqa`
+  suppresses every diagnostic on that line.
+* File level: a comment line `# achslint: noqa: LIS401` suppresses the codes in
+  the whole file; `# achslint: noqa` alone suppresses everything.
+
+Each directive remembers what it suppressed, so directives that suppress
+nothing can be reported (LIS009).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from . import syntax
+
+_CODES = r"(?P<codes>[A-Za-z]+[0-9]+(?:\s*,\s*[A-Za-z]+[0-9]+)*)"
+LINE_NOQA = re.compile(rf"(?<![\w:])noqa(?::\s*{_CODES})?", re.IGNORECASE)
+FILE_NOQA = re.compile(rf"^#\s*achslint:\s*noqa(?::\s*{_CODES})?\s*$", re.IGNORECASE)
+
+
+@dataclass
+class Directive:
+    line: syntax.Line
+    column: int
+    end_column: int
+    codes: list[str] | None  # None: every code
+    file_level: bool = False
+    used: set[str] = field(default_factory=set)
+
+    def covers(self, code: str) -> bool:
+        return self.codes is None or code in self.codes
+
+
+def _codes(match: re.Match) -> list[str] | None:
+    text = match.group("codes")
+    return None if text is None else [c.strip().upper() for c in text.split(",")]
+
+
+def directives(file: syntax.ListFile) -> list[Directive]:
+    found = []
+    for line in file.lines:
+        if line.kind == syntax.COMMENT:
+            match = FILE_NOQA.match((line.comment or "").strip())
+            if match:
+                start = line.path_column
+                found.append(Directive(line, start, line.end_column, _codes(match), file_level=True))
+            continue
+        if line.kind == syntax.ASSIGNMENT:
+            trailing = line.rest or ""
+            offset = line.rest_column
+            if line.rest is None and (line.value or "").startswith(("#", "(")):
+                trailing, offset = line.value + line.sep2, line.value_column  # `name  # noqa` without a value
+            match = LINE_NOQA.search(trailing)
+            if match:
+                found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
+    return found
+
+
+def apply(diagnostics: list, found: list[Directive]) -> list:
+    """Drop suppressed diagnostics, recording on each directive which codes it used."""
+    by_line: dict[int, list[Directive]] = {}
+    file_level = [d for d in found if d.file_level]
+    for directive in found:
+        if not directive.file_level:
+            by_line.setdefault(directive.line.number, []).append(directive)
+    kept = []
+    for diagnostic in diagnostics:
+        suppressor = next((d for d in by_line.get(diagnostic.line, ()) if d.covers(diagnostic.code)), None)
+        if suppressor is None:
+            suppressor = next((d for d in file_level if d.covers(diagnostic.code)), None)
+        if suppressor is None:
+            kept.append(diagnostic)
+        else:
+            suppressor.used.add(diagnostic.code)
+    return kept
