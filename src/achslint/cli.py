@@ -286,6 +286,93 @@ def explain(
     render(report, Console(force_terminal=use, no_color=not use, highlight=False, width=160 if not sys.stdout.isatty() else None))
 
 
+def _pair(text: Optional[str], name: str):
+    if text is None:
+        return None
+    try:
+        low, high = (float(part) for part in text.split(","))
+    except ValueError:
+        raise UsageError(f"{name} takes two numbers separated by a comma, e.g. -120,-100") from None
+    return (low, high)
+
+
+@app.command("dry-run")
+def dry_run_command(
+    file: str = typer.Argument(..., help="The axis list to simulate."),
+    scenario: Optional[str] = typer.Option(None, "--scenario", help="Scenario TOML (human units: mm or degrees, seconds)."),
+    output_format: ExplainFormat = typer.Option(ExplainFormat.text, "--format", "--output-format", help="text or json."),
+    gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing parameters are used."),
+    start: Optional[float] = typer.Option(None, "--start", help="Start position (overrides the scenario)."),
+    cam: Optional[str] = typer.Option(None, "--cam", help="Reference cam zone FROM,TO."),
+    zero_pulse_period: Optional[float] = typer.Option(None, "--zero-pulse-period", help="Travel per encoder revolution."),
+    zero_pulse_phase: Optional[float] = typer.Option(None, "--zero-pulse-phase", help="Position of one zero pulse."),
+    latch: Optional[bool] = typer.Option(None, "--latch/--no-latch", help="Whether a hardware latch captures the zero pulse."),
+    cycle_time_ms: Optional[float] = typer.Option(None, "--cycle-time-ms", help="CNC cycle time in ms."),
+    limit_switches: Optional[str] = typer.Option(None, "--limit-switches", help="Hardware limit switch positions NEG,POS."),
+    fixed_stop: Optional[float] = typer.Option(None, "--fixed-stop", help="Position of the mechanical stop (TORQ)."),
+    cam_jitter: Optional[float] = typer.Option(None, "--cam-jitter", help="Spread of the cam edge, for --sweep and LIS405."),
+    sweep_runs: int = typer.Option(0, "--sweep", min=0, help="Simulate N start positions and cam jitters and report the spread."),
+    plot: Optional[str] = typer.Option(None, "--plot", help="Write position and velocity over time to a PNG or SVG file."),
+    color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+) -> None:
+    """Simulate the configured homing before a real axis moves."""
+    import json
+    from pathlib import Path
+
+    from .decode import UnreadableInput
+    from .dryrun import dry_run, render, sweep, trace_json
+    from .scenario import ScenarioError, ScenarioInput, parse_input, read_scenario
+
+    path = Path(file)
+    try:
+        given = read_scenario(Path(scenario)) if scenario else ScenarioInput()
+        options = {
+            "start_position": start, "cam": _pair(cam, "--cam"), "zero_pulse_period": zero_pulse_period,
+            "zero_pulse_phase": zero_pulse_phase, "hardware_latch": latch, "cycle_time_ms": cycle_time_ms,
+            "limit_switches": _pair(limit_switches, "--limit-switches"), "fixed_stop": fixed_stop, "cam_jitter": cam_jitter,
+        }
+        merged = {**given.model_dump(exclude_none=True), **{k: v for k, v in options.items() if v is not None}}
+        given = parse_input(merged, "command-line scenario")
+        run = dry_run(path.read_bytes(), file, given, gear=gear)
+    except (ScenarioError, UsageError, UnreadableInput) as exc:
+        _fail(str(exc))
+    except OSError as exc:
+        _fail(f"cannot read {file}: {exc.strerror or exc}")
+    if plot:
+        from .plot import PlotUnavailable, plot_trace
+
+        try:
+            plot_trace(run.trace, plot)
+        except PlotUnavailable as exc:
+            _fail(str(exc))
+    summary = sweep(run.simulator, sweep_runs) if sweep_runs else None
+    if output_format == ExplainFormat.json:
+        document = trace_json(run)
+        if summary is not None:
+            document["sweep"] = summary
+        typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
+    else:
+        from rich.console import Console
+
+        use = _use_color(color, sys.stdout)
+        console = Console(force_terminal=use, no_color=not use, highlight=False, width=160 if not sys.stdout.isatty() else None)
+        render(run, console)
+        if summary is not None:
+            console.print(_sweep_words(summary))
+    raise typer.Exit(EXIT_FINDINGS if run.trace.outcome == "failed" else EXIT_OK)
+
+
+def _sweep_words(summary: dict) -> str:
+    unit = summary["unit"]
+    outcomes = ", ".join(f"{count} {name}" for name, count in sorted(summary["outcomes"].items()))
+    text = f"Sweep of {summary['runs']} runs: {outcomes}."
+    if "spread" in summary:
+        text += (f" Reference between {summary['reference_min']:.4f} and {summary['reference_max']:.4f} {unit} "
+                 f"(spread {summary['spread']:.4g} {unit}); {summary['distinct_pulses']} distinct zero pulse(s), "
+                 f"{summary['one_revolution_jumps']} run(s) jumped by one or more encoder revolutions.")
+    return text
+
+
 @app.command("config")
 def config_command(
     show: bool = typer.Option(False, "--show", help="Print the resolved settings."),

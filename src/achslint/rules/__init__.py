@@ -56,6 +56,7 @@ RULE_MODULES = (
     "lis314_spindle_homing",
     "lis315_fixed_stop_setup",
     "lis316_gantry_slave_no_homing",
+    "lis317_homing_ends_outside_limits",
     "lis401_parameter_without_effect",
     "lis402_one_phase_with_cam",
     "lis403_cam_edge_repeatability",

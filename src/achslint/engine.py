@@ -1,0 +1,476 @@
+"""The dry-run engine: homing simulated analytically, segment by segment.
+
+Every move starts from rest, accelerates with constant acceleration to its
+speed, may cruise, and brakes with the same acceleration once the event that
+ends it was detected. Positions of events follow from the motion equations in
+closed form (no time-stepping loop); a signal without hardware latch is seen at
+the next CNC cycle (error at most v·T), a latched zero pulse exactly. After the
+reference event the axis brakes, so it stands beyond the reference by the
+braking distance v²/2a (TF5200 homing manual §2: "Axis position after homing").
+
+Units: mm (degrees for rotary axes and spindles) and seconds. Positions in the
+trace are in the scenario's frame (the actual values before homing);
+`final_position` is in the homed frame, where the reference event gets the
+value `pos_refpkt` (or `torq_homing_position`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from .effective import AxisValues
+from .rules.lis404_homing_acceleration_fallback import homing_acceleration
+from .scenario import Scenario
+from .strategy import HomingStrategy
+
+INF = math.inf
+POSITION = 1e-4  # 0.1 µm or 0.0001° per list unit
+VELOCITY = 1e-3  # µm/s -> mm/s, 0.001°/s -> °/s
+
+
+@dataclass(slots=True)
+class Segment:
+    """A piece of motion with constant acceleration: x(t) = x0 + v0 (t - t0) + a (t - t0)² / 2."""
+
+    t0: float
+    t1: float
+    x0: float
+    v0: float
+    a: float
+
+    def position(self, t: float) -> float:
+        dt = t - self.t0
+        return self.x0 + self.v0 * dt + 0.5 * self.a * dt * dt
+
+    def velocity(self, t: float) -> float:
+        return self.v0 + self.a * (t - self.t0)
+
+
+@dataclass
+class PhaseRecord:
+    name: str
+    direction: str | None
+    velocity: float  # commanded speed, mm/s or °/s
+    start_position: float
+    end_position: float
+    start_time: float
+    end_time: float
+    ended_by: str
+    segments: list[Segment] = field(default_factory=list)
+
+
+@dataclass
+class Event:
+    time: float
+    position: float
+    kind: str
+
+
+@dataclass
+class Trace:
+    strategy: HomingStrategy
+    scenario: Scenario
+    unit: str  # "mm" or "deg"
+    acceleration: float
+    phases: list[PhaseRecord] = field(default_factory=list)
+    events: list[Event] = field(default_factory=list)
+    reference: dict | None = None  # kind, position (scenario frame), value (homed frame)
+    final_position: float | None = None  # homed frame
+    outcome: str = "homed"
+    failure: str | None = None
+    warnings: list[dict] = field(default_factory=list)
+
+    @property
+    def total_time(self) -> float:
+        return self.phases[-1].end_time if self.phases else 0.0
+
+    @property
+    def total_distance(self) -> float:
+        return sum(abs(p.end_position - p.start_position) for p in self.phases)
+
+    def warn(self, code: str | None, message: str) -> None:
+        self.warnings.append({"code": code, "message": message})
+
+
+class _Ramp:
+    """A move from rest at (t0, x0) in direction s with speed v and acceleration a, until it is stopped."""
+
+    __slots__ = ("t0", "x0", "s", "v", "a", "t_acc", "d_acc")
+
+    def __init__(self, t0: float, x0: float, s: int, v: float, a: float):
+        self.t0, self.x0, self.s, self.v, self.a = t0, x0, s, v, a
+        self.t_acc = v / a
+        self.d_acc = v * v / (2 * a)
+
+    def time_to(self, distance: float) -> float:
+        """Time after t0 at which the axis has travelled `distance` (≥ 0)."""
+        if distance <= self.d_acc:
+            return math.sqrt(2 * distance / self.a)
+        return self.t_acc + (distance - self.d_acc) / self.v
+
+    def distance_at(self, t: float) -> float:
+        if t <= self.t_acc:
+            return 0.5 * self.a * t * t
+        return self.d_acc + self.v * (t - self.t_acc)
+
+    def speed_at(self, t: float) -> float:
+        return min(self.a * t, self.v)
+
+    def stop(self, t_brake: float) -> tuple[list[Segment], float, float]:
+        """Brake from time t0 + t_brake; returns the segments, the end time and the end position."""
+        s, a, t0, x0 = self.s, self.a, self.t0, self.x0
+        segments = []
+        accel_end = min(t_brake, self.t_acc)
+        segments.append(Segment(t0, t0 + accel_end, x0, 0.0, s * a))
+        if t_brake > self.t_acc:
+            segments.append(Segment(t0 + self.t_acc, t0 + t_brake, x0 + s * self.d_acc, s * self.v, 0.0))
+        speed = self.speed_at(t_brake)
+        x_brake = x0 + s * self.distance_at(t_brake)
+        t_end = t0 + t_brake + speed / a
+        segments.append(Segment(t0 + t_brake, t_end, x_brake, s * speed, -s * a))
+        return segments, t_end, x_brake + s * speed * speed / (2 * a)
+
+
+class Simulator:
+    """Simulates one axis's configured homing in a scenario."""
+
+    def __init__(self, values: AxisValues, strategy: HomingStrategy, scenario: Scenario):
+        self.values = values
+        self.strategy = strategy
+        self.scenario = scenario
+        gear = strategy.gear
+        self.rotary = values.axis_type in ("R", "S")
+        self.unit = "deg" if self.rotary else "mm"
+        self.direction = 1 if values.get("kenngr.ref_richt") else -1
+        acceleration, _ = homing_acceleration(values, gear)
+        self.acceleration = float(acceleration) or 1.0
+        cap = values.get(f"getriebe[{gear}].vb_not_referenced") * VELOCITY
+        self.speed_cap = cap if cap > 0 else INF
+        self.fast = values.get(f"getriebe[{gear}].vb_refmax") * VELOCITY
+        self.slow = values.get(f"getriebe[{gear}].vb_reflow") * VELOCITY
+        self.fast_from_cam = bool(values.get("kenngr.fast_from_cam"))
+        self.cam_level = bool(values.get("lr_hw[0].cam_level"))
+        self.shift = values.get("kenngr.shift_offset_zero_pulse_activation") * POSITION
+        self.zero_search_max = values.get("lr_hw[0].zero_pulse_search_max_dist") * POSITION
+        self.total_max = values.get("kenngr.homing_max_movement_dist") * POSITION if self.rotary else 0.0
+        self.refpkt = values.get(f"getriebe[{gear}].pos_refpkt") * POSITION
+        self.soft_limits = (values.get("kenngr.swe_neg") * POSITION, values.get("kenngr.swe_pos") * POSITION)
+        self.overflow = bool(values.get("kenngr.homing_overflow_evaluation"))
+
+    # -- helpers -----------------------------------------------------------------------------
+    def _speed(self, trace: Trace, speed: float, name: str) -> float:
+        if speed > self.speed_cap:
+            trace.warn("LIS303", f"{name}: {speed:g} {self.unit}/s is capped to vb_not_referenced "
+                                 f"{self.speed_cap:g} {self.unit}/s while the axis is not homed")
+            return self.speed_cap
+        return speed
+
+    def _active(self, lo: float, hi: float):
+        """Membership and crossing distances of the region where the cam signal is active."""
+        inside_cam = self.cam_level
+
+        def active(x: float) -> bool:
+            return (lo <= x <= hi) == inside_cam
+
+        def entry(x: float, s: int) -> float:
+            if active(x):
+                return 0.0
+            if inside_cam:
+                if s > 0:
+                    return lo - x if x < lo else INF
+                return x - hi if x > hi else INF
+            return hi - x if s > 0 else x - lo
+
+        def exit_(x: float, s: int) -> float:
+            if not active(x):
+                return 0.0
+            if inside_cam:
+                return hi - x if s > 0 else x - lo
+            if x < lo:
+                return lo - x if s > 0 else INF
+            return x - hi if s < 0 else INF
+
+        return active, entry, exit_
+
+    def _bound(self, x: float, s: int, travelled: float, extra: float = INF) -> tuple[float, str]:
+        """The first limit in the way: limit switch, homing_max_movement_dist or a phase-specific maximum."""
+        switch = self.scenario.limit_switches[1] - x if s > 0 else x - self.scenario.limit_switches[0]
+        bounds = [(max(switch, 0.0), "limit switch reached")]
+        if self.total_max > 0:
+            bounds.append((max(self.total_max - travelled, 0.0), "homing_max_movement_dist exceeded (P-ERR-70394)"))
+        if extra < INF:
+            bounds.append((extra, "maximum search distance exceeded"))
+        return min(bounds)
+
+    def _sample(self, ramp: _Ramp, distance: float, latched: bool) -> float:
+        """Time after the ramp's start at which an event `distance` ahead is detected."""
+        t = ramp.time_to(distance)
+        if latched:
+            return t
+        cycle = self.scenario.cycle_time
+        absolute = ramp.t0 + t
+        detected = math.ceil(absolute / cycle - 1e-9) * cycle
+        return max(detected - ramp.t0, t)
+
+    def _move(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float, distance: float,
+              latched: bool, ended_by: str, travelled: float, search_max: float = INF,
+              before_bound: float = 0.0) -> tuple[float, float, float | None]:
+        """Move until an event `distance` ahead (detected at a cycle unless latched), then brake.
+
+        Returns (end position, end time, detection position or None when a bound stopped the move).
+        """
+        ramp = _Ramp(t, x, s, speed, self.acceleration)
+        bound, reason = self._bound(x, s, travelled, search_max + before_bound if search_max < INF else INF)
+        if distance > bound:
+            segments, t_end, x_end = ramp.stop(ramp.time_to(bound))
+            trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, reason, segments))
+            trace.outcome, trace.failure = "failed", f"{name}: {reason} before the event was found"
+            return x_end, t_end, None
+        t_detect = self._sample(ramp, distance, latched)
+        segments, t_end, x_end = ramp.stop(t_detect)
+        x_detect = x + s * ramp.distance_at(t_detect)
+        trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, ended_by, segments))
+        return x_end, t_end, x_detect
+
+    def _reference(self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float) -> None:
+        trace.events.append(Event(time, position, kind))
+        trace.reference = {"kind": kind, "position": position, "value": value}
+        trace.final_position = value + (x_end - position)
+
+    # -- strategies --------------------------------------------------------------------------
+    def run(self, start: float | None = None, cam_shift: float = 0.0) -> Trace:
+        scenario = self.scenario
+        trace = Trace(self.strategy, scenario, self.unit, self.acceleration)
+        x = scenario.start_position if start is None else start
+        kind = self.strategy.id
+        if kind in ("absolute", "ignore_abs_pos", "disabled", "drive_controlled", "none"):
+            return self._no_motion(trace, kind)
+        if kind == "fixed_stop":
+            return self._fixed_stop(trace, x)
+        if kind == "simulation":
+            return self._simulated(trace, x)
+        if self.strategy.with_cam:
+            if scenario.cam is None:
+                trace.outcome, trace.failure = "failed", "the strategy needs a reference cam but the scenario has none"
+                return trace
+            lo, hi = scenario.cam
+            return self._with_cam(trace, x, lo + cam_shift, hi + cam_shift)
+        return self._zero_pulse_only(trace, x)
+
+    def _no_motion(self, trace: Trace, kind: str) -> Trace:
+        if kind == "absolute":
+            trace.outcome = "not_required"
+        elif kind == "ignore_abs_pos":
+            trace.outcome = "skipped"
+        elif kind == "disabled":
+            absolute = bool(self.values.get("kenngr.abs_pos_gueltig"))
+            trace.outcome = "not_required" if absolute else "failed"
+            trace.failure = None if absolute else "homing is DISABLED on an incremental axis: G74 is refused"
+        elif kind == "none":
+            trace.outcome = "homed"
+            trace.reference = {"kind": "adopted", "position": self.scenario.start_position, "value": self.refpkt}
+            trace.final_position = self.refpkt
+        else:
+            trace.outcome = "skipped"
+            trace.warn(None, "drive-controlled homing: the drive runs its own sequence, which this version does not "
+                             "simulate yet")
+        return trace
+
+    def _next_pulse(self, x: float, s: int) -> float:
+        """Distance from x (in direction s) to the next zero pulse (or encoder overflow)."""
+        period, phase = self._pulse_lattice()
+        k = (x - phase) / period
+        n = math.ceil(k - 1e-12) if s > 0 else math.floor(k + 1e-12)
+        return abs(phase + n * period - x)
+
+    def _pulse_lattice(self) -> tuple[float, float]:
+        period, phase = self.scenario.zero_pulse_period, self.scenario.zero_pulse_phase
+        if self.overflow:
+            bits = self.values.get("antr.encoder_bit_range")
+            numerator, denominator = self.values.get("getriebe[0].wegaufz"), self.values.get("getriebe[0].wegaufn")
+            if bits and numerator:
+                period = (2**bits) * denominator / numerator * POSITION
+            phase += self.values.get("antr.encoder_overflow_offset") * POSITION
+        return period, phase
+
+    def _reference_search(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float,
+                          cam_distance: float, travelled: float) -> Trace:
+        """Move to the cam (or start the search on it) and reference on the cam edge or the next zero pulse."""
+        scenario = self.scenario
+        if not self.strategy.with_zero_pulse:
+            x_end, t_end, x_cam = self._move(trace, name, x, t, s, speed, cam_distance, False,
+                                             "the cam edge was detected (sampled each cycle)", travelled)
+            if x_cam is not None:
+                t_cam = trace.phases[-1].segments[-1].t0
+                trace.events.append(Event(t_cam, x_cam, "cam edge detected"))
+                self._reference(trace, "cam edge", x_cam, t_cam, self.refpkt, x_end)
+            return trace
+        # The cam edge is sampled; the zero-pulse logic starts `shift` later; the pulse itself may be latched.
+        ramp = _Ramp(t, x, s, speed, self.acceleration)
+        t_cam = self._sample(ramp, cam_distance, False)
+        x_cam = x + s * ramp.distance_at(t_cam)
+        activation = x_cam + s * self.shift
+        pulse_distance = abs(activation - x) + self._next_pulse(activation, s)
+        event = "encoder overflow" if self.overflow else "zero pulse"
+        latched = scenario.hardware_latch or self.overflow
+        self._check_pulse_margin(trace, activation, s, speed)
+        before = cam_distance if self.zero_search_max > 0 else 0.0
+        search_max = self.zero_search_max if self.zero_search_max > 0 else INF
+        x_end, t_end, x_ref = self._move(trace, name, x, t, s, speed, pulse_distance, latched,
+                                         f"the {event} was detected" + ("" if latched else " (sampled each cycle)"),
+                                         travelled, search_max, before)
+        if cam_distance <= abs(x_end - x) or x_ref is not None:
+            trace.events.append(Event(t + t_cam, x_cam, "cam edge detected, zero-pulse logic armed"
+                                      if not self.shift else f"cam edge detected, zero-pulse logic armed {self.shift:g} {self.unit} later"))
+        if x_ref is not None:
+            t_ref = trace.phases[-1].segments[-1].t0
+            self._reference(trace, event, x_ref, t_ref, self.refpkt, x_end)
+        return trace
+
+    def _check_pulse_margin(self, trace: Trace, activation: float, s: int, speed: float) -> None:
+        """LIS405: the pulse after the activation point is so close that cam jitter can skip it."""
+        period, _ = self._pulse_lattice()
+        distance = self._next_pulse(activation, s)
+        margin = speed * self.scenario.cycle_time + self.scenario.cam_jitter
+        if distance < margin or period - distance < margin:
+            current = self.shift
+            wanted = (current + distance - period / 2) % period
+            trace.warn(
+                "LIS405",
+                f"the zero pulse lies {distance:.4g} {self.unit} after the point where the zero-pulse logic is armed "
+                f"(one revolution = {period:g} {self.unit}); with cam jitter and sampling of {margin:.4g} {self.unit} the "
+                f"reference can jump by one encoder revolution. Set kenngr.shift_offset_zero_pulse_activation to "
+                f"about {round(wanted / POSITION)} (= {wanted:.4g} {self.unit}) to put the pulse half a revolution away",
+            )
+
+    def _with_cam(self, trace: Trace, x: float, lo: float, hi: float) -> Trace:
+        s = self.direction
+        active, entry, exit_ = self._active(lo, hi)
+        t = 0.0
+        if self.strategy.one_phase:
+            if active(x):
+                trace.warn("LIS402", "the axis starts on the reference cam: one-phase homing references without "
+                                     "leaving it, at the wrong place")
+            speed = self._speed(trace, self.slow, "vb_reflow")
+            return self._reference_search(trace, "to the cam and reference", x, t, s, speed, entry(x, s), 0.0)
+        fast = self._speed(trace, self.fast, "vb_refmax")
+        slow = self._speed(trace, self.slow, "vb_reflow")
+        travelled = 0.0
+        if active(x):
+            trace.events.append(Event(0.0, x, "on the cam at the start: phase 1 skipped"))
+        else:
+            x_end, t, x_cam = self._move(trace, "to the reference cam", x, t, s, fast, entry(x, s), False,
+                                         "the cam was reached (sampled each cycle)", travelled)
+            if x_cam is None:
+                return trace
+            trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_cam, "cam reached"))
+            travelled += abs(x_end - x)
+            x = x_end
+            if not active(x):
+                trace.outcome = "failed"
+                trace.failure = (f"the axis braked through the cam (braking distance "
+                                 f"{fast * fast / (2 * self.acceleration):.4g} {self.unit} is longer than the cam)")
+                return trace
+        speed = fast if self.fast_from_cam else slow
+        x_end, t, x_off = self._move(trace, "off the reference cam", x, t, -s, speed, exit_(x, -s), False,
+                                     "the cam was left (sampled each cycle)", travelled)
+        if x_off is None:
+            return trace
+        trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_off, "cam left"))
+        travelled += abs(x_end - x)
+        x = x_end
+        return self._reference_search(trace, "onto the cam and reference", x, t, s, slow, entry(x, s), travelled)
+
+    def _zero_pulse_only(self, trace: Trace, x: float) -> Trace:
+        s = self.direction
+        speed = self._speed(trace, self.slow, "vb_reflow")
+        event = "encoder overflow" if self.overflow else "zero pulse"
+        latched = self.scenario.hardware_latch or self.overflow
+        search_max = self.zero_search_max if self.zero_search_max > 0 else INF
+        x_end, t_end, x_ref = self._move(trace, f"to the {event}", x, 0.0, s, speed, self._next_pulse(x, s),
+                                         latched, f"the {event} was detected", 0.0, search_max)
+        if x_ref is not None:
+            self._reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
+        return trace
+
+    def _simulated(self, trace: Trace, x: float) -> Trace:
+        s = self.direction
+        speed = self._speed(trace, self.slow, "vb_reflow")
+        distance = abs(self.values.get("antr.simu.rpf_weg_bis_nip")) * POSITION
+        x_end, t_end, x_ref = self._move(trace, "to the simulated zero pulse", x, 0.0, s, speed, distance, True,
+                                         "the simulated zero pulse was reached", 0.0)
+        if x_ref is not None:
+            self._reference(trace, "simulated zero pulse", x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
+        return trace
+
+    def _fixed_stop(self, trace: Trace, x: float) -> Trace:
+        values, gear = self.values, self.strategy.gear
+        s = 1 if values.get("kenngr.homing.torq_homing_dir") else -1
+        speed = values.get(f"getriebe[{gear}].homing.torq_move_velocity") * VELOCITY
+        acceleration = values.get(f"getriebe[{gear}].homing.torq_move_acceleration") or self.acceleration
+        if speed <= 0:
+            trace.outcome, trace.failure = "failed", "torq_move_velocity is not set: the axis does not move"
+            return trace
+        speed = self._speed(trace, speed, "torq_move_velocity")
+        if values.drive_type == 4:
+            stop = x + s * values.get("kenngr.homing.torq_distance_to_block") * POSITION
+        else:
+            stop = self.scenario.fixed_stop
+        reach = (stop - x) * s
+        min_distance = values.get("kenngr.homing.torq_min_distance") * POSITION
+        max_distance = values.get("kenngr.homing.torq_max_distance") * POSITION
+        ramp = _Ramp(0.0, x, s, speed, float(acceleration))
+        if stop is None or reach <= 0 or (max_distance > 0 and reach > max_distance):
+            limit = max_distance if max_distance > 0 else self._bound(x, s, 0.0)[0]
+            segments, t_end, x_end = ramp.stop(ramp.time_to(limit))
+            trace.phases.append(PhaseRecord("to the fixed stop", _dir(s), speed, x, x_end, 0.0, t_end,
+                                            "torq_max_distance travelled without a stop", segments))
+            trace.outcome, trace.failure = "failed", "no fixed stop within torq_max_distance: homing aborted"
+            return trace
+        t_contact = ramp.time_to(reach)
+        # At the stop the axis is blocked: the motion ends abruptly at the stop position.
+        segments = ramp.stop(t_contact)[0][:-1]
+        segments.append(Segment(t_contact, t_contact, stop, 0.0, 0.0))
+        if reach < min_distance:
+            trace.phases.append(PhaseRecord("to the fixed stop", _dir(s), speed, x, stop, 0.0, t_contact,
+                                            "blocked before torq_min_distance", segments))
+            trace.outcome, trace.failure = "failed", ("the stop lies within torq_min_distance: detection is not armed "
+                                                      "yet when the axis is blocked")
+            return trace
+        detect = values.get("kenngr.homing.torq_detect_time") * 1e-6
+        t_detect = t_contact + detect
+        segments.append(Segment(t_contact, t_detect, stop, 0.0, 0.0))
+        trace.phases.append(PhaseRecord("to the fixed stop", _dir(s), speed, x, stop, 0.0, t_detect,
+                                        "the fixed stop was detected", segments))
+        trace.events.append(Event(t_contact, stop, "fixed stop reached"))
+        value = values.get("kenngr.homing.torq_homing_position") * POSITION
+        retraction = values.get("kenngr.homing.torq_retraction_distance") * POSITION
+        trace.events.append(Event(t_detect, stop, "fixed stop detected"))
+        trace.reference = {"kind": "fixed stop", "position": stop, "value": value}
+        x_end, t_end = _point_to_point(trace, "retract from the stop", stop, t_detect, -s, speed, float(acceleration), retraction)
+        trace.final_position = value + (x_end - stop)
+        return trace
+
+
+def _point_to_point(trace: Trace, name: str, x: float, t: float, s: int, speed: float, a: float, distance: float):
+    """A move of a known length from rest to rest (triangular when too short to reach the speed)."""
+    if distance <= 0:
+        return x, t
+    peak = min(speed, math.sqrt(distance * a))
+    t_acc = peak / a
+    cruise = (distance - peak * peak / a) / peak if peak else 0.0
+    segments = [Segment(t, t + t_acc, x, 0.0, s * a)]
+    x1 = x + s * peak * peak / (2 * a)
+    if cruise > 0:
+        segments.append(Segment(t + t_acc, t + t_acc + cruise, x1, s * peak, 0.0))
+    t2 = t + t_acc + max(cruise, 0.0)
+    x2 = x1 + s * peak * max(cruise, 0.0)
+    segments.append(Segment(t2, t2 + t_acc, x2, s * peak, -s * a))
+    x_end = x + s * distance
+    trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t2 + t_acc, "retraction distance travelled", segments))
+    return x_end, t2 + t_acc
+
+
+def _dir(s: int) -> str:
+    return "positive" if s > 0 else "negative"

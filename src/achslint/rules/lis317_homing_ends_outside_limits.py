@@ -1,0 +1,71 @@
+"""
+What
+----
+Homing ends outside the software limits: after the reference event the axis
+brakes and stands beyond the reference position by its braking distance
+(v²/2a with the referencing speed and the homing acceleration); with fixed-stop
+homing it backs off by the retraction distance from `torq_homing_position`.
+The check runs the dry-run engine with its default scenario — the braking
+distance does not depend on where cam and zero pulse are.
+
+Why
+---
+Software limits become active as soon as the axis is homed. An axis that
+stands outside them after homing cannot move back in one direction without a
+manual override. A reference position close to a limit, approached at a high
+referencing speed, is the usual cause.
+
+Example
+-------
+```
+kenngr.swe_neg                 -10000000       ( -1000 mm
+kenngr.ref_richt               0
+getriebe[0].vb_reflow          50000           ( 50 mm/s
+getriebe[0].a_ref              100             ( brakes 12.5 mm
+getriebe[0].pos_refpkt         -9950000        ( -995 mm
+```
+
+Use instead
+-----------
+```
+getriebe[0].pos_refpkt         -9800000        ( -980 mm: 20 mm inside the limit
+```
+
+Reference
+---------
+TF5200 homing manual §2 (axis position after homing: the deceleration distance away from the reference
+position; software limits monitored once homing is complete) and §2.3.3.4 (retraction after the fixed stop).
+"""
+
+from __future__ import annotations
+
+CODE = "LIS317"
+NAME = "homing-ends-outside-limits"
+SEVERITY = "warning"
+FIX = "none"
+PARAMETERS = ("getriebe[i].pos_refpkt", "kenngr.swe_neg", "kenngr.swe_pos", "getriebe[i].vb_reflow",
+              "getriebe[i].a_ref", "kenngr.homing.torq_homing_position",
+              "kenngr.homing.torq_retraction_distance")  # parameters this rule reads
+SUMMARY = "Homing ends outside the software limits (braking or retraction)"
+
+
+def check(ctx):
+    from ..dryrun import check_soft_limits, default_scenario
+    from ..engine import Simulator
+
+    values, strategy = ctx.values, ctx.strategy
+    if not strategy.moves or strategy.controlled_by != "cnc" or values.axis_type == "S":
+        return
+    probe = Simulator(values, strategy, default_scenario(values, strategy, cycle_time_us=ctx.options.cycle_time_us))
+    if strategy.id == "fixed_stop":
+        # Only the distances matter: put the stop where detection is certain.
+        low = values.get("kenngr.homing.torq_min_distance") * 1e-4
+        probe.scenario.fixed_stop = probe.scenario.start_position + (
+            1 if values.get("kenngr.homing.torq_homing_dir") else -1) * (low + 1.0)
+        probe.scenario.limit_switches = (-1e12, 1e12)
+    trace = probe.run()
+    check_soft_limits(probe, trace)
+    for warning in trace.warnings:
+        if warning["code"] == CODE:
+            paths = ["kenngr.homing.torq_homing_position"] if strategy.id == "fixed_stop" else [f"getriebe[{strategy.gear}].pos_refpkt"]
+            yield ctx.cross(CODE, warning["message"], paths + ["kenngr.swe_neg", "kenngr.swe_pos"])

@@ -1,0 +1,144 @@
+"""The machine geometry a dry run assumes: where the axis starts, where the cam,
+the zero pulses, the limit switches and the fixed stop are.
+
+A scenario is written in human units (mm for linear axes, degrees for rotary
+axes and spindles; seconds) in TOML, or given as command-line options. What is
+not given is filled from a documented default geometry, and every filled-in
+value is listed as "assumed" in the output:
+
+* the axis starts at 0;
+* the reference cam begins 100 (mm or °) away from the start in the homing
+  direction and is 20 wide, or three braking distances at the fast homing speed
+  when that is wider (so the axis can stop on it);
+* zero pulses repeat every 5 mm (10° on rotary axes) and the first one after
+  the cam edge lies half a period behind it (the manual's recommendation);
+* a hardware latch is available when the strategy references on a zero pulse;
+* the cycle time is the configured CNC cycle (default 1 ms);
+* limit switches sit 10 beyond the software limits;
+* a fixed stop (TORQ) sits 100 away from the start in the homing direction.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+from pathlib import Path
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+
+class ScenarioError(Exception):
+    """A scenario that cannot be used (exit code 2)."""
+
+
+class ScenarioInput(BaseModel):
+    """What a scenario file may contain. Every key is optional."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    start_position: float | None = None
+    cam: tuple[float, float] | None = None
+    zero_pulse_period: float | None = Field(None, gt=0)
+    zero_pulse_phase: float | None = None
+    hardware_latch: bool | None = None
+    cycle_time_ms: float | None = Field(None, gt=0)
+    limit_switches: tuple[float, float] | None = None
+    fixed_stop: float | None = None
+    cam_jitter: float | None = Field(None, ge=0)
+    drive_method: str | None = None
+
+    @model_validator(mode="after")
+    def _ordered(self):
+        for name in ("cam", "limit_switches"):
+            pair = getattr(self, name)
+            if pair is not None and pair[0] >= pair[1]:
+                raise ValueError(f"{name} must be [low, high] with low < high, got {list(pair)}")
+        return self
+
+
+@dataclass
+class Scenario:
+    """A complete geometry (human units) plus the names of the values that were assumed."""
+
+    start_position: float
+    cam: tuple[float, float] | None
+    zero_pulse_period: float
+    zero_pulse_phase: float
+    hardware_latch: bool
+    cycle_time: float  # seconds
+    limit_switches: tuple[float, float]
+    fixed_stop: float | None
+    cam_jitter: float = 0.0
+    drive_method: str | None = None
+    assumed: list[str] = field(default_factory=list)
+
+    def as_dict(self) -> dict:
+        data = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "assumed"}
+        data["cycle_time_ms"] = data.pop("cycle_time") * 1000
+        data["cam"] = list(self.cam) if self.cam else None
+        data["limit_switches"] = list(self.limit_switches)
+        data["assumed"] = list(self.assumed)
+        return data
+
+
+def read_scenario(path: Path) -> ScenarioInput:
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise ScenarioError(f"cannot read scenario {path}: {exc.strerror or exc}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ScenarioError(f"scenario {path} is not valid TOML: {exc}") from None
+    return parse_input(data, str(path))
+
+
+def parse_input(data: dict, where: str = "scenario") -> ScenarioInput:
+    try:
+        return ScenarioInput.model_validate(data)
+    except ValidationError as exc:
+        problems = []
+        for item in exc.errors():
+            key = ".".join(str(p) for p in item["loc"]) or "(scenario)"
+            if item["type"] == "extra_forbidden":
+                problems.append(f"unknown key `{key}` (known: {', '.join(ScenarioInput.model_fields)})")
+            else:
+                problems.append(f"`{key}`: {item['msg']}")
+        raise ScenarioError(f"{where}: " + "; ".join(problems)) from None
+
+
+def complete(given: ScenarioInput, *, direction: int, rotary: bool, soft_limits: tuple[float, float],
+             cycle_time: float, zero_pulse: bool, braking: float = 0.0) -> Scenario:
+    """Fill what the scenario leaves open with the documented default geometry."""
+    assumed: list[str] = []
+
+    def pick(name, default):
+        value = getattr(given, name)
+        if value is None:
+            assumed.append(name)
+            return default
+        return value
+
+    start = pick("start_position", 0.0)
+    cam = given.cam
+    if cam is None:
+        assumed.append("cam")
+        near = start + direction * 100.0
+        width = max(20.0, 3 * braking)
+        cam = (near - width, near) if direction < 0 else (near, near + width)
+    period = pick("zero_pulse_period", 10.0 if rotary else 5.0)
+    # Ideal phase: the first pulse half a period after the cam edge that starts the search.
+    edge = cam[1] if direction < 0 else cam[0]
+    phase = pick("zero_pulse_phase", edge + direction * period / 2)
+    latch = pick("hardware_latch", zero_pulse)
+    cycle = given.cycle_time_ms / 1000 if given.cycle_time_ms is not None else cycle_time
+    if given.cycle_time_ms is None:
+        assumed.append("cycle_time_ms")
+    low, high = soft_limits
+    limits = pick("limit_switches", (low - 10.0, high + 10.0))
+    stop = pick("fixed_stop", start + direction * 100.0)
+    jitter = pick("cam_jitter", 0.0)
+    return Scenario(start, tuple(cam), period, phase, latch, cycle, tuple(limits), stop, jitter,
+                    given.drive_method, assumed)
