@@ -106,7 +106,7 @@ def trace_json(run: DryRun) -> dict:
         "events": [{"time": r(e.time), "position": r(e.position), "kind": e.kind} for e in trace.events],
         "reference": None if trace.reference is None else {
             "kind": trace.reference["kind"], "position": r(trace.reference["position"]),
-            "value": r(trace.reference["value"])},
+            "value": r(trace.reference["value"]), "speed": r(trace.reference["speed"])},
         "final_position": r(trace.final_position),
         "total_time": r(trace.total_time),
         "total_distance": r(trace.total_distance),

@@ -235,7 +235,8 @@ class Simulator:
 
     def _reference(self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float) -> None:
         trace.events.append(Event(time, position, kind))
-        trace.reference = {"kind": kind, "position": position, "value": value}
+        speed = abs(trace.phases[-1].segments[-1].v0)  # the braking segment starts at the event
+        trace.reference = {"kind": kind, "position": position, "value": value, "speed": speed}
         trace.final_position = value + (x_end - position)
 
     # -- strategies --------------------------------------------------------------------------
@@ -269,7 +270,8 @@ class Simulator:
             trace.failure = None if absolute else "homing is DISABLED on an incremental axis: G74 is refused"
         elif kind == "none":
             trace.outcome = "homed"
-            trace.reference = {"kind": "adopted", "position": self.scenario.start_position, "value": self.refpkt}
+            trace.reference = {"kind": "adopted", "position": self.scenario.start_position, "value": self.refpkt,
+                               "speed": 0.0}
             trace.final_position = self.refpkt
         else:
             trace.outcome = "skipped"
@@ -305,6 +307,10 @@ class Simulator:
                 t_cam = trace.phases[-1].segments[-1].t0
                 trace.events.append(Event(t_cam, x_cam, "cam edge detected"))
                 self._reference(trace, "cam edge", x_cam, t_cam, self.refpkt, x_end)
+            return trace
+        if cam_distance > self._bound(x, s, travelled)[0]:
+            # The cam is never reached: the move ends at a limit and homing fails.
+            self._move(trace, name, x, t, s, speed, cam_distance, False, "", travelled)
             return trace
         # The cam edge is sampled; the zero-pulse logic starts `shift` later; the pulse itself may be latched.
         ramp = _Ramp(t, x, s, speed, self.acceleration)
@@ -447,7 +453,7 @@ class Simulator:
         value = values.get("kenngr.homing.torq_homing_position") * POSITION
         retraction = values.get("kenngr.homing.torq_retraction_distance") * POSITION
         trace.events.append(Event(t_detect, stop, "fixed stop detected"))
-        trace.reference = {"kind": "fixed stop", "position": stop, "value": value}
+        trace.reference = {"kind": "fixed stop", "position": stop, "value": value, "speed": 0.0}
         x_end, t_end = _point_to_point(trace, "retract from the stop", stop, t_detect, -s, speed, float(acceleration), retraction)
         trace.final_position = value + (x_end - stop)
         return trace

@@ -1,0 +1,223 @@
+"""The dry-run engine: hand-computed traces per strategy, and properties of every trace."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from achslint.dryrun import dry_run, prepare, sweep, trace_json
+from achslint.scenario import ScenarioInput
+
+AXIS = (
+    "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
+    "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
+    "getriebe[0].pos_refpkt -9500000\n"
+)
+SCENE = dict(start_position=0.0, cam=(-120.0, -100.0), zero_pulse_period=5.0, zero_pulse_phase=-102.5,
+             hardware_latch=True, cycle_time_ms=1.0, limit_switches=(-1010.0, 1010.0))
+
+
+def run(extra: str = "", **scene):
+    data = (AXIS + extra + "Ende\n").encode()
+    return dry_run(data, "axis.lis", ScenarioInput(**{**SCENE, **scene})).trace
+
+
+def approx(value, expected):
+    return value == pytest.approx(expected, abs=1e-9)
+
+
+def test_three_phase_with_zero_pulse_by_hand():
+    trace = run()
+    # a = 500 mm/s², fast v = 100 mm/s: t_acc = 0.2 s, d_acc = 10 mm, braking 10 mm.
+    # Phase 1: 0 -> cam edge -100 at t = 0.2 + (100 - 10)/100 = 1.1 s, brakes to -110 at 1.3 s.
+    # Phase 2: back off at 100 mm/s: the edge -100 is 10 mm away = d_acc, reached at 0.2 s
+    #          (t = 1.5 s, v = 100), brakes 10 mm to -90 at 1.7 s.
+    # Phase 3: slow v = 10 mm/s: t_acc = 0.02 s, d_acc = 0.1 mm; edge after 10 mm at 0.02 + 9.9/10 = 1.01 s
+    #          (t = 2.71 s); the pulse at -102.5 lies 2.5 mm further: t = 2.96 s; braking 0.1 mm -> -102.6 at 2.98 s.
+    p1, p2, p3 = trace.phases
+    assert (p1.direction, p2.direction, p3.direction) == ("negative", "positive", "negative")
+    assert approx(p1.end_position, -110) and approx(p1.end_time, 1.3)
+    assert approx(p2.end_position, -90) and approx(p2.end_time, 1.7)
+    assert approx(p3.end_position, -102.6) and approx(p3.end_time, 2.98)
+    assert trace.reference["kind"] == "zero pulse" and approx(trace.reference["position"], -102.5)
+    assert approx(trace.reference["value"], -950.0)
+    assert approx(trace.final_position, -950.1)  # stands 0.1 mm (braking) beyond the reference
+    assert approx(trace.total_distance, 110 + 20 + 12.6)
+    assert trace.outcome == "homed"
+
+
+def test_slow_off_cam_and_start_on_the_cam():
+    trace = run("kenngr.fast_from_cam 0\n", start_position=-110.0)
+    # On the cam at the start: phase 1 skipped. Off the cam at 10 mm/s: the edge -100 is 10 mm away,
+    # t = 0.02 + 9.9/10 = 1.01 s; braking 0.1 mm -> -99.9 at 1.03 s. Then back to the edge and to the pulse.
+    assert [p.name for p in trace.phases] == ["off the reference cam", "onto the cam and reference"]
+    assert approx(trace.phases[0].end_position, -99.9)
+    assert approx(trace.phases[0].end_time, 1.03)
+    assert approx(trace.reference["position"], -102.5)
+
+
+def test_cam_edge_without_zero_pulse_is_sampled():
+    trace = run("kenngr.homing_without_zero_pulse 1\n", start_position=0.3)
+    # Phase 3 starts at -89.7 (start shifted by 0.3 mm); the edge -100 is 10.3 mm away: t = 0.02 + 10.2/10 = 1.04 s
+    # after the phase start (1.7 s) -> 2.74 s, exactly on a cycle -> position -100 exactly.
+    assert trace.reference["kind"] == "cam edge"
+    assert trace.reference["position"] == pytest.approx(-100.0, abs=10 * 0.001 + 1e-9)  # error ≤ v·T
+    sampled = run("kenngr.homing_without_zero_pulse 1\n", start_position=0.00037)
+    assert 0 <= -100.0 - sampled.reference["position"] <= 10 * 0.001 + 1e-9
+
+
+def test_sampled_zero_pulse_error_is_at_most_v_times_t():
+    latched = run(start_position=0.0004)
+    sampled = run(start_position=0.0004, hardware_latch=False)
+    assert approx(latched.reference["position"], -102.5)
+    assert 0 < -102.5 - sampled.reference["position"] <= 10 * 0.001 + 1e-9
+
+
+def test_delayed_zero_pulse_activation():
+    # Cam detected at -100; with a 3 mm shift the logic starts at -103, so the pulse at -102.5 is skipped
+    # and the next one, at -107.5, is taken.
+    trace = run("kenngr.shift_offset_zero_pulse_activation 30000\n")
+    assert approx(trace.reference["position"], -107.5)
+
+
+def test_falling_edge_variant():
+    # cam_level 0: "active" outside the cam. Moving negative from -110 (inside the cam = inactive) the
+    # active region starts at -120.
+    trace = run("lr_hw[0].cam_level 0\n", start_position=-110.0)
+    assert trace.phases[0].name == "to the reference cam"
+    assert trace.events[0].kind == "cam reached" and approx(trace.events[0].position, -120.0)
+
+
+def test_zero_pulse_only_and_one_phase():
+    trace = run("kenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n", zero_pulse_phase=-2.5)
+    # One phase at 10 mm/s to the first pulse at -2.5: braking 0.1 mm.
+    assert len(trace.phases) == 1 and approx(trace.reference["position"], -2.5)
+    assert approx(trace.phases[0].end_position, -2.6)
+    one_phase = run("kenngr.ref_ohne_rev 1\n", start_position=-110.0)
+    assert any(w["code"] == "LIS402" for w in one_phase.warnings)  # started on the cam
+
+
+def test_missed_cam_fails_cleanly_at_the_limit_switch():
+    trace = run(start_position=-200.0)  # behind the cam in the homing direction
+    assert trace.outcome == "failed"
+    assert trace.phases[-1].ended_by == "limit switch reached"
+    assert "before the event was found" in trace.failure
+    assert trace.phases[-1].end_position <= -1010.0
+
+
+def test_zero_pulse_search_is_bounded():
+    trace = run("lr_hw[0].zero_pulse_search_max_dist 10000\n", zero_pulse_phase=-104.0, zero_pulse_period=50.0)
+    # The pulse lies 4 mm behind the cam edge but only 1 mm of search is allowed.
+    assert trace.outcome == "failed" and "maximum search distance" in trace.phases[-1].ended_by
+
+
+def test_simulated_drive():
+    trace = dry_run(b"kenngr.antr_typ 4\nkenngr.ref_richt 1\nantr.simu.rpf_weg_bis_nip 200\n"
+                    b"getriebe[0].vb_reflow 2000\ngetriebe[0].a_ref 100\nEnde\n", "sim.lis").trace
+    # 200 × 0.1 µm = 0.02 mm at 2 mm/s (t_acc 0.02 s, d_acc 0.02 mm): reached at exactly the end of the ramp.
+    assert trace.strategy.id == "simulation"
+    assert approx(trace.reference["position"], 0.02)
+    assert approx(trace.phases[0].end_position, 0.02 + 0.02)
+
+
+def test_fixed_stop_by_hand():
+    text = (b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+            b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+            b"kenngr.homing.torq_max_distance 2000000\nkenngr.homing.torq_detect_time 25000\n"
+            b"kenngr.homing.torq_retraction_distance 50000\nkenngr.homing.torq_homing_position 100000\nEnde\n")
+    trace = dry_run(text, "torq.lis", ScenarioInput(start_position=0.0, fixed_stop=20.0)).trace
+    # 5 mm/s at 50 mm/s²: t_acc 0.1 s, d_acc 0.25 mm; stop at 20 mm after 0.1 + 19.75/5 = 4.05 s;
+    # detected 25 ms later; value 10 mm; retract 5 mm (5 mm/s, 0.1 s ramps): final 10 - 5 = 5 mm.
+    assert approx(trace.events[0].time, 4.05)
+    assert approx(trace.phases[0].end_time, 4.075)
+    assert approx(trace.reference["value"], 10.0)
+    assert approx(trace.final_position, 5.0)
+    assert approx(trace.phases[1].end_time, 4.075 + 0.1 + 0.9 + 0.1)
+    missing = dry_run(text, "torq.lis", ScenarioInput(start_position=0.0, fixed_stop=300.0)).trace
+    assert missing.outcome == "failed" and "torq_max_distance" in missing.failure
+
+
+def test_absolute_and_disabled_axes_do_not_move():
+    assert dry_run(b"kenngr.abs_pos_gueltig 1\nEnde\n", "a.lis").trace.outcome == "not_required"
+    disabled = dry_run(b"kenngr.homing.homing_type DISABLED\nEnde\n", "d.lis").trace
+    assert disabled.outcome == "failed" and not disabled.phases
+
+
+def test_lis405_zero_pulse_close_to_the_cam_edge():
+    close = run(zero_pulse_phase=-100.005, cam_jitter=0.02)
+    warning = next(w for w in close.warnings if w["code"] == "LIS405")
+    # Armed at -100, pulse 0.005 mm later: margin 10 mm/s × 1 ms + 0.02 = 0.03 mm. Half a revolution (2.5 mm)
+    # is reached with a shift of 0.005 - 2.5 + 5 = 2.505 mm = 25050 × 0.1 µm.
+    assert "25050" in warning["message"]
+    assert not any(w["code"] == "LIS405" for w in run().warnings)
+
+
+def test_sweep_reports_one_revolution_jumps():
+    simulator = prepare((AXIS + "Ende\n").encode(), "axis.lis",
+                        ScenarioInput(**{**SCENE, "zero_pulse_phase": -100.005, "cam_jitter": 0.02,
+                                         "limit_switches": (-1010.0, 1010.0)}))
+    summary = sweep(simulator, 300, seed=3)
+    assert summary["runs"] == 300
+    assert summary["distinct_pulses"] == 2 and summary["one_revolution_jumps"] > 0
+    assert summary["spread"] == pytest.approx(5.0, abs=1e-6)
+    steady = sweep(prepare((AXIS + "Ende\n").encode(), "axis.lis", ScenarioInput(**SCENE)), 300, seed=3)
+    assert steady["distinct_pulses"] == 1 and steady["spread"] == pytest.approx(0.0, abs=1e-9)
+
+
+def test_json_has_the_stable_keys():
+    document = trace_json(dry_run((AXIS + "Ende\n").encode(), "axis.lis", ScenarioInput(**SCENE)))
+    assert {"version", "axis", "strategy", "scenario", "phases", "events", "reference", "final_position",
+            "total_time", "total_distance", "outcome", "warnings"} <= set(document)
+    assert set(document["phases"][0]) == {"name", "direction", "velocity", "start_position", "end_position",
+                                           "start_time", "end_time", "ended_by"}
+    assert document["outcome"] == "homed"
+
+
+# --- properties of every trace ---------------------------------------------------------------
+
+@settings(max_examples=150, deadline=None)
+@given(
+    start=st.floats(-400, 400),
+    ref_richt=st.sampled_from(["0", "1"]),
+    without_pulse=st.sampled_from(["0", "1"]),
+    one_phase=st.sampled_from(["0", "1"]),
+    fast=st.integers(1000, 300000),
+    slow=st.integers(100, 1000),
+    accel=st.integers(10, 5000),
+    latch=st.booleans(),
+    phase=st.floats(-50, 50),
+)
+def test_trace_properties(start, ref_richt, without_pulse, one_phase, fast, slow, accel, latch, phase):
+    axis = (f"kenngr.antr_typ 1\nkenngr.ref_richt {ref_richt}\nkenngr.homing_without_zero_pulse {without_pulse}\n"
+            f"kenngr.ref_ohne_rev {one_phase}\ngetriebe[0].vb_refmax {fast}\ngetriebe[0].vb_reflow {slow}\n"
+            f"getriebe[0].a_ref {accel}\nEnde\n").encode()
+    scenario = ScenarioInput(start_position=start, cam=(-20.0, 20.0), zero_pulse_period=3.0, zero_pulse_phase=phase,
+                             hardware_latch=latch, limit_switches=(-500.0, 500.0))
+    run = dry_run(axis, "p.lis", scenario)
+    trace = run.trace
+    # Phases are contiguous in time and position.
+    for before, after in zip(trace.phases, trace.phases[1:]):
+        assert math.isclose(before.end_time, after.start_time, abs_tol=1e-9)
+        assert math.isclose(before.end_position, after.start_position, abs_tol=1e-9)
+    # Segments are contiguous and each phase ends at rest.
+    for phase_record in trace.phases:
+        for first, second in zip(phase_record.segments, phase_record.segments[1:]):
+            assert math.isclose(first.position(first.t1), second.x0, abs_tol=1e-6)
+        last = phase_record.segments[-1]
+        assert math.isclose(last.velocity(last.t1), 0.0, abs_tol=1e-9)
+        assert math.isclose(last.position(last.t1), phase_record.end_position, abs_tol=1e-6)
+        # No phase goes past the limit switches by more than its braking distance.
+        braking = max(fast, slow) ** 2 * 1e-6 / (2 * accel)
+        assert -500.0 - braking - 1e-6 <= phase_record.end_position <= 500.0 + braking + 1e-6
+    if trace.outcome == "homed":
+        # The final position is the reference value plus the braking distance from the speed at the
+        # reference event (the referencing speed, or less when the event comes during the acceleration).
+        speed = trace.reference["speed"]
+        assert speed <= slow * 1e-3 + 1e-12
+        braking = speed * speed / (2 * accel)
+        assert math.isclose(abs(trace.final_position - trace.reference["value"]), braking, rel_tol=1e-6, abs_tol=1e-9)
+    else:
+        assert trace.failure
