@@ -280,10 +280,17 @@ def explain(
     if output_format == ExplainFormat.json:
         typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
         return
+    use = _use_color(color, sys.stdout)
+    render(report, _console(use))
+
+
+def _console(color: bool):
+    """A rich console for text output; when piped, lines are not wrapped and tables are 160 wide."""
     from rich.console import Console
 
-    use = _use_color(color, sys.stdout)
-    render(report, Console(force_terminal=use, no_color=not use, highlight=False, width=160 if not sys.stdout.isatty() else None))
+    piped = not sys.stdout.isatty()
+    return Console(force_terminal=color, no_color=not color, highlight=False, soft_wrap=piped,
+                   width=160 if piped else None)
 
 
 def _pair(text: Optional[str], name: str):
@@ -352,10 +359,7 @@ def dry_run_command(
             document["sweep"] = summary
         typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
     else:
-        from rich.console import Console
-
-        use = _use_color(color, sys.stdout)
-        console = Console(force_terminal=use, no_color=not use, highlight=False, width=160 if not sys.stdout.isatty() else None)
+        console = _console(_use_color(color, sys.stdout))
         render(run, console)
         if summary is not None:
             console.print(_sweep_words(summary))

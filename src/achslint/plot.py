@@ -44,14 +44,15 @@ def plot_trace(trace: Trace, target: str) -> None:
     for number, phase in enumerate(trace.phases):
         for axis in (top, bottom):
             axis.axvspan(phase.start_time, phase.end_time, color=shades[number % 2], zorder=0)
-        top.annotate(f"{number + 1}. {phase.name}", (phase.start_time, 1.02), xycoords=("data", "axes fraction"),
-                     fontsize=8, rotation=0)
+        top.annotate(f" {number + 1}", (phase.start_time, 0.92), xycoords=("data", "axes fraction"),
+                     fontsize=9, fontweight="bold")
     if trace.scenario.cam:
         top.axhspan(*trace.scenario.cam, color="tab:green", alpha=0.15, label="reference cam")
     for event in trace.events:
         top.plot([event.time], [event.position], marker="o", color="tab:red")
         top.annotate(event.kind, (event.time, event.position), textcoords="offset points", xytext=(4, 4), fontsize=7)
-    top.set_title(f"{trace.strategy.title}: {trace.outcome}")
+    phases = "   ".join(f"{n}. {p.name}" for n, p in enumerate(trace.phases, 1))
+    top.set_title(f"{trace.strategy.title}: {trace.outcome}\n{phases}", fontsize=10)
     top.legend(loc="lower right", fontsize=8) if trace.scenario.cam else None
     figure.tight_layout()
     figure.savefig(target)

@@ -1,0 +1,65 @@
+"""`achslint dry-run` through the real entry point."""
+
+from __future__ import annotations
+
+import json
+
+from .conftest import FIXTURES
+
+X_AXIS = str(FIXTURES / "lists" / "achsmds1.lis")
+
+
+def test_default_scenario_is_printed_as_assumed(cli):
+    result = cli("dry-run", X_AXIS)
+    out = result.stdout.decode()
+    assert result.returncode == 0, result.stderr
+    assert "assumed: start_position, cam" in out
+    assert "Outcome: homed" in out
+    assert "Final position: -950.1000 mm (homed)" in out
+
+
+def test_scenario_file_and_options(cli, tmp_path):
+    scenario = tmp_path / "scenario.toml"
+    scenario.write_text("start_position = 50.0\ncam = [-300.0, -250.0]\nzero_pulse_period = 4.0\n"
+                        "zero_pulse_phase = -251.0\nhardware_latch = true\nlimit_switches = [-400.0, 400.0]\n")
+    document = json.loads(cli("dry-run", X_AXIS, "--scenario", str(scenario), "--format", "json").stdout)
+    assert document["outcome"] == "homed"
+    assert document["reference"]["position"] == -251.0
+    assert document["scenario"]["assumed"] == ["fixed_stop", "cam_jitter", "cycle_time_ms"] or \
+        set(document["scenario"]["assumed"]) == {"fixed_stop", "cam_jitter", "cycle_time_ms"}
+    moved = json.loads(cli("dry-run", X_AXIS, "--scenario", str(scenario), "--format", "json",
+                           "--zero-pulse-phase", "-253.0").stdout)
+    assert moved["reference"]["position"] == -253.0
+
+
+def test_missed_cam_is_exit_1_with_reason(cli):
+    result = cli("dry-run", X_AXIS, "--start", "-150", "--cam", "-120,-100", "--limit-switches", "-200,200",
+                 "--format", "json")
+    document = json.loads(result.stdout)
+    assert result.returncode == 1
+    assert document["outcome"] == "failed" and "limit switch" in document["failure"]
+
+
+def test_bad_scenario_is_exit_2(cli, tmp_path):
+    scenario = tmp_path / "s.toml"
+    scenario.write_text("cam = [5.0, -5.0]\nspeed = 3\n")
+    result = cli("dry-run", X_AXIS, "--scenario", str(scenario))
+    assert result.returncode == 2
+    message = result.stderr.decode()
+    assert "unknown key `speed`" in message and "Traceback" not in message
+    assert cli("dry-run", X_AXIS, "--cam", "1").returncode == 2
+
+
+def test_sweep_in_json(cli):
+    document = json.loads(cli("dry-run", X_AXIS, "--sweep", "200", "--cam-jitter", "0.01", "--format", "json").stdout)
+    assert document["sweep"]["runs"] == 200
+    assert sum(document["sweep"]["outcomes"].values()) == 200
+
+
+def test_plot_png_and_svg(cli, tmp_path):
+    png, svg = tmp_path / "homing.png", tmp_path / "homing.svg"
+    assert cli("dry-run", X_AXIS, "--plot", str(png)).returncode == 0
+    assert png.read_bytes().startswith(b"\x89PNG")
+    assert cli("dry-run", X_AXIS, "--plot", str(svg)).returncode == 0
+    assert b"<svg" in svg.read_bytes()[:500]
+    assert cli("dry-run", X_AXIS, "--plot", str(tmp_path / "homing.gif")).returncode == 2
