@@ -221,3 +221,56 @@ def test_trace_properties(start, ref_richt, without_pulse, one_phase, fast, slow
         assert math.isclose(abs(trace.final_position - trace.reference["value"]), braking, rel_tol=1e-6, abs_tol=1e-9)
     else:
         assert trace.failure
+
+
+# --- drive-side homing (Triamec drive homing methods) -------------------------------------------
+
+SERCOS_DRIVE = b"kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n"
+
+
+def drive_run(start: float, drive: dict, cam=(40.0, 50.0)):
+    scenario = ScenarioInput(start_position=start, cam=cam, zero_pulse_period=5.0, zero_pulse_phase=1.0,
+                             limit_switches=(-100.0, 100.0), drive=drive)
+    return dry_run(SERCOS_DRIVE, "drive.lis", scenario).trace
+
+
+STANDARD = {
+    "method": "standard", "velocity": 20.0, "acceleration": 200.0, "reference_position": 0.0,
+    "home_position": 10.0, "relocate_distance": -2.0,
+    "first_search": {"trigger": "cam", "signed_max_distance": 80.0},
+    "second_search": {"trigger": "zero_pulse", "signed_max_distance": -10.0},
+}
+
+
+def test_drive_standard_method_by_hand():
+    trace = drive_run(0.0, STANDARD)
+    # v 20 mm/s, a 200 mm/s²: ramps of 0.1 s and 1 mm. First search + to the cam at 40: t = 0.1 + 39/20 = 2.05 s,
+    # stops at 41. Relocate -2 mm -> 39 (triangular, 0.2 s). Second search - (sign of SignedMaxDistance,
+    # pulses are no "active" state) to the pulse at 36: t = 0.1 + 2/20 = 0.2 s -> 2.55 s; stops at 35.
+    # The reference 0 is set at 36, so the axis stands at -1 and moves to the home position 10 (11 mm).
+    assert [p.name for p in trace.phases] == ["first search", "relocate", "second search", "move to home position"]
+    assert [p.direction for p in trace.phases] == ["positive", "negative", "negative", "positive"]
+    assert approx(trace.events[0].time, 2.05) and approx(trace.events[0].position, 40.0)
+    assert approx(trace.reference["position"], 36.0) and approx(trace.reference["value"], 0.0)
+    assert approx(trace.final_position, 10.0)
+    assert approx(trace.phases[-1].end_position, 46.0)
+
+
+def test_drive_search_reverses_when_the_trigger_is_already_active():
+    trace = drive_run(45.0, STANDARD)  # starts on the cam: the first search moves negative, off the cam
+    assert trace.phases[0].direction == "negative"
+    assert approx(trace.events[0].position, 40.0)
+
+
+def test_drive_early_trigger_and_max_distance():
+    early = drive_run(40.001, STANDARD)  # 0.001 mm from the edge: sqrt(2 · 0.001 / 200) = 3.2 ms < 5 ms
+    assert early.outcome == "failed" and "early-trigger" in early.failure
+    far = drive_run(-90.0, {**STANDARD, "first_search": {"trigger": "cam", "signed_max_distance": 50.0}})
+    assert far.outcome == "failed" and "within 50" in far.failure
+
+
+def test_drive_immediate_at_position_and_absolute_encoder():
+    assert drive_run(3.0, {"method": "immediate"}).final_position == 3.0
+    assert drive_run(3.0, {"method": "at-position", "reference_position": 7.5}).final_position == 7.5
+    assert drive_run(3.0, {"method": "absolute-encoder", "encoder_offset": -1.25}).final_position == 1.75
+    assert not drive_run(3.0, {"method": "immediate"}).phases

@@ -245,6 +245,8 @@ class Simulator:
         trace = Trace(self.strategy, scenario, self.unit, self.acceleration)
         x = scenario.start_position if start is None else start
         kind = self.strategy.id
+        if kind == "drive_controlled" and scenario.drive is not None:
+            return self._drive(trace, x, scenario.drive, cam_shift)
         if kind in ("absolute", "ignore_abs_pos", "disabled", "drive_controlled", "none"):
             return self._no_motion(trace, kind)
         if kind == "fixed_stop":
@@ -275,8 +277,8 @@ class Simulator:
             trace.final_position = self.refpkt
         else:
             trace.outcome = "skipped"
-            trace.warn(None, "drive-controlled homing: the drive runs its own sequence, which this version does not "
-                             "simulate yet")
+            trace.warn(None, "drive-controlled homing: the drive runs its own sequence; describe its method in "
+                             "the scenario's [drive] table to simulate it")
         return trace
 
     def _next_pulse(self, x: float, s: int) -> float:
@@ -459,7 +461,115 @@ class Simulator:
         return trace
 
 
-def _point_to_point(trace: Trace, name: str, x: float, t: float, s: int, speed: float, a: float, distance: float):
+    # -- drive-side homing (Triamec drive homing methods) -------------------------------------
+    EARLY_TRIGGER = 0.005  # s: a search whose trigger comes sooner is refused by the drive
+
+    def _drive(self, trace: Trace, x: float, drive, cam_shift: float) -> Trace:
+        values = self.values
+        reference = drive.reference_position
+        if reference is None:
+            reference = self.refpkt if values.get("kenngr.write_reference_position_to_drive") else 0.0
+        if drive.method == "immediate":
+            trace.reference = {"kind": "immediate (no position set)", "position": x, "value": x, "speed": 0.0}
+            trace.final_position = x
+            return trace
+        if drive.method == "at-position":
+            trace.reference = {"kind": "position set at standstill", "position": x, "value": reference, "speed": 0.0}
+            trace.final_position = reference
+            return trace
+        if drive.method == "absolute-encoder":
+            value = x + drive.encoder_offset
+            trace.reference = {"kind": "absolute encoder offset", "position": x, "value": value, "speed": 0.0}
+            trace.final_position = value
+            return trace
+        t = 0.0
+        x, t, first = self._drive_search(trace, "first search", x, t, drive, drive.first_search, cam_shift)
+        if first is None:
+            return trace
+        if drive.relocate_distance:
+            s = 1 if drive.relocate_distance > 0 else -1
+            x, t = _point_to_point(trace, "relocate", x, t, s, drive.velocity, drive.acceleration,
+                                   abs(drive.relocate_distance), "relocation distance travelled")
+        x_end, t, event = self._drive_search(trace, "second search", x, t, drive, drive.second_search, cam_shift)
+        if event is None:
+            return trace
+        self._reference(trace, f"{drive.second_search.trigger.replace('_', ' ')} (drive)", event,
+                        trace.phases[-1].segments[-1].t0, reference, x_end)
+        if drive.home_position is not None:
+            homed_now = trace.final_position
+            distance = drive.home_position - homed_now
+            if distance:
+                s = 1 if distance > 0 else -1
+                x_home, _ = _point_to_point(trace, "move to home position", x_end, t, s, drive.velocity,
+                                            drive.acceleration, abs(distance), "home position reached")
+                trace.final_position = homed_now + (x_home - x_end)
+        return trace
+
+    def _drive_search(self, trace: Trace, name: str, x: float, t: float, drive, search, cam_shift: float):
+        """A search move: direction from the sign of SignedMaxDistance, reversed when the trigger is already active."""
+        speed = drive.velocity * search.dynamic_reduction
+        sign = 1 if search.signed_max_distance > 0 else -1
+        active, crossing = self._trigger(search, cam_shift)
+        initially = active(x)
+        s = -sign if initially else sign
+        distance = crossing(x, s, initially)
+        limit = abs(search.signed_max_distance)
+        ramp = _Ramp(t, x, s, speed, drive.acceleration)
+        if distance > limit:
+            segments, t_end, x_end = ramp.stop(ramp.time_to(limit))
+            trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end,
+                                            "SignedMaxDistance travelled without a trigger", segments))
+            trace.outcome, trace.failure = "failed", f"{name}: no {search.trigger.replace('_', ' ')} within {limit:g} {self.unit}"
+            return x_end, t_end, None
+        t_event = ramp.time_to(distance)
+        if t_event < self.EARLY_TRIGGER:
+            segments, t_end, x_end = ramp.stop(t_event)
+            trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, "early trigger", segments))
+            trace.outcome = "failed"
+            trace.failure = (f"{name}: the trigger came {t_event * 1000:.3g} ms after the start, within the drive's "
+                             f"5 ms early-trigger window; start farther from it")
+            return x_end, t_end, None
+        segments, t_end, x_end = ramp.stop(t_event)
+        x_event = x + s * distance
+        trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end,
+                                        f"{search.trigger.replace('_', ' ')} {'left' if initially else 'found'}", segments))
+        trace.events.append(Event(t + t_event, x_event, f"{name}: {search.trigger.replace('_', ' ')} edge"))
+        return x_end, t_end, x_event
+
+    def _trigger(self, search, cam_shift: float):
+        """(is the trigger active at x, distance to its next edge in direction s)."""
+        scenario = self.scenario
+        if search.trigger == "zero_pulse":
+            return (lambda x: False), (lambda x, s, initially: self._next_pulse(x, s))
+        if search.trigger in ("fixed_stop", "limit_switch"):
+            points = [scenario.fixed_stop] if search.trigger == "fixed_stop" else list(scenario.limit_switches)
+
+            def to_point(x, s, initially):
+                ahead = [(p - x) * s for p in points if p is not None and (p - x) * s >= 0]
+                return min(ahead) if ahead else INF
+
+            return (lambda x: False), to_point
+        if scenario.cam is None:
+            return (lambda x: False), (lambda x, s, initially: INF)
+        lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
+        low = search.active_low
+
+        def active(x):
+            return (lo <= x <= hi) != low
+
+        def edge(x, s, initially):
+            inside = lo <= x <= hi
+            if inside:
+                return hi - x if s > 0 else x - lo
+            if s > 0:
+                return lo - x if x < lo else INF
+            return x - hi if x > hi else INF
+
+        return active, edge
+
+
+def _point_to_point(trace: Trace, name: str, x: float, t: float, s: int, speed: float, a: float, distance: float,
+                    ended_by: str = "retraction distance travelled"):
     """A move of a known length from rest to rest (triangular when too short to reach the speed)."""
     if distance <= 0:
         return x, t
@@ -474,7 +584,7 @@ def _point_to_point(trace: Trace, name: str, x: float, t: float, s: int, speed: 
     x2 = x1 + s * peak * max(cruise, 0.0)
     segments.append(Segment(t2, t2 + t_acc, x2, s * peak, -s * a))
     x_end = x + s * distance
-    trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t2 + t_acc, "retraction distance travelled", segments))
+    trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t2 + t_acc, ended_by, segments))
     return x_end, t2 + t_acc
 
 

@@ -16,12 +16,18 @@ value is listed as "assumed" in the output:
 * the cycle time is the configured CNC cycle (default 1 ms);
 * limit switches sit 10 beyond the software limits;
 * a fixed stop (TORQ) sits 100 away from the start in the homing direction.
+
+Drive-controlled homing is simulated when the scenario describes the drive's
+method in a `[drive]` table (Triamec drive homing: "standard" with two
+searches, a relocation and a move to the home position; "immediate";
+"at-position"; "absolute-encoder").
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
 from pathlib import Path
+from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
@@ -33,6 +39,39 @@ except ModuleNotFoundError:  # Python 3.10
 
 class ScenarioError(Exception):
     """A scenario that cannot be used (exit code 2)."""
+
+
+class SearchInput(BaseModel):
+    """One search move of the drive's "Standard" method (Triamec FirstSearchMove / SecondSearchMove)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    trigger: Literal["cam", "zero_pulse", "fixed_stop", "limit_switch"] = "cam"
+    signed_max_distance: float
+    active_low: bool = False
+    dynamic_reduction: float = Field(1.0, gt=0, le=1)
+
+
+class DriveInput(BaseModel):
+    """The drive's own homing method, for drive-controlled homing (Triamec drive homing)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    method: Literal["standard", "immediate", "at-position", "absolute-encoder"]
+    velocity: float = Field(10.0, gt=0)
+    acceleration: float = Field(100.0, gt=0)
+    reference_position: float | None = None
+    home_position: float | None = None
+    encoder_offset: float = 0.0
+    first_search: SearchInput | None = None
+    relocate_distance: float = 0.0
+    second_search: SearchInput | None = None
+
+    @model_validator(mode="after")
+    def _searches(self):
+        if self.method == "standard" and (self.first_search is None or self.second_search is None):
+            raise ValueError("the standard method needs [drive.first_search] and [drive.second_search]")
+        return self
 
 
 class ScenarioInput(BaseModel):
@@ -49,7 +88,7 @@ class ScenarioInput(BaseModel):
     limit_switches: tuple[float, float] | None = None
     fixed_stop: float | None = None
     cam_jitter: float | None = Field(None, ge=0)
-    drive_method: str | None = None
+    drive: DriveInput | None = None
 
     @model_validator(mode="after")
     def _ordered(self):
@@ -73,7 +112,7 @@ class Scenario:
     limit_switches: tuple[float, float]
     fixed_stop: float | None
     cam_jitter: float = 0.0
-    drive_method: str | None = None
+    drive: DriveInput | None = None
     assumed: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict:
@@ -82,6 +121,7 @@ class Scenario:
         data["cam"] = list(self.cam) if self.cam else None
         data["limit_switches"] = list(self.limit_switches)
         data["assumed"] = list(self.assumed)
+        data["drive"] = self.drive.model_dump() if self.drive else None
         return data
 
 
@@ -141,4 +181,4 @@ def complete(given: ScenarioInput, *, direction: int, rotary: bool, soft_limits:
     stop = pick("fixed_stop", start + direction * 100.0)
     jitter = pick("cam_jitter", 0.0)
     return Scenario(start, tuple(cam), period, phase, latch, cycle, tuple(limits), stop, jitter,
-                    given.drive_method, assumed)
+                    given.drive, assumed)
