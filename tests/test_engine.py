@@ -274,3 +274,22 @@ def test_drive_immediate_at_position_and_absolute_encoder():
     assert drive_run(3.0, {"method": "at-position", "reference_position": 7.5}).final_position == 7.5
     assert drive_run(3.0, {"method": "absolute-encoder", "encoder_offset": -1.25}).final_position == 1.75
     assert not drive_run(3.0, {"method": "immediate"}).phases
+
+
+@pytest.mark.parametrize("mode,extra,expected", [
+    ("plc-cam", {}, 50.0),                                  # the falling edge itself (sampled)
+    ("hardware-sync", {}, 51.0),                            # next zero pulse after the edge (pulses at 1 + 5k)
+    ("software-sync", {"reference_mask_period": 4.0}, 53.0),  # next mask overflow (1 + 4k) after 50
+    ("hardware-latch-pos", {"latch_position": 52.5}, 52.5),
+])
+def test_nc_reference_modes(mode, extra, expected):
+    # Cam [40, 50]; the NC searches the cam negative by default, so starting at 80 it reaches 50 first,
+    # stops on the cam, then moves positive off the falling edge at 50 and on to the mode's event.
+    drive = {"method": "nc", "velocity": 20.0, "acceleration": 200.0, "reference_mode": mode,
+             "reference_position": 0.0, **extra}
+    trace = drive_run(80.0, drive)
+    assert trace.outcome == "homed", trace.failure
+    assert [p.direction for p in trace.phases] == ["negative", "positive"]
+    tolerance = 20.0 * 0.001 + 1e-9 if mode == "plc-cam" else 1e-9  # the cam edge is sampled each cycle
+    assert trace.reference["position"] == pytest.approx(expected, abs=tolerance)
+    assert trace.reference["position"] >= expected - 1e-9

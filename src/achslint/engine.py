@@ -482,6 +482,8 @@ class Simulator:
             trace.reference = {"kind": "absolute encoder offset", "position": x, "value": value, "speed": 0.0}
             trace.final_position = value
             return trace
+        if drive.method == "nc":
+            return self._nc_reference(trace, x, drive, reference, cam_shift)
         t = 0.0
         x, t, first = self._drive_search(trace, "first search", x, t, drive, drive.first_search, cam_shift)
         if first is None:
@@ -504,6 +506,60 @@ class Simulator:
                                             drive.acceleration, abs(distance), "home position reached")
                 trace.final_position = homed_now + (x_home - x_end)
         return trace
+
+    def _nc_reference(self, trace: Trace, x: float, drive, reference: float, cam_shift: float) -> Trace:
+        """TwinCAT NC / AX5000 homing: to the cam, off its falling edge, then the event of the reference mode."""
+        scenario = self.scenario
+        if scenario.cam is None:
+            trace.outcome, trace.failure = "failed", "the NC reference modes need a reference cam in the scenario"
+            return trace
+        lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
+        toward = 1 if drive.invert_cam_search else -1  # the NC searches the cam in negative direction by default
+        away = -toward
+        sync_speed = drive.velocity_sync or drive.velocity
+        saved = self.acceleration, self.cam_level
+        self.acceleration, self.cam_level = drive.acceleration, True
+        try:
+            active, entry, exit_ = self._active(lo, hi)
+            t, travelled = 0.0, 0.0
+            if not active(x):
+                x_end, t, x_cam = self._move(trace, "to the reference cam", x, t, toward, drive.velocity,
+                                             entry(x, toward), False, "the cam was reached", travelled)
+                if x_cam is None:
+                    return trace
+                trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_cam, "cam reached"))
+                travelled += abs(x_end - x)
+                x = x_end
+            edge = exit_(x, away)
+            mode = drive.reference_mode
+            latched = mode != "plc-cam"
+            if mode == "plc-cam":
+                distance, event = edge, "falling cam edge"
+            else:
+                ramp_edge = x + away * edge
+                sync = away if not drive.invert_sync_search else toward
+                if sync != away:
+                    trace.outcome, trace.failure = "failed", "a sync search back towards the cam is not simulated"
+                    return trace
+                if mode == "hardware-sync":
+                    distance, event = edge + self._next_pulse(ramp_edge, away), "sync pulse"
+                elif mode == "software-sync":
+                    period = drive.reference_mask_period or scenario.zero_pulse_period
+                    k = (ramp_edge - scenario.zero_pulse_phase) / period
+                    n = math.ceil(k - 1e-12) if away > 0 else math.floor(k + 1e-12)
+                    distance, event = edge + abs(scenario.zero_pulse_phase + n * period - ramp_edge), "reference mask overflow"
+                else:
+                    if drive.latch_position is None or (drive.latch_position - ramp_edge) * away < 0:
+                        trace.outcome, trace.failure = "failed", "no latch signal after the cam edge (scenario latch_position)"
+                        return trace
+                    distance, event = edge + abs(drive.latch_position - ramp_edge), "hardware latch"
+            x_end, t, x_ref = self._move(trace, "off the cam and reference", x, t, away, sync_speed, distance, latched,
+                                         f"the {event} was detected", travelled)
+            if x_ref is not None:
+                self._reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, reference, x_end)
+            return trace
+        finally:
+            self.acceleration, self.cam_level = saved
 
     def _drive_search(self, trace: Trace, name: str, x: float, t: float, drive, search, cam_shift: float):
         """A search move: direction from the sign of SignedMaxDistance, reversed when the trigger is already active."""

@@ -20,7 +20,9 @@ value is listed as "assumed" in the output:
 Drive-controlled homing is simulated when the scenario describes the drive's
 method in a `[drive]` table (Triamec drive homing: "standard" with two
 searches, a relocation and a move to the home position; "immediate";
-"at-position"; "absolute-encoder").
+"at-position"; "absolute-encoder"; "nc" for the TwinCAT NC / AX5000 reference
+modes PLC cam, hardware sync, software sync with reference mask and hardware
+latch).
 """
 
 from __future__ import annotations
@@ -57,7 +59,7 @@ class DriveInput(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    method: Literal["standard", "immediate", "at-position", "absolute-encoder"]
+    method: Literal["standard", "immediate", "at-position", "absolute-encoder", "nc"]
     velocity: float = Field(10.0, gt=0)
     acceleration: float = Field(100.0, gt=0)
     reference_position: float | None = None
@@ -66,6 +68,14 @@ class DriveInput(BaseModel):
     first_search: SearchInput | None = None
     relocate_distance: float = 0.0
     second_search: SearchInput | None = None
+    # method "nc": TwinCAT NC / AX5000 reference modes
+    reference_mode: Literal["plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos",
+                            "hardware-latch-neg"] = "plc-cam"
+    invert_cam_search: bool = False
+    invert_sync_search: bool = False
+    velocity_sync: float | None = Field(None, gt=0)
+    reference_mask_period: float | None = Field(None, gt=0)
+    latch_position: float | None = None
 
     @model_validator(mode="after")
     def _searches(self):
