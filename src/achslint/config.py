@@ -17,10 +17,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
-try:
-    import tomllib
-except ModuleNotFoundError:  # Python 3.10
-    import tomli as tomllib
+from .tomlfile import read_toml, tomllib
 
 CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
 SeverityName = Literal["error", "warning", "info"]
@@ -126,12 +123,7 @@ def _format_error(path: Path, error: ValidationError) -> str:
 
 def load_file(path: Path) -> ResolvedConfig:
     """Read one configuration file (pyproject.toml: its [tool.achslint] table)."""
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ConfigError(f"cannot read configuration {path}: {exc.strerror or exc}") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise ConfigError(f"configuration {path} is not valid TOML: {exc}") from None
+    data = read_toml(path, "configuration", ConfigError)
     if path.name == "pyproject.toml":
         data = data.get("tool", {}).get("achslint", {})
     try:

@@ -233,6 +233,15 @@ class Simulator:
         trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, ended_by, segments))
         return x_end, t_end, x_detect
 
+    def _edge_move(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float, distance: float,
+                   ended_by: str, event: str, travelled: float) -> tuple[float, float, bool]:
+        """A sampled move to a cam edge that records the edge as an event; False when a bound stopped it."""
+        x_end, t_end, x_edge = self._move(trace, name, x, t, s, speed, distance, False, ended_by, travelled)
+        if x_edge is None:
+            return x_end, t_end, False
+        trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_edge, event))
+        return x_end, t_end, True
+
     def _reference(self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float) -> None:
         trace.events.append(Event(time, position, kind))
         speed = abs(trace.phases[-1].segments[-1].v0)  # the braking segment starts at the event
@@ -368,11 +377,10 @@ class Simulator:
         if active(x):
             trace.events.append(Event(0.0, x, "on the cam at the start: phase 1 skipped"))
         else:
-            x_end, t, x_cam = self._move(trace, "to the reference cam", x, t, s, fast, entry(x, s), False,
-                                         "the cam was reached (sampled each cycle)", travelled)
-            if x_cam is None:
+            x_end, t, reached = self._edge_move(trace, "to the reference cam", x, t, s, fast, entry(x, s),
+                                                "the cam was reached (sampled each cycle)", "cam reached", travelled)
+            if not reached:
                 return trace
-            trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_cam, "cam reached"))
             travelled += abs(x_end - x)
             x = x_end
             if not active(x):
@@ -381,11 +389,10 @@ class Simulator:
                                  f"{fast * fast / (2 * self.acceleration):.4g} {self.unit} is longer than the cam)")
                 return trace
         speed = fast if self.fast_from_cam else slow
-        x_end, t, x_off = self._move(trace, "off the reference cam", x, t, -s, speed, exit_(x, -s), False,
-                                     "the cam was left (sampled each cycle)", travelled)
-        if x_off is None:
+        x_end, t, left = self._edge_move(trace, "off the reference cam", x, t, -s, speed, exit_(x, -s),
+                                         "the cam was left (sampled each cycle)", "cam left", travelled)
+        if not left:
             return trace
-        trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_off, "cam left"))
         travelled += abs(x_end - x)
         x = x_end
         return self._reference_search(trace, "onto the cam and reference", x, t, s, slow, entry(x, s), travelled)
@@ -523,11 +530,10 @@ class Simulator:
             active, entry, exit_ = self._active(lo, hi)
             t, travelled = 0.0, 0.0
             if not active(x):
-                x_end, t, x_cam = self._move(trace, "to the reference cam", x, t, toward, drive.velocity,
-                                             entry(x, toward), False, "the cam was reached", travelled)
-                if x_cam is None:
+                x_end, t, reached = self._edge_move(trace, "to the reference cam", x, t, toward, drive.velocity,
+                                                    entry(x, toward), "the cam was reached", "cam reached", travelled)
+                if not reached:
                     return trace
-                trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_cam, "cam reached"))
                 travelled += abs(x_end - x)
                 x = x_end
             edge = exit_(x, away)

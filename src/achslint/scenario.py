@@ -33,10 +33,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-try:
-    import tomllib
-except ModuleNotFoundError:  # Python 3.10
-    import tomli as tomllib
+from .tomlfile import read_toml
 
 
 class ScenarioError(Exception):
@@ -136,13 +133,7 @@ class Scenario:
 
 
 def read_scenario(path: Path) -> ScenarioInput:
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ScenarioError(f"cannot read scenario {path}: {exc.strerror or exc}") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise ScenarioError(f"scenario {path} is not valid TOML: {exc}") from None
-    return parse_input(data, str(path))
+    return parse_input(read_toml(path, "scenario", ScenarioError), str(path))
 
 
 def parse_input(data: dict, where: str = "scenario") -> ScenarioInput:
