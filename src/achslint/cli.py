@@ -248,8 +248,8 @@ def explain(
 ) -> None:
     """Explain the homing configuration of a list, or describe one parameter."""
     import json
-    from pathlib import Path
 
+    from .decode import UnreadableInput
     from .explain import explain_list, parameter_card, render_card, render_list
 
     path = Path(target)
@@ -258,12 +258,8 @@ def explain(
             report = explain_list(path.read_bytes(), target, gear)
         except OSError as exc:
             _fail(f"cannot read {target}: {exc.strerror or exc}")
-        except Exception as exc:  # noqa: BLE001 - UnreadableInput and friends become one line
-            from .decode import UnreadableInput
-
-            if isinstance(exc, UnreadableInput):
-                _fail(f"{target}: {exc}")
-            raise
+        except UnreadableInput as exc:
+            _fail(f"{target}: {exc}")
         render = render_list
     else:
         from .catalogue import catalogue
@@ -324,7 +320,6 @@ def dry_run_command(
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
     import json
-    from pathlib import Path
 
     from .decode import UnreadableInput
     from .dryrun import dry_run, render, sweep, trace_json
@@ -385,7 +380,6 @@ def config_command(
 ) -> None:
     """Show the configuration that applies to a path."""
     import json
-    from pathlib import Path
 
     from .config import ConfigError, discover, load_file
 
