@@ -215,6 +215,67 @@ def _print_statistics(results) -> None:
 
 
 @app.command()
+def fmt(
+    paths: List[str] = typer.Argument(..., help="Files, directories (searched recursively) or - (formatted to standard output)."),
+    check: bool = typer.Option(False, "--check", help="Change nothing; exit 1 when a file would be reformatted."),
+    diff: bool = typer.Option(False, "--diff", help="Print the changes as a unified diff instead of writing them."),
+    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
+    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name used for input read from -."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors."),
+) -> None:
+    """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
+    from .api import Linter, LintRequest
+    from .config import ConfigError
+    from .decode import UnreadableInput
+    from .fmt import format_bytes, unified_diff, write_atomically
+
+    try:
+        targets, errors = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
+    except ConfigError as exc:
+        _fail(str(exc))
+    changed = 0
+    for target in targets:
+        try:
+            data = sys.stdin.buffer.read() if target.path is None else target.path.read_bytes()
+            formatted, differs = format_bytes(data, target.name)
+        except OSError as exc:
+            errors.append(f"cannot read {target.name}: {exc.strerror or exc}")
+            continue
+        except UnreadableInput as exc:
+            errors.append(f"{target.name}: {exc}")
+            continue
+        if target.path is None and not (check or diff):
+            sys.stdout.buffer.write(formatted)
+            changed += differs
+            continue
+        if not differs:
+            continue
+        changed += 1
+        if diff:
+            typer.echo(unified_diff(data, formatted, target.name), nl=False)
+        elif check:
+            if not quiet:
+                typer.echo(f"would reformat {target.name}")
+        else:
+            try:
+                write_atomically(target.path, formatted)
+            except OSError as exc:
+                errors.append(f"cannot write {target.name}: {exc.strerror or exc}")
+                continue
+            if not quiet:
+                typer.echo(f"reformatted {target.name}")
+    for message in errors:
+        typer.echo(f"achslint: {message}", err=True)
+    if not quiet and not diff and targets and (check or targets[0].path is not None):
+        unchanged = len(targets) - changed
+        verb = "would be reformatted" if check else "reformatted"
+        typer.echo(f"{changed} file{'s' if changed != 1 else ''} {verb}, {unchanged} left unchanged", err=True)
+    if errors:
+        raise typer.Exit(EXIT_ERROR)
+    raise typer.Exit(EXIT_FINDINGS if changed and (check or diff) else EXIT_OK)
+
+
+@app.command()
 def rules() -> None:
     """List every rule with its code, name, default severity and fix."""
     from .docs import rules_table

@@ -1,0 +1,110 @@
+"""`achslint fmt`: the canonical layout of a list, changing whitespace only.
+
+* assignments start in column 1 and their values start in one common column
+  (two blanks after the longest parameter path of the file), separated by
+  blanks, not tabs;
+* one blank before the comment that follows a value — unless the value is a
+  string followed by text that is not a `(` comment, where the blanks may be
+  part of what the CNC reads (LIS007), so they are left alone;
+* no trailing blanks, and whitespace-only lines become empty lines;
+* the end marker stands alone in column 1 and is the last line: blank lines
+  after it are dropped and the file ends with a line break after `Ende`.
+
+Names, values and comment text are never touched, nor are lines the parser
+could not read (LIS001). Each line keeps its own line break, the file keeps
+its encoding and byte-order mark, and formatting twice changes nothing.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import tempfile
+from collections import Counter
+from pathlib import Path
+
+from . import syntax
+from .decode import decode
+
+NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
+
+
+def value_column(file: syntax.ListFile) -> int:
+    """0-based column where every value starts."""
+    lengths = [len(line.path) for line in file.lines if line.kind == syntax.ASSIGNMENT and line.path_ok]
+    return max(lengths, default=0) + 2
+
+
+def _comment_is_free(line: syntax.Line) -> bool:
+    """Whether the blanks before the trailing text are plain separators the CNC ignores."""
+    return line.value_kind in NUMERIC_OR_REFERENCE or (line.rest or "").startswith("(")
+
+
+def format_line(line: syntax.Line, column: int) -> str:
+    """The canonical body of one line (without its line break)."""
+    if line.kind == syntax.BLANK:
+        return ""
+    if line.kind == syntax.COMMENT:
+        return (line.indent + (line.comment or "")).rstrip()
+    if line.kind == syntax.END:
+        rest = f" {line.rest.rstrip()}" if line.rest else ""
+        return (line.path or "") + rest
+    if not line.path_ok or line.value_kind == syntax.BAD_STRING:
+        return line.body.rstrip()
+    if line.value is None:
+        return line.path
+    text = line.path.ljust(column - 1) + " " + line.value
+    if line.rest is not None:
+        separator = " " if _comment_is_free(line) else line.sep2
+        text += separator + line.rest
+    return text.rstrip()
+
+
+def format_file(file: syntax.ListFile) -> str:
+    """The formatted text of a parsed list."""
+    column = value_column(file)
+    lines = list(file.lines)
+    end = file.end_index
+    if end is not None and all(line.kind == syntax.BLANK for line in lines[end + 1:]):
+        lines = lines[: end + 1]
+    newlines = Counter(line.newline for line in file.lines if line.newline)
+    usual = newlines.most_common(1)[0][0] if newlines else "\n"
+    out = []
+    for position, line in enumerate(lines):
+        newline = line.newline
+        if position == len(lines) - 1 and end is not None and position == end and not newline:
+            newline = usual
+        out.append(format_line(line, column) + newline)
+    return "".join(out)
+
+
+def format_bytes(data: bytes, name: str = "<bytes>") -> tuple[bytes, bool]:
+    """(formatted bytes, changed). Raises `decode.UnreadableInput` for UTF-16/32 input."""
+    source = decode(data)
+    file = syntax.parse_text(source.text, name, encoding=source.encoding, bom=source.bom)
+    formatted = source.encode(format_file(file))
+    return formatted, formatted != data
+
+
+def unified_diff(before: bytes, after: bytes, name: str) -> str:
+    old = decode(before).text.splitlines(keepends=True)
+    new = decode(after).text.splitlines(keepends=True)
+    return "".join(difflib.unified_diff(old, new, f"{name} (original)", f"{name} (formatted)"))
+
+
+def write_atomically(path: Path, data: bytes) -> None:
+    """Write next to the file and rename over it: an interrupted run leaves the old file or the new one."""
+    folder = path.parent
+    mode = path.stat().st_mode & 0o7777 if path.exists() else None
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".achslint", dir=folder)
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data)
+            stream.flush()
+            os.fsync(stream.fileno())
+        if mode is not None:
+            os.chmod(temporary, mode)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
