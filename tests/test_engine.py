@@ -293,3 +293,24 @@ def test_nc_reference_modes(mode, extra, expected):
     tolerance = 20.0 * 0.001 + 1e-9 if mode == "plc-cam" else 1e-9  # the cam edge is sampled each cycle
     assert trace.reference["position"] == pytest.approx(expected, abs=tolerance)
     assert trace.reference["position"] >= expected - 1e-9
+
+
+def test_encoder_overflow_by_hand():
+    # 2^10 increments × 0.1 µm (wegaufz = wegaufn = 1) = 0.1024 mm per overflow, lattice anchored at the
+    # scenario's pulse position -102.5. Armed at the cam edge -100, moving negative: the next overflow is at
+    # -102.5 + floor(2.5 / 0.1024) × 0.1024 = -102.5 + 24 × 0.1024 = -100.0424 (computed, not sampled).
+    trace = run("kenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\n", hardware_latch=False)
+    assert trace.reference["kind"] == "encoder overflow"
+    assert approx(trace.reference["position"], -100.0424)
+
+
+def test_spindle_flying_homing_in_degrees():
+    spindle = (b"kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.achs_mode 0x4\nkenngr.ref_ohne_rev 1\n"
+               b"kenngr.ref_ohne_nocken 1\nkenngr.ref_richt 1\ngetriebe[0].vb_reflow 36000\ngetriebe[0].a_ref 360\nEnde\n")
+    trace = dry_run(spindle, "s.lis", ScenarioInput(start_position=0.0, zero_pulse_period=360.0,
+                                                     zero_pulse_phase=90.0, hardware_latch=True)).trace
+    # 36 °/s at 360 °/s²: ramp 0.1 s over 1.8°; the pulse at 90° is reached at 0.1 + 88.2/36 = 2.55 s;
+    # braking 1.8° -> stands at 91.8°, i.e. pos_refpkt (0) + 1.8°.
+    assert trace.strategy.id == "spindle_flying_zero_pulse" and trace.unit == "deg"
+    assert approx(trace.reference["position"], 90.0) and approx(trace.events[-1].time, 2.55)
+    assert approx(trace.final_position, 1.8)
