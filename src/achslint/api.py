@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
 from .context import Options
-from .linter import FileResult, FileSettings, Selection, check_bytes, lint_bytes, lint_path
+from .linter import FileResult, FileSettings, Selection, check_bytes, lint_bytes
 
 # Below this many files, starting worker processes costs more than it saves.
 PARALLEL_THRESHOLD = 8
@@ -22,6 +22,9 @@ class LintRequest:
     config_file: str | None = None
     stdin_filename: str | None = None
     jobs: int | None = None  # None: all cores
+    fix: bool = False
+    unsafe_fixes: bool = False
+    show_diff: bool = False  # with fix: report the changes instead of writing them
 
 
 @dataclass
@@ -100,7 +103,8 @@ class Linter:
     def run(self, stdin=None, progress=None) -> LintOutcome:
         targets, errors = self.discover()
         jobs = self.request.jobs or os.cpu_count() or 1
-        work = [(t.name, str(t.path) if t.path else None, self.settings_for(t)) for t in targets if t.path]
+        mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff)
+        work = [(t.name, str(t.path), self.settings_for(t), mode) for t in targets if t.path]
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD:
             with ProcessPoolExecutor(max_workers=jobs) as pool:
                 disk = list(_track(pool.map(_lint_one, work, chunksize=max(1, len(work) // (jobs * 8))), progress, len(work)))
@@ -111,7 +115,7 @@ class Linter:
         for target in targets:
             if target.path is None:
                 data = stdin.read() if stdin is not None else b""
-                result = check_bytes(data, target.name, self.settings_for(target))
+                result = _process(data, target.name, self.settings_for(target), mode, None)
             else:
                 result = next(from_disk)
             if result.error:
@@ -122,9 +126,39 @@ class Linter:
         return LintOutcome(results, errors, fail_on)
 
 
-def _lint_one(item: tuple[str, str, FileSettings]) -> FileResult:
-    name, path, settings = item
-    return lint_path(Path(path), name, settings)
+def _lint_one(item) -> FileResult:
+    name, path, settings, mode = item
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        return FileResult(name, [], f"cannot read {name}: {exc.strerror or exc}")
+    return _process(data, name, settings, mode, Path(path))
+
+
+def _process(data: bytes, name: str, settings: FileSettings, mode, path: Path | None) -> FileResult:
+    """Lint one list; with --fix, fix it first (writing the file, or describing the change with --diff)."""
+    fix, unsafe, show_diff = mode
+    if not fix:
+        return check_bytes(data, name, settings)
+    from .fixer import fix_bytes
+    from .fmt import unified_diff, write_atomically
+
+    outcome = fix_bytes(data, name, settings, unsafe=unsafe)
+    result = outcome.result
+    result.fixed = outcome.fixed
+    if outcome.data != data:
+        if show_diff:
+            result.diff = unified_diff(data, outcome.data, name, "fixed")
+        elif path is None:
+            result.fixed_data = outcome.data
+        else:
+            try:
+                write_atomically(path, outcome.data)
+            except OSError as exc:
+                result.error = f"cannot write {name}: {exc.strerror or exc}"
+    elif path is None and not show_diff:
+        result.fixed_data = data
+    return result
 
 
 def _track(results, progress, total: int):

@@ -116,6 +116,9 @@ def lint(
     ignore: Optional[List[str]] = typer.Option(None, "--ignore", help="Skip these rule codes or prefixes."),
     fail_on: Optional[FailOn] = typer.Option(None, "--fail-on", help="Lowest severity that makes the exit code 1 (default: error)."),
     exit_zero: bool = typer.Option(False, "--exit-zero", help="Exit 0 even when diagnostics are found."),
+    fix: bool = typer.Option(False, "--fix", help="Apply safe fixes (End -> Ende, BOM, old names, unambiguous typos)."),
+    unsafe_fixes: bool = typer.Option(False, "--unsafe-fixes", help="With --fix, also apply unsafe fixes."),
+    show_diff: bool = typer.Option(False, "--diff", help="With --fix, print the changes as a diff instead of writing them."),
     unknown_parameters: Optional[UnknownParameters] = typer.Option(None, "--unknown-parameters", help="How to report unknown parameter names (default: warn)."),
     include: Optional[str] = typer.Option(None, "--include", help="File name pattern used when searching directories (default: achsmds*.lis)."),
     cycle_time_us: Optional[int] = typer.Option(None, "--cycle-time-us", min=1, help="CNC cycle time in µs (for LIS403; default 1000)."),
@@ -144,7 +147,10 @@ def lint(
         )
     except UsageError as exc:
         _fail(str(exc))
-    request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs)
+    if (unsafe_fixes or show_diff) and not fix:
+        _fail("--unsafe-fixes and --diff go with --fix")
+    request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs,
+                          fix=fix, unsafe_fixes=unsafe_fixes, show_diff=show_diff)
     fmt = output_format.value if output_format else _default_format(sys.stdout)
     try:
         with _progress(quiet) as progress:
@@ -153,10 +159,13 @@ def lint(
         _fail(str(exc))
     for message in outcome.errors:
         typer.echo(f"achslint: {message}", err=True)
+    report_stream = sys.stdout
+    if fix:
+        report_stream = _report_fixes(outcome.results, show_diff, quiet)
     if not quiet:
         from .reporters import get
 
-        get(fmt)(outcome.results, sys.stdout, color=_use_color(color, sys.stdout), sources=outcome.sources)
+        get(fmt)(outcome.results, report_stream, color=_use_color(color, report_stream), sources=outcome.sources)
         if statistics:
             _print_statistics(outcome.results)
     if outcome.errors:
@@ -166,6 +175,25 @@ def lint(
     threshold = Severity(outcome.fail_on).rank
     failing = any(d.severity.rank >= threshold for r in outcome.results for d in r.diagnostics)
     raise typer.Exit(EXIT_FINDINGS if failing and not exit_zero else EXIT_OK)
+
+
+def _report_fixes(results, show_diff: bool, quiet: bool):
+    """Print diffs or fixed standard input; returns where the diagnostics go (stderr when stdout holds content)."""
+    stream = sys.stdout
+    for result in results:
+        if show_diff and result.diff:
+            sys.stdout.write(result.diff)
+        if result.fixed_data is not None:
+            sys.stdout.flush()
+            sys.stdout.buffer.write(result.fixed_data)
+            stream = sys.stderr
+    if show_diff:
+        stream = sys.stderr
+    fixed = sum(r.fixed for r in results)
+    if not quiet:
+        verb = "would fix" if show_diff else "fixed"
+        typer.echo(f"{verb} {fixed} diagnostic{'s' if fixed != 1 else ''}", err=True)
+    return stream
 
 
 class _progress:

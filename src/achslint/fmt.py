@@ -86,10 +86,10 @@ def format_bytes(data: bytes, name: str = "<bytes>") -> tuple[bytes, bool]:
     return formatted, formatted != data
 
 
-def unified_diff(before: bytes, after: bytes, name: str) -> str:
+def unified_diff(before: bytes, after: bytes, name: str, label: str = "formatted") -> str:
     old = decode(before).text.splitlines(keepends=True)
     new = decode(after).text.splitlines(keepends=True)
-    return "".join(difflib.unified_diff(old, new, f"{name} (original)", f"{name} (formatted)"))
+    return "".join(difflib.unified_diff(old, new, f"{name} (original)", f"{name} ({label})"))
 
 
 def write_atomically(path: Path, data: bytes) -> None:

@@ -47,6 +47,9 @@ class FileResult:
     diagnostics: list[Diagnostic]
     error: str | None = None  # the file could not be read or decoded at all
     source_lines: list[str] = field(default_factory=list)  # kept for code frames when there are findings
+    fixed: int = 0  # diagnostics fixed by --fix
+    diff: str = ""  # what --fix --diff would change
+    fixed_data: bytes | None = None  # the fixed content (standard input only)
 
 
 def check_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> FileResult:
