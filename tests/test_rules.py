@@ -13,6 +13,15 @@ from .conftest import FIXTURES
 RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
 
 
+def fixture(rule_dir, kind: str):
+    """The `bad` or `good` fixture of a rule: a list (.lis) or, for XML rules, an XML file."""
+    for suffix in (".lis", ".xml"):
+        candidate = rule_dir / f"{kind}{suffix}"
+        if candidate.exists():
+            return candidate
+    raise FileNotFoundError(f"{rule_dir} has no {kind}.lis or {kind}.xml")
+
+
 def selection(rule_dir):
     """The rule itself, plus the codes in `also_select` (LIS009 needs the rules its suppressions name)."""
     extra = rule_dir / "also_select"
@@ -31,7 +40,7 @@ def expected(path):
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])
 def test_bad_fixture_triggers_rule(rule_dir):
     code = rule_dir.name
-    found = [d for d in lint(rule_dir / "bad.lis", select=selection(rule_dir)) if d.code == code]
+    found = [d for d in lint(fixture(rule_dir, "bad"), select=selection(rule_dir)) if d.code == code]
     assert sorted((d.line, d.code) for d in found) == expected(rule_dir / "bad.expected")
     for diagnostic in found:
         assert diagnostic.message, "every diagnostic explains itself"
@@ -41,16 +50,16 @@ def test_bad_fixture_triggers_rule(rule_dir):
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])
 def test_good_fixture_is_clean_for_rule(rule_dir):
     code = rule_dir.name
-    assert [d for d in lint(rule_dir / "good.lis", select=selection(rule_dir)) if d.code == code] == []
+    assert [d for d in lint(fixture(rule_dir, "good"), select=selection(rule_dir)) if d.code == code] == []
 
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])
 def test_good_fixture_has_no_errors_at_all(rule_dir):
     """The good variant is a correct list: no rule reports an error or warning on it."""
-    found = [d for d in lint(rule_dir / "good.lis") if d.severity.value != "info"]
+    found = [d for d in lint(fixture(rule_dir, "good")) if d.severity.value != "info"]
     assert found == []
 
 
 def test_every_rule_has_fixtures():
-    missing = [code for code in registry() if not (FIXTURES / "rules" / code / "bad.lis").is_file()]
+    missing = [code for code in registry() if not list((FIXTURES / "rules" / code).glob("bad.*"))]
     assert missing == []

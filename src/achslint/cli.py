@@ -261,8 +261,13 @@ def fmt(
         targets, errors = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
     except ConfigError as exc:
         _fail(str(exc))
+    from .xmlinput import is_xml
+
     changed = 0
     for target in targets:
+        if is_xml(target.name):
+            errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            continue
         try:
             data = sys.stdin.buffer.read() if target.path is None else target.path.read_bytes()
             formatted, differs = format_bytes(data, target.name)

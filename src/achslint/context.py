@@ -27,6 +27,7 @@ class Context:
     file: syntax.ListFile
     options: Options = field(default_factory=Options)
     catalogue: Catalogue = field(default_factory=catalogue)
+    embedded: object = None  # xmlinput.EmbeddedList when the list came from an XML file
 
     @cached_property
     def analysis(self) -> Analysis:

@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from . import suppression
@@ -15,6 +15,7 @@ from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .rules import matches, registry
 from .syntax import parse_bytes
+from .xmlinput import is_xml
 
 
 @dataclass
@@ -53,13 +54,19 @@ class FileResult:
 
 
 def check_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> FileResult:
-    """Lint the bytes of one list; unreadable input becomes a result with `error` set."""
+    """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`."""
     settings = settings or FileSettings()
+    if is_xml(name):
+        return _check_xml(data, name, settings)
     try:
         file = parse_bytes(data, name)
     except UnreadableInput as exc:
         return FileResult(name, [], f"{name}: {exc}")
-    ctx = Context(name, file, settings.options)
+    return _check_file(file, name, settings)
+
+
+def _check_file(file, name: str, settings: FileSettings, embedded=None) -> FileResult:
+    ctx = Context(name, file, settings.options, embedded=embedded)
     enabled = settings.selection.enabled
     rules = registry()
     diagnostics: list[Diagnostic] = []
@@ -78,6 +85,32 @@ def check_bytes(data: bytes, name: str, settings: FileSettings | None = None) ->
             diagnostic.severity = Severity(override)
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = [line.body for line in file.lines] if diagnostics else []
+    return FileResult(name, diagnostics, None, lines)
+
+
+def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
+    """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
+    from .syntax import parse_text
+    from .xmlinput import _text_of, extract
+
+    try:
+        lists = extract(data, name)
+    except UnreadableInput as exc:
+        return FileResult(name, [], str(exc))
+    diagnostics: list[Diagnostic] = []
+    for embedded in lists:
+        result = _check_file(parse_text(embedded.text, name), name, settings, embedded)
+        for d in result.diagnostics:
+            d.line, d.column = embedded.position(d.line, d.column)
+            d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
+            if d.end_line < d.line or (d.end_line == d.line and d.end_column <= d.column):
+                d.end_line, d.end_column = d.line, d.column + 1
+            d.related = [replace(r, line=embedded.position(r.line, r.column)[0],
+                                 column=embedded.position(r.line, r.column)[1]) for r in d.related]
+            d.fix = None  # edits refer to the embedded text; XML files are not rewritten
+            diagnostics.append(d)
+    diagnostics.sort(key=Diagnostic.sort_key)
+    lines = _text_of(data).splitlines() if diagnostics else []
     return FileResult(name, diagnostics, None, lines)
 
 

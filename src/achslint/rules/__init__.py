@@ -61,6 +61,7 @@ RULE_MODULES = (
     "lis402_one_phase_with_cam",
     "lis403_cam_edge_repeatability",
     "lis404_homing_acceleration_fallback",
+    "lis505_xml_axis_definition",
 )
 
 SECTIONS = ("What", "Why", "Example", "Use instead", "Reference")
