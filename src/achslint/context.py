@@ -28,6 +28,7 @@ class Context:
     options: Options = field(default_factory=Options)
     catalogue: Catalogue = field(default_factory=catalogue)
     embedded: object = None  # xmlinput.EmbeddedList when the list came from an XML file
+    default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
 
     @cached_property
     def analysis(self) -> Analysis:
@@ -38,7 +39,8 @@ class Context:
         """Effective values of the axis (defaults filled in, references resolved)."""
         from .effective import AxisValues
 
-        return AxisValues(self.analysis, cat=self.catalogue)
+        defaults = analyse(self.default_file, self.catalogue) if self.default_file is not None else None
+        return AxisValues(self.analysis, defaults, cat=self.catalogue)
 
     @cached_property
     def strategy(self):

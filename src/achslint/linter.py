@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from . import suppression
+from . import machine, suppression
 from .context import Context, Options
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
@@ -51,22 +51,27 @@ class FileResult:
     fixed: int = 0  # diagnostics fixed by --fix
     diff: str = ""  # what --fix --diff would change
     fixed_data: bytes | None = None  # the fixed content (standard input only)
+    summary: dict | None = None  # what the machine-level rules need (machine.summary)
 
 
-def check_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> FileResult:
-    """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`."""
+def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None) -> FileResult:
+    """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`.
+
+    `defaults` is the default axis list the CNC loads underneath (start-up key default_achs_mds).
+    """
     settings = settings or FileSettings()
     if is_xml(name):
         return _check_xml(data, name, settings)
     try:
         file = parse_bytes(data, name)
+        default_file = parse_bytes(defaults, "default list") if defaults is not None else None
     except UnreadableInput as exc:
         return FileResult(name, [], f"{name}: {exc}")
-    return _check_file(file, name, settings)
+    return _check_file(file, name, settings, default_file=default_file)
 
 
-def _check_file(file, name: str, settings: FileSettings, embedded=None) -> FileResult:
-    ctx = Context(name, file, settings.options, embedded=embedded)
+def _check_file(file, name: str, settings: FileSettings, embedded=None, default_file=None) -> FileResult:
+    ctx = Context(name, file, settings.options, embedded=embedded, default_file=default_file)
     enabled = settings.selection.enabled
     rules = registry()
     diagnostics: list[Diagnostic] = []
@@ -85,7 +90,7 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None) -> FileR
             diagnostic.severity = Severity(override)
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = [line.body for line in file.lines] if diagnostics else []
-    return FileResult(name, diagnostics, None, lines)
+    return FileResult(name, diagnostics, None, lines, summary=machine.summary(ctx))
 
 
 def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:

@@ -5,7 +5,9 @@ A rule is a module with `CODE`, `NAME`, `SEVERITY`, `FIX` ("none", "safe",
 What / Why / Example / Use instead / Reference, and a `check(ctx)` generator
 of diagnostics — or, for rules about the other rules' results (LIS009), a
 `check_after(ctx, directives, enabled)` generator that runs after
-suppressions were applied. `achslint rule CODE` prints that docstring.
+suppressions were applied, or — for machine-level rules (LIS5xx) — a
+`check_machine(members, startups)` generator over the summaries of a machine's
+axis lists. `achslint rule CODE` prints that docstring.
 """
 
 from __future__ import annotations
@@ -61,6 +63,10 @@ RULE_MODULES = (
     "lis402_one_phase_with_cam",
     "lis403_cam_edge_repeatability",
     "lis404_homing_acceleration_fallback",
+    "lis501_duplicate_axis_number",
+    "lis502_duplicate_axis_name",
+    "lis503_gantry_master_missing",
+    "lis504_missing_list",
     "lis505_xml_axis_definition",
 )
 
@@ -79,6 +85,7 @@ class Rule:
     module: ModuleType
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
     check_after: Callable | None = None
+    check_machine: Callable | None = None
 
     def section(self, title: str) -> str:
         """The text of one docstring section ("What", "Why", ...)."""
@@ -102,6 +109,7 @@ def registry() -> dict[str, Rule]:
             module=module,
             parameters=tuple(getattr(module, "PARAMETERS", ())),
             check_after=getattr(module, "check_after", None),
+            check_machine=getattr(module, "check_machine", None),
         )
     return rules
 

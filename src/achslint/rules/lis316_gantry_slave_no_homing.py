@@ -1,15 +1,18 @@
 """
 What
 ----
-`kenngr.gantry_slave_no_homing = 1` on a spindle. (The machine-level part of
-this rule — the master's retraction distance against the slave's resettable
-distance, P-ERR-70651 — needs both axis lists and is checked when a whole
-machine is linted.)
+`kenngr.gantry_slave_no_homing = 1` on a spindle; and, when a whole machine is
+linted, a gantry master homing to a fixed stop whose retraction distance
+(`kenngr.homing.torq_retraction_distance`) is not larger than the slave's
+resettable distance (`kenngr.gantry_max_diff_resetable`).
 
 Why
 ---
 Suppressing the slave's homing is a gantry function for linear and rotary
-axes; the parameter is not supported for spindles.
+axes; the parameter is not supported for spindles. After the fixed stop the
+master must retract further than the slave may deviate, or the gantry
+difference cannot be cleared; the CNC raises the resettable distance to the
+retraction distance with warning P-ERR-70651.
 
 Example
 -------
@@ -24,16 +27,21 @@ Remove `kenngr.gantry_slave_no_homing` from the spindle's list.
 
 Reference
 ---------
-P-AXIS-00074 (axis types T, R; not supported for spindles); TF5200 homing manual §2.3.3.4.5.
+P-AXIS-00074 (axis types T, R; not supported for spindles); TF5200 homing manual §2.3.3.4.5
+(retraction vs resettable distance, P-ERR-70651).
 """
 
 from __future__ import annotations
+
+from ..diagnostics import Related, Severity
+from ..machine import diagnostic
 
 CODE = "LIS316"
 NAME = "gantry-slave-no-homing"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.gantry_slave_no_homing",)  # parameters this rule reads
+PARAMETERS = ("kenngr.gantry_slave_no_homing", "kenngr.homing.torq_retraction_distance",
+              "kenngr.gantry_max_diff_resetable")  # parameters this rule reads
 SUMMARY = "Gantry slave homing suppression on a spindle"
 
 
@@ -45,3 +53,18 @@ def check(ctx):
             f"{ctx.show('kenngr.gantry_slave_no_homing')} is not supported for spindles (kenngr.achs_typ 4); remove it",
             ["kenngr.gantry_slave_no_homing", "kenngr.achs_typ"],
         )
+
+
+def check_machine(members, startups):
+    by_number = {info["achs_nr"]: (name, info) for name, info in members}
+    for name, info in members:
+        master = by_number.get(info["gantry_ax_nr"]) if info["gantry_ax_nr"] else None
+        if master is None or not master[1]["torq"] or master[1]["retraction"] > info["resettable"]:
+            continue
+        line, column = master[1].get("achs_nr_at") or (1, 1)
+        yield diagnostic(
+            CODE, (name, info), "gantry_at",
+            f"the gantry master {master[0]} retracts {master[1]['retraction']} [0.1 µm] after its fixed stop, not more "
+            f"than this slave's kenngr.gantry_max_diff_resetable {info['resettable']}; the CNC raises the resettable "
+            "distance to the retraction distance (P-ERR-70651)",
+            Severity.ERROR, [Related(master[0], line, column, "kenngr.homing.torq_retraction_distance", "master")])

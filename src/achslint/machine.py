@@ -1,0 +1,109 @@
+"""Whole machines: several axis lists checked together (LIS501–LIS504).
+
+A machine is the set of axis lists named by a start-up list (`hochlauf.lis`,
+entries `achs_mds[i]`, with `default_achs_mds` applied under each of them the
+way the CNC loads them), or else the axis lists of one folder. Each linted list
+contributes a small summary (logical axis number, axis name, gantry settings,
+with their lines); rules with a `check_machine(members, startups)` function
+compare the summaries.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .diagnostics import Diagnostic, Related, Severity
+
+STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
+_ENTRY = re.compile(r"^\s*(?P<key>achs_mds\[(?P<index>\d+)\]|default_achs_mds)\s+(?P<value>\S+)", re.M)
+
+
+@dataclass
+class StartupEntry:
+    key: str
+    raw: str
+    line: int
+    column: int
+    path: Path | None  # resolved file, None when it does not exist
+
+
+@dataclass
+class Startup:
+    path: Path
+    default: StartupEntry | None = None
+    axes: list[StartupEntry] = field(default_factory=list)
+
+
+def is_startup_list(path: Path) -> bool:
+    return any(fnmatch.fnmatch(path.name.lower(), pattern) for pattern in STARTUP_NAMES)
+
+
+def _resolve(raw: str, startup: Path) -> Path | None:
+    """Relative entries are taken from the start-up list's folder; lists kept as `./listen/x.lis` next to a
+    start-up list inside `listen/` (the SDK layout) are found from the parent folder too."""
+    candidate = Path(raw.strip('"'))
+    if candidate.is_absolute():
+        return candidate if candidate.is_file() else None
+    for base in (startup.parent, startup.parent.parent, Path.cwd()):
+        if (base / candidate).is_file():
+            return base / candidate
+    return None
+
+
+def read_startup(path: Path) -> Startup:
+    text = path.read_bytes().decode("latin-1")
+    end = re.search(r"^\s*Ende\s*$", text, re.M)
+    if end:
+        text = text[: end.start()]
+    startup = Startup(path)
+    for match in _ENTRY.finditer(text):
+        line = text.count("\n", 0, match.start("key")) + 1
+        column = match.start("value") - (text.rfind("\n", 0, match.start("value")) + 1) + 1
+        entry = StartupEntry(match.group("key"), match.group("value"), line, column, _resolve(match.group("value"), path))
+        if entry.key == "default_achs_mds":
+            startup.default = entry
+        else:
+            startup.axes.append(entry)
+    return startup
+
+
+def summary(ctx) -> dict:
+    """What the machine checks need from one axis list (small and picklable)."""
+    values = ctx.values
+
+    def at(path):
+        setting = values.in_list(path)
+        return (setting.line.number, setting.line.path_column) if setting else None
+
+    return {
+        "achs_nr": values.get("kopf.achs_nr"), "achs_nr_at": at("kopf.achs_nr"),
+        "name": values.get("kopf.log_achs_name"), "name_at": at("kopf.log_achs_name"),
+        "gantry_ax_nr": values.get("kenngr.gantry_ax_nr"), "gantry_at": at("kenngr.gantry_ax_nr"),
+        "resettable": values.get("kenngr.gantry_max_diff_resetable"),
+        "retraction": values.get("kenngr.homing.torq_retraction_distance"),
+        "torq": values.homing_type == "TORQ",
+    }
+
+
+def diagnostic(code: str, member: tuple[str, dict], where: str, message: str, severity: Severity,
+               related: list[Related] | None = None) -> Diagnostic:
+    """A machine-level diagnostic at a member list's line for `where` (or its first line)."""
+    name, info = member
+    line, column = info.get(where) or (1, 1)
+    return Diagnostic(name, line, column, line, column + 1, code, severity, message, related=related or [])
+
+
+def first_uses(members: list[tuple[str, dict]], key: str):
+    """(member, first member with the same value) for every repeated value of `key`."""
+    first: dict = {}
+    for member in members:
+        value = member[1][key]
+        if value in (None, "", 0):
+            continue
+        if value in first:
+            yield member, first[value]
+        else:
+            first[value] = member

@@ -1,0 +1,52 @@
+"""
+What
+----
+Two axis lists of the same machine use the same logical axis number
+`kopf.achs_nr`. A machine is the lists of one start-up list (`hochlauf.lis`,
+`achs_mds[i]`) or, without one, the `achsmds*.lis` of one folder.
+
+Why
+---
+The logical axis number identifies the axis everywhere in the CNC (channel
+assignment, gantry coupling, PLC interface). Two lists with the same number
+usually come from copying a list and forgetting to renumber it: one axis then
+silently takes over the other's parameters.
+
+Example
+-------
+```
+achsmds1.lis:  kopf.achs_nr   1
+achsmds2.lis:  kopf.achs_nr   1
+```
+
+Use instead
+-----------
+```
+achsmds2.lis:  kopf.achs_nr   2
+```
+
+Reference
+---------
+P-AXIS-00016 (logical axis number, unique per machine).
+"""
+
+from __future__ import annotations
+
+from ..diagnostics import Related, Severity
+from ..machine import diagnostic, first_uses
+
+CODE = "LIS501"
+NAME = "duplicate-axis-number"
+SEVERITY = "warning"
+FIX = "none"
+PARAMETERS = ("kopf.achs_nr",)  # parameters this rule reads
+SUMMARY = "Two axis lists of a machine with the same logical axis number"
+
+
+def check_machine(members, startups):
+    for member, other in first_uses(members, "achs_nr"):
+        line, column = other[1].get("achs_nr_at") or (1, 1)
+        yield diagnostic(CODE, member, "achs_nr_at",
+                         f"logical axis number kopf.achs_nr {member[1]['achs_nr']} is also used by {other[0]}; "
+                         "every axis of a machine needs its own", Severity.WARNING,
+                         [Related(other[0], line, column, "kopf.achs_nr", "first use")])

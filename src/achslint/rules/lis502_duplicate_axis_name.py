@@ -1,0 +1,50 @@
+"""
+What
+----
+Two axis lists of the same machine use the same axis name
+`kopf.log_achs_name`.
+
+Why
+---
+Programs address axes by name (`G01 X…`); two axes with one name make the
+channel configuration ambiguous, and the second one is not reachable under
+the name you expect.
+
+Example
+-------
+```
+achsmds1.lis:  kopf.log_achs_name   X
+achsmds3.lis:  kopf.log_achs_name   X
+```
+
+Use instead
+-----------
+```
+achsmds3.lis:  kopf.log_achs_name   Z
+```
+
+Reference
+---------
+P-AXIS-00297 (default axis name).
+"""
+
+from __future__ import annotations
+
+from ..diagnostics import Related, Severity
+from ..machine import diagnostic, first_uses
+
+CODE = "LIS502"
+NAME = "duplicate-axis-name"
+SEVERITY = "warning"
+FIX = "none"
+PARAMETERS = ("kopf.log_achs_name",)  # parameters this rule reads
+SUMMARY = "Two axis lists of a machine with the same axis name"
+
+
+def check_machine(members, startups):
+    for member, other in first_uses(members, "name"):
+        line, column = other[1].get("name_at") or (1, 1)
+        yield diagnostic(CODE, member, "name_at",
+                         f"axis name kopf.log_achs_name `{member[1]['name']}` is also used by {other[0]}; give each "
+                         "axis its own name", Severity.WARNING,
+                         [Related(other[0], line, column, "kopf.log_achs_name", "first use")])

@@ -1,0 +1,49 @@
+"""
+What
+----
+A gantry slave (`kenngr.gantry_ax_nr` set) whose master — the axis with that
+logical axis number — is not among the machine's axis lists.
+
+Why
+---
+The slave follows its master; with a wrong number it is coupled to the wrong
+axis or to none, and the gantry difference monitoring compares the wrong pair.
+
+Example
+-------
+```
+achsmds2.lis:  kenngr.gantry_ax_nr   7      (no list with kopf.achs_nr 7)
+```
+
+Use instead
+-----------
+```
+achsmds2.lis:  kenngr.gantry_ax_nr   1      (the master's kopf.achs_nr)
+```
+
+Reference
+---------
+P-AXIS-00070 (axis number of the gantry master), TF5200 gantry manual.
+"""
+
+from __future__ import annotations
+
+from ..diagnostics import Severity
+from ..machine import diagnostic
+
+CODE = "LIS503"
+NAME = "gantry-master-missing"
+SEVERITY = "warning"
+FIX = "none"
+PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule reads
+SUMMARY = "Gantry slave whose master axis is not in the machine"
+
+
+def check_machine(members, startups):
+    numbers = {info["achs_nr"] for _, info in members}
+    for member in members:
+        master = member[1]["gantry_ax_nr"]
+        if master and master not in numbers:
+            yield diagnostic(CODE, member, "gantry_at",
+                             f"kenngr.gantry_ax_nr {master} names a gantry master, but no axis list of this machine "
+                             "has that kopf.achs_nr", Severity.WARNING)

@@ -1,0 +1,49 @@
+"""
+What
+----
+A start-up list entry (`achs_mds[i]` or `default_achs_mds`) that names an axis
+list which does not exist. Relative names are looked up next to the start-up
+list and one folder above it (the SDK keeps `./listen/…` names in a start-up
+list inside `listen/`).
+
+Why
+---
+The CNC aborts the start-up when a list named in the start-up list is
+missing or unreadable.
+
+Example
+-------
+```
+achs_mds[2]          ./listen/achsmds3.lis      (file not there)
+```
+
+Use instead
+-----------
+Fix the path, add the list, or remove the entry (and lower `zahl_mds`).
+
+Reference
+---------
+P-STUP-00015 (achs_mds[i]) and P-STUP-00035 (default_achs_mds); list format facts §9.
+"""
+
+from __future__ import annotations
+
+from ..diagnostics import Diagnostic, Severity
+
+CODE = "LIS504"
+NAME = "missing-list"
+SEVERITY = "error"
+FIX = "none"
+SUMMARY = "Start-up list names an axis list that does not exist"
+
+
+def check_machine(members, startups):
+    for startup in startups:
+        for entry in ([startup.default] if startup.default else []) + startup.axes:
+            if entry.path is None:
+                yield Diagnostic(
+                    str(startup.path), entry.line, entry.column, entry.line, entry.column + len(entry.raw), CODE,
+                    Severity.ERROR,
+                    f"`{entry.key}` names `{entry.raw}`, which does not exist (looked next to the start-up list and "
+                    "one folder up); the CNC aborts the start-up when a list is missing",
+                )
