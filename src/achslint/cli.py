@@ -466,6 +466,35 @@ def _sweep_words(summary: dict) -> str:
     return text
 
 
+@app.command("diff")
+def diff_command(
+    a: str = typer.Argument(..., help="First list."),
+    b: str = typer.Argument(..., help="Second list."),
+    defaults: Optional[str] = typer.Option(None, "--defaults", help="Default axis list loaded under both lists."),
+    output_format: ExplainFormat = typer.Option(ExplainFormat.text, "--format", "--output-format", help="text or json."),
+    color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+) -> None:
+    """Show how two lists differ in their effective values (after defaults), by parameter with units."""
+    import json
+
+    from .decode import UnreadableInput
+    from .listdiff import diff_lists, render
+
+    try:
+        paths = [Path(a), Path(b)] + ([Path(defaults)] if defaults else [])
+        contents = [path.read_bytes() for path in paths]
+        report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
+    except OSError as exc:
+        _fail(f"cannot read {exc.filename}: {exc.strerror or exc}")
+    except UnreadableInput as exc:
+        _fail(str(exc))
+    if output_format == ExplainFormat.json:
+        typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
+    else:
+        render(report, _console(_use_color(color, sys.stdout)))
+    raise typer.Exit(EXIT_FINDINGS if report["differences"] or report["unknown_parameters"] else EXIT_OK)
+
+
 @app.command("config")
 def config_command(
     show: bool = typer.Option(False, "--show", help="Print the resolved settings."),

@@ -1,0 +1,67 @@
+"""`achslint diff A B`: how two lists differ in what the CNC ends up with.
+
+Both lists are read the way the CNC loads them (built-in defaults, then an
+optional default list, then the list), so formatting, comments, old names,
+hex or decimal spelling and assignments that repeat the default make no
+difference. The result lists every parameter whose effective value differs,
+with units.
+"""
+
+from __future__ import annotations
+
+from .analysis import analyse
+from .effective import AxisValues
+from .syntax import parse_bytes
+from .units import to_human, unit_label
+
+
+def _values(data: bytes, name: str, defaults: bytes | None) -> AxisValues:
+    default_analysis = analyse(parse_bytes(defaults, "default list")) if defaults is not None else None
+    return AxisValues(analyse(parse_bytes(data, name)), default_analysis)
+
+
+def _plain(value):
+    return int(value) if isinstance(value, bool) else value
+
+
+def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | None = None) -> dict:
+    left, right = _values(a, a_name, defaults), _values(b, b_name, defaults)
+    paths = sorted(set(left._origins) | set(right._origins))
+    rows = []
+    for path in paths:
+        before, after = left.get(path), right.get(path)
+        if before == after:
+            continue
+        parameter = left.parameter(path)
+        unit = parameter.unit(right.axis_type)
+        rows.append({
+            "parameter": path,
+            "p_axis": parameter.id,
+            "a": _plain(before), "b": _plain(after),
+            "unit": unit_label(unit) or None,
+            "a_human": to_human(before, unit) if isinstance(before, (int, float)) and not isinstance(before, bool) else None,
+            "b_human": to_human(after, unit) if isinstance(after, (int, float)) and not isinstance(after, bool) else None,
+            "a_source": str(left.origin(path)), "b_source": str(right.origin(path)),
+        })
+    unknown_a = {s.line.path: s.line.value or "" for s in left.analysis.settings if not s.known}
+    unknown_b = {s.line.path: s.line.value or "" for s in right.analysis.settings if not s.known}
+    unknown = [{"parameter": path, "a": unknown_a.get(path), "b": unknown_b.get(path)}
+               for path in sorted(set(unknown_a) | set(unknown_b)) if unknown_a.get(path) != unknown_b.get(path)]
+    return {"version": 1, "a": a_name, "b": b_name, "differences": rows, "unknown_parameters": unknown}
+
+
+def render(report: dict, console) -> None:
+    from rich.table import Table
+
+    if not report["differences"] and not report["unknown_parameters"]:
+        console.print(f"{report['a']} and {report['b']} configure the axis the same way")
+        return
+    table = Table(title=f"{report['a']} → {report['b']}", title_justify="left")
+    for column in ("parameter", "id", "A", "B", "unit", "A human", "B human", "A from", "B from"):
+        table.add_column(column, overflow="fold")
+    for row in report["differences"]:
+        table.add_row(row["parameter"], row["p_axis"], str(row["a"]), str(row["b"]), row["unit"] or "",
+                      row["a_human"] or "", row["b_human"] or "", row["a_source"], row["b_source"])
+    console.print(table)
+    for row in report["unknown_parameters"]:
+        console.print(f"unknown parameter {row['parameter']}: {row['a']!r} → {row['b']!r}")
