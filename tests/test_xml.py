@@ -103,3 +103,12 @@ def test_fix_and_fmt_never_rewrite_xml(cli, tmp_path):
     result = cli("fmt", str(path))
     assert result.returncode == 2 and b"not XML" in result.stderr
     assert path.read_bytes() == data
+
+
+def test_twincat_project_axes_form_one_machine():
+    axis = (b"<IsgAxisDef><DriveType>1</DriveType><AchsMds><![CDATA[kopf.achs_nr 1\n"
+            b"kopf.log_achs_name AXIS_%d\nEnde\n]]></AchsMds></IsgAxisDef>\n")
+    project = b"<TcSmProject>\n" + axis % 1 + axis % 2 + b"</TcSmProject>\n"
+    results = found(project, "machine.tsproj")
+    assert (6, 55, "LIS501") in results  # the second axis (its list starts on XML line 6) repeats number 1
+    assert not [r for r in results if r[2] == "LIS502"]

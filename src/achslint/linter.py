@@ -93,6 +93,15 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
     return FileResult(name, diagnostics, None, lines, summary=machine.summary(ctx))
 
 
+def _mapped_summary(summary: dict, embedded) -> dict:
+    """A list's machine summary with its positions moved into the XML file."""
+    mapped = dict(summary)
+    for key, value in summary.items():
+        if key.endswith("_at") and value is not None:
+            mapped[key] = embedded.position(*value)
+    return mapped
+
+
 def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
     from .syntax import parse_text
@@ -103,8 +112,10 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     except UnreadableInput as exc:
         return FileResult(name, [], str(exc))
     diagnostics: list[Diagnostic] = []
+    members: list[tuple[str, dict]] = []
     for embedded in lists:
         result = _check_file(parse_text(embedded.text, name), name, settings, embedded)
+        members.append((name, _mapped_summary(result.summary, embedded)))
         for d in result.diagnostics:
             d.line, d.column = embedded.position(d.line, d.column)
             d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
@@ -114,6 +125,10 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
                                  column=embedded.position(r.line, r.column)[1]) for r in d.related]
             d.fix = None  # edits refer to the embedded text; XML files are not rewritten
             diagnostics.append(d)
+    if len(members) > 1:  # a TwinCAT project: its axes form one machine
+        for code, rule in registry().items():
+            if rule.check_machine is not None and settings.selection.enabled(code):
+                diagnostics.extend(rule.check_machine(members, []))
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = _text_of(data).splitlines() if diagnostics else []
     return FileResult(name, diagnostics, None, lines)
