@@ -102,13 +102,16 @@ class Analysis:
     axis_type: str = "T"
     axis_type_known: bool = False
     drive_type: int | None = None
+    _groups: dict | None = None
 
     def by_canonical(self) -> dict[str, list[Setting]]:
-        groups: dict[str, list[Setting]] = {}
-        for setting in self.settings:
-            if setting.canonical is not None:
-                groups.setdefault(setting.canonical, []).append(setting)
-        return groups
+        """Known assignments grouped by canonical path (computed once)."""
+        if self._groups is None:
+            self._groups = {}
+            for setting in self.settings:
+                if setting.canonical is not None:
+                    self._groups.setdefault(setting.canonical, []).append(setting)
+        return self._groups
 
 
 _COMMENT_STARTS = ("#", "/*", ";")

@@ -188,6 +188,7 @@ class Catalogue:
             for pid, bits in data.get("bitfields", {}).items()
         }
         self.drive_type_names: dict[int, str] = {int(k): v for k, v in data.get("drive_types", {}).items()}
+        self._resolved: dict[str, Resolution | None] = {}
 
     @staticmethod
     def _entry(raw: dict) -> Parameter:
@@ -200,6 +201,13 @@ class Catalogue:
 
     def resolve(self, path: str) -> Resolution | None:
         """The parameter a written path refers to (canonical name or alias), if any."""
+        if path not in self._resolved:
+            if len(self._resolved) > 1 << 16:
+                self._resolved.clear()  # bounded: pathological inputs with endless distinct names
+            self._resolved[path] = self._resolve(path)
+        return self._resolved[path]
+
+    def _resolve(self, path: str) -> Resolution | None:
         pattern, indices = path_pattern(path)
         parameter = self.by_pattern.get(pattern)
         if parameter is not None:

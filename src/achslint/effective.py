@@ -46,6 +46,7 @@ class AxisValues:
         self.analysis = analysis
         self._values: dict[str, object] = {}
         self._origins: dict[str, Origin] = {}
+        self._stages: dict[str, set[int]] | None = None
         layers = [(defaults, "default list"), (analysis, "list")] if defaults else [(analysis, "list")]
         for layer, kind in layers:
             for setting in layer.settings:
@@ -99,12 +100,15 @@ class AxisValues:
 
     def gear_stages_set(self, *members: str) -> list[int]:
         """Gear stages (0..5) in which any of the given `getriebe[i].…` members is set."""
-        stages = set()
-        for path in self._origins:
-            for member in members:
+        if self._stages is None:
+            self._stages = {}
+            for path in self._origins:
                 pattern, indices = path_pattern(path)
-                if pattern == f"getriebe[i].{member}" and indices:
-                    stages.add(indices[0])
+                if pattern.startswith("getriebe[i].") and indices:
+                    self._stages.setdefault(pattern[len("getriebe[i]."):], set()).add(indices[0])
+        stages: set[int] = set()
+        for member in members:
+            stages |= self._stages.get(member, set())
         return sorted(stages)
 
     # -- the axis as a whole -----------------------------------------------------------------

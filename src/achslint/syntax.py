@@ -243,6 +243,7 @@ def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
     return parts
 
 
+@lru_cache(maxsize=1 << 16)
 def path_pattern(path: str) -> tuple[str, tuple[int, ...]]:
     """Replace every index by `[i]`: `getriebe[2].vb_reflow` -> (`getriebe[i].vb_reflow`, (2,))."""
     indices: list[int] = []
