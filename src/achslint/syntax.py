@@ -113,10 +113,12 @@ def _grammar_text() -> str:
 class _Builder:
     """Inline transformer: builds `Line` objects while Lark reduces the rules."""
 
-    # Value alternatives all become a (kind, text) pair.
+    # Value alternatives all become (kind, blanks before the value, value text).
     def _value(kind: str):  # noqa: N805 - factory used in the class body
         def build(self, children):
-            return (kind, str(children[0]))
+            text = str(children[0])
+            value = text.lstrip(" \t")
+            return (kind, text[: len(text) - len(value)], value)
 
         return build
 
@@ -138,25 +140,36 @@ class _Builder:
     def comment(self, children):
         return Line(COMMENT, comment=str(children[0]))
 
+    @staticmethod
+    def _trailer(line: Line, token) -> None:
+        """Split a trailer token into the blanks (sep2 or sep) and the text after them (rest)."""
+        text = str(token)
+        rest = text.lstrip(" \t")
+        blanks = text[: len(text) - len(rest)]
+        if line.value is None and line.kind == ASSIGNMENT:
+            line.sep = blanks
+        else:
+            line.sep2 = blanks
+        if rest:
+            line.rest = rest
+
     def end_marker(self, children):
         line = Line(END, path=str(children[0]))
         if len(children) > 1:
-            line.sep = str(children[1])
-        if len(children) > 2:
-            line.rest = str(children[2])
+            text = str(children[1])
+            rest = text.lstrip(" \t")
+            line.sep = text[: len(text) - len(rest)]
+            line.rest = rest or None
         return line
 
     def assignment(self, children):
         ok, path = children[0]
         line = Line(ASSIGNMENT, path=path, path_ok=ok)
-        if len(children) > 1:
-            line.sep = str(children[1])
-        if len(children) > 2:
-            line.value_kind, line.value = children[2]
-        if len(children) > 3:
-            line.sep2 = str(children[3])
-        if len(children) > 4:
-            line.rest = str(children[4])
+        for child in children[1:]:
+            if isinstance(child, tuple):
+                line.value_kind, line.sep, line.value = child
+            else:
+                self._trailer(line, child)
         return line
 
     def line(self, children):
