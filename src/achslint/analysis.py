@@ -115,6 +115,8 @@ class Analysis:
 
 
 _COMMENT_STARTS = ("#", "/*", ";")
+_ARRAY_NAME = re.compile(r"(\w+)\[i\]")
+_WRITTEN_INDEX = re.compile(r"\[[0-9]+\]")
 
 
 def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
@@ -132,12 +134,12 @@ def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
 
 def _check_indices(setting: Setting) -> None:
     """Array indices inside the bounds of the catalogue (aliases carry no indices of their own)."""
-    if setting.resolution.alias is not None:
-        return
     parameter = setting.parameter
+    if setting.resolution.alias is not None or not parameter.index_bounds:
+        return
     line = setting.line
-    arrays = re.findall(r"(\w+)\[i\]", parameter.path)
-    written = list(re.finditer(r"\[[0-9]+\]", line.path))
+    arrays = _ARRAY_NAME.findall(parameter.path)
+    written = list(_WRITTEN_INDEX.finditer(line.path))
     for position, (index, (low, high)) in enumerate(zip(setting.resolution.indices, parameter.index_bounds)):
         if low <= index <= high:
             continue

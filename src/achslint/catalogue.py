@@ -168,8 +168,12 @@ class Resolution:
 
 
 def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:
-    values = iter(indices)
-    return re.sub(r"\[i\]", lambda _m: f"[{next(values)}]", pattern)
+    """`getriebe[i].vb_reflow`, (2,) -> `getriebe[2].vb_reflow` (placeholders without an index stay `[i]`)."""
+    if not indices:
+        return pattern
+    parts = pattern.split("[i]")
+    filled = [parts[0]] + [f"[{index}]{part}" for index, part in zip(indices, parts[1:])]
+    return "".join(filled) + "".join("[i]" + part for part in parts[len(indices) + 1:])
 
 
 class Catalogue:
