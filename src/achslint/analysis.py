@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import difflib
 import re
+import sys
 from dataclasses import dataclass, field
 
 from . import syntax
@@ -54,14 +55,15 @@ class Setting:
     line: syntax.Line
     resolution: Resolution | None
     value: object = None
-    problems: list[ValueProblem] = field(default_factory=list)
+    problems: tuple[ValueProblem, ...] = ()  # a tuple: most settings have none and share the empty one
     misspelt: bool = field(init=False)
     canonical: str | None = field(init=False)  # canonical concrete path; None when unknown
 
     def __post_init__(self) -> None:
         resolution = self.resolution
         self.misspelt = bool(resolution and resolution.alias and resolution.alias.kind == "misspelling")
-        self.canonical = None if resolution is None or self.misspelt else resolution.canonical
+        # Interned: a long list repeats the same parameters, and each canonical path is kept once.
+        self.canonical = None if resolution is None or self.misspelt else sys.intern(resolution.canonical)
 
     @property
     def parameter(self) -> Parameter | None:
@@ -87,6 +89,9 @@ class Setting:
         """"canonical" or the alias kind this assignment is written with."""
         alias = self.resolution.alias if self.resolution else None
         return alias.kind if alias else "canonical"
+
+    def add_problem(self, problem: ValueProblem) -> None:
+        self.problems = (*self.problems, problem)
 
     def problem(self, code: str) -> ValueProblem | None:
         for problem in self.problems:
@@ -145,7 +150,7 @@ def _check_indices(setting: Setting) -> None:
             continue
         array = arrays[position]
         start = line.path_column + written[position].start()
-        setting.problems.append(ValueProblem(
+        setting.add_problem(ValueProblem(
             "LIS104",
             f"index {index} of `{array}` in `{line.path}` is out of bounds: {parameter.id} allows "
             f"{array}[{low}]..{array}[{high}] (indices are zero-based)",
@@ -195,7 +200,7 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
     parameter = setting.parameter
     line = setting.line
     kind = parameter.kind
-    problems = setting.problems
+    add_problem = setting.add_problem
     value_kind = line.value_kind
     text = line.value or ""
     unit = parameter.unit(analysis.axis_type)
@@ -211,11 +216,11 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
         if kind in (STRING,):
             setting.value = ""
             return
-        problems.append(ValueProblem("LIS201", f"`{name}` has no value; {_expected(parameter)} is expected"))
+        add_problem(ValueProblem("LIS201", f"`{name}` has no value; {_expected(parameter)} is expected"))
         return
     if comment_in_value_position(line):
         if kind in (STRING, SYMBOL):
-            problems.append(
+            add_problem(
                 ValueProblem(
                     "LIS007",
                     f"`{name}` is a string parameter: the CNC reads `{_value_and_rest(line)}` as its value, not as a comment "
@@ -224,7 +229,7 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
                 )
             )
         else:
-            problems.append(ValueProblem("LIS201", f"`{name}` has no value (`{text}` starts a comment); {_expected(parameter)} is expected"))
+            add_problem(ValueProblem("LIS201", f"`{name}` has no value (`{text}` starts a comment); {_expected(parameter)} is expected"))
         return
 
     if kind == BOOL:
@@ -238,7 +243,7 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
     else:
         setting.value = text[1:-1] if value_kind == syntax.STRING else text
         if parameter.max_length is not None and len(setting.value) > parameter.max_length:
-            problems.append(
+            add_problem(
                 ValueProblem(
                     "LIS206",
                     f"`{name}` is {len(setting.value)} characters long; the CNC stores at most "
@@ -247,7 +252,7 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
             )
     textual = value_kind in (syntax.SYMBOL, syntax.STRING)
     if kind in (STRING, SYMBOL) and textual and line.rest is not None and not line.rest.startswith("("):
-        problems.append(
+        add_problem(
             ValueProblem(
                 "LIS007",
                 f"text `{line.rest}` after the string value of `{name}` is not a `(` comment; the CNC reads it "
@@ -282,7 +287,7 @@ def _check_bool(setting: Setting, text: str, value_kind: str) -> None:
         if number in (0, 1):
             setting.value = bool(number)
             return
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem("LIS201", f"`{name}` is BOOLEAN: write 0 (off) or 1 (on), not `{text}`",
                          replacement="1" if number else "0")
         )
@@ -297,7 +302,7 @@ def _check_bool(setting: Setting, text: str, value_kind: str) -> None:
         if parameter.symbols:
             _unknown_symbol(setting, text)
             return
-    setting.problems.append(
+    setting.add_problem(
         ValueProblem("LIS201", f"`{name}` is BOOLEAN: write 0 (off) or 1 (on), not `{text}`")
     )
 
@@ -326,9 +331,9 @@ def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | Non
                 message += f"; write `{replacement}`"
         except ValueError:  # pragma: no cover - the grammar only lets numbers through
             pass
-        setting.problems.append(ValueProblem("LIS201", message, replacement))
+        setting.add_problem(ValueProblem("LIS201", message, replacement))
         return
-    setting.problems.append(
+    setting.add_problem(
         ValueProblem("LIS201", f"`{name}` expects {_expected(parameter)}, not the text `{text}`")
     )
 
@@ -339,7 +344,7 @@ def _check_real(setting: Setting, text: str, value_kind: str, unit: str | None) 
         setting.value = number
         _check_range(setting, number, unit)
         return
-    setting.problems.append(
+    setting.add_problem(
         ValueProblem("LIS201", f"`{setting.canonical}` expects a number (REAL64), not the text `{text}`")
     )
 
@@ -350,18 +355,18 @@ def _check_range(setting: Setting, number: float, unit: str | None) -> None:
     if parameter.allowed:
         if number not in parameter.allowed and number != parameter.default:
             codes = ", ".join(str(a) for a in parameter.allowed)
-            setting.problems.append(
+            setting.add_problem(
                 ValueProblem("LIS202", f"`{name}` = {number} is not an accepted value; accepted: {codes}")
             )
         return
     low, high = parameter.limits
     if parameter.strict_positive_real and number <= 0 and number != parameter.default:
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem("LIS202", f"`{name}` = {describe(number, unit)} must be greater than 0")
         )
         return
     if low is not None and number < low:
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem(
                 "LIS202",
                 f"`{name}` = {describe(number, unit)} is below the minimum {describe(low, unit)}"
@@ -369,7 +374,7 @@ def _check_range(setting: Setting, number: float, unit: str | None) -> None:
             )
         )
     elif high is not None and number > high:
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem(
                 "LIS202",
                 f"`{name}` = {describe(number, unit)} is above the maximum {describe(high, unit)}"
@@ -424,7 +429,7 @@ def _unknown_symbol(setting: Setting, text: str) -> None:
         strong = match
     # Only an unambiguous, close match is offered as a fix.
     replacement = strong[0] if len(strong) == 1 else None
-    setting.problems.append(ValueProblem("LIS203", message, replacement=replacement))
+    setting.add_problem(ValueProblem("LIS203", message, replacement=replacement))
 
 
 _REFERENCE = re.compile(r"P-AXIS-(\d+)(?:\.(\d+))?")
@@ -439,17 +444,17 @@ def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Referenc
     name = setting.canonical
     target = cat.by_id.get(target_id)
     if target is None:
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem("LIS205", f"`{name}` refers to {target_id}, which is not an axis parameter")
         )
         return None
     if target.id == parameter.id:
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem("LIS205", f"`{name}` refers to itself ({reference}); write a value instead")
         )
         return None
     if _category(target) != _category(parameter):
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem(
                 "LIS205",
                 f"`{name}` ({parameter.type}) refers to {target_id} `{target.path}`, which is {target.type}; "
@@ -459,7 +464,7 @@ def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Referenc
         return None
     own_unit, target_unit = parameter.unit(analysis.axis_type), target.unit(analysis.axis_type)
     if own_unit != target_unit:
-        setting.problems.append(
+        setting.add_problem(
             ValueProblem(
                 "LIS205",
                 f"`{name}` is in {unit_label(own_unit) or 'no unit'} but refers to {target_id} `{target.path}` "
@@ -470,7 +475,7 @@ def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Referenc
     if index is not None and target.index_bounds:
         low, high = target.index_bounds[0]
         if not low <= index <= high:
-            setting.problems.append(
+            setting.add_problem(
                 ValueProblem(
                     "LIS205",
                     f"`{name}` refers to {reference}, but {target_id} has indices {low}..{high} only",

@@ -27,6 +27,7 @@ class LintRequest:
     fix: bool = False
     unsafe_fixes: bool = False
     show_diff: bool = False  # with fix: report the changes instead of writing them
+    keep_source: bool = True  # keep line texts for code frames (the full and gitlab formats need them)
 
 
 @dataclass
@@ -51,12 +52,12 @@ class Target:
     defaults: Path | None = None  # default axis list loaded underneath (from a start-up list)
 
 
-def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path) -> FileSettings:
+def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path, keep_source: bool = True) -> FileSettings:
     settings = overrides.apply(config.settings)
     selection = Selection(settings.select, list(settings.extend_select),
                           [*settings.ignore, *config.ignored_for(target)])
     options = Options(settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um)
-    return FileSettings(selection, options, dict(settings.severity))
+    return FileSettings(selection, options, dict(settings.severity), keep_source)
 
 
 class Linter:
@@ -147,7 +148,7 @@ class Linter:
                 for d in registry()["LIS504"].check_machine([], [startup]):
                     extra.setdefault(d.path, FileResult(d.path, [])).diagnostics.append(d)
         for result in list(by_name.values()) + list(extra.values()):
-            if result.diagnostics and not result.source_lines and result.name not in ("<stdin>",):
+            if self.request.keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
                 try:
                     result.source_lines = Path(result.name).read_bytes().decode("latin-1").splitlines()
                 except OSError:
@@ -155,7 +156,8 @@ class Linter:
         return list(extra.values())
 
     def settings_for(self, target: Target) -> FileSettings:
-        return file_settings(target.config, self.request.overrides, target.path or Path(target.name))
+        return file_settings(target.config, self.request.overrides, target.path or Path(target.name),
+                             self.request.keep_source)
 
     def run(self, stdin=None, progress=None) -> LintOutcome:
         targets, errors = self.discover()

@@ -149,9 +149,10 @@ def lint(
         _fail(str(exc))
     if (unsafe_fixes or show_diff) and not fix:
         _fail("--unsafe-fixes and --diff go with --fix")
-    request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs,
-                          fix=fix, unsafe_fixes=unsafe_fixes, show_diff=show_diff)
     fmt = output_format.value if output_format else _default_format(sys.stdout)
+    request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs,
+                          fix=fix, unsafe_fixes=unsafe_fixes, show_diff=show_diff,
+                          keep_source=fmt in ("full", "gitlab"))
     try:
         with _progress(quiet) as progress:
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)

@@ -70,7 +70,7 @@ class Context:
         end_line: int | None = None,
         severity: Severity | None = None,
         setting: Setting | None = None,
-        related: list[Related] | None = None,
+        related: list[Related] | tuple[Related, ...] = (),
         fix: Fix | None = None,
     ) -> Diagnostic:
         from .rules import registry
@@ -88,7 +88,7 @@ class Context:
             message=message,
             parameter=parameter,
             p_axis=p_axis,
-            related=related or [],
+            related=tuple(related),
             fix=fix,
         )
 

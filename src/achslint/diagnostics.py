@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from enum import Enum
 
 # Rule documentation lives in the repository (generated from the rule modules).
@@ -59,7 +59,7 @@ class Diagnostic:
     message: str
     parameter: str | None = None
     p_axis: str | None = None
-    related: list[Related] = field(default_factory=list)
+    related: tuple[Related, ...] = ()  # a tuple: millions of diagnostics share the empty one
     fix: Fix | None = None
 
     @property

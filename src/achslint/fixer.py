@@ -28,8 +28,7 @@ class FixOutcome:
 
 def _offsets(text: str) -> list[int]:
     """Character offset of the start of every line (as the parser numbers them)."""
-    file = parse_text(text)
-    return [line.offset for line in file.lines]
+    return parse_text(text).offsets()
 
 
 def apply_edits(source: SourceText, fixes) -> tuple[SourceText, int]:

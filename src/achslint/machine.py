@@ -93,7 +93,7 @@ def diagnostic(code: str, member: tuple[str, dict], where: str, message: str, se
     """A machine-level diagnostic at a member list's line for `where` (or its first line)."""
     name, info = member
     line, column = info.get(where) or (1, 1)
-    return Diagnostic(name, line, column, line, column + 1, code, severity, message, related=related or [])
+    return Diagnostic(name, line, column, line, column + 1, code, severity, message, related=tuple(related or ()))
 
 
 def first_uses(members: list[tuple[str, dict]], key: str):

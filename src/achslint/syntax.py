@@ -10,6 +10,7 @@ for tabs and for any line-break style.
 from __future__ import annotations
 
 import re
+import sys
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
@@ -29,6 +30,10 @@ NUMERIC_KINDS = frozenset({INT, HEX, REAL})
 
 GRAMMAR_NAME = "achsmds.lark"
 
+# Separators, line breaks and parameter paths repeat on every line of a list:
+# sharing one string object per spelling keeps large lists small in memory.
+_intern = sys.intern
+
 
 @dataclass(slots=True, eq=False)
 class Line:
@@ -46,7 +51,6 @@ class Line:
     comment: str | None = None
     newline: str = ""
     number: int = 0
-    offset: int = 0
 
     @property
     def body(self) -> str:
@@ -91,6 +95,14 @@ class ListFile:
     def unparse(self) -> str:
         return "".join(line.text for line in self.lines)
 
+    def offsets(self) -> list[int]:
+        """Character offset of the start of every line."""
+        result, offset = [], 0
+        for line in self.lines:
+            result.append(offset)
+            offset += len(line.body) + len(line.newline)
+        return result
+
     def assignments(self) -> Iterator[Line]:
         """Assignments the CNC reads: those before the end marker."""
         stop = self.end_index if self.end_index is not None else len(self.lines)
@@ -118,7 +130,7 @@ class _Builder:
         def build(self, children):
             text = str(children[0])
             value = text.lstrip(" \t")
-            return (kind, text[: len(text) - len(value)], value)
+            return (kind, _intern(text[: len(text) - len(value)]), value)
 
         return build
 
@@ -132,7 +144,7 @@ class _Builder:
     del _value
 
     def valid_path(self, children):
-        return (True, str(children[0]))
+        return (True, _intern(str(children[0])))
 
     def bad_path(self, children):
         return (False, str(children[0]))
@@ -145,7 +157,7 @@ class _Builder:
         """Split a trailer token into the blanks (sep2 or sep) and the text after them (rest)."""
         text = str(token)
         rest = text.lstrip(" \t")
-        blanks = text[: len(text) - len(rest)]
+        blanks = _intern(text[: len(text) - len(rest)])
         if line.value is None and line.kind == ASSIGNMENT:
             line.sep = blanks
         else:
@@ -178,15 +190,23 @@ class _Builder:
         first = children[0]
         if isinstance(first, Line):
             return first
-        indent = str(first)
+        indent = _intern(str(first))
         if len(children) == 1:
             return Line(BLANK, indent=indent)
         stmt = children[1]
         stmt.indent = indent
         return stmt
 
+    def body(self, children):
+        if len(children) == 1:
+            return [children[0]]
+        lines, newline, line = children
+        lines[-1].newline = _intern(str(newline))
+        lines.append(line)
+        return lines
+
     def start(self, children):
-        return children
+        return children[0]
 
 
 @lru_cache(maxsize=1)
@@ -205,32 +225,13 @@ def parser():
 
 def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bom: bool = False) -> ListFile:
     """Parse list text (already decoded, without BOM) into a `ListFile`."""
-    children = parser().parse(text)
-    lines: list[Line] = []
-    offset = 0
+    lines: list[Line] = parser().parse(text)
     end_index = None
-    current = children[0]
-    for child in children[1:]:
-        if isinstance(child, Line):
-            current = child
-            continue
-        current.newline = str(child)
-        _place(current, lines, offset)
-        offset += len(current.body) + len(current.newline)
-        current = None
-    if current is not None:
-        _place(current, lines, offset)
     for index, line in enumerate(lines):
-        if line.kind == END:
+        line.number = index + 1
+        if end_index is None and line.kind == END:
             end_index = index
-            break
     return ListFile(name=name, lines=lines, encoding=encoding, bom=bom, end_index=end_index)
-
-
-def _place(line: Line, lines: list[Line], offset: int) -> None:
-    line.number = len(lines) + 1
-    line.offset = offset
-    lines.append(line)
 
 
 def parse_bytes(data: bytes, name: str = "<bytes>") -> ListFile:

@@ -58,5 +58,5 @@ def check(ctx):
         f"{count} parameter {noun} after `Ende` (line {marker.number}) {'is' if count == 1 else 'are'} ignored by "
         f"the CNC; move {'it' if count == 1 else 'them'} above `Ende` or delete {'it' if count == 1 else 'them'}",
         end_line=last.number, end_column=last.end_column,
-        related=[Related(ctx.name, marker.number, marker.path_column, None, "end marker")],
+        related=(Related(ctx.name, marker.number, marker.path_column, None, "end marker"),),
     )

@@ -45,27 +45,26 @@ def check(ctx):
     for canonical, group in ctx.analysis.by_canonical().items():
         if len(group) < 2:
             continue
-        values = {repr(s.comparable) for s in group}
+        keys = [repr(s.comparable) for s in group]
         spellings = {s.spelling for s in group}
-        if len(values) > 1 and "old" in spellings and len(spellings) > 1:
+        if len(set(keys)) > 1 and "old" in spellings and len(spellings) > 1:
             continue  # an alias and its parameter disagree: LIS103 reports it
         first = group[0]
-        for setting in group[1:]:
-            differs = repr(setting.comparable) != repr(first.comparable)
+        # Shared by every repetition of this parameter: a list repeated n times stays small.
+        related = (ctx.related(first, "first assignment"),)
+        same = (f"`{canonical}` is assigned again with the same value (first on line {first.line.number}); "
+                f"delete the repetition")
+        for setting, key in zip(group[1:], keys[1:]):
+            differs = key != keys[0]
             if differs:
                 message = (
                     f"`{canonical}` is assigned again with a different value (`{setting.written_value}`, "
                     f"first: `{first.written_value}` on line {first.line.number}); keep only the one you mean"
                 )
             else:
-                message = (
-                    f"`{canonical}` is assigned again with the same value (first on line {first.line.number}); "
-                    f"delete the repetition"
-                )
+                message = same
             start, end = ctx.path_span(setting.line)
-            # Only the first assignment is related: a list repeated n times stays linear.
             yield ctx.report(
                 CODE, setting.line, message, column=start, end_column=end, setting=setting,
-                severity=Severity.ERROR if differs else Severity.WARNING,
-                related=[ctx.related(first, "first assignment")],
+                severity=Severity.ERROR if differs else Severity.WARNING, related=related,
             )

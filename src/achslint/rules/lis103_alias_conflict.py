@@ -54,5 +54,5 @@ def check(ctx):
                 f"`{first.written_value}` on line {first.line.number}; both set {setting.parameter.id} "
                 f"`{canonical}`, keep one",
                 column=start, end_column=end, setting=setting,
-                related=[ctx.related(first, "first assignment")],
+                related=(ctx.related(first, "first assignment"),),
             )
