@@ -514,7 +514,7 @@ def config_command(
     except ConfigError as exc:
         _fail(str(exc))
     typer.echo(f"# configuration: {resolved.path or 'built-in defaults'}")
-    typer.echo(json.dumps(resolved.settings.model_dump(by_alias=True), indent=2, ensure_ascii=False))
+    typer.echo(json.dumps(resolved.settings.as_file_keys(), indent=2, ensure_ascii=False))
 
 
 @app.command()

@@ -10,17 +10,14 @@ a configuration error (exit code 2) naming the file and the key.
 from __future__ import annotations
 
 import fnmatch
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
-
 from .tomlfile import read_toml, tomllib
 
 CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
-SeverityName = Literal["error", "warning", "info"]
 
 
 class ConfigError(Exception):
@@ -37,38 +34,67 @@ def _codes(values: list[str]) -> list[str]:
     return cleaned
 
 
-class Settings(BaseModel):
-    """The keys of an achslint configuration (see README, Configuration)."""
-
-    model_config = ConfigDict(extra="forbid", populate_by_name=True, frozen=True)
+@dataclass(frozen=True)
+class Settings:
+    """The keys of an achslint configuration (see README, Configuration); file keys use dashes."""
 
     select: list[str] | None = None
-    extend_select: list[str] = Field(default_factory=list, alias="extend-select")
-    ignore: list[str] = Field(default_factory=list)
-    per_file_ignores: dict[str, list[str]] = Field(default_factory=dict, alias="per-file-ignores")
-    severity: dict[str, SeverityName] = Field(default_factory=dict)
-    fail_on: SeverityName = Field("error", alias="fail-on")
-    include: list[str] = Field(default_factory=lambda: ["achsmds*.lis"])
-    exclude: list[str] = Field(default_factory=list)
-    unknown_parameters: Literal["warn", "error", "ignore"] = Field("warn", alias="unknown-parameters")
-    cycle_time_us: int = Field(1000, alias="cycle-time-us", gt=0)
-    repeatability_tolerance_um: float = Field(20.0, alias="repeatability-tolerance-um", ge=0)
-    scenario: dict[str, Any] = Field(default_factory=dict, description="Scenario defaults for dry-run.")
+    extend_select: list[str] = field(default_factory=list)
+    ignore: list[str] = field(default_factory=list)
+    per_file_ignores: dict[str, list[str]] = field(default_factory=dict)
+    severity: dict[str, str] = field(default_factory=dict)
+    fail_on: str = "error"
+    include: list[str] = field(default_factory=lambda: ["achsmds*.lis"])
+    exclude: list[str] = field(default_factory=list)
+    unknown_parameters: str = "warn"
+    cycle_time_us: int = 1000
+    repeatability_tolerance_um: float = 20.0
+    scenario: dict[str, Any] = field(default_factory=dict)  # scenario defaults for dry-run
 
-    @field_validator("select", "extend_select", "ignore")
-    @classmethod
-    def _check_codes(cls, value):
-        return None if value is None else _codes(value)
+    def as_file_keys(self) -> dict[str, Any]:
+        """The settings as a configuration file spells them."""
+        return {f.name.replace("_", "-"): getattr(self, f.name) for f in fields(self)}
 
-    @field_validator("per_file_ignores")
-    @classmethod
-    def _check_per_file(cls, value):
-        return {pattern: _codes(codes) for pattern, codes in value.items()}
 
-    @field_validator("severity")
-    @classmethod
-    def _check_severity_codes(cls, value):
-        return {code: level for code, level in zip(_codes(list(value)), value.values())}
+@lru_cache(maxsize=1)
+def _file_model():
+    """The pydantic model that validates a configuration file (built only when a file is read)."""
+    from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+    severity_name = Literal["error", "warning", "info"]
+
+    class SettingsFile(BaseModel):
+        model_config = ConfigDict(extra="forbid", populate_by_name=True)
+
+        select: list[str] | None = None
+        extend_select: list[str] = Field(default_factory=list, alias="extend-select")
+        ignore: list[str] = Field(default_factory=list)
+        per_file_ignores: dict[str, list[str]] = Field(default_factory=dict, alias="per-file-ignores")
+        severity: dict[str, severity_name] = Field(default_factory=dict)
+        fail_on: severity_name = Field("error", alias="fail-on")
+        include: list[str] = Field(default_factory=lambda: ["achsmds*.lis"])
+        exclude: list[str] = Field(default_factory=list)
+        unknown_parameters: Literal["warn", "error", "ignore"] = Field("warn", alias="unknown-parameters")
+        cycle_time_us: int = Field(1000, alias="cycle-time-us", gt=0)
+        repeatability_tolerance_um: float = Field(20.0, alias="repeatability-tolerance-um", ge=0)
+        scenario: dict[str, Any] = Field(default_factory=dict)
+
+        @field_validator("select", "extend_select", "ignore")
+        @classmethod
+        def _check_codes(cls, value):
+            return None if value is None else _codes(value)
+
+        @field_validator("per_file_ignores")
+        @classmethod
+        def _check_per_file(cls, value):
+            return {pattern: _codes(codes) for pattern, codes in value.items()}
+
+        @field_validator("severity")
+        @classmethod
+        def _check_severity_codes(cls, value):
+            return {code: level for code, level in zip(_codes(list(value)), value.values())}
+
+    return SettingsFile
 
 
 @dataclass(frozen=True)
@@ -109,12 +135,12 @@ def matches_glob(relative: str, pattern: str) -> bool:
     return fnmatch.fnmatch(relative, pattern.lstrip("./")) or fnmatch.fnmatch(relative, pattern.rstrip("/") + "/*")
 
 
-def _format_error(path: Path, error: ValidationError) -> str:
+def _format_error(path: Path, error, model) -> str:
     problems = []
     for item in error.errors():
         key = ".".join(str(part) for part in item["loc"]) or "(top level)"
         if item["type"] == "extra_forbidden":
-            allowed = ", ".join(sorted(f.alias or name for name, f in Settings.model_fields.items()))
+            allowed = ", ".join(sorted(f.alias or name for name, f in model.model_fields.items()))
             problems.append(f"unknown key `{key}` (known keys: {allowed})")
         else:
             problems.append(f"key `{key}`: {item['msg']}")
@@ -123,13 +149,17 @@ def _format_error(path: Path, error: ValidationError) -> str:
 
 def load_file(path: Path) -> ResolvedConfig:
     """Read one configuration file (pyproject.toml: its [tool.achslint] table)."""
+    from pydantic import ValidationError
+
     data = read_toml(path, "configuration", ConfigError)
     if path.name == "pyproject.toml":
         data = data.get("tool", {}).get("achslint", {})
+    model = _file_model()
     try:
-        return ResolvedConfig(Settings.model_validate(data), path)
+        validated = model.model_validate(data)
     except ValidationError as exc:
-        raise ConfigError(_format_error(path, exc)) from None
+        raise ConfigError(_format_error(path, exc, model)) from None
+    return ResolvedConfig(Settings(**validated.model_dump()), path)
 
 
 def _has_table(pyproject: Path) -> bool:
@@ -192,4 +222,4 @@ class Overrides:
                 changes[name] = value
         if self.include is not None:
             changes["include"] = [self.include]
-        return settings.model_copy(update=changes)
+        return replace(settings, **changes)

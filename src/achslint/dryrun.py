@@ -24,7 +24,7 @@ from .analysis import analyse
 from .effective import AxisValues
 from .engine import POSITION, VELOCITY, Simulator, Trace
 from .rules.lis404_homing_acceleration_fallback import homing_acceleration
-from .scenario import ScenarioInput, complete
+from .scenario import complete
 from .strategy import classify
 from .syntax import parse_bytes
 
@@ -36,14 +36,14 @@ class DryRun:
     trace: Trace
 
 
-def prepare(data: bytes, name: str, given: ScenarioInput | None = None, *, gear: int = 0,
+def prepare(data: bytes, name: str, given=None, *, gear: int = 0,
             cycle_time_us: int = 1000) -> Simulator:
     values = AxisValues(analyse(parse_bytes(data, name)))
     strategy = classify(values, gear)
     return Simulator(values, strategy, default_scenario(values, strategy, given, cycle_time_us))
 
 
-def default_scenario(values: AxisValues, strategy, given: ScenarioInput | None = None, cycle_time_us: int = 1000):
+def default_scenario(values: AxisValues, strategy, given=None, cycle_time_us: int = 1000):
     """The scenario completed with the documented default geometry for this axis."""
     direction = 1 if values.get("kenngr.ref_richt") else -1
     if strategy.id == "fixed_stop":
@@ -51,12 +51,12 @@ def default_scenario(values: AxisValues, strategy, given: ScenarioInput | None =
     soft = (values.get("kenngr.swe_neg") * POSITION, values.get("kenngr.swe_pos") * POSITION)
     fast = values.get(f"getriebe[{strategy.gear}].vb_refmax") * VELOCITY
     acceleration = homing_acceleration(values, strategy.gear)[0] or 1.0
-    return complete(given or ScenarioInput(), direction=direction, rotary=values.axis_type in ("R", "S"),
+    return complete(given, direction=direction, rotary=values.axis_type in ("R", "S"),
                     soft_limits=soft, cycle_time=cycle_time_us / 1e6, zero_pulse=strategy.with_zero_pulse,
                     braking=fast * fast / (2 * acceleration))
 
 
-def dry_run(data: bytes, name: str, given: ScenarioInput | None = None, *, gear: int = 0,
+def dry_run(data: bytes, name: str, given=None, *, gear: int = 0,
             cycle_time_us: int = 1000) -> DryRun:
     simulator = prepare(data, name, given, gear=gear, cycle_time_us=cycle_time_us)
     trace = simulator.run()

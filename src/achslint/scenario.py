@@ -28,10 +28,10 @@ latch).
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
+from functools import lru_cache
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from .tomlfile import read_toml
 
@@ -40,70 +40,81 @@ class ScenarioError(Exception):
     """A scenario that cannot be used (exit code 2)."""
 
 
-class SearchInput(BaseModel):
-    """One search move of the drive's "Standard" method (Triamec FirstSearchMove / SecondSearchMove)."""
+@lru_cache(maxsize=1)
+def _models() -> dict:
+    """The pydantic models that validate scenario input (built on first use: lint does not need them)."""
+    from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-    model_config = ConfigDict(extra="forbid")
+    class SearchInput(BaseModel):
+        """One search move of the drive's "Standard" method (Triamec FirstSearchMove / SecondSearchMove)."""
 
-    trigger: Literal["cam", "zero_pulse", "fixed_stop", "limit_switch"] = "cam"
-    signed_max_distance: float
-    active_low: bool = False
-    dynamic_reduction: float = Field(1.0, gt=0, le=1)
+        model_config = ConfigDict(extra="forbid")
+
+        trigger: Literal["cam", "zero_pulse", "fixed_stop", "limit_switch"] = "cam"
+        signed_max_distance: float
+        active_low: bool = False
+        dynamic_reduction: float = Field(1.0, gt=0, le=1)
+
+    class DriveInput(BaseModel):
+        """The drive's own homing method, for drive-controlled homing (Triamec drive homing)."""
+
+        model_config = ConfigDict(extra="forbid")
+
+        method: Literal["standard", "immediate", "at-position", "absolute-encoder", "nc"]
+        velocity: float = Field(10.0, gt=0)
+        acceleration: float = Field(100.0, gt=0)
+        reference_position: float | None = None
+        home_position: float | None = None
+        encoder_offset: float = 0.0
+        first_search: SearchInput | None = None
+        relocate_distance: float = 0.0
+        second_search: SearchInput | None = None
+        # method "nc": TwinCAT NC / AX5000 reference modes
+        reference_mode: Literal["plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos",
+                                "hardware-latch-neg"] = "plc-cam"
+        invert_cam_search: bool = False
+        invert_sync_search: bool = False
+        velocity_sync: float | None = Field(None, gt=0)
+        reference_mask_period: float | None = Field(None, gt=0)
+        latch_position: float | None = None
+
+        @model_validator(mode="after")
+        def _searches(self):
+            if self.method == "standard" and (self.first_search is None or self.second_search is None):
+                raise ValueError("the standard method needs [drive.first_search] and [drive.second_search]")
+            return self
+
+    class ScenarioInput(BaseModel):
+        """What a scenario file may contain. Every key is optional."""
+
+        model_config = ConfigDict(extra="forbid")
+
+        start_position: float | None = None
+        cam: tuple[float, float] | None = None
+        zero_pulse_period: float | None = Field(None, gt=0)
+        zero_pulse_phase: float | None = None
+        hardware_latch: bool | None = None
+        cycle_time_ms: float | None = Field(None, gt=0)
+        limit_switches: tuple[float, float] | None = None
+        fixed_stop: float | None = None
+        cam_jitter: float | None = Field(None, ge=0)
+        drive: DriveInput | None = None
+
+        @model_validator(mode="after")
+        def _ordered(self):
+            for name in ("cam", "limit_switches"):
+                pair = getattr(self, name)
+                if pair is not None and pair[0] >= pair[1]:
+                    raise ValueError(f"{name} must be [low, high] with low < high, got {list(pair)}")
+            return self
+
+    return {"SearchInput": SearchInput, "DriveInput": DriveInput, "ScenarioInput": ScenarioInput}
 
 
-class DriveInput(BaseModel):
-    """The drive's own homing method, for drive-controlled homing (Triamec drive homing)."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    method: Literal["standard", "immediate", "at-position", "absolute-encoder", "nc"]
-    velocity: float = Field(10.0, gt=0)
-    acceleration: float = Field(100.0, gt=0)
-    reference_position: float | None = None
-    home_position: float | None = None
-    encoder_offset: float = 0.0
-    first_search: SearchInput | None = None
-    relocate_distance: float = 0.0
-    second_search: SearchInput | None = None
-    # method "nc": TwinCAT NC / AX5000 reference modes
-    reference_mode: Literal["plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos",
-                            "hardware-latch-neg"] = "plc-cam"
-    invert_cam_search: bool = False
-    invert_sync_search: bool = False
-    velocity_sync: float | None = Field(None, gt=0)
-    reference_mask_period: float | None = Field(None, gt=0)
-    latch_position: float | None = None
-
-    @model_validator(mode="after")
-    def _searches(self):
-        if self.method == "standard" and (self.first_search is None or self.second_search is None):
-            raise ValueError("the standard method needs [drive.first_search] and [drive.second_search]")
-        return self
-
-
-class ScenarioInput(BaseModel):
-    """What a scenario file may contain. Every key is optional."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    start_position: float | None = None
-    cam: tuple[float, float] | None = None
-    zero_pulse_period: float | None = Field(None, gt=0)
-    zero_pulse_phase: float | None = None
-    hardware_latch: bool | None = None
-    cycle_time_ms: float | None = Field(None, gt=0)
-    limit_switches: tuple[float, float] | None = None
-    fixed_stop: float | None = None
-    cam_jitter: float | None = Field(None, ge=0)
-    drive: DriveInput | None = None
-
-    @model_validator(mode="after")
-    def _ordered(self):
-        for name in ("cam", "limit_switches"):
-            pair = getattr(self, name)
-            if pair is not None and pair[0] >= pair[1]:
-                raise ValueError(f"{name} must be [low, high] with low < high, got {list(pair)}")
-        return self
+def __getattr__(name: str):
+    if name in ("SearchInput", "DriveInput", "ScenarioInput"):
+        return _models()[name]
+    raise AttributeError(name)
 
 
 @dataclass
@@ -119,7 +130,7 @@ class Scenario:
     limit_switches: tuple[float, float]
     fixed_stop: float | None
     cam_jitter: float = 0.0
-    drive: DriveInput | None = None
+    drive: object = None  # DriveInput
     assumed: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict:
@@ -132,38 +143,42 @@ class Scenario:
         return data
 
 
-def read_scenario(path: Path) -> ScenarioInput:
+def read_scenario(path: Path):
     return parse_input(read_toml(path, "scenario", ScenarioError), str(path))
 
 
-def parse_input(data: dict, where: str = "scenario") -> ScenarioInput:
+def parse_input(data: dict, where: str = "scenario"):
+    """A validated ScenarioInput; any problem is a ScenarioError naming the key."""
+    from pydantic import ValidationError
+
+    model = _models()["ScenarioInput"]
     try:
-        return ScenarioInput.model_validate(data)
+        return model.model_validate(data)
     except ValidationError as exc:
         problems = []
         for item in exc.errors():
             key = ".".join(str(p) for p in item["loc"]) or "(scenario)"
             if item["type"] == "extra_forbidden":
-                problems.append(f"unknown key `{key}` (known: {', '.join(ScenarioInput.model_fields)})")
+                problems.append(f"unknown key `{key}` (known: {', '.join(model.model_fields)})")
             else:
                 problems.append(f"`{key}`: {item['msg']}")
         raise ScenarioError(f"{where}: " + "; ".join(problems)) from None
 
 
-def complete(given: ScenarioInput, *, direction: int, rotary: bool, soft_limits: tuple[float, float],
+def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, float],
              cycle_time: float, zero_pulse: bool, braking: float = 0.0) -> Scenario:
-    """Fill what the scenario leaves open with the documented default geometry."""
+    """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry."""
     assumed: list[str] = []
 
     def pick(name, default):
-        value = getattr(given, name)
+        value = getattr(given, name, None)
         if value is None:
             assumed.append(name)
             return default
         return value
 
     start = pick("start_position", 0.0)
-    cam = given.cam
+    cam = getattr(given, "cam", None)
     if cam is None:
         assumed.append("cam")
         near = start + direction * 100.0
@@ -174,12 +189,13 @@ def complete(given: ScenarioInput, *, direction: int, rotary: bool, soft_limits:
     edge = cam[1] if direction < 0 else cam[0]
     phase = pick("zero_pulse_phase", edge + direction * period / 2)
     latch = pick("hardware_latch", zero_pulse)
-    cycle = given.cycle_time_ms / 1000 if given.cycle_time_ms is not None else cycle_time
-    if given.cycle_time_ms is None:
+    cycle_ms = getattr(given, "cycle_time_ms", None)
+    cycle = cycle_ms / 1000 if cycle_ms is not None else cycle_time
+    if cycle_ms is None:
         assumed.append("cycle_time_ms")
     low, high = soft_limits
     limits = pick("limit_switches", (low - 10.0, high + 10.0))
     stop = pick("fixed_stop", start + direction * 100.0)
     jitter = pick("cam_jitter", 0.0)
     return Scenario(start, tuple(cam), period, phase, latch, cycle, tuple(limits), stop, jitter,
-                    given.drive, assumed)
+                    getattr(given, "drive", None), assumed)

@@ -209,18 +209,42 @@ class _Builder:
         return children[0]
 
 
+def _cache_file(grammar: str) -> str | bool:
+    """Where Lark may keep its analysed grammar: a private per-user folder, else no cache.
+
+    Lark's cache is a pickle, so it is only kept in a folder that belongs to the
+    user and that no one else can write to (not a shared temporary folder).
+    """
+    import hashlib
+    import os
+
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    folder = os.path.join(base, "achslint")
+    try:
+        os.makedirs(folder, mode=0o700, exist_ok=True)
+        info = os.stat(folder)
+        if (hasattr(os, "getuid") and info.st_uid != os.getuid()) or info.st_mode & 0o022:
+            return False
+    except OSError:
+        return False
+    digest = hashlib.sha256(grammar.encode("utf-8")).hexdigest()[:16]
+    return os.path.join(folder, f"grammar-{digest}.lark-cache")
+
+
 @lru_cache(maxsize=1)
 def parser():
-    """The Lark LALR parser, built once per process."""
+    """The Lark LALR parser, built once per process (the analysed grammar is cached on disk)."""
     from lark import Lark
 
-    return Lark(
-        _grammar_text(),
-        parser="lalr",
-        lexer="contextual",
-        transformer=_Builder(),
-        maybe_placeholders=False,
-    )
+    grammar = _grammar_text()
+    options = dict(parser="lalr", lexer="contextual", transformer=_Builder(), maybe_placeholders=False)
+    cache = _cache_file(grammar)
+    if cache:
+        try:
+            return Lark(grammar, cache=cache, **options)
+        except Exception:  # noqa: BLE001 - an unreadable or stale cache is never fatal
+            pass
+    return Lark(grammar, **options)
 
 
 def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bom: bool = False) -> ListFile:
