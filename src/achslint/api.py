@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -166,6 +165,8 @@ class Linter:
         work = [(t.name, str(t.path), self.settings_for(t), mode, str(t.defaults) if t.defaults else None)
                 for t in targets if t.path]
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD:
+            from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
+
             with ProcessPoolExecutor(max_workers=jobs) as pool:
                 disk = list(_track(pool.map(_lint_one, work, chunksize=max(1, len(work) // (jobs * 8))), progress, len(work)))
         else:

@@ -12,7 +12,7 @@ import json
 import re
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
-from importlib import resources
+from pathlib import Path
 
 from .syntax import path_pattern
 
@@ -272,5 +272,5 @@ class Catalogue:
 @lru_cache(maxsize=1)
 def catalogue() -> Catalogue:
     """The packaged catalogue, loaded once per process."""
-    text = resources.files("achslint").joinpath("data", "catalogue.json").read_text(encoding="utf-8")
+    text = (Path(__file__).resolve().parent / "data" / "catalogue.json").read_text(encoding="utf-8")
     return Catalogue(json.loads(text))

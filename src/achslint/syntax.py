@@ -13,7 +13,6 @@ import re
 import sys
 from dataclasses import dataclass, field
 from functools import lru_cache
-from importlib import resources
 from pathlib import Path
 from typing import Iterator
 
@@ -112,14 +111,12 @@ class ListFile:
 
 
 def _grammar_text() -> str:
-    try:
-        packaged = resources.files("achslint").joinpath("grammars", GRAMMAR_NAME)
-        if packaged.is_file():
-            return packaged.read_text(encoding="utf-8")
-    except (ModuleNotFoundError, FileNotFoundError):  # pragma: no cover - defensive
-        pass
+    here = Path(__file__).resolve().parent
+    packaged = here / "grammars" / GRAMMAR_NAME
+    if packaged.is_file():  # installed wheel: the grammar ships inside the package
+        return packaged.read_text(encoding="utf-8")
     # Source checkout / editable install: the grammar lives at the repository root.
-    return (Path(__file__).resolve().parents[2] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
+    return (here.parents[1] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
 
 
 class _Builder:
