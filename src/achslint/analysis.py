@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import difflib
 import re
-import sys
 from dataclasses import dataclass, field
 
 from . import syntax
@@ -61,9 +60,11 @@ class Setting:
 
     def __post_init__(self) -> None:
         resolution = self.resolution
-        self.misspelt = bool(resolution and resolution.alias and resolution.alias.kind == "misspelling")
-        # Interned: a long list repeats the same parameters, and each canonical path is kept once.
-        self.canonical = None if resolution is None or self.misspelt else sys.intern(resolution.canonical)
+        if resolution is None:
+            self.misspelt, self.canonical = False, None
+        else:
+            self.misspelt = resolution.misspelt
+            self.canonical = None if resolution.misspelt else resolution.canonical
 
     @property
     def parameter(self) -> Parameter | None:
@@ -139,9 +140,10 @@ def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
 
 def _check_indices(setting: Setting) -> None:
     """Array indices inside the bounds of the catalogue (aliases carry no indices of their own)."""
-    parameter = setting.parameter
-    if setting.resolution.alias is not None or not parameter.index_bounds:
+    resolution = setting.resolution
+    if resolution.in_bounds or resolution.alias is not None:
         return
+    parameter = resolution.parameter
     line = setting.line
     arrays = _ARRAY_NAME.findall(parameter.path)
     written = list(_WRITTEN_INDEX.finditer(line.path))

@@ -10,6 +10,7 @@ from __future__ import annotations
 import difflib
 import json
 import re
+import sys
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from pathlib import Path
@@ -155,16 +156,26 @@ class Parameter:
 
 @dataclass(frozen=True, slots=True)
 class Resolution:
-    """What a path written in a list refers to."""
+    """What a path written in a list refers to.
+
+    Resolutions are cached per written path, so what every assignment of that
+    path needs (canonical name, whether the indices are in bounds) is worked
+    out here once rather than for each line.
+    """
 
     parameter: Parameter
     indices: tuple[int, ...]
     alias: Alias | None = None
+    canonical: str = field(init=False)  # the canonical concrete path: `getriebe[3].vb_reflow` (interned)
+    misspelt: bool = field(init=False)  # written with a known misspelling of the name
+    in_bounds: bool = field(init=False)  # every written index lies inside the catalogue's bounds
 
-    @property
-    def canonical(self) -> str:
-        """The canonical concrete path: `getriebe[3].vb_reflow`."""
-        return fill_indices(self.parameter.path, self.indices)
+    def __post_init__(self) -> None:
+        set_field = object.__setattr__
+        set_field(self, "canonical", sys.intern(fill_indices(self.parameter.path, self.indices)))
+        set_field(self, "misspelt", self.alias is not None and self.alias.kind == "misspelling")
+        set_field(self, "in_bounds", all(low <= index <= high for index, (low, high)
+                                         in zip(self.indices, self.parameter.index_bounds)))
 
 
 def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:

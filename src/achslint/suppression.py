@@ -50,13 +50,17 @@ def directives(file: syntax.ListFile) -> list[Directive]:
                 found.append(Directive(line, start, line.end_column, _codes(match), file_level=True))
             continue
         if line.kind == syntax.ASSIGNMENT:
-            trailing = line.rest or ""
-            offset = line.rest_column
-            if line.rest is None and (line.value or "").startswith(("#", "(")):
-                trailing, offset = line.value + line.sep2, line.value_column  # `name  # noqa` without a value
-            match = LINE_NOQA.search(trailing)
-            if match:
-                found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
+            rest = line.rest
+            if rest is not None:
+                match = LINE_NOQA.search(rest)
+                if match:
+                    offset = line.rest_column
+                    found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
+            elif (line.value or "").startswith(("#", "(")):  # `name  # noqa` without a value
+                match = LINE_NOQA.search(line.value + line.sep2)
+                if match:
+                    offset = line.value_column
+                    found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
     return found
 
 

@@ -40,6 +40,7 @@ matter), §3.4 (simulation: only P-AXIS-00161).
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from ..strategy import HOMING_PARAMETERS, effectiveness
 
@@ -51,6 +52,13 @@ PARAMETERS = tuple(HOMING_PARAMETERS)  # parameters this rule reads
 SUMMARY = "Homing parameter set but without effect under the configured strategy"
 
 _GENERIC = set(HOMING_PARAMETERS)
+_GEAR_INDEX = re.compile(r"getriebe\[\d+\]")
+
+
+@lru_cache(maxsize=4096)
+def _generic(canonical: str) -> str:
+    """`getriebe[2].vb_reflow` -> `getriebe[i].vb_reflow` (and the second cam input as the first)."""
+    return _GEAR_INDEX.sub("getriebe[i]", canonical).replace("lr_hw[1]", "lr_hw[0]")
 
 
 def check(ctx):
@@ -60,7 +68,7 @@ def check(ctx):
         if not setting.known or setting.problems:
             continue
         canonical = setting.canonical
-        generic = re.sub(r"getriebe\[\d+\]", "getriebe[i]", canonical).replace("lr_hw[1]", "lr_hw[0]")
+        generic = _generic(canonical)
         if generic not in _GENERIC or values.in_list(canonical) is not setting:
             continue
         if setting.value == setting.parameter.typed_default:
