@@ -3,13 +3,19 @@
 from __future__ import annotations
 
 import io
+import json
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from achslint.decode import decode
+import achslint
+from achslint.decode import UnreadableInput, decode
+from achslint.dryrun import dry_run, trace_json
+from achslint.explain import explain_list
+from achslint.listdiff import diff_lists
 from achslint.linter import check_bytes
 from achslint.reporters import REPORTERS, get
+from achslint.scenario import ScenarioError
 from achslint.syntax import parse_bytes
 
 from .conftest import run_cli
@@ -57,3 +63,51 @@ def test_cli_never_prints_a_traceback(data):
     result = run_cli("lint", "-", "--format", "json", stdin=data)
     assert result.returncode in (0, 1, 2)
     assert b"Traceback" not in result.stderr
+
+
+def _readable_or_refused(call):
+    """Run `call`; the only acceptable failure is input that is not a list at all (UTF-16/32)."""
+    try:
+        return call()
+    except UnreadableInput:
+        return None
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(RAW)
+def test_any_bytes_give_a_typed_model_or_a_clear_refusal(data):
+    model = _readable_or_refused(lambda: achslint.load(data))
+    if model is not None:
+        assert model.model_dump() is not None
+
+
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(RAW, RAW)
+def test_any_bytes_explain_diff_and_dry_run_without_exception(data, other):
+    report = _readable_or_refused(lambda: explain_list(data, "fuzz.lis"))
+    if report is not None:
+        json.dumps(report)  # the JSON output of `explain` must always be serialisable
+    diff = _readable_or_refused(lambda: diff_lists(data, "a.lis", other, "b.lis"))
+    if diff is not None:
+        json.dumps(diff)
+    try:
+        run = dry_run(data, "fuzz.lis")
+    except (UnreadableInput, ScenarioError):  # refused with a message the CLI prints
+        return
+    json.dumps(trace_json(run))
+
+
+XML_PIECES = st.sampled_from([
+    "<?xml version=\"1.0\"?>", "<TcSmProject>", "</TcSmProject>", "<AchsMds>", "</AchsMds>", "<![CDATA[",
+    "]]>", "<AX_MDS>", "</AX_MDS>", "<Axis Name=\"X\">", "</Axis>", "kopf.achs_nr 1\n", "Ende\n",
+    "<!DOCTYPE x [<!ENTITY a \"b\">]>", "&a;", "&amp;", "<", ">", "\"", "\n", "é", "\x00",
+])
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.one_of(st.binary(max_size=300), st.lists(XML_PIECES, max_size=40).map(lambda p: "".join(p).encode())))
+def test_any_bytes_named_xml_give_diagnostics_or_an_error(data):
+    result = check_bytes(data, "fuzz.xml")
+    assert result.error is None or "fuzz.xml" in result.error  # the error names the file
+    for name in REPORTERS:
+        get(name)([result], io.StringIO(), sources={result.name: result.source_lines})

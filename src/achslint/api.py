@@ -205,7 +205,7 @@ def _process(data: bytes, name: str, settings: FileSettings, mode, path: Path | 
     if not fix:
         return check_bytes(data, name, settings, defaults)
     from .fixer import fix_bytes
-    from .fmt import unified_diff, write_atomically
+    from .fmt import ChangedOnDisk, unified_diff, write_atomically
 
     outcome = fix_bytes(data, name, settings, unsafe=unsafe)
     result = outcome.result
@@ -217,7 +217,9 @@ def _process(data: bytes, name: str, settings: FileSettings, mode, path: Path | 
             result.fixed_data = outcome.data
         else:
             try:
-                write_atomically(path, outcome.data)
+                write_atomically(path, outcome.data, expected=data)
+            except ChangedOnDisk as exc:
+                result.error = str(exc)
             except OSError as exc:
                 result.error = f"cannot write {name}: {exc.strerror or exc}"
     elif path is None and not show_diff:

@@ -256,7 +256,7 @@ def fmt(
     from .api import Linter, LintRequest
     from .config import ConfigError
     from .decode import UnreadableInput
-    from .fmt import format_bytes, unified_diff, write_atomically
+    from .fmt import ChangedOnDisk, format_bytes, unified_diff, write_atomically
 
     try:
         targets, errors = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
@@ -292,7 +292,10 @@ def fmt(
                 typer.echo(f"would reformat {target.name}")
         else:
             try:
-                write_atomically(target.path, formatted)
+                write_atomically(target.path, formatted, expected=data)
+            except ChangedOnDisk as exc:
+                errors.append(str(exc))
+                continue
             except OSError as exc:
                 errors.append(f"cannot write {target.name}: {exc.strerror or exc}")
                 continue

@@ -278,13 +278,18 @@ def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
     return parts
 
 
+HUGE_INDEX = 10**18  # stands for an index too long to convert (beyond every bound)
+
+
 @lru_cache(maxsize=1 << 16)
 def path_pattern(path: str) -> tuple[str, tuple[int, ...]]:
     """Replace every index by `[i]`: `getriebe[2].vb_reflow` -> (`getriebe[i].vb_reflow`, (2,))."""
     indices: list[int] = []
 
     def repl(match: re.Match) -> str:
-        indices.append(int(match.group(1)))
+        digits = match.group(1)
+        # Thousands of digits cannot even be converted; any such index is out of bounds anyway.
+        indices.append(int(digits) if len(digits) <= 18 else HUGE_INDEX)
         return "[i]"
 
     return _INDEX.sub(repl, path), tuple(indices)

@@ -53,7 +53,7 @@ def explain_bad_path(path: str) -> str:
         return "`;` does not start a comment in CNC lists; use `#` at the start of the line"
     if re.fullmatch(r"\.{3,}.*", path) or "...." in path:
         return "dot leaders or an elision (`...`) are not part of the list syntax; delete them"
-    index = re.search(r"\[([^\]]*)\]", path)
+    index = re.search(r"\[([^\[\]]*)\]", path)
     if index and not index.group(1).isdigit():
         return f"index `[{index.group(1)}]` is not a number; indices are zero-based numbers such as `[0]`"
     if path.count("[") != path.count("]"):
