@@ -87,3 +87,41 @@ def test_encodings_and_bom():
 def test_split_path_and_pattern():
     assert syntax.split_path("antr.function[2].wr_ident[1]") == [("antr", ()), ("function", (2,)), ("wr_ident", (1,))]
     assert syntax.path_pattern("getriebe[3].achs_position[2]") == ("getriebe[i].achs_position[i]", (3, 2))
+
+
+GRAMMAR_PROBE = (
+    "from achslint.syntax import parse_text\n"
+    "print([line.kind for line in parse_text('kopf.achs_nr 1\\nEnde\\n').lines])\n"
+)
+
+
+def _probe(cache_home):
+    import os
+    import subprocess
+    import sys
+
+    env = {**os.environ, "XDG_CACHE_HOME": str(cache_home)}
+    return subprocess.run([sys.executable, "-c", GRAMMAR_PROBE], capture_output=True, text=True, env=env, timeout=60)
+
+
+def test_grammar_cache_is_private_and_a_damaged_cache_is_harmless(tmp_path):
+    first = _probe(tmp_path)
+    assert first.returncode == 0, first.stderr
+    folder = tmp_path / "achslint"
+    caches = list(folder.glob("grammar-*.lark-cache"))
+    assert len(caches) == 1
+    assert folder.stat().st_mode & 0o777 == 0o700
+    caches[0].write_bytes(b"not a pickle at all")
+    second = _probe(tmp_path)
+    assert second.returncode == 0, second.stderr
+    assert second.stdout == first.stdout
+    assert "Traceback" not in second.stderr
+
+
+def test_grammar_cache_is_not_used_in_a_folder_others_can_write(tmp_path):
+    folder = tmp_path / "achslint"
+    folder.mkdir()
+    folder.chmod(0o777)
+    result = _probe(tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert list(folder.iterdir()) == []
