@@ -57,3 +57,15 @@ def test_start_up_list_with_missing_lists_only(cli, tmp_path):
     result = cli("lint", str(startup), "--format", "concise")
     assert result.returncode == 1
     assert "hochlauf.lis:1:13: LIS504 [error]" in result.stdout.decode()
+
+
+def test_a_shared_default_name_says_it_is_the_default(cli, tmp_path):
+    write(tmp_path / "achsmds1.lis", "kopf.achs_nr 1\nEnde\n")
+    write(tmp_path / "achsmds2.lis", "kopf.achs_nr 2\nEnde\n")
+    result = cli("lint", str(tmp_path), "--format", "json", "--select", "LIS502")
+    (message,) = [d["message"] for d in json.loads(result.stdout)["diagnostics"]]
+    assert "`X_Achse` (not written in this list, so the default applies)" in message
+    write(tmp_path / "achsmds2.lis", "kopf.achs_nr 2\nkopf.log_achs_name X_Achse\nEnde\n")
+    result = cli("lint", str(tmp_path), "--format", "json", "--select", "LIS502")
+    (message,) = [d["message"] for d in json.loads(result.stdout)["diagnostics"]]
+    assert "not written" not in message  # written in the list that is reported

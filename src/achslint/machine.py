@@ -96,6 +96,11 @@ def diagnostic(code: str, member: tuple[str, dict], where: str, message: str, se
     return Diagnostic(name, line, column, line, column + 1, code, severity, message, related=tuple(related or ()))
 
 
+def unset_note(member: tuple[str, dict], where: str) -> str:
+    """` (not written in this list: the default)` when the value comes from a default, else nothing."""
+    return "" if member[1].get(where) else " (not written in this list, so the default applies)"
+
+
 def first_uses(members: list[tuple[str, dict]], key: str):
     """(member, first member with the same value) for every repeated value of `key`."""
     first: dict = {}

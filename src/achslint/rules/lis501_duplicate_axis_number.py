@@ -33,7 +33,7 @@ P-AXIS-00016 (logical axis number, unique per machine).
 from __future__ import annotations
 
 from ..diagnostics import Related, Severity
-from ..machine import diagnostic, first_uses
+from ..machine import diagnostic, first_uses, unset_note
 
 CODE = "LIS501"
 NAME = "duplicate-axis-number"
@@ -47,6 +47,6 @@ def check_machine(members, startups):
     for member, other in first_uses(members, "achs_nr"):
         line, column = other[1].get("achs_nr_at") or (1, 1)
         yield diagnostic(CODE, member, "achs_nr_at",
-                         f"logical axis number kopf.achs_nr {member[1]['achs_nr']} is also used by {other[0]}; "
+                         f"logical axis number kopf.achs_nr {member[1]['achs_nr']}{unset_note(member, 'achs_nr_at')} is also used by {other[0]}; "
                          "every axis of a machine needs its own", Severity.WARNING,
                          [Related(other[0], line, column, "kopf.achs_nr", "first use")])

@@ -31,7 +31,7 @@ P-AXIS-00297 (default axis name).
 from __future__ import annotations
 
 from ..diagnostics import Related, Severity
-from ..machine import diagnostic, first_uses
+from ..machine import diagnostic, first_uses, unset_note
 
 CODE = "LIS502"
 NAME = "duplicate-axis-name"
@@ -45,6 +45,6 @@ def check_machine(members, startups):
     for member, other in first_uses(members, "name"):
         line, column = other[1].get("name_at") or (1, 1)
         yield diagnostic(CODE, member, "name_at",
-                         f"axis name kopf.log_achs_name `{member[1]['name']}` is also used by {other[0]}; give each "
+                         f"axis name kopf.log_achs_name `{member[1]['name']}`{unset_note(member, 'name_at')} is also used by {other[0]}; give each "
                          "axis its own name", Severity.WARNING,
                          [Related(other[0], line, column, "kopf.log_achs_name", "first use")])
