@@ -32,7 +32,6 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Literal
 
-
 from .tomlfile import read_toml
 
 

@@ -56,7 +56,7 @@ def directives(file: syntax.ListFile) -> list[Directive]:
                 if match:
                     offset = line.rest_column
                     found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
-            elif (line.value or "").startswith(("#", "(")):  # `name  # noqa` without a value
+            elif (line.value or "").startswith(("#", "(")):  # a suppression comment where the value would be
                 match = LINE_NOQA.search(line.value + line.sep2)
                 if match:
                     offset = line.value_column
