@@ -11,25 +11,6 @@ from .analysis import Analysis, Setting, analyse
 from .catalogue import Catalogue, catalogue
 from .diagnostics import Diagnostic, Fix, Related, Severity
 
-_CLIP = 60  # quoted text longer than twice this is shortened in messages
-
-
-def clip_quotes(message: str) -> str:
-    """Shorten very long quoted text (`...`) in a message: a 1 MB line is named, not repeated."""
-    if len(message) < 2 * _CLIP:
-        return message
-    parts = message.split("`")
-    if len(parts) % 2 == 0:
-        return message  # an unpaired backtick: leave the message as written
-    out = [parts[0]]
-    for index in range(1, len(parts), 2):
-        quoted, after = parts[index], parts[index + 1]
-        if len(quoted) > 2 * _CLIP:
-            out.append(f"`{quoted[:_CLIP]}…{quoted[-12:]}` ({len(quoted):,} characters){after}")
-        else:
-            out.append(f"`{quoted}`{after}")
-    return "".join(out)
-
 
 @dataclass
 class Options:
@@ -104,7 +85,7 @@ class Context:
             end_column=end_column if end_column is not None else line.end_column,
             code=code,
             severity=severity or registry()[code].severity,
-            message=clip_quotes(message),
+            message=message,
             parameter=parameter,
             p_axis=p_axis,
             related=tuple(related),

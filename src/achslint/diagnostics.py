@@ -62,12 +62,36 @@ class Diagnostic:
     related: tuple[Related, ...] = ()  # a tuple: millions of diagnostics share the empty one
     fix: Fix | None = None
 
+    def __post_init__(self) -> None:
+        # Every producer (rules, machine checks, XML) gets the same treatment of huge quoted text.
+        self.message = clip_quotes(self.message)
+
     @property
     def url(self) -> str:
         return rule_url(self.code)
 
     def sort_key(self) -> tuple:
         return (self.path, self.line, self.column, self.code)
+
+
+_CLIP = 60  # quoted text longer than twice this is shortened in messages
+
+
+def clip_quotes(message: str) -> str:
+    """Shorten very long quoted text (`...`) in a message: a 1 MB line is named, not repeated."""
+    if len(message) < 2 * _CLIP:
+        return message
+    parts = message.split("`")
+    if len(parts) % 2 == 0:
+        return message  # an unpaired backtick: leave the message as written
+    out = [parts[0]]
+    for index in range(1, len(parts), 2):
+        quoted, after = parts[index], parts[index + 1]
+        if len(quoted) > 2 * _CLIP:
+            out.append(f"`{quoted[:_CLIP]}…{quoted[-12:]}` ({len(quoted):,} characters){after}")
+        else:
+            out.append(f"`{quoted}`{after}")
+    return "".join(out)
 
 
 def rule_url(code: str) -> str:
