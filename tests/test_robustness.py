@@ -127,3 +127,13 @@ def test_unchanged_file_is_written(tmp_path):
     path.write_bytes(b"kopf.achs_nr 1\n")
     write_atomically(path, b"kopf.achs_nr 1\nEnde\n", expected=b"kopf.achs_nr 1\n")
     assert path.read_bytes() == b"kopf.achs_nr 1\nEnde\n"
+
+
+def test_a_start_up_entry_too_long_for_the_file_system_is_a_missing_list(cli, tmp_path):
+    startup = tmp_path / "hochlauf.lis"
+    startup.write_text("achs_mds[0] ./" + "x" * 5000 + ".lis\nEnde\n")
+    result = cli("lint", str(startup), "--format", "json")
+    assert b"Traceback" not in result.stderr and b"internal error" not in result.stderr
+    (finding,) = json.loads(result.stdout)["diagnostics"]
+    assert finding["code"] == "LIS504"
+    assert len(finding["message"]) < MESSAGE_LIMIT and "5,006 characters" in finding["message"]

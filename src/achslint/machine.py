@@ -45,11 +45,13 @@ def _resolve(raw: str, startup: Path) -> Path | None:
     """Relative entries are taken from the start-up list's folder; lists kept as `./listen/x.lis` next to a
     start-up list inside `listen/` (the SDK layout) are found from the parent folder too."""
     candidate = Path(raw.strip('"'))
-    if candidate.is_absolute():
-        return candidate if candidate.is_file() else None
-    for base in (startup.parent, startup.parent.parent, Path.cwd()):
-        if (base / candidate).is_file():
-            return base / candidate
+    bases = (Path(),) if candidate.is_absolute() else (startup.parent, startup.parent.parent, Path.cwd())
+    for base in bases:
+        try:
+            if (base / candidate).is_file():
+                return base / candidate
+        except OSError:  # a name the file system cannot even look up (too long, ...) names no list
+            continue
     return None
 
 
