@@ -50,17 +50,16 @@ def directives(file: syntax.ListFile) -> list[Directive]:
                 found.append(Directive(line, start, line.end_column, _codes(match), file_level=True))
             continue
         if line.kind == syntax.ASSIGNMENT:
-            rest = line.rest
-            if rest is not None:
-                match = LINE_NOQA.search(rest)
-                if match:
-                    offset = line.rest_column
-                    found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
+            if line.rest is not None:
+                trailing = line.rest
             elif (line.value or "").startswith(("#", "(")):  # a suppression comment where the value would be
-                match = LINE_NOQA.search(line.value + line.sep2)
-                if match:
-                    offset = line.value_column
-                    found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
+                trailing = line.value + line.sep2
+            else:
+                continue
+            match = LINE_NOQA.search(trailing)
+            if match:  # columns are worked out only for the rare line that has a directive
+                offset = line.rest_column if line.rest is not None else line.value_column
+                found.append(Directive(line, offset + match.start(), offset + match.end(), _codes(match)))
     return found
 
 
