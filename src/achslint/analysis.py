@@ -152,7 +152,7 @@ def _check_indices(setting: Setting) -> None:
             continue
         array = arrays[position]
         start = line.path_column + written[position].start()
-        shown = index if index != syntax.HUGE_INDEX else f"`{written[position].group(0)[1:-1]}`"
+        shown = index if index != syntax.HUGE else f"`{written[position].group(0)[1:-1]}`"
         setting.add_problem(ValueProblem(
             "LIS104",
             f"index {shown} of `{array}` in `{line.path}` is out of bounds: {parameter.id} allows "
@@ -185,16 +185,9 @@ def _axis_and_drive(analysis: Analysis, cat: Catalogue) -> None:
     analysis.drive_type = drive if drive in cat.by_id["P-AXIS-00020"].allowed else None
 
 
-_HUGE = 10**30  # beyond every integer type of the catalogue (the largest is 64 bits)
-
-
 def _as_int(line: syntax.Line) -> int | None:
     if line.value_kind == syntax.INT:
-        text = line.value
-        digits = text.lstrip("+-").lstrip("0")
-        if len(digits) > 30:  # Python refuses to convert thousands of digits; the range check reports it
-            return -_HUGE if text.startswith("-") else _HUGE
-        return int(text)
+        return syntax.whole_number(line.value)
     if line.value_kind == syntax.HEX:
         return int(line.value, 16)
     return None
@@ -322,7 +315,7 @@ def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | Non
     name = setting.canonical
     if value_kind in (syntax.INT, syntax.HEX):
         number = _as_int(setting.line)
-        if value_kind == syntax.INT and abs(number) >= _HUGE:
+        if value_kind == syntax.INT and abs(number) >= syntax.HUGE:
             setting.add_problem(ValueProblem(
                 "LIS202", f"`{name}` = `{text}` has {len(text.lstrip('+-')):,} digits, far more than "
                           f"a {parameter.type} holds; {_expected(parameter)} is expected"))

@@ -278,7 +278,14 @@ def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
     return parts
 
 
-HUGE_INDEX = 10**18  # stands for an index too long to convert (beyond every bound)
+HUGE = 10**30  # stands for a number with more digits than any parameter type or index bound holds
+
+
+def whole_number(text: str) -> int:
+    """The decimal integer `text`; `±HUGE` beyond 30 significant digits (Python refuses thousands of them)."""
+    if len(text.lstrip("+-").lstrip("0")) > 30:
+        return -HUGE if text.startswith("-") else HUGE
+    return int(text)
 
 
 @lru_cache(maxsize=1 << 16)
@@ -287,9 +294,7 @@ def path_pattern(path: str) -> tuple[str, tuple[int, ...]]:
     indices: list[int] = []
 
     def repl(match: re.Match) -> str:
-        digits = match.group(1)
-        # Thousands of digits cannot even be converted; any such index is out of bounds anyway.
-        indices.append(int(digits) if len(digits) <= 18 else HUGE_INDEX)
+        indices.append(whole_number(match.group(1)))
         return "[i]"
 
     return _INDEX.sub(repl, path), tuple(indices)
