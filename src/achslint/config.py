@@ -62,6 +62,7 @@ def _file_model():
     from pydantic import BaseModel, ConfigDict, Field, field_validator
 
     severity_name = Literal["error", "warning", "info"]
+    default = Settings()  # the defaults live in one place: the dataclass above
 
     class SettingsFile(BaseModel):
         model_config = ConfigDict(extra="forbid", populate_by_name=True)
@@ -71,12 +72,14 @@ def _file_model():
         ignore: list[str] = Field(default_factory=list)
         per_file_ignores: dict[str, list[str]] = Field(default_factory=dict, alias="per-file-ignores")
         severity: dict[str, severity_name] = Field(default_factory=dict)
-        fail_on: severity_name = Field("error", alias="fail-on")
-        include: list[str] = Field(default_factory=lambda: ["achsmds*.lis"])
+        fail_on: severity_name = Field(default.fail_on, alias="fail-on")
+        include: list[str] = Field(default_factory=lambda: list(default.include))
         exclude: list[str] = Field(default_factory=list)
-        unknown_parameters: Literal["warn", "error", "ignore"] = Field("warn", alias="unknown-parameters")
-        cycle_time_us: int = Field(1000, alias="cycle-time-us", gt=0)
-        repeatability_tolerance_um: float = Field(20.0, alias="repeatability-tolerance-um", ge=0)
+        unknown_parameters: Literal["warn", "error", "ignore"] = Field(default.unknown_parameters,
+                                                                       alias="unknown-parameters")
+        cycle_time_us: int = Field(default.cycle_time_us, alias="cycle-time-us", gt=0)
+        repeatability_tolerance_um: float = Field(default.repeatability_tolerance_um,
+                                                  alias="repeatability-tolerance-um", ge=0)
         scenario: dict[str, Any] = Field(default_factory=dict)
 
         @field_validator("select", "extend_select", "ignore")
