@@ -5,13 +5,18 @@ from __future__ import annotations
 import pytest
 
 from achslint.analysis import analyse
-from achslint.effective import AxisValues
-from achslint.strategy import NEGATIVE, POSITIVE, classify, effectiveness
+from achslint.homing import NEGATIVE, POSITIVE, classify, effect
+from achslint.resolved import ResolvedAxis
 from achslint.syntax import parse_text
 
 
-def values_of(text: str) -> AxisValues:
-    return AxisValues(analyse(parse_text(text + "\nEnde\n")))
+def values_of(text: str) -> ResolvedAxis:
+    return ResolvedAxis(analyse(parse_text(text + "\nEnde\n")))
+
+
+def effectiveness(strategy, values, path):
+    found = effect(strategy, values, path)
+    return found.effective, found.reason
 
 
 CASES = [
@@ -30,8 +35,8 @@ CASES = [
     ("kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_DEFAULT", "drive_controlled", None),
     ("kenngr.antr_typ 8\nkenngr.homing.homing_type TORQ", "fixed_stop", None),
     ("kenngr.abs_pos_gueltig 1", "absolute", "IV"),
-    ("kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED", "disabled", "IV"),
-    ("kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type IGNORE_ABS_POS", "ignore_abs_pos", "IV"),
+    ("kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED", "disabled", None),
+    ("kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type IGNORE_ABS_POS", "ignore_abs_pos", None),
     ("kenngr.abs_pos_gueltig 0\nkenngr.homing.homing_type DISABLED", "disabled", None),
 ]
 

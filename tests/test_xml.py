@@ -33,6 +33,7 @@ ISG = b"""<?xml version="1.0" encoding="utf-8"?>
         <P-AXIS-00218.0 Value="100000" />
         <P-AXIS-00219.0 Value="20000" />
         <P-AXIS-99999 Value="1" />
+        <P-AXIS-00020 Value="1" />
     </GeneralSettings>
 </AX_MDS>
 """

@@ -5,11 +5,16 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 from . import syntax
 from .analysis import Analysis, Setting, analyse
 from .catalogue import Catalogue, catalogue
 from .diagnostics import Diagnostic, Fix, Related, Severity
+
+if TYPE_CHECKING:
+    from .homing import Effect, HomingStrategy
+    from .resolved import ResolvedAxis
 
 
 @dataclass
@@ -35,19 +40,29 @@ class Context:
         return analyse(self.file, self.catalogue)
 
     @cached_property
-    def values(self):
-        """Effective values of the axis (defaults filled in, references resolved)."""
-        from .effective import AxisValues
+    def values(self) -> ResolvedAxis:
+        """The resolved axis: defaults, default list, the list, references and the CNC's corrections."""
+        from .resolved import ResolvedAxis
 
         defaults = analyse(self.default_file, self.catalogue) if self.default_file is not None else None
-        return AxisValues(self.analysis, defaults, cat=self.catalogue)
+        return ResolvedAxis(self.analysis, defaults, cat=self.catalogue)
 
     @cached_property
-    def strategy(self):
-        """The homing strategy the axis is configured for (gear stage 0)."""
-        from .strategy import classify
+    def strategy(self) -> HomingStrategy:
+        """The homing strategy the CNC runs for the axis (gear stage 0)."""
+        from .homing import classify
 
         return classify(self.values)
+
+    def effect(self, path: str) -> Effect:
+        """Whether a parameter takes effect on this axis under its strategy (and why)."""
+        from .homing import effect
+
+        return effect(self.strategy, self.values, path)
+
+    def effective(self, *paths: str) -> bool:
+        """True when every one of the parameters takes effect; a rule about them is silent otherwise."""
+        return all(self.effect(path).effective for path in paths)
 
     @property
     def settings(self) -> list[Setting]:
@@ -100,16 +115,29 @@ class Context:
         return start, start + max(len(line.value or ""), 1)
 
     def show(self, path: str) -> str:
-        """`path = value unit (human)` for messages, marked "(default)" when the list does not set it."""
-        from .units import describe
-
+        """`path = value unit (human)` as written, marked "(default)" when no list sets it and followed by
+        the value the CNC uses when it corrects it."""
         values = self.values
-        value = values.get(path)
         unit = values.parameter(path).unit(values.axis_type)
-        shown = describe(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else (
-            str(int(value)) if isinstance(value, bool) else str(value))
         origin = "" if values.is_set(path) else " (default)"
-        return f"`{path}` = {shown}{origin}"
+        text = f"`{path}` = {_shown(values.written(path), unit)}{origin}"
+        correction = values.correction(path)
+        if correction is not None:
+            text += f" (the CNC uses {_shown(correction.used, unit)})"
+        return text
+
+    def correction(self, path: str):
+        """The CNC's correction of a parameter, when a rule should report it: the parameter takes effect, or
+        it is wrong for the axis's drive or axis type (then the correction says more than LIS105)."""
+        correction = self.values.correction(path)
+        if correction is None:
+            return None
+        found = self.effect(path)
+        return correction if found.effective or found.cause != "strategy" else None
+
+    def report_correction(self, code: str, correction, message: str, paths: list[str]) -> Diagnostic:
+        """A finding about a load-time correction: the message, then what the CNC does instead."""
+        return self.cross(code, f"{message}: {correction.reason} ({correction.error})", paths)
 
     def cross(self, code: str, message: str, paths: list[str], *, severity: Severity | None = None) -> Diagnostic:
         """A diagnostic about several parameters: at the first one the list sets, the others related."""
@@ -136,3 +164,13 @@ class Context:
     def path_span(self, line: syntax.Line) -> tuple[int, int]:
         start = line.path_column
         return start, start + len(line.path or "")
+
+
+def _shown(value, unit) -> str:
+    from .units import describe
+
+    if isinstance(value, bool):
+        return str(int(value))
+    if isinstance(value, (int, float)):
+        return describe(value, unit)
+    return str(value) if value != "" else "(empty)"

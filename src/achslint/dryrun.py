@@ -20,64 +20,32 @@ import random
 from collections import Counter
 from dataclasses import dataclass
 
-from .analysis import analyse
-from .effective import AxisValues
-from .engine import POSITION, VELOCITY, Simulator, Trace
-from .rules.lis404_homing_acceleration_fallback import homing_acceleration
-from .scenario import complete
-from .strategy import classify
-from .syntax import parse_bytes
+from .engine import Simulator, Trace
+from .homing import classify
+from .resolved import ResolvedAxis, resolve_bytes
+from .scenario import default_scenario
 
 
 @dataclass
 class DryRun:
-    values: AxisValues
+    values: ResolvedAxis
     simulator: Simulator
     trace: Trace
 
 
 def prepare(data: bytes, name: str, given=None, *, gear: int = 0,
-            cycle_time_us: int = 1000) -> Simulator:
-    values = AxisValues(analyse(parse_bytes(data, name)))
+            cycle_time_us: int = 1000, defaults: bytes | None = None) -> Simulator:
+    values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
-    return Simulator(values, strategy, default_scenario(values, strategy, given, cycle_time_us))
-
-
-def default_scenario(values: AxisValues, strategy, given=None, cycle_time_us: int = 1000):
-    """The scenario completed with the documented default geometry for this axis."""
-    direction = 1 if values.get("kenngr.ref_richt") else -1
-    if strategy.id == "fixed_stop":
-        direction = 1 if values.get("kenngr.homing.torq_homing_dir") else -1
-    soft = (values.get("kenngr.swe_neg") * POSITION, values.get("kenngr.swe_pos") * POSITION)
-    fast = values.get(f"getriebe[{strategy.gear}].vb_refmax") * VELOCITY
-    acceleration = homing_acceleration(values, strategy.gear)[0] or 1.0
-    return complete(given, direction=direction, rotary=values.axis_type in ("R", "S"),
-                    soft_limits=soft, cycle_time=cycle_time_us / 1e6, zero_pulse=strategy.with_zero_pulse,
-                    braking=fast * fast / (2 * acceleration))
+    return Simulator(values, strategy, default_scenario(strategy, given, cycle_time_us))
 
 
 def dry_run(data: bytes, name: str, given=None, *, gear: int = 0,
-            cycle_time_us: int = 1000) -> DryRun:
-    simulator = prepare(data, name, given, gear=gear, cycle_time_us=cycle_time_us)
+            cycle_time_us: int = 1000, defaults: bytes | None = None) -> DryRun:
+    simulator = prepare(data, name, given, gear=gear, cycle_time_us=cycle_time_us, defaults=defaults)
     trace = simulator.run()
-    check_soft_limits(simulator, trace)
+    simulator.check_soft_limits(trace)
     return DryRun(simulator.values, simulator, trace)
-
-
-def check_soft_limits(simulator: Simulator, trace: Trace) -> None:
-    """LIS317: reference value or final position outside the software limits."""
-    if simulator.values.axis_type == "S" or trace.reference is None or trace.final_position is None:
-        return
-    low, high = simulator.soft_limits
-    unit = simulator.unit
-    value, final = trace.reference["value"], trace.final_position
-    if not low <= value <= high:
-        trace.warn("LIS317", f"the reference value {value:g} {unit} lies outside the software limits "
-                             f"[{low:g}, {high:g}] {unit}")
-    elif not low <= final <= high:
-        trace.warn("LIS317", f"after braking the axis stands at {final:.6g} {unit}, outside the software limits "
-                             f"[{low:g}, {high:g}] {unit}: move pos_refpkt inside by at least the braking distance "
-                             f"{abs(final - value):.4g} {unit}")
 
 
 def trace_json(run: DryRun) -> dict:
@@ -113,6 +81,7 @@ def trace_json(run: DryRun) -> dict:
         "outcome": trace.outcome,
         "failure": trace.failure,
         "warnings": trace.warnings,
+        "corrections": [c.as_dict() for c in values.corrections],
     }
 
 
@@ -131,6 +100,9 @@ def render(run: DryRun, console) -> None:
                   f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {scenario.cycle_time * 1000:g} ms, "
                   f"limit switches [{scenario.limit_switches[0]:g}, {scenario.limit_switches[1]:g}]; assumed: {assumed}")
     console.print(f"Homing acceleration {trace.acceleration:g} {unit}/s²")
+    for correction in run.values.corrections:
+        console.print(Text(f"CNC correction {correction.error}: ", style="yellow")
+                      + Text(f"{correction.parameter} {correction.written} -> {correction.used}: {correction.reason}"))
     table = Table(title="Phases", title_justify="left")
     for column in ("#", "phase", "direction", f"speed {unit}/s", f"from {unit}", f"to {unit}", "t start s", "t end s", "ended by"):
         table.add_column(column)

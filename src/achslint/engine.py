@@ -19,14 +19,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from .effective import AxisValues
-from .rules.lis404_homing_acceleration_fallback import homing_acceleration
+from .homing import POSITION, VELOCITY, HomingStrategy
+from .resolved import ResolvedAxis
 from .scenario import Scenario
-from .strategy import HomingStrategy
 
 INF = math.inf
-POSITION = 1e-4  # 0.1 µm or 0.0001° per list unit
-VELOCITY = 1e-3  # µm/s -> mm/s, 0.001°/s -> °/s
+__all__ = ["POSITION", "VELOCITY", "Simulator", "Trace"]
 
 
 @dataclass(slots=True)
@@ -135,37 +133,28 @@ class _Ramp:
 class Simulator:
     """Simulates one axis's configured homing in a scenario."""
 
-    def __init__(self, values: AxisValues, strategy: HomingStrategy, scenario: Scenario):
+    def __init__(self, values: ResolvedAxis, strategy: HomingStrategy, scenario: Scenario):
+        # Every value comes from the strategy's homing setup: after the CNC's corrections, in mm and seconds.
+        setup = strategy.setup
         self.values = values
         self.strategy = strategy
         self.scenario = scenario
-        gear = strategy.gear
-        self.rotary = values.axis_type in ("R", "S")
-        self.unit = "deg" if self.rotary else "mm"
-        self.direction = 1 if values.get("kenngr.ref_richt") else -1
-        acceleration, _ = homing_acceleration(values, gear)
-        self.acceleration = float(acceleration) or 1.0
-        cap = values.get(f"getriebe[{gear}].vb_not_referenced") * VELOCITY
-        self.speed_cap = cap if cap > 0 else INF
-        self.fast = values.get(f"getriebe[{gear}].vb_refmax") * VELOCITY
-        self.slow = values.get(f"getriebe[{gear}].vb_reflow") * VELOCITY
-        self.fast_from_cam = bool(values.get("kenngr.fast_from_cam"))
-        self.cam_level = bool(values.get("lr_hw[0].cam_level"))
-        self.shift = values.get("kenngr.shift_offset_zero_pulse_activation") * POSITION
-        self.zero_search_max = values.get("lr_hw[0].zero_pulse_search_max_dist") * POSITION
-        self.total_max = values.get("kenngr.homing_max_movement_dist") * POSITION if self.rotary else 0.0
-        self.refpkt = values.get(f"getriebe[{gear}].pos_refpkt") * POSITION
-        self.soft_limits = (values.get("kenngr.swe_neg") * POSITION, values.get("kenngr.swe_pos") * POSITION)
-        self.overflow = bool(values.get("kenngr.homing_overflow_evaluation"))
+        self.rotary = setup.rotary
+        self.unit = setup.unit
+        self.direction = setup.direction
+        self.acceleration = setup.acceleration.value or 1.0
+        self.fast = setup.fast
+        self.slow = setup.slow
+        self.fast_from_cam = setup.fast_from_cam
+        self.cam_level = setup.cam_level
+        self.shift = setup.shift
+        self.zero_search_max = setup.zero_pulse_search_max
+        self.total_max = setup.path_limit
+        self.refpkt = setup.reference_position
+        self.soft_limits = setup.soft_limits
+        self.overflow = setup.overflow
 
     # -- helpers -----------------------------------------------------------------------------
-    def _speed(self, trace: Trace, speed: float, name: str) -> float:
-        if speed > self.speed_cap:
-            trace.warn("LIS303", f"{name}: {speed:g} {self.unit}/s is capped to vb_not_referenced "
-                                 f"{self.speed_cap:g} {self.unit}/s while the axis is not homed")
-            return self.speed_cap
-        return speed
-
     def _active(self, lo: float, hi: float):
         """Membership and crossing distances of the region where the cam signal is active."""
         inside_cam = self.cam_level
@@ -250,45 +239,56 @@ class Simulator:
 
     # -- strategies --------------------------------------------------------------------------
     def run(self, start: float | None = None, cam_shift: float = 0.0) -> Trace:
-        scenario = self.scenario
-        trace = Trace(self.strategy, scenario, self.unit, self.acceleration)
-        x = scenario.start_position if start is None else start
-        kind = self.strategy.id
-        if kind == "drive_controlled" and scenario.drive is not None:
-            return self._drive(trace, x, scenario.drive, cam_shift)
-        if kind in ("absolute", "ignore_abs_pos", "disabled", "drive_controlled", "none"):
-            return self._no_motion(trace, kind)
-        if kind == "fixed_stop":
-            return self._fixed_stop(trace, x)
-        if kind == "simulation":
-            return self._simulated(trace, x)
-        if self.strategy.with_cam:
-            if scenario.cam is None:
-                trace.outcome, trace.failure = "failed", "the strategy needs a reference cam but the scenario has none"
-                return trace
-            lo, hi = scenario.cam
-            return self._with_cam(trace, x, lo + cam_shift, hi + cam_shift)
-        return self._zero_pulse_only(trace, x)
+        """Simulate from `start` (the scenario's start position by default); the strategy picks the sequence."""
+        trace = Trace(self.strategy, self.scenario, self.unit, self.acceleration)
+        x = self.scenario.start_position if start is None else start
+        return self.strategy.definition.simulate(self, trace, x, cam_shift)
 
-    def _no_motion(self, trace: Trace, kind: str) -> Trace:
-        if kind == "absolute":
-            trace.outcome = "not_required"
-        elif kind == "ignore_abs_pos":
-            trace.outcome = "skipped"
-        elif kind == "disabled":
-            absolute = bool(self.values.get("kenngr.abs_pos_gueltig"))
-            trace.outcome = "not_required" if absolute else "failed"
-            trace.failure = None if absolute else "homing is DISABLED on an incremental axis: G74 is refused"
-        elif kind == "none":
-            trace.outcome = "homed"
-            trace.reference = {"kind": "adopted", "position": self.scenario.start_position, "value": self.refpkt,
-                               "speed": 0.0}
-            trace.final_position = self.refpkt
-        else:
-            trace.outcome = "skipped"
-            trace.warn(None, "drive-controlled homing: the drive runs its own sequence; describe its method in "
-                             "the scenario's [drive] table to simulate it")
+    def check_soft_limits(self, trace: Trace) -> None:
+        """LIS317: the reference value or the position after homing outside the software limits (not on spindles)."""
+        if self.strategy.setup.spindle or trace.reference is None or trace.final_position is None:
+            return
+        low, high = self.soft_limits
+        unit = self.unit
+        value, final = trace.reference["value"], trace.final_position
+        if not low <= value <= high:
+            trace.warn("LIS317", f"the reference value {value:g} {unit} lies outside the software limits "
+                                 f"[{low:g}, {high:g}] {unit}")
+        elif not low <= final <= high:
+            what = ("after retracting from the stop" if self.strategy.id == "fixed_stop"
+                    else "after braking")
+            trace.warn("LIS317", f"{what} the axis stands at {final:.6g} {unit}, outside the software limits "
+                                 f"[{low:g}, {high:g}] {unit}: move the reference position inside by at least "
+                                 f"{abs(final - value):.4g} {unit}")
+
+    # -- the sequences the strategies choose from ---------------------------------------------
+    def stand_still(self, trace: Trace, outcome: str, failure: str | None = None, note: str | None = None) -> Trace:
+        """No homing move: the axis needs none, is skipped, or cannot be homed."""
+        trace.outcome, trace.failure = outcome, failure
+        if note:
+            trace.warn(None, note)
         return trace
+
+    def adopt(self, trace: Trace, x: float) -> Trace:
+        """Compatibility mode NONE: pos_refpkt becomes the axis position where it stands."""
+        trace.outcome = "homed"
+        trace.reference = {"kind": "adopted", "position": x, "value": self.refpkt, "speed": 0.0}
+        trace.final_position = self.refpkt
+        return trace
+
+    def drive_sequence(self, trace: Trace, x: float, cam_shift: float) -> Trace:
+        """Drive-controlled homing: simulated when the scenario describes the drive's method."""
+        if self.scenario.drive is None:
+            return self.stand_still(trace, "skipped", note="drive-controlled homing: the drive runs its own sequence; "
+                                    "describe its method in the scenario's [drive] table to simulate it")
+        return self._drive(trace, x, self.scenario.drive, cam_shift)
+
+    def cam_sequence(self, trace: Trace, x: float, cam_shift: float) -> Trace:
+        """The CNC-controlled sequences with a reference cam (one or three phases)."""
+        if self.scenario.cam is None:
+            return self.stand_still(trace, "failed", "the strategy needs a reference cam but the scenario has none")
+        lo, hi = self.scenario.cam
+        return self._with_cam(trace, x, lo + cam_shift, hi + cam_shift)
 
     def _next_pulse(self, x: float, s: int) -> float:
         """Distance from x (in direction s) to the next zero pulse (or encoder overflow)."""
@@ -300,11 +300,10 @@ class Simulator:
     def _pulse_lattice(self) -> tuple[float, float]:
         period, phase = self.scenario.zero_pulse_period, self.scenario.zero_pulse_phase
         if self.overflow:
-            bits = self.values.get("antr.encoder_bit_range")
-            numerator, denominator = self.values.get("getriebe[0].wegaufz"), self.values.get("getriebe[0].wegaufn")
-            if bits and numerator:
-                period = (2**bits) * denominator / numerator * POSITION
-            phase += self.values.get("antr.encoder_overflow_offset") * POSITION
+            setup = self.strategy.setup
+            if setup.overflow_period:
+                period = setup.overflow_period
+            phase += setup.overflow_offset
         return period, phase
 
     def _reference_search(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float,
@@ -366,13 +365,9 @@ class Simulator:
         active, entry, exit_ = self._active(lo, hi)
         t = 0.0
         if self.strategy.one_phase:
-            if active(x):
-                trace.warn("LIS402", "the axis starts on the reference cam: one-phase homing references without "
-                                     "leaving it, at the wrong place")
-            speed = self._speed(trace, self.slow, "vb_reflow")
-            return self._reference_search(trace, "to the cam and reference", x, t, s, speed, entry(x, s), 0.0)
-        fast = self._speed(trace, self.fast, "vb_refmax")
-        slow = self._speed(trace, self.slow, "vb_reflow")
+            return self._one_phase(trace, x, s, active, entry)
+        fast = self.fast
+        slow = self.slow
         travelled = 0.0
         if active(x):
             trace.events.append(Event(0.0, x, "on the cam at the start: phase 1 skipped"))
@@ -397,9 +392,28 @@ class Simulator:
         x = x_end
         return self._reference_search(trace, "onto the cam and reference", x, t, s, slow, entry(x, s), travelled)
 
-    def _zero_pulse_only(self, trace: Trace, x: float) -> Trace:
+    def _one_phase(self, trace: Trace, x: float, s: int, active, entry) -> Trace:
+        """Homing without reversal: flying spindle homing at vb_reflow; otherwise the cam is approached at
+        vb_refmax and the reference is its edge (type I) or the next zero pulse, searched at vb_reflow (type III)."""
+        if self.strategy.setup.spindle:
+            return self._reference_search(trace, "reference on the fly", x, 0.0, s, self.slow, entry(x, s), 0.0)
+        if active(x):
+            trace.warn("LIS402", "the axis starts on the reference cam: one-phase homing references without "
+                                 "leaving it, at the wrong place")
+        if not self.strategy.with_zero_pulse:
+            return self._reference_search(trace, "to the cam and reference", x, 0.0, s, self.fast, entry(x, s), 0.0)
+        t, travelled = 0.0, 0.0
+        if not active(x):
+            x_end, t, reached = self._edge_move(trace, "to the reference cam", x, t, s, self.fast, entry(x, s),
+                                                "the cam was reached (sampled each cycle)", "cam reached", travelled)
+            if not reached:
+                return trace
+            travelled, x = abs(x_end - x), x_end
+        return self._reference_search(trace, "on to the reference", x, t, s, self.slow, 0.0, travelled)
+
+    def zero_pulse_only(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         s = self.direction
-        speed = self._speed(trace, self.slow, "vb_reflow")
+        speed = self.slow
         event = "encoder overflow" if self.overflow else "zero pulse"
         latched = self.scenario.hardware_latch or self.overflow
         search_max = self.zero_search_max if self.zero_search_max > 0 else INF
@@ -409,9 +423,9 @@ class Simulator:
             self._reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
         return trace
 
-    def _simulated(self, trace: Trace, x: float) -> Trace:
+    def simulated(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         s = self.direction
-        speed = self._speed(trace, self.slow, "vb_reflow")
+        speed = self.slow
         distance = abs(self.values.get("antr.simu.rpf_weg_bis_nip")) * POSITION
         x_end, t_end, x_ref = self._move(trace, "to the simulated zero pulse", x, 0.0, s, speed, distance, True,
                                          "the simulated zero pulse was reached", 0.0)
@@ -419,7 +433,7 @@ class Simulator:
             self._reference(trace, "simulated zero pulse", x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
         return trace
 
-    def _fixed_stop(self, trace: Trace, x: float) -> Trace:
+    def fixed_stop(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         values, gear = self.values, self.strategy.gear
         s = 1 if values.get("kenngr.homing.torq_homing_dir") else -1
         speed = values.get(f"getriebe[{gear}].homing.torq_move_velocity") * VELOCITY
@@ -427,7 +441,6 @@ class Simulator:
         if speed <= 0:
             trace.outcome, trace.failure = "failed", "torq_move_velocity is not set: the axis does not move"
             return trace
-        speed = self._speed(trace, speed, "torq_move_velocity")
         if values.drive_type == 4:
             stop = x + s * values.get("kenngr.homing.torq_distance_to_block") * POSITION
         else:

@@ -8,14 +8,10 @@ under the strategy, with the reason.
 
 from __future__ import annotations
 
-from functools import lru_cache
-
-from .analysis import analyse
 from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue
-from .effective import AxisValues
+from .homing import HOMING_PARAMETERS, classify, effect, homing_parameter_paths, strategies_reading
+from .resolved import resolve_bytes
 from .rules import registry
-from .strategy import HOMING_PARAMETERS, classify, effectiveness, homing_parameter_paths
-from .syntax import parse_bytes
 from .units import describe, to_human, unit_label
 
 
@@ -32,10 +28,9 @@ def _speed_words(value: float | None, axis_type: str) -> str:
     return describe(value, unit)
 
 
-def explain_list(data: bytes, name: str, gear: int = 0) -> dict:
-    """Everything `explain FILE` shows, as JSON-ready data."""
-    analysis = analyse(parse_bytes(data, name))
-    values = AxisValues(analysis)
+def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> dict:
+    """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs, after its corrections."""
+    values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
     axis_type = values.axis_type
     phases = []
@@ -57,18 +52,21 @@ def explain_list(data: bytes, name: str, gear: int = 0) -> dict:
         value = values.get(path)
         unit = parameter.unit(axis_type)
         origin = values.origin(path)
-        effective, reason = effectiveness(strategy, values, path)
+        found = effect(strategy, values, path)
+        correction = values.correction(path)
         parameters.append({
             "parameter": path,
             "p_axis": parameter.id,
             "value": _plain(value),
+            "written": _plain(correction.written) if correction else None,
+            "correction": correction.error if correction else None,
             "unit": unit_label(unit) or None,
             "human": to_human(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else None,
             "source": {"kind": origin.kind, "line": origin.setting.line.number if origin.setting else None},
-            "effective": effective,
-            "reason": reason,
+            "effective": found.effective,
+            "reason": found.reason,
         })
-    drive = values.drive_type
+    acceleration = strategy.setup.acceleration
     return {
         "version": 1,
         "file": name,
@@ -77,7 +75,7 @@ def explain_list(data: bytes, name: str, gear: int = 0) -> dict:
             "name": values.get("kopf.log_achs_name"),
             "number": values.get("kopf.achs_nr"),
             "axis_type": AXIS_TYPE_NAMES[axis_type],
-            "drive_type": drive,
+            "drive_type": values.drive_type,
             "drive": values.drive_name(),
             "drive_type_set": values.drive_type_known,
             "homing_type": values.homing_type,
@@ -87,8 +85,12 @@ def explain_list(data: bytes, name: str, gear: int = 0) -> dict:
             "id": strategy.id, "title": strategy.title, "description": strategy.description,
             "controlled_by": strategy.controlled_by, "manual_type": strategy.manual_type,
             "variants": strategy.variants,
+            "ends_with_braking": strategy.definition.ends_with_braking,
+            "acceleration": {"value": acceleration.value, "source": acceleration.source}
+            if strategy.moves and strategy.controlled_by == "cnc" and strategy.id != "fixed_stop" else None,
         },
         "phases": phases,
+        "corrections": [c.as_dict() for c in values.corrections],
         "parameters": parameters,
     }
 
@@ -113,15 +115,22 @@ def render_list(report: dict, console) -> None:
         console.print(Text(f"Phases (gear stage {report['gear']}):", style="bold"))
         for phase in report["phases"]:
             console.print("  " + phase["text"])
-        console.print("  After the reference event the axis brakes, so it stops beyond the reference position "
-                      "by its braking distance.")
+        if strategy["ends_with_braking"]:
+            console.print("  After the reference event the axis brakes, so it stops beyond the reference position "
+                          "by its braking distance.")
+    for correction in report["corrections"]:
+        console.print(Text(f"CNC correction {correction['error']}: ", style="yellow") +
+                      Text(f"`{correction['parameter']}` {correction['written']} is used as {correction['used']}: "
+                           f"{correction['reason']}"))
     table = Table(title=f"Homing parameters (gear stage {report['gear']})", title_justify="left", show_lines=False)
     for column in ("parameter", "id", "value", "unit", "human", "source", "effective", "why"):
         table.add_column(column, overflow="fold")
     for row in report["parameters"]:
         source = "default" if row["source"]["kind"] == "default" else f"line {row['source']['line']}"
         table.add_row(
-            row["parameter"], row["p_axis"], str(row["value"]), row["unit"] or "", row["human"] or "", source,
+            row["parameter"], row["p_axis"],
+            str(row["value"]) + (f" (written {row['written']}, {row['correction']})" if row["correction"] else ""),
+            row["unit"] or "", row["human"] or "", source,
             Text("yes", style="green") if row["effective"] else Text("no", style="red"), row["reason"],
         )
     console.print(table)
@@ -129,40 +138,12 @@ def render_list(report: dict, console) -> None:
 
 # --- parameter cards --------------------------------------------------------------------------
 
-_PROBES = {
-    "three-phase, cam + zero pulse (III)": "",
-    "three-phase, cam only (I)": "kenngr.homing_without_zero_pulse 1\n",
-    "zero pulse only (II)": "kenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n",
-    "one-phase with cam": "kenngr.ref_ohne_rev 1\n",
-    "encoder overflow": "kenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 20\n",
-    "spindle flying homing": "kenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\n",
-    "simulated drive": "kenngr.antr_typ 4\n",
-    "fixed stop (TORQ)": "kenngr.homing.homing_type TORQ\n",
-    "drive-controlled": "kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\n",
-    "absolute axis": "kenngr.abs_pos_gueltig 1\n",
-}
-
-
-@lru_cache(maxsize=1)
-def _probe_values() -> dict[str, AxisValues]:
-    result = {}
-    for label, body in _PROBES.items():
-        text = "kenngr.antr_typ 1\n" + body if "antr_typ" not in body else body
-        result[label] = AxisValues(analyse(parse_bytes((text + "Ende\n").encode(), label)))
-    return result
-
-
-def strategies_using(parameter: Parameter) -> list[str] | None:
-    """Strategy labels under which a homing parameter takes effect; None for non-homing parameters."""
+def strategies_using(parameter: Parameter) -> list[dict] | None:
+    """The registered strategies that read a homing parameter (title and example); None for other parameters."""
     generic = parameter.path.replace("lr_hw[i]", "lr_hw[0]")
     if generic not in HOMING_PARAMETERS:
         return None
-    concrete = generic.replace("[i]", "[0]")
-    used = []
-    for label, values in _probe_values().items():
-        if effectiveness(classify(values), values, concrete)[0]:
-            used.append(label)
-    return used
+    return [{"id": d.id, "title": d.title, "example": d.example} for d in strategies_reading(generic)]
 
 
 def rules_checking(parameter: Parameter) -> list[str]:
@@ -230,7 +211,8 @@ def render_card(card: dict, console) -> None:
         ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
         ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
         ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
-        ("matters for", card["strategies"] is not None and (", ".join(card["strategies"]) or "no homing strategy")),
+        ("matters for", card["strategies"] is not None and (", ".join(s["title"] for s in card["strategies"])
+                                                             or "no homing strategy")),
         ("checked by", card["rules"] and ", ".join(card["rules"])),
         ("manual title", card["manual_title"]),
         ("manual", card["manual"]),

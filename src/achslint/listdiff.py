@@ -9,15 +9,12 @@ with units.
 
 from __future__ import annotations
 
-from .analysis import analyse
-from .effective import AxisValues
-from .syntax import parse_bytes
+from .resolved import ResolvedAxis, resolve_bytes
 from .units import to_human, unit_label
 
 
-def _values(data: bytes, name: str, defaults: bytes | None) -> AxisValues:
-    default_analysis = analyse(parse_bytes(defaults, "default list")) if defaults is not None else None
-    return AxisValues(analyse(parse_bytes(data, name)), default_analysis)
+def _values(data: bytes, name: str, defaults: bytes | None) -> ResolvedAxis:
+    return resolve_bytes(data, name, defaults)
 
 
 def _plain(value):
@@ -26,7 +23,7 @@ def _plain(value):
 
 def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | None = None) -> dict:
     left, right = _values(a, a_name, defaults), _values(b, b_name, defaults)
-    paths = sorted(set(left._origins) | set(right._origins))
+    paths = sorted(set(left.set_paths()) | set(right.set_paths()))
     rows = []
     for path in paths:
         before, after = left.get(path), right.get(path)

@@ -164,6 +164,15 @@ def parse_input(data: dict, where: str = "scenario"):
         raise ScenarioError(f"{where}: " + "; ".join(problems)) from None
 
 
+def default_scenario(strategy, given=None, cycle_time_us: int = 1000) -> Scenario:
+    """The scenario completed with the documented default geometry for the strategy's axis."""
+    setup = strategy.setup
+    direction = setup.torq_direction if strategy.id == "fixed_stop" else setup.direction
+    braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
+    return complete(given, direction=direction, rotary=setup.rotary, soft_limits=setup.soft_limits,
+                    cycle_time=cycle_time_us / 1e6, zero_pulse=strategy.with_zero_pulse, braking=braking)
+
+
 def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, float],
              cycle_time: float, zero_pulse: bool, braking: float = 0.0) -> Scenario:
     """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry."""

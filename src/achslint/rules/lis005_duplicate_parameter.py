@@ -2,14 +2,16 @@
 What
 ----
 The same parameter (same path and indices) is assigned more than once in a
-list. It is a warning when every assignment has the same value and an error
-when the values differ.
+list. The message says which value the CNC uses (the later one).
 
 Why
 ---
-The CNC keeps one of the values (which one is not documented; most likely the
-last) and does not tell you. With different values the list says two things at
-once and the next person to edit it may change the one that has no effect.
+The CNC reads the list from top to bottom and keeps the later value; the
+earlier assignment has no effect. Vendor lists sometimes do this on purpose
+(ISG's SERCOS-over-EtherCAT sample lists set `kenngr.antr_typ` in the general
+part and again in the drive part), so it is a warning, not an error. With
+different values the list says two things at once and the next person to edit
+it may change the one that has no effect.
 
 Example
 -------
@@ -31,8 +33,6 @@ List format facts §7 (repetition); SDK message 2056 "parameter already has a va
 """
 
 from __future__ import annotations
-
-from ..diagnostics import Severity
 
 CODE = "LIS005"
 NAME = "duplicate-parameter"
@@ -58,13 +58,14 @@ def check(ctx):
             differs = key != keys[0]
             if differs:
                 message = (
-                    f"`{canonical}` is assigned again with a different value (`{setting.written_value}`, "
-                    f"first: `{first.written_value}` on line {first.line.number}); keep only the one you mean"
+                    f"`{canonical}` is assigned again with a different value: the CNC uses this later one "
+                    f"(`{setting.written_value}`), not `{first.written_value}` from line {first.line.number}; "
+                    f"keep only the one you mean"
                 )
             else:
                 message = same
             start, end = ctx.path_span(setting.line)
             yield ctx.report(
                 CODE, setting.line, message, column=start, end_column=end, setting=setting,
-                severity=Severity.ERROR if differs else Severity.WARNING, related=related,
+                related=related,
             )

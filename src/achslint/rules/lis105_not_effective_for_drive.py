@@ -47,6 +47,8 @@ SUMMARY = "Parameter has no effect for this drive type or axis type"
 
 # Parameters that describe the drive or axis itself are never "not effective".
 _DEFINING = {"P-AXIS-00018", "P-AXIS-00020"}
+# Wrong axis type reported at error by another rule: the CNC does not support it (LIS316).
+_REPORTED_ELSEWHERE = {"P-AXIS-00074"}
 
 
 def check(ctx):
@@ -54,8 +56,10 @@ def check(ctx):
     drive = analysis.drive_type
     names = ctx.catalogue.drive_type_names
     for setting in ctx.settings:
-        if not setting.known or setting.parameter.id in _DEFINING:
-            continue
+        if not setting.known or setting.problems or setting.parameter.id in _DEFINING | _REPORTED_ELSEWHERE:
+            continue  # a rejected value is reported by the value rules
+        if ctx.values.correction(setting.canonical) is not None:
+            continue  # the CNC corrects it at load: the rule reporting the correction says more
         if setting.value is not None and setting.value == setting.parameter.typed_default:
             continue  # writing the default changes nothing, effective or not
         parameter = setting.parameter

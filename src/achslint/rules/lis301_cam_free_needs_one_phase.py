@@ -6,7 +6,8 @@ is 0 (homing with reversal).
 
 Why
 ---
-Reversing at the cam needs a cam signal; without a cam the sequence can only
+Applies to the CNC-controlled sequences (with a drive-controlled or absolute
+axis these parameters are not read, LIS401). Reversing at the cam needs a cam signal; without a cam the sequence can only
 run in one phase. The manual calls this combination impermissible: when
 P-AXIS-00156 is 1, P-AXIS-00157 must be 1 as well.
 
@@ -41,7 +42,8 @@ SUMMARY = "`ref_ohne_nocken = 1` requires `ref_ohne_rev = 1`"
 
 def check(ctx):
     values = ctx.values
-    if values.get("kenngr.ref_ohne_nocken") and not values.get("kenngr.ref_ohne_rev"):
+    paths = ("kenngr.ref_ohne_nocken", "kenngr.ref_ohne_rev")
+    if values.get(paths[0]) and not values.get(paths[1]) and ctx.effective(*paths):
         yield ctx.cross(
             CODE,
             f"{ctx.show('kenngr.ref_ohne_nocken')} (no reference cam) requires kenngr.ref_ohne_rev = 1, but "

@@ -3,7 +3,9 @@ What
 ----
 In a gear stage, the slow homing speed `vb_reflow` is higher than the fast
 one `vb_refmax`. Each gear stage is checked on its own; defaults count for the
-value the list leaves out.
+value the list leaves out. Applies where both speeds are used: homing with a
+reference cam and the zero pulse in three phases or in one (elsewhere one of
+them has no effect, LIS401).
 
 Why
 ---
@@ -44,7 +46,7 @@ def check(ctx):
     values = ctx.values
     for gear in values.gear_stages_set("vb_reflow", "vb_refmax"):
         slow, fast = f"getriebe[{gear}].vb_reflow", f"getriebe[{gear}].vb_refmax"
-        if values.get(slow) > values.get(fast):
+        if values.get(slow) > values.get(fast) and ctx.effective(slow, fast):
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: slow homing speed {ctx.show(slow)} is higher than the fast one {ctx.show(fast)}; "

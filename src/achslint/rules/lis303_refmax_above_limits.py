@@ -1,64 +1,72 @@
 """
 What
 ----
-In a gear stage, the fast homing speed `vb_refmax` is higher than the axis's
-maximum speed `dynamik.vb_max`, or higher than the speed limit for axes that
-are not yet homed (`vb_not_referenced`, when it is set).
+A homing speed of a gear stage above what the axis may run: `vb_refmax` or
+`vb_reflow` above the axis's maximum speed `dynamik.vb_max`, or a homing speed
+(`vb_refmax`, `vb_reflow`, `homing.torq_move_velocity`) above the limit for
+axes that are not yet homed (`vb_not_referenced`, when it is set). Only speeds
+that the configured strategy uses are checked (LIS401 reports the others).
 
 Why
 ---
-The range of P-AXIS-00219 ends at P-AXIS-00212 (an error). Above
-vb_not_referenced the CNC caps vb_refmax and warns with P-ERR-110421, so that
-case is reported as a warning. Either way the axis does not home at the speed
-written in the list.
+The ranges of P-AXIS-00218/00219 end at P-AXIS-00212 (P-ERR-110147/110148).
+Above vb_not_referenced the CNC lowers the speed to that limit while it loads
+the list (P-ERR-110421 vb_refmax, P-ERR-110422 vb_reflow, P-ERR-110413
+torq_move_velocity): the axis homes slower than written, and `explain` and
+`dry-run` show the lowered speed.
 
 Example
 -------
 ```
-getriebe[0].dynamik.vb_max      100000
+getriebe[0].vb_not_referenced   50000
 getriebe[0].vb_refmax           150000
 ```
 
 Use instead
 -----------
 ```
-getriebe[0].dynamik.vb_max      100000
-getriebe[0].vb_refmax           80000
+getriebe[0].vb_not_referenced   50000
+getriebe[0].vb_refmax           50000
 ```
 
 Reference
 ---------
-P-AXIS-00219 range (P-AXIS-00218 ≤ vb_refmax ≤ P-AXIS-00212); P-AXIS-00268; CNC message P-ERR-110421.
+P-AXIS-00218, P-AXIS-00219 ranges (≤ P-AXIS-00212); P-AXIS-00268; P-AXIS-00333; CNC messages P-ERR-110147,
+P-ERR-110148, P-ERR-110421, P-ERR-110422, P-ERR-110413.
 """
 
 from __future__ import annotations
 
-from ..diagnostics import Severity
+from ..corrections import CAPPED_SPEEDS
 
 CODE = "LIS303"
 NAME = "refmax-above-limits"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("getriebe[i].vb_refmax", "getriebe[i].dynamik.vb_max", "getriebe[i].vb_not_referenced")  # parameters this rule reads
-SUMMARY = "`vb_refmax` above `vb_max` or `vb_not_referenced`"
+PARAMETERS = ("getriebe[i].vb_refmax", "getriebe[i].vb_reflow", "getriebe[i].dynamik.vb_max",
+              "getriebe[i].vb_not_referenced", "getriebe[i].homing.torq_move_velocity")  # parameters this rule reads
+SUMMARY = "Homing speed above `vb_max` or above `vb_not_referenced` (lowered by the CNC)"
+
+_ABOVE_MAX = (("vb_refmax", "fast homing speed", "P-ERR-110147"), ("vb_reflow", "slow homing speed", "P-ERR-110148"))
 
 
 def check(ctx):
     values = ctx.values
-    for gear in values.gear_stages_set("vb_refmax", "dynamik.vb_max", "vb_not_referenced"):
-        fast, vmax, unref = (f"getriebe[{gear}].vb_refmax", f"getriebe[{gear}].dynamik.vb_max",
-                             f"getriebe[{gear}].vb_not_referenced")
-        if values.get(fast) > values.get(vmax):
-            yield ctx.cross(
-                CODE,
-                f"gear stage {gear}: fast homing speed {ctx.show(fast)} is above the maximum axis speed "
-                f"{ctx.show(vmax)}; lower vb_refmax",
-                [fast, vmax],
-            )
-        elif values.get(unref) and values.get(fast) > values.get(unref):
-            yield ctx.cross(
-                CODE,
-                f"gear stage {gear}: fast homing speed {ctx.show(fast)} is above the limit for unreferenced axes "
-                f"{ctx.show(unref)}; the CNC caps it (P-ERR-110421), lower vb_refmax",
-                [fast, unref], severity=Severity.WARNING,
-            )
+    for gear in values.gear_stages_set("vb_refmax", "vb_reflow", "dynamik.vb_max"):
+        vmax = f"getriebe[{gear}].dynamik.vb_max"
+        for member, words, error in _ABOVE_MAX:
+            path = f"getriebe[{gear}].{member}"
+            if values.written(path) > values.get(vmax) and ctx.effective(path):
+                yield ctx.cross(
+                    CODE,
+                    f"gear stage {gear}: {words} {ctx.show(path)} is above the maximum axis speed {ctx.show(vmax)} "
+                    f"({error}); lower {member}",
+                    [path, vmax],
+                )
+    for gear in values.gear_stages_set("vb_not_referenced"):
+        unref = f"getriebe[{gear}].vb_not_referenced"
+        for member, _ in CAPPED_SPEEDS:
+            path = f"getriebe[{gear}].{member}"
+            correction = ctx.correction(path)
+            if correction is not None and values.written(path) <= values.get(f"getriebe[{gear}].dynamik.vb_max"):
+                yield ctx.report_correction(CODE, correction, f"gear stage {gear}: {ctx.show(path)}", [path, unref])

@@ -7,7 +7,8 @@ Fixed-stop homing: the minimum travel before stop detection
 
 Why
 ---
-Detection is only armed after torq_min_distance and homing aborts after
+Applies to homing to a fixed stop (`TORQ`); other strategies do not read these
+parameters (LIS401). Detection is only armed after torq_min_distance and homing aborts after
 torq_max_distance, so with min ≥ max the stop can never be detected.
 
 Example
@@ -43,8 +44,8 @@ MIN, MAX = "kenngr.homing.torq_min_distance", "kenngr.homing.torq_max_distance"
 
 def check(ctx):
     values = ctx.values
-    if not (values.is_set(MIN) or values.is_set(MAX)):
-        return
+    if not (values.is_set(MIN) or values.is_set(MAX)) or not ctx.effective(MIN, MAX):
+        return  # only fixed-stop homing reads them
     low, high = values.get(MIN), values.get(MAX)
     if (low or high) and low >= high:
         yield ctx.cross(

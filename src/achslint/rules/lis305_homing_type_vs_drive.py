@@ -2,15 +2,16 @@
 What
 ----
 A homing type the drive type does not support: `DRIVE_CONTROLLED` on a drive
-other than SERCOS or CANopen (simulation, conventional, terminal, Lightbus,
-real-time Ethernet, PROFIDRIVE only home CNC-controlled). Checked when the list
-sets `kenngr.antr_typ`.
+that only homes CNC-controlled (simulation, conventional, terminal, Lightbus,
+real-time Ethernet, PROFIDRIVE). When the list does not set
+`kenngr.antr_typ`, the CNC's default drive type (4, simulation) counts.
 
 Why
 ---
-The CNC reports P-ERR-110384 while reading the list and silently uses the
-drive type's default homing type instead — a different sequence from the one
-you configured.
+The CNC reports P-ERR-110384 while it loads the list and runs the drive type's
+default homing type instead — a different sequence from the one written.
+`explain` and `dry-run` show the sequence the CNC actually runs, and the
+parameters that matter for it.
 
 Example
 -------
@@ -28,34 +29,25 @@ kenngr.homing.homing_type       CNC_CONTROLLED
 
 Reference
 ---------
-P-AXIS-00299 (table of homing types per drive type; P-ERR-110384).
+P-AXIS-00299 (table of homing types per drive type; unsupported type corrected to the default, P-ERR-110384).
 """
 
 from __future__ import annotations
-
-from ..effective import default_homing_type
 
 CODE = "LIS305"
 NAME = "homing-type-vs-drive"
 SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.antr_typ")  # parameters this rule reads
-SUMMARY = "Homing type not supported by the drive type"
+SUMMARY = "Homing type not supported by the drive type (the CNC replaces it)"
 
-# Drive types that only home CNC-controlled (P-AXIS-00299 table, plus the conventional drive).
-CNC_ONLY = {1, 3, 4, 5, 6, 7}
+TYPE = "kenngr.homing.homing_type"
 
 
 def check(ctx):
-    values = ctx.values
-    if not values.drive_type_known or values.homing_type_is_default:
+    correction = ctx.correction(TYPE)
+    if correction is None:
         return
-    drive = values.drive_type
-    if values.homing_type == "DRIVE_CONTROLLED" and drive in CNC_ONLY:
-        fallback = default_homing_type(drive)
-        yield ctx.cross(
-            CODE,
-            f"`kenngr.homing.homing_type` DRIVE_CONTROLLED is not available for kenngr.antr_typ {drive} "
-            f"({values.drive_name()}); the CNC reports P-ERR-110384 and uses {fallback} instead",
-            ["kenngr.homing.homing_type", "kenngr.antr_typ"],
-        )
+    values = ctx.values
+    unset = "" if values.drive_type_known else " (kenngr.antr_typ is not set, so the CNC's default drive type counts)"
+    yield ctx.report_correction(CODE, correction, f"`{TYPE}` {correction.written}{unset}", [TYPE, "kenngr.antr_typ"])

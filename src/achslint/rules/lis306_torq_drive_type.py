@@ -3,7 +3,8 @@ What
 ----
 Homing to a fixed stop (`TORQ`) on a drive type that cannot do it. Fixed-stop
 homing works with SERCOS and CANopen drives, the DSE / generic drive interface
-and simulated drives. Checked when the list sets `kenngr.antr_typ`.
+and simulated drives. When the list does not set `kenngr.antr_typ`, the CNC's
+default drive type (4, simulation) counts.
 
 Why
 ---
@@ -40,7 +41,7 @@ TORQ_DRIVES = {2, 4, 8, 9, 17}
 
 def check(ctx):
     values = ctx.values
-    if values.drive_type_known and values.homing_type == "TORQ" and values.drive_type not in TORQ_DRIVES:
+    if values.homing_type == "TORQ" and values.drive_type not in TORQ_DRIVES:
         yield ctx.cross(
             CODE,
             f"fixed-stop homing (TORQ) is not possible with kenngr.antr_typ {values.drive_type} "

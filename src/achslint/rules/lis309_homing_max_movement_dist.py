@@ -3,7 +3,8 @@ What
 ----
 `kenngr.homing_max_movement_dist` (path monitoring during homing) set to a
 value other than 0 on a linear axis, or, on a rotary axis or spindle, set
-smaller than the modulo range (`getriebe[0].moduloo - getriebe[0].modulou`).
+smaller than the modulo range (`getriebe[i].moduloo - getriebe[i].modulou`) of a
+gear stage.
 
 Why
 ---
@@ -45,24 +46,23 @@ DIST = "kenngr.homing_max_movement_dist"
 
 def check(ctx):
     values = ctx.values
+    correction = ctx.correction(DIST)
+    if correction is not None:
+        assumed = "" if values.is_set("kenngr.achs_typ") else " (kenngr.achs_typ is not set, so the axis is linear)"
+        yield ctx.report_correction(CODE, correction, f"{ctx.show(DIST)} on a linear axis{assumed}",
+                                    [DIST, "kenngr.achs_typ"])
+        return
     limit = values.get(DIST)
-    if not limit:
+    if not limit or values.axis_type == "T" or not ctx.effective(DIST):
         return
-    if values.axis_type == "T":
-        assumed = "" if values.is_set("kenngr.achs_typ") else " (kenngr.achs_typ is not set, so the CNC takes the axis as linear)"
-        yield ctx.cross(
-            CODE,
-            f"{ctx.show(DIST)} on a linear axis{assumed}: path monitoring only works for rotary axes and spindles; "
-            "the CNC reports P-ERR-110545 and sets it to 0. Remove the line",
-            [DIST, "kenngr.achs_typ"],
-        )
-        return
-    upper, lower = "getriebe[0].moduloo", "getriebe[0].modulou"
-    span = values.get(upper) - values.get(lower)
-    if limit < span:
-        yield ctx.cross(
-            CODE,
-            f"{ctx.show(DIST)} is shorter than the modulo range ({ctx.show(upper)} - {ctx.show(lower)} = {span}); "
-            f"homing may need a full revolution and would abort with P-ERR-70394; use at least {span}",
-            [DIST, upper, lower],
-        )
+    for gear in sorted(set(values.gear_stages_set("moduloo", "modulou")) | {0}):
+        upper, lower = f"getriebe[{gear}].moduloo", f"getriebe[{gear}].modulou"
+        span = values.get(upper) - values.get(lower)
+        if limit < span:
+            yield ctx.cross(
+                CODE,
+                f"gear stage {gear}: {ctx.show(DIST)} is shorter than the modulo range ({ctx.show(upper)} - "
+                f"{ctx.show(lower)} = {span}); homing may need a full revolution and would abort with P-ERR-70394; "
+                f"use at least {span}",
+                [DIST, upper, lower],
+            )

@@ -64,18 +64,14 @@ def _element_bytes(ctx, element: str) -> int | None:
 
 def check(ctx):
     values = ctx.values
-    element = values.get(NAME_PATH) or ""
+    element = values.written(NAME_PATH) or ""
     bit = values.get(BIT_PATH)
     if not element and bit == -1:
         return
     paths = [NAME_PATH, BIT_PATH]
-    if values.drive_type_known and values.drive_type != 2:
-        yield ctx.cross(
-            CODE,
-            f"reference monitoring only works with SERCOS drives; this axis has kenngr.antr_typ {values.drive_type} "
-            f"({values.drive_name()}), so the CNC switches it off (P-ERR-110548)",
-            paths + ["kenngr.antr_typ"],
-        )
+    correction = ctx.correction(NAME_PATH)
+    if correction is not None:
+        yield ctx.report_correction(CODE, correction, f"{ctx.show(NAME_PATH)}", paths + ["kenngr.antr_typ"])
         return
     if not element:
         yield ctx.cross(CODE, f"{ctx.show(BIT_PATH)} is set but no element name: name the telegram element "

@@ -4,14 +4,17 @@ What
 Homing on the encoder overflow (`kenngr.homing_overflow_evaluation = 1`)
 configured so it cannot work: together with `homing_without_zero_pulse = 1`,
 without `antr.encoder_bit_range` (the number of encoder bits whose overflow
-marks the reference), or with `antr.encoder_overflow_offset` beyond one
-encoder revolution (2^bits increments).
+marks the reference), with `antr.encoder_overflow_offset` beyond one encoder
+revolution (2^bits increments), or on a drive type without encoder-overflow
+homing (only SERCOS, Lightbus and CANopen have it).
 
 Why
 ---
 The overflow takes the place of the zero pulse, so the sequence must be the
 zero-pulse variant, and the CNC must know after how many bits the position
-wraps. An offset larger than one revolution is rejected and reset to 0.
+wraps. An offset larger than one revolution is reset to 0 (P-ERR-70310); on
+other drive types the CNC switches the method off (P-ERR-110416). Both
+corrections are applied before `explain` and `dry-run` describe the axis.
 
 Example
 -------
@@ -31,12 +34,10 @@ antr.encoder_bit_range              20
 Reference
 ---------
 TF5200 homing manual §3.1.1.2 (CNC-controlled at encoder overflow); P-AXIS-00294, P-AXIS-00354, P-AXIS-00355
-(offset within one revolution, else reset to 0; the manual names error 70310).
+(offset within one revolution, else reset to 0; the manual names error 70310); P-ERR-110416.
 """
 
 from __future__ import annotations
-
-from ..units import describe
 
 CODE = "LIS311"
 NAME = "encoder-overflow"
@@ -51,7 +52,11 @@ BITS, OFFSET = "antr.encoder_bit_range", "antr.encoder_overflow_offset"
 
 def check(ctx):
     values = ctx.values
-    if not values.get(SELECT):
+    switched_off = ctx.correction(SELECT)
+    if switched_off is not None:
+        yield ctx.report_correction(CODE, switched_off, ctx.show(SELECT), [SELECT, "kenngr.antr_typ"])
+        return
+    if not values.get(SELECT) or not ctx.effective(SELECT):
         return
     if values.get(NO_PULSE):
         yield ctx.cross(
@@ -59,22 +64,13 @@ def check(ctx):
             f"{ctx.show(SELECT)} needs {NO_PULSE} = 0 (the overflow replaces the zero pulse), but {ctx.show(NO_PULSE)}",
             [SELECT, NO_PULSE],
         )
-    bits = values.get(BITS)
-    if not bits:
+    if not values.get(BITS):
         yield ctx.cross(
             CODE,
             f"{ctx.show(SELECT)} but {ctx.show(BITS)}: set the number of encoder bits (1..31) whose overflow marks the reference",
             [SELECT, BITS],
         )
         return
-    numerator, denominator = values.get("getriebe[0].wegaufz"), values.get("getriebe[0].wegaufn")
-    revolution = (2**bits) * denominator / numerator if numerator else None  # in 0.1 µm / 0.0001°
-    offset = values.get(OFFSET)
-    if revolution and abs(offset) >= revolution:
-        yield ctx.cross(
-            CODE,
-            f"{ctx.show(OFFSET)} is beyond one encoder revolution (2^{bits} increments = "
-            f"{describe(revolution, values.parameter(OFFSET).unit(values.axis_type))} with getriebe[0].wegaufz/wegaufn); "
-            "the CNC resets it to 0",
-            [OFFSET, BITS],
-        )
+    reset = ctx.correction(OFFSET)
+    if reset is not None:
+        yield ctx.report_correction(CODE, reset, ctx.show(OFFSET), [OFFSET, BITS])

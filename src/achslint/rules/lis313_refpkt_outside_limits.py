@@ -2,8 +2,10 @@
 What
 ----
 The reference position `getriebe[i].pos_refpkt` does not lie strictly between
-the software limits `kenngr.swe_neg` and `kenngr.swe_pos`. Spindles are not
-checked (software limits do not apply to them).
+the software limits `kenngr.swe_neg` and `kenngr.swe_pos`, where the strategy
+uses it (CNC-controlled sequences, compatibility mode NONE, a gantry slave,
+drive-controlled homing with write_reference_position_to_drive). Spindles are
+not checked (software limits do not apply to them).
 
 Why
 ---
@@ -53,7 +55,7 @@ def check(ctx):
     for gear in stages:
         path = f"getriebe[{gear}].pos_refpkt"
         position = values.get(path)
-        if not low < position < high:
+        if not low < position < high and ctx.effective(path):
             side = NEG if position <= low else POS
             yield ctx.cross(
                 CODE,

@@ -50,13 +50,13 @@ SUMMARY = "Homing ends outside the software limits (braking or retraction)"
 
 
 def check(ctx):
-    from ..dryrun import check_soft_limits, default_scenario
     from ..engine import Simulator
+    from ..scenario import default_scenario
 
     values, strategy = ctx.values, ctx.strategy
     if not strategy.moves or strategy.controlled_by != "cnc" or values.axis_type == "S":
         return
-    probe = Simulator(values, strategy, default_scenario(values, strategy, cycle_time_us=ctx.options.cycle_time_us))
+    probe = Simulator(values, strategy, default_scenario(strategy, cycle_time_us=ctx.options.cycle_time_us))
     if strategy.id == "fixed_stop":
         # Only the distances matter: put the stop where detection is certain.
         low = values.get("kenngr.homing.torq_min_distance") * 1e-4
@@ -64,7 +64,7 @@ def check(ctx):
             1 if values.get("kenngr.homing.torq_homing_dir") else -1) * (low + 1.0)
         probe.scenario.limit_switches = (-1e12, 1e12)
     trace = probe.run()
-    check_soft_limits(probe, trace)
+    probe.check_soft_limits(trace)
     for warning in trace.warnings:
         if warning["code"] == CODE:
             paths = ["kenngr.homing.torq_homing_position"] if strategy.id == "fixed_stop" else [f"getriebe[{strategy.gear}].pos_refpkt"]

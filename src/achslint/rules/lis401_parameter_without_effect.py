@@ -39,10 +39,7 @@ matter), §3.4 (simulation: only P-AXIS-00161).
 
 from __future__ import annotations
 
-import re
-from functools import lru_cache
-
-from ..strategy import HOMING_PARAMETERS, effectiveness
+from ..homing import HOMING_PARAMETERS, is_homing_parameter
 
 CODE = "LIS401"
 NAME = "parameter-without-effect"
@@ -51,37 +48,23 @@ FIX = "none"
 PARAMETERS = tuple(HOMING_PARAMETERS)  # parameters this rule reads
 SUMMARY = "Homing parameter set but without effect under the configured strategy"
 
-_GENERIC = set(HOMING_PARAMETERS)
-_GEAR_INDEX = re.compile(r"getriebe\[\d+\]")
-
-
-@lru_cache(maxsize=4096)
-def _generic(canonical: str) -> str:
-    """`getriebe[2].vb_reflow` -> `getriebe[i].vb_reflow` (and the second cam input as the first)."""
-    return _GEAR_INDEX.sub("getriebe[i]", canonical).replace("lr_hw[1]", "lr_hw[0]")
-
 
 def check(ctx):
-    strategy = ctx.strategy
     values = ctx.values
     for setting in ctx.settings:
         if not setting.known or setting.problems:
-            continue
+            continue  # a value the CNC rejects is reported by the value rules
         canonical = setting.canonical
-        generic = _generic(canonical)
-        if generic not in _GENERIC or values.in_list(canonical) is not setting:
+        if not is_homing_parameter(canonical) or values.in_list(canonical) is not setting:
             continue
         if setting.value == setting.parameter.typed_default:
             continue
-        group = setting.parameter.drive_group
-        if group and values.drive_type_known and values.drive_type not in group:
-            continue  # LIS105 already says this parameter belongs to another drive
-        gear_path = canonical
-        effective, reason = effectiveness(strategy, values, gear_path)
-        if not effective:
-            start, end = ctx.path_span(setting.line)
-            yield ctx.report(
-                CODE, setting.line,
-                f"`{canonical}` has no effect here: {reason} (configured strategy: {strategy.title})",
-                column=start, end_column=end, setting=setting,
-            )
+        effect = ctx.effect(canonical)
+        if effect.effective or effect.cause != "strategy":
+            continue  # a parameter of another drive or axis type is LIS105's
+        start, end = ctx.path_span(setting.line)
+        yield ctx.report(
+            CODE, setting.line,
+            f"`{canonical}` has no effect here: {effect.reason} (the CNC runs: {ctx.strategy.title})",
+            column=start, end_column=end, setting=setting,
+        )

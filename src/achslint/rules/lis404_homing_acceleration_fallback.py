@@ -1,7 +1,8 @@
 """
 What
 ----
-CNC-controlled homing with no homing acceleration (`getriebe[i].a_ref` not
+CNC-controlled homing of a real (not simulated) linear or rotary axis with no
+homing acceleration (`getriebe[i].a_ref` not
 set or 0). The message reports the value the CNC uses instead: the smaller of
 the two rapid-traverse accelerations of the linear slope,
 `lslope_profil.a_grenz_stufe_1` and `a_grenz_stufe_2`.
@@ -41,26 +42,17 @@ PARAMETERS = ("getriebe[i].a_ref", "getriebe[i].lslope_profil.a_grenz_stufe_1", 
 SUMMARY = "Homing acceleration not set: the CNC's fallback is used"
 
 
-def homing_acceleration(values, gear: int = 0) -> tuple[float, bool]:
-    """(acceleration in mm/s² or °/s², True when it is the fallback)."""
-    own = values.get(f"getriebe[{gear}].a_ref")
-    if own:
-        return own, False
-    return min(values.get(f"getriebe[{gear}].lslope_profil.a_grenz_stufe_1"),
-               values.get(f"getriebe[{gear}].lslope_profil.a_grenz_stufe_2")), True
-
-
 def check(ctx):
     strategy = ctx.strategy
-    if strategy.controlled_by != "cnc" or not strategy.moves or strategy.id in ("fixed_stop", "simulation"):
+    # Where a_ref takes effect on a real axis: a simulated drive has no mechanics that brake.
+    if not strategy.moves or strategy.setup.simulated or not ctx.effective("getriebe[0].a_ref"):
         return
-    values = ctx.values
-    acceleration, fallback = homing_acceleration(values)
-    if fallback:
+    acceleration = strategy.setup.acceleration
+    if acceleration.fallback:
         one, two = "getriebe[0].lslope_profil.a_grenz_stufe_1", "getriebe[0].lslope_profil.a_grenz_stufe_2"
         yield ctx.cross(
             CODE,
             f"`getriebe[0].a_ref` is not set: homing accelerates with min({ctx.show(one)}, {ctx.show(two)}) = "
-            f"{acceleration:g} {'mm/s²' if values.axis_type == 'T' else '°/s²'}; set a_ref to choose it",
+            f"{acceleration.value:g} {'mm/s²' if ctx.values.axis_type == 'T' else '°/s²'}; set a_ref to choose it",
             ["getriebe[0].a_ref", one, two],
         )

@@ -1,14 +1,19 @@
-"""Effective values: what the CNC ends up with for every parameter of one axis.
+"""The resolved axis: what the CNC ends up running for one axis.
 
-The CNC fills an axis the same way each time: its built-in default, then the
-default axis list (if the start-up list names one), then the axis list, where
-the last assignment of a parameter wins. Values the CNC would reject (wrong
-type, out of range) do not count. Parameter references (`P-AXIS-00212.0`) are
-resolved to the referenced parameter's effective value.
+The CNC fills an axis the same way each time, and so does this module:
 
-`AxisValues` is what the cross-parameter rules, the strategy classification and
-`explain` read; it also remembers which assignment produced each value, so
-diagnostics can point at every line involved.
+1. its built-in default,
+2. the default axis list (`default_achs_mds` of the start-up list), if any,
+3. the axis list itself, where the later of two assignments wins,
+4. parameter references (`P-AXIS-00212.0`) resolved to the referenced value,
+5. the CNC's own load-time corrections (a homing type the drive cannot run,
+   speeds above the limit for unreferenced axes, ...), each recorded as a
+   `Correction` with the value written, the value used and the CNC message.
+
+Values the CNC would reject (wrong type, out of range) do not count. Every
+command reads this one object: the rules, `explain`, `dry-run`, `diff`, the
+typed model and the editor. `written(path)` gives the value before the
+corrections, `get(path)` the value the CNC uses.
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ from .syntax import path_pattern
 
 @dataclass(frozen=True, slots=True)
 class Origin:
-    """Where an effective value came from: an assignment (in the list or the default list) or the default."""
+    """Where a value came from: an assignment (in the list or the default list) or the default."""
 
     kind: str  # "list", "default list" or "default"
     setting: Setting | None = None
@@ -38,8 +43,35 @@ class Origin:
 DEFAULT_ORIGIN = Origin("default")
 
 
-class AxisValues:
-    """Effective, typed values of one axis, by canonical concrete path."""
+@dataclass(frozen=True, slots=True)
+class Correction:
+    """A value the CNC replaces while it loads the list, and the message it gives."""
+
+    parameter: str  # canonical path
+    written: object  # the value of the layers (references resolved)
+    used: object  # the value the CNC runs with
+    error: str  # the CNC message id, e.g. P-ERR-110421
+    reason: str  # why, in our words
+    origin: Origin = DEFAULT_ORIGIN
+
+    def as_dict(self) -> dict:
+        setting = self.origin.setting
+        return {
+            "parameter": self.parameter, "written": _plain(self.written), "used": _plain(self.used),
+            "error": self.error, "reason": self.reason, "source": self.origin.kind,
+            "line": setting.line.number if setting else None,
+        }
+
+
+def _plain(value):
+    return int(value) if isinstance(value, bool) else value
+
+
+SERCOS, SIMULATION, LIGHTBUS, CANOPEN = 2, 4, 5, 8
+
+
+class ResolvedAxis:
+    """Typed values of one axis by canonical concrete path, after layering, references and corrections."""
 
     def __init__(self, analysis: Analysis, defaults: Analysis | None = None, cat: Catalogue | None = None):
         self.catalogue = cat or catalogue()
@@ -47,23 +79,34 @@ class AxisValues:
         self._values: dict[str, object] = {}
         self._origins: dict[str, Origin] = {}
         self._stages: dict[str, set[int]] | None = None
+        self._corrected: dict[str, Correction] = {}
         layers = [(defaults, "default list"), (analysis, "list")] if defaults else [(analysis, "list")]
         for layer, kind in layers:
             for setting in layer.settings:
                 if setting.known and not setting.problems and setting.value is not None:
                     self._values[setting.canonical] = setting.value
                     self._origins[setting.canonical] = Origin(kind, setting, layer.file.name)
+        from .corrections import apply
+
+        apply(self)
 
     # -- lookups ---------------------------------------------------------------------------
     def parameter(self, path: str) -> Parameter:
-        pattern, _ = path_pattern(path)
         resolved = self.catalogue.resolve(path)
         if resolved is None:
+            pattern, _ = path_pattern(path)
             raise KeyError(f"not a catalogue parameter: {path} ({pattern})")
         return resolved.parameter
 
-    def get(self, path: str, _depth: int = 0):
-        """The effective value (typed), following references; the built-in default when unset."""
+    def get(self, path: str):
+        """The value the CNC uses (typed): corrected, references followed, the default when unset."""
+        correction = self._corrected.get(path)
+        if correction is not None:
+            return correction.used
+        return self.written(path)
+
+    def written(self, path: str, _depth: int = 0):
+        """The value before the CNC's corrections (references followed, the default when unset)."""
         value = self._values.get(path)
         if isinstance(value, Reference):
             return self._follow(path, value, _depth)
@@ -81,13 +124,15 @@ class AxisValues:
             indices = ((reference.index,) + (0,) * (count - 1)) if reference.index is not None else (own + (0,) * count)[:count]
         else:
             indices = ()
-        return self.get(fill_indices(target.path, indices), depth + 1)
+        concrete = fill_indices(target.path, indices)
+        correction = self._corrected.get(concrete)
+        return correction.used if correction is not None else self.written(concrete, depth + 1)
 
     def origin(self, path: str) -> Origin:
         return self._origins.get(path, DEFAULT_ORIGIN)
 
     def setting(self, path: str) -> Setting | None:
-        """The assignment that produced the effective value, if it was set in a list."""
+        """The assignment that produced the value, if it was set in a list."""
         return self._origins.get(path, DEFAULT_ORIGIN).setting
 
     def is_set(self, path: str) -> bool:
@@ -97,6 +142,10 @@ class AxisValues:
         """The assignment in the axis list itself (not the default list), if any."""
         origin = self._origins.get(path)
         return origin.setting if origin and origin.kind == "list" else None
+
+    def set_paths(self) -> list[str]:
+        """Canonical paths assigned in the list or the default list."""
+        return list(self._origins)
 
     def gear_stages_set(self, *members: str) -> list[int]:
         """Gear stages (0..5) in which any of the given `getriebe[i].…` members is set."""
@@ -110,6 +159,18 @@ class AxisValues:
         for member in members:
             stages |= self._stages.get(member, set())
         return sorted(stages)
+
+    # -- corrections ---------------------------------------------------------------------------
+    def correct(self, path: str, used, error: str, reason: str) -> None:
+        """Record a load-time correction of the CNC (called by `corrections.apply`)."""
+        self._corrected[path] = Correction(path, self.written(path), used, error, reason, self.origin(path))
+
+    @property
+    def corrections(self) -> list[Correction]:
+        return list(self._corrected.values())
+
+    def correction(self, path: str) -> Correction | None:
+        return self._corrected.get(path)
 
     # -- the axis as a whole -----------------------------------------------------------------
     @property
@@ -133,7 +194,7 @@ class AxisValues:
 
     @property
     def homing_type(self) -> str:
-        """The homing type in force: as set, or the drive type's default (P-AXIS-00299 table)."""
+        """The homing type in force: as set (after corrections), or the drive type's default (P-AXIS-00299 table)."""
         value = self.get("kenngr.homing.homing_type")
         if value in (None, "DRIVE_DEFAULT"):
             return default_homing_type(self.drive_type)
@@ -141,12 +202,24 @@ class AxisValues:
 
     @property
     def homing_type_is_default(self) -> bool:
-        return not self.is_set("kenngr.homing.homing_type") or self.get("kenngr.homing.homing_type") == "DRIVE_DEFAULT"
+        return not self.is_set("kenngr.homing.homing_type") or self.written("kenngr.homing.homing_type") == "DRIVE_DEFAULT"
 
 
-SERCOS, CANOPEN, SIMULATION = 2, 8, 4
+def resolve_bytes(data: bytes, name: str, defaults: bytes | None = None) -> ResolvedAxis:
+    """The resolved axis of a list's bytes, with an optional default list underneath."""
+    from .analysis import analyse
+    from .syntax import parse_bytes
+
+    default_analysis = analyse(parse_bytes(defaults, "default list")) if defaults is not None else None
+    return ResolvedAxis(analyse(parse_bytes(data, name)), default_analysis)
 
 
 def default_homing_type(drive_type: int) -> str:
     """The homing type a drive type uses when none is configured (P-AXIS-00299 table)."""
     return "DRIVE_CONTROLLED" if drive_type == SERCOS else "CNC_CONTROLLED"
+
+
+# Drive types that only home CNC-controlled (P-AXIS-00299 table, plus the conventional drive).
+CNC_ONLY_DRIVES = frozenset({1, 3, SIMULATION, LIGHTBUS, 6, 7})
+# Drive types with encoder-overflow homing (P-AXIS-00354/00355 drive types; §3.1.1.2).
+OVERFLOW_DRIVES = frozenset({SERCOS, LIGHTBUS, CANOPEN})

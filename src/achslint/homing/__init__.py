@@ -1,0 +1,32 @@
+"""Homing: the strategy registry, the homing value object and the strategies' data.
+
+    classify(axis) -> HomingStrategy      first registered strategy whose `matches` holds
+    effect(strategy, axis, path) -> Effect whether a parameter takes effect, and why
+    HomingSetup(axis, gear)               the axis's homing values in mm and seconds
+
+Rules, `explain` and `dry-run` all import from here; adding a strategy means one
+module in `strategies/`, one line in `registry.STRATEGY_MODULES` and fixtures.
+"""
+
+from .base import NEGATIVE, POSITIVE, HomingStrategy, Phase, StrategyDef, Use
+from .parameters import HOMING_PARAMETERS
+from .registry import (
+    STRATEGY_MODULES,
+    Effect,
+    by_id,
+    classify,
+    effect,
+    generic,
+    homing_parameter_paths,
+    is_homing_parameter,
+    strategies,
+    strategies_reading,
+)
+from .setup import POSITION, VELOCITY, Acceleration, HomingSetup
+
+__all__ = [
+    "NEGATIVE", "POSITIVE", "HomingStrategy", "Phase", "StrategyDef", "Use", "HOMING_PARAMETERS",
+    "STRATEGY_MODULES", "Effect", "by_id", "classify", "effect", "generic", "homing_parameter_paths",
+    "is_homing_parameter", "strategies", "strategies_reading", "POSITION", "VELOCITY", "Acceleration",
+    "HomingSetup",
+]
