@@ -13,11 +13,12 @@ __version__ = "0.1.0"
 __all__ = ["__version__", "load", "lint"]
 
 
-def load(source, *, defaults=None):
-    """Parse a list (path, bytes or text) into a typed `AxisParameters` model."""
+def load(source, *, defaults=None, strict=False):
+    """Parse a list (path, bytes or text) into a typed `AxisParameters` model (the resolved axis);
+    `strict=True` raises a pydantic ValidationError listing every error-level finding."""
     from .api import load as _load
 
-    return _load(source, defaults=defaults)
+    return _load(source, defaults=defaults, strict=strict)
 
 
 def lint(source, *, select=None, ignore=None, name=None):

@@ -256,12 +256,24 @@ def lint(source, *, select=None, ignore=None, name=None):
     return lint_bytes(data, name or default_name, settings)
 
 
-def load(source, *, defaults=None):
-    from .model import build_model
+def load(source, *, defaults=None, strict: bool = False):
+    """The typed model of a list (path, bytes or text) on top of an optional default list.
+
+    Lenient by default: the findings of `lint` are kept on the model (`model.findings`). With
+    `strict=True` every error-level finding is raised as one pydantic `ValidationError`.
+    """
+    from .model import build_model, rule_errors
 
     data, name = _as_bytes(source)
     default_data = _as_bytes(defaults) if defaults is not None else None
-    return build_model(data, name, default_data)
+    model = build_model(data, name, default_data)
+    settings = FileSettings(keep_source=False)
+    findings = check_bytes(data, name, settings, default_data[0] if default_data else None).diagnostics
+    model._findings = findings
+    errors = [d for d in findings if d.severity is Severity.ERROR]
+    if strict and errors:
+        raise rule_errors(errors)
+    return model
 
 
 __all__ = ["ConfigError", "LintRequest", "LintOutcome", "Linter", "run_lint", "lint", "load"]

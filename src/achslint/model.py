@@ -7,9 +7,16 @@ catalogue knows. Every field has the parameter's type, its range where the
 catalogue gives literal bounds, its default and its description, so the JSON
 Schema documents the whole list format.
 
-Values are filled the way the CNC loads an axis: the built-in default, then the
-default axis list (if given), then the axis list. `source_of(path)` tells where
-the effective value came from.
+Values come from the resolved axis (`resolved.py`): the built-in default, the
+default axis list (if given), the axis list, references resolved and the CNC's
+load-time corrections applied. `source_of(path)` tells where a value came from,
+`corrections` what the CNC replaced, `findings` what the rules found.
+
+The cross-parameter rules are part of the model: validating data with
+`AxisParameters.model_validate(...)` runs the same rule code as `achslint lint`
+on the axis the data describes and raises one `ValidationError` with an entry
+per error-level finding (its code, parameter and message). `achslint.load()`
+is lenient and keeps the findings on the model; `load(..., strict=True)` raises.
 """
 
 from __future__ import annotations
@@ -20,7 +27,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any, Literal, Optional
 
-from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, create_model
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, ValidationInfo, create_model, model_validator
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from .catalogue import BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue
 
@@ -50,31 +58,40 @@ class _Node:
         self.parameter: Parameter | None = None
 
 
+# Catalogue paths whose group is itself a parameter (`kenngr.swe_pos.zero_limit`, P-AXIS-00560, next to
+# `kenngr.swe_pos`): the model keeps them as one field of the parent group, named by joining the rest with "_".
+_JOINED: dict[str, tuple[str, str]] = {}  # catalogue path -> (written rest, field name)
+
+
 def _tree() -> _Node:
     root = _Node()
     for parameter in catalogue().parameters:
         node = root
         segments = parameter.path.split(".")
         bounds = iter(parameter.index_bounds)
-        placed = True
         for position, segment in enumerate(segments):
             name, is_array = segment.replace("[i]", ""), "[i]" in segment
-            child = node.children.get(name)
             last = position == len(segments) - 1
+            child = node.children.get(name)
+            if not last and child is not None and child.parameter is not None and "[i]" not in parameter.path:
+                rest = ".".join(segments[position:])
+                _JOINED[parameter.path] = (rest, rest.replace(".", "_"))
+                child = node.children[rest] = _Node()
+                child.parameter = parameter
+                break
             if child is None:
                 child = node.children[name] = _Node()
-            if (last and child.children) or (not last and child.parameter is not None):
-                placed = False  # a path that clashes with another (a documented misprint)
-                break
             if is_array:
                 child.bounds = next(bounds)
             node = child
-        if placed:
-            node.parameter = parameter
+            if last:
+                node.parameter = parameter
     return root
 
 
 def _field_name(name: str) -> str:
+    if "." in name:
+        return name.replace(".", "_")
     return name + "_" if keyword.iskeyword(name) or name in ("model_config",) or name.startswith("model_") else name
 
 
@@ -153,6 +170,28 @@ class _AxisBase(BaseModel):
     model_config = ConfigDict(populate_by_name=True, extra="forbid")
     unknown: dict[str, str] = Field(default_factory=dict, description="Parameters the catalogue does not know, as written.")
     _sources: dict[str, Source] = PrivateAttr(default_factory=dict)
+    _corrections: list = PrivateAttr(default_factory=list)
+    _findings: list = PrivateAttr(default_factory=list)
+
+    @property
+    def corrections(self) -> list:
+        """The CNC's load-time corrections (`resolved.Correction`) behind the values of this model."""
+        return list(self._corrections)
+
+    @property
+    def findings(self) -> list:
+        """The diagnostics `achslint lint` reports for the list this model was loaded from."""
+        return list(self._findings)
+
+    @model_validator(mode="after")
+    def _cross_rules(self, info: ValidationInfo):
+        """The cross-parameter rules, run by the same rule code as `achslint lint` on the axis the data describes."""
+        if info.context and info.context.get("lenient"):
+            return self
+        errors = [d for d in _rule_findings(dumps(self)) if d.severity.value == "error"]
+        if errors:
+            raise rule_errors(errors)
+        return self
 
     def source_of(self, path: str) -> Source:
         """Where the effective value of a canonical path (`getriebe[0].vb_reflow`) came from."""
@@ -161,7 +200,7 @@ class _AxisBase(BaseModel):
     def get(self, path: str) -> Any:
         """The effective value of a canonical path, e.g. `getriebe[0].vb_reflow`."""
         value: Any = self
-        for name, index in re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", path):
+        for name, index in _parts(path):
             value = getattr(value, _field_name(name))
             if index:
                 value = value[int(index)]
@@ -184,8 +223,16 @@ def json_schema() -> dict:
     return schema
 
 
+def _parts(path: str) -> list[tuple[str, str]]:
+    """A canonical path as (member, index) pairs of the model, joined groups as one member."""
+    for catalogue_path, (rest, field) in _JOINED.items():
+        if path == catalogue_path:
+            return _parts(path[: -len(rest) - 1]) + [(field, "")]
+    return re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", path)
+
+
 def _nested_set(target: dict, path: str, value: Any) -> None:
-    parts = re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", path)
+    parts = _parts(path)
     node = target
     for position, (name, index) in enumerate(parts):
         last = position == len(parts) - 1
@@ -235,36 +282,94 @@ def _list_item_model(annotation: Any) -> type[BaseModel] | None:
 
 
 def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None = None):
-    """Parse an axis list (optionally on top of a default list) into `AxisParameters`."""
-    from .analysis import analyse
-    from .syntax import parse_bytes
+    """The typed model of an axis list (on top of an optional default list), built from its resolved axis."""
+    from .resolved import resolve_bytes
 
+    axis = resolve_bytes(data, name, default_list[0] if default_list else None)
     values: dict[str, Any] = {}
     sources: dict[str, Source] = {}
-    unknown: dict[str, str] = {}
-    layers = []
-    if default_list is not None:
-        layers.append((default_list[0], default_list[1], "default list"))
-    layers.append((data, name, "list"))
-    for layer_data, layer_name, kind in layers:
-        analysis = analyse(parse_bytes(layer_data, layer_name))
-        for setting in analysis.settings:
-            line = setting.line
-            if not setting.known:
-                unknown[line.path] = line.value or ""
-                continue
-            if setting.problems or setting.value is None or not _is_plain(setting.value):
-                continue
-            values[setting.canonical] = setting.value
-            sources[setting.canonical] = Source(kind, layer_name, line.number, line.path_column)
+    for path in axis.set_paths() + [c.parameter for c in axis.corrections]:
+        value = axis.get(path)
+        if not _is_plain(value):
+            continue
+        values[path] = value
+        origin = axis.origin(path)
+        if origin.setting is not None:
+            line = origin.setting.line
+            sources[path] = Source(origin.kind, origin.file if origin.kind == "default list" else name, line.number,
+                                   line.path_column)
+    unknown = {s.line.path: s.line.value or "" for s in axis.analysis.settings if not s.known}
+    model = axis_model()  # also records the joined groups _nested_set needs
     nested: dict = {}
     for path, value in values.items():
         _nested_set(nested, path, value)
-    model = axis_model()
-    axis = model.model_validate({**_materialise(model, nested), "unknown": unknown})
-    axis._sources = sources
-    return axis
+    result = model.model_validate({**_materialise(model, nested), "unknown": unknown}, context={"lenient": True})
+    result._sources = sources
+    result._corrections = axis.corrections
+    return result
 
 
 def _is_plain(value: Any) -> bool:
     return isinstance(value, (bool, int, float, str))
+
+
+def rule_errors(diagnostics) -> ValidationError:
+    """One ValidationError with an entry per finding: its code, the parameter path and the message."""
+    details = [
+        InitErrorDetails(
+            type=PydanticCustomError("cross_rule", "{code}: {message}", {"code": d.code, "message": d.message}),
+            loc=_loc(d.parameter) if d.parameter else ("list",),
+            input=d.parameter,
+        )
+        for d in diagnostics
+    ]
+    return ValidationError.from_exception_data("AxisParameters", details)
+
+
+def _loc(path: str) -> tuple:
+    loc: list = []
+    for name, index in _parts(path):
+        loc.append(name)
+        if index:
+            loc.append(int(index))
+    return tuple(loc)
+
+
+def _rule_findings(text: str) -> list:
+    from .linter import FileSettings, Selection, lint_bytes
+
+    settings = FileSettings(Selection(["LIS3", "LIS4"]), keep_source=False)
+    return lint_bytes(text.encode("utf-8"), "<model>", settings)
+
+
+def dumps(axis: BaseModel) -> str:
+    """The model as an axis list in canonical layout: every value that differs from the CNC's default, then `Ende`."""
+    lines = [f"{path:<48}{_written(value)}".rstrip() for path, value in _changed(axis, "")]
+    return "\n".join(lines + ["Ende", ""])
+
+
+def _changed(node: BaseModel, prefix: str):
+    for name, info in type(node).model_fields.items():
+        if name == "unknown":
+            continue
+        member = prefix + (info.alias or name)
+        value = getattr(node, name)
+        items = list(enumerate(value)) if isinstance(value, list) else [(None, value)]
+        for index, item in items:
+            path = member if index is None else f"{member}[{index}]"
+            if isinstance(item, BaseModel):
+                yield from _changed(item, path + ".")
+                continue
+            resolution = catalogue().resolve(path)
+            if resolution is not None and item is not None and item != resolution.parameter.typed_default:
+                yield path, item
+
+
+def _written(value: Any) -> str:
+    if isinstance(value, bool):
+        return "1" if value else "0"
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, str) and (not value or any(c in value for c in " \t\"(")):
+        return '"' + value.replace('"', "") + '"' if value else ""
+    return str(value)
