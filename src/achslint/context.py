@@ -24,6 +24,7 @@ class Options:
     unknown_parameters: str = "warn"  # warn | error | ignore
     cycle_time_us: int = 1000
     repeatability_tolerance_um: float = 20.0
+    repeatability_tolerance_deg: float = 0.01  # rotary axes (LIS403)
 
 
 @dataclass

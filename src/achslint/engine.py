@@ -437,9 +437,10 @@ class Simulator:
         values, gear = self.values, self.strategy.gear
         s = 1 if values.get("kenngr.homing.torq_homing_dir") else -1
         speed = values.get(f"getriebe[{gear}].homing.torq_move_velocity") * VELOCITY
-        acceleration = values.get(f"getriebe[{gear}].homing.torq_move_acceleration") or self.acceleration
-        if speed <= 0:
-            trace.outcome, trace.failure = "failed", "torq_move_velocity is not set: the axis does not move"
+        acceleration = values.get(f"getriebe[{gear}].homing.torq_move_acceleration")
+        if speed <= 0 or acceleration <= 0:
+            missing = "torq_move_velocity" if speed <= 0 else "torq_move_acceleration"
+            trace.outcome, trace.failure = "failed", f"{missing} is not set (0): the axis does not move (LIS315)"
             return trace
         if values.drive_type == 4:
             stop = x + s * values.get("kenngr.homing.torq_distance_to_block") * POSITION

@@ -87,6 +87,7 @@ def summary(ctx) -> dict:
         "resettable": values.get("kenngr.gantry_max_diff_resetable"),
         "retraction": values.get("kenngr.homing.torq_retraction_distance"),
         "torq": values.homing_type == "TORQ",
+        "axis_type": values.axis_type,
     }
 
 

@@ -6,15 +6,15 @@ at all (neither a homing-specific one — `torq_detect_time`,
 `torq_detect_pos_lag_limit`, `torq_detect_velocity_limit`,
 `torq_detect_torque_limit` — nor a general one under
 `antr.fixed_stop.detect.*`), a simulated drive without
-`kenngr.homing.torq_distance_to_block`, or a move speed / acceleration not
-below the axis's `vb_max` / `a_max`.
+`kenngr.homing.torq_distance_to_block`, or a move speed / acceleration that is
+not set (0) or above the axis's `vb_max` / `a_max`.
 
 Why
 ---
 Without a criterion the stop is never recognised and the axis pushes against
 it until the maximum distance aborts homing. The simulated drive needs the
-distance at which its simulated stop sits. The move values must stay below the
-axis limits (ranges of P-AXIS-00333 and P-AXIS-00334).
+distance at which its simulated stop sits. The move speed and acceleration must
+be set (at least 1) and must not exceed the axis limits `vb_max` / `a_max`.
 
 Example
 -------
@@ -35,7 +35,8 @@ kenngr.homing.torq_detect_velocity_limit   300
 Reference
 ---------
 TF5200 homing manual §2.3.3.4.2 (at least one criterion; general detection parameters P-AXIS-00769/00817/00818)
-and §2.3.3.4.4 (P-AXIS-00822 for simulation); ranges of P-AXIS-00333 and P-AXIS-00334.
+and §2.3.3.4.4 (P-AXIS-00822 for simulation); ranges of P-AXIS-00333 and P-AXIS-00334 (1 ≤ …);
+§2.3.3.5 (torq_move_velocity ≤ vb_max, torq_move_acceleration ≤ a_max).
 """
 
 from __future__ import annotations
@@ -82,10 +83,16 @@ def check(ctx):
             "(P-AXIS-00822), the distance at which the simulated stop is hit",
             ["kenngr.homing.torq_distance_to_block", "kenngr.antr_typ", "kenngr.homing.homing_type"],
         )
-    for gear in values.gear_stages_set("homing.torq_move_velocity", "homing.torq_move_acceleration", "dynamik.vb_max", "dynamik.a_max"):
+    for gear in sorted({0} | set(values.gear_stages_set("homing.torq_move_velocity", "homing.torq_move_acceleration",
+                                                         "dynamik.vb_max", "dynamik.a_max"))):
         speed, vmax = f"getriebe[{gear}].homing.torq_move_velocity", f"getriebe[{gear}].dynamik.vb_max"
         accel, amax = f"getriebe[{gear}].homing.torq_move_acceleration", f"getriebe[{gear}].dynamik.a_max"
-        if values.get(speed) >= values.get(vmax):
-            yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(speed)} must be below {ctx.show(vmax)}", [speed, vmax])
-        if values.get(accel) >= values.get(amax):
-            yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(accel)} must be below {ctx.show(amax)}", [accel, amax])
+        for path, limit, what, pid in ((speed, vmax, "speed", "P-AXIS-00333"), (accel, amax, "acceleration", "P-AXIS-00334")):
+            value = values.written(path)
+            if not value:
+                if gear == 0 or values.is_set(path):
+                    yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(path)}: fixed-stop homing needs a move {what} "
+                                          f"of at least 1 ({pid}); without it the axis does not move", [path])
+            elif value > values.get(limit):
+                yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(path)} must not exceed {ctx.show(limit)} "
+                                      f"(§2.3.3.5)", [path, limit])

@@ -35,6 +35,7 @@ from __future__ import annotations
 
 from ..diagnostics import Related, Severity
 from ..machine import diagnostic
+from ..units import describe
 
 CODE = "LIS316"
 NAME = "gantry-slave-no-homing"
@@ -64,7 +65,11 @@ def check_machine(members, startups):
         line, column = master[1].get("achs_nr_at") or (1, 1)
         yield diagnostic(
             CODE, (name, info), "gantry_at",
-            f"the gantry master {master[0]} retracts {master[1]['retraction']} [0.1 µm] after its fixed stop, not more "
-            f"than this slave's kenngr.gantry_max_diff_resetable {info['resettable']}; the CNC raises the resettable "
-            "distance to the retraction distance (P-ERR-70651)",
+            f"the gantry master {master[0]} retracts {_length(master[1]['retraction'], master[1])} after its fixed "
+            f"stop, not more than this slave's kenngr.gantry_max_diff_resetable {_length(info['resettable'], info)}; "
+            "the CNC raises the resettable distance to the retraction distance (P-ERR-70651)",
             Severity.ERROR, [Related(master[0], line, column, "kenngr.homing.torq_retraction_distance", "master")])
+
+
+def _length(value, info) -> str:
+    return describe(value, "0.0001deg" if info.get("axis_type", "T") != "T" else "0.1um")

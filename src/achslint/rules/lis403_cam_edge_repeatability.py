@@ -2,10 +2,12 @@
 What
 ----
 Referencing on the cam edge without zero pulse (type I,
-`homing_without_zero_pulse = 1`) on a linear axis, where the slow homing
-speed times the CNC cycle time exceeds the required repeatability. The cycle
-time (default 1000 µs) and the tolerance (default 20 µm) are settings
-(`cycle-time-us`, `repeatability-tolerance-um`).
+`homing_without_zero_pulse = 1`), where the speed at which the cam edge is
+taken times the CNC cycle time exceeds the required repeatability: `vb_reflow`
+in three-phase homing, the approach speed `vb_refmax` in one-phase homing. The
+cycle time (default 1000 µs) and the tolerance (default 20 µm on linear axes,
+0.01° on rotary axes) are settings (`cycle-time-us`,
+`repeatability-tolerance-um`; the rotary tolerance is an option of the library).
 
 Why
 ---
@@ -41,27 +43,32 @@ CODE = "LIS403"
 NAME = "cam-edge-repeatability"
 SEVERITY = "warning"
 FIX = "none"
-PARAMETERS = ("getriebe[i].vb_reflow", "kenngr.homing_without_zero_pulse")  # parameters this rule reads
+PARAMETERS = ("getriebe[i].vb_reflow", "getriebe[i].vb_refmax", "kenngr.homing_without_zero_pulse")  # parameters this rule reads
 SUMMARY = "Cam-edge referencing less repeatable than the tolerance"
 
 
 def check(ctx):
     strategy = ctx.strategy
     values = ctx.values
-    if strategy.manual_type != "I" or values.axis_type != "T":
-        return
+    member = strategy.definition.reference_speed
+    if strategy.manual_type != "I" or member is None:
+        return  # referencing on a zero pulse, or no cam edge at all
     cycle = ctx.options.cycle_time_us
-    tolerance = ctx.options.repeatability_tolerance_um
-    for gear in sorted(set(values.gear_stages_set("vb_reflow")) | {0}):
-        path = f"getriebe[{gear}].vb_reflow"
-        speed = values.get(path)  # µm/s
-        spread = speed * cycle / 1e6  # µm
+    rotary = values.axis_type != "T"
+    # Linear: µm/s × s = µm; rotary: 0.001°/s × s = 0.001° (the tolerance is given in degrees).
+    tolerance = ctx.options.repeatability_tolerance_deg * 1000 if rotary else ctx.options.repeatability_tolerance_um
+    unit, speed_unit = ("0.001°", "0.001deg/s") if rotary else ("µm", "um/s")
+    for gear in sorted(set(values.gear_stages_set(member)) | {0}):
+        path = f"getriebe[{gear}].{member}"
+        if not ctx.effective(path):
+            continue
+        spread = values.get(path) * cycle / 1e6
         if spread > tolerance:
             best = int(tolerance * 1e6 / cycle)
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: referencing on the cam edge without zero pulse repeats only to about "
-                f"{spread:g} µm ({ctx.show(path)} × {cycle} µs cycle), more than the tolerance {tolerance:g} µm; "
-                f"vb_reflow ≤ {describe(best, 'um/s')} meets it, or reference on the zero pulse",
+                f"{spread:g} {unit} ({ctx.show(path)} × {cycle} µs cycle), more than the tolerance {tolerance:g} {unit}; "
+                f"{member} ≤ {describe(best, speed_unit)} meets it, or reference on the zero pulse",
                 [path, "kenngr.homing_without_zero_pulse"],
             )

@@ -23,9 +23,10 @@ def _phases(setup) -> list[Phase]:
     speed = setup.speed("homing.torq_move_velocity")
     retraction = setup.axis.get("kenngr.homing.torq_retraction_distance")
     unit = setup.axis.parameter("kenngr.homing.torq_retraction_distance").unit(setup.axis_type)
+    missing = "" if speed else "torq_move_velocity is not set (0): the axis does not move (LIS315)"
     return [
         Phase("to the fixed stop", direction, path, speed,
-              "the stop is detected (armed after torq_min_distance; homing aborts after torq_max_distance)"),
+              "the stop is detected (armed after torq_min_distance; homing aborts after torq_max_distance)", missing),
         Phase("retract from the stop", opposite(direction), path, speed,
               f"torq_retraction_distance = {describe(retraction, unit)} is travelled"),
     ]
