@@ -412,6 +412,9 @@ class Simulator:
         return self._reference_search(trace, "on to the reference", x, t, s, self.slow, 0.0, travelled)
 
     def zero_pulse_only(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
+        if not self.strategy.setup.zero_pulse:
+            return self.stand_still(trace, "failed", "neither a reference cam nor a zero pulse marks the reference "
+                                                     "(LIS318)")
         s = self.direction
         speed = self.slow
         event = "encoder overflow" if self.overflow else "zero pulse"
