@@ -37,9 +37,12 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
     for number, phase in enumerate(strategy.phases, 1):
         speed = _speed_words(phase.velocity, axis_type)
         where = phase.velocity_parameter or ""
-        text = f"{number}. {phase.name}: move {phase.direction} at {speed} ({where}) until {phase.ends_when}"
-        if phase.note:
-            text += f" — {phase.note}"
+        if phase.velocity == 0:
+            text = f"{number}. {phase.name}: no move, {where} is 0" + (f" — {phase.note}" if phase.note else "")
+        else:
+            text = f"{number}. {phase.name}: move {phase.direction} at {speed} ({where}) until {phase.ends_when}"
+            if phase.note:
+                text += f" — {phase.note}"
         phases.append({
             "number": number, "name": phase.name, "direction": phase.direction,
             "velocity_parameter": phase.velocity_parameter, "velocity": phase.velocity,
