@@ -13,6 +13,7 @@ from achslint.explain import explain_list
 from achslint.homing import STRATEGY_MODULES, strategies
 from achslint.linter import FileSettings, check_bytes
 from achslint.resolved import resolve_bytes
+from achslint.rules import registry
 from achslint.syntax import parse_bytes
 
 from .conftest import FIXTURES
@@ -74,7 +75,11 @@ def assert_consistent(data: bytes) -> str:
     """Every invariant for one list; returns the strategy id."""
     diagnostics = check_bytes(data, "t.lis", FileSettings(keep_source=False)).diagnostics
     without_effect = {d.parameter for d in diagnostics if d.code in NO_EFFECT}
+    rules = registry()
     for d in diagnostics:
+        if d.code != "LIS101":  # the one rule whose level is a setting (unknown-parameters)
+            # What is emitted has the severity `achslint rules` and `achslint rule CODE` document.
+            assert d.severity == rules[d.code].severity, (d.code, d.severity)
         if d.code[:4] in ("LIS2", "LIS3", "LIS4") and d.code not in NO_EFFECT:
             named = {d.parameter, *(r.parameter for r in d.related)}
             # A parameter without effect gets LIS105/LIS401 and nothing else.
