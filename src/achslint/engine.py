@@ -445,7 +445,7 @@ class Simulator:
             missing = "torq_move_velocity" if speed <= 0 else "torq_move_acceleration"
             trace.outcome, trace.failure = "failed", f"{missing} is not set (0): the axis does not move (LIS315)"
             return trace
-        if values.drive_type == 4:
+        if self.strategy.setup.simulated:
             stop = x + s * values.get("kenngr.homing.torq_distance_to_block") * POSITION
         else:
             stop = self.scenario.fixed_stop

@@ -19,6 +19,7 @@ corrections, `get(path)` the value the CNC uses.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from enum import IntEnum
 
 from .analysis import Analysis, Reference, Setting
 from .catalogue import AXIS_TYPE_CODES, Catalogue, Parameter, catalogue, fill_indices
@@ -67,7 +68,24 @@ def _plain(value):
     return int(value) if isinstance(value, bool) else value
 
 
-SERCOS, SIMULATION, LIGHTBUS, CANOPEN = 2, 4, 5, 8
+class DriveType(IntEnum):
+    """P-AXIS-00020 drive type codes (compare equal to the numbers written in lists)."""
+
+    CONVENTIONAL = 1
+    SERCOS = 2
+    PROFIDRIVE = 3
+    SIMULATION = 4
+    LIGHTBUS = 5
+    TERMINAL = 6
+    REALTIME_ETHERNET = 7
+    CANOPEN = 8
+    GENERIC = 9
+    VIRTUAL = 16
+    DSE = 17
+    CAN_BUS = 32
+
+
+SERCOS, SIMULATION, LIGHTBUS, CANOPEN = DriveType.SERCOS, DriveType.SIMULATION, DriveType.LIGHTBUS, DriveType.CANOPEN
 
 
 class ResolvedAxis:
@@ -220,6 +238,7 @@ def default_homing_type(drive_type: int) -> str:
 
 
 # Drive types that only home CNC-controlled (P-AXIS-00299 table, plus the conventional drive).
-CNC_ONLY_DRIVES = frozenset({1, 3, SIMULATION, LIGHTBUS, 6, 7})
+CNC_ONLY_DRIVES = frozenset({DriveType.CONVENTIONAL, DriveType.PROFIDRIVE, SIMULATION, LIGHTBUS, DriveType.TERMINAL,
+                             DriveType.REALTIME_ETHERNET})
 # Drive types with encoder-overflow homing (P-AXIS-00354/00355 drive types; §3.1.1.2).
 OVERFLOW_DRIVES = frozenset({SERCOS, LIGHTBUS, CANOPEN})

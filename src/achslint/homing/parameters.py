@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ..resolved import DriveType
 from .base import Use
 
 # In the manual's order: system parameters, then sequence parameters (§3.1, §3.2), then the special methods.
@@ -34,11 +35,11 @@ def _gantry_slave(axis) -> bool:
 
 
 def _sercos(axis) -> bool:
-    return axis.drive_type == 2
+    return axis.drive_type == DriveType.SERCOS
 
 
 def _latch_on(axis) -> bool:
-    return axis.drive_type == 2 and bool(axis.get("antr.sercos.drive_supports_cnc_homing"))
+    return axis.drive_type == DriveType.SERCOS and bool(axis.get("antr.sercos.drive_supports_cnc_homing"))
 
 
 def _non_linear_slope(axis) -> bool:

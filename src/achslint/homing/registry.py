@@ -107,8 +107,7 @@ def homing_parameter_paths(gear: int = 0) -> list[str]:
 
 def strategies_reading(path: str) -> list[StrategyDef]:
     """The registered strategies whose data lists a parameter (generic or canonical path)."""
-    key = generic(path.replace("[i]", "[0]")) if "[i]" in path else generic(path)
-    key = key.replace("getriebe[0]", "getriebe[i]")
+    key = generic(path.replace("[i]", "[0]"))
     if key in SELECTORS:
         return list(strategies())
     return [d for d in strategies() if key in d.parameters]

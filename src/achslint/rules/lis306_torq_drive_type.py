@@ -29,6 +29,8 @@ TF5200 homing manual §2.3.3.4 (only SERCOS and CANopen; P-ERR-110371) and §2.3
 
 from __future__ import annotations
 
+from ..resolved import DriveType
+
 CODE = "LIS306"
 NAME = "torq-drive-type"
 SEVERITY = "error"
@@ -36,7 +38,7 @@ FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.antr_typ")  # parameters this rule reads
 SUMMARY = "`TORQ` homing on a drive type without fixed-stop homing"
 
-TORQ_DRIVES = {2, 4, 8, 9, 17}
+TORQ_DRIVES = {DriveType.SERCOS, DriveType.SIMULATION, DriveType.CANOPEN, DriveType.GENERIC, DriveType.DSE}
 
 
 def check(ctx):

@@ -76,7 +76,7 @@ def check(ctx):
             "(or the general antr.fixed_stop.detect.* values); otherwise the stop is never recognised",
             ["kenngr.homing.homing_type"],
         )
-    if values.drive_type == 4 and not values.get("kenngr.homing.torq_distance_to_block"):
+    if ctx.strategy.setup.simulated and not values.get("kenngr.homing.torq_distance_to_block"):
         yield ctx.cross(
             CODE,
             "a simulated drive homing to a fixed stop needs `kenngr.homing.torq_distance_to_block` "

@@ -42,6 +42,8 @@ TF5200 homing manual §2.2 (NC-controlled referencing of SERCOS drives without z
 
 from __future__ import annotations
 
+from ..resolved import DriveType
+
 CODE = "LIS322"
 NAME = "sercos-zero-pulse-without-latch"
 SEVERITY = "error"
@@ -56,7 +58,7 @@ PULSE = "kenngr.homing_without_zero_pulse"
 def check(ctx):
     values, strategy = ctx.values, ctx.strategy
     setup = strategy.setup
-    if values.drive_type != 2 or strategy.controlled_by != "cnc" or not strategy.with_zero_pulse:
+    if values.drive_type != DriveType.SERCOS or strategy.controlled_by != "cnc" or not strategy.with_zero_pulse:
         return
     if setup.overflow or setup.simulated or strategy.id.startswith("spindle"):
         return

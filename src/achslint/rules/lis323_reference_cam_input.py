@@ -33,6 +33,8 @@ P-AXIS-00321 (inputs per drive type; real-time status bits only with NC-controll
 
 from __future__ import annotations
 
+from ..resolved import DriveType
+
 CODE = "LIS323"
 NAME = "reference-cam-input"
 SEVERITY = "error"
@@ -42,8 +44,8 @@ SUMMARY = "Reference cam read from an input the drive type does not have"
 
 SIGNAL = "antr.reference_cam_signal"
 INPUTS = {
-    2: ("PLC", "RT_STATUS_BIT_1", "RT_STATUS_BIT_2"),
-    8: ("PLC", "STATUS_DIG_INPUTS", "DIG_INPUT_1", "DIG_INPUT_2", "DIG_INPUT_3", "DIG_INPUT_4"),
+    DriveType.SERCOS: ("PLC", "RT_STATUS_BIT_1", "RT_STATUS_BIT_2"),
+    DriveType.CANOPEN: ("PLC", "STATUS_DIG_INPUTS", "DIG_INPUT_1", "DIG_INPUT_2", "DIG_INPUT_3", "DIG_INPUT_4"),
 }
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ...resolved import DriveType
 from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
 
@@ -15,7 +16,7 @@ STRATEGY = StrategyDef(
         **EVERYWHERE,
         "getriebe[i].pos_refpkt": Use("adopted as the axis position"),
         "antr.simu.rpf_weg_bis_nip": Use("the short move of a simulated axis before pos_refpkt is adopted (assumed; "
-                                         "§4.3 does not name the parameter)", when=lambda axis: axis.drive_type == 4,
+                                         "§4.3 does not name the parameter)", when=lambda axis: axis.drive_type == DriveType.SIMULATION,
                                          otherwise="only a simulated axis moves before it adopts pos_refpkt"),
     },
     example="kenngr.homing.homing_type NONE\n",

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ...resolved import DriveType
 from ...units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use, opposite
 from ..parameters import CNC_MOVES
@@ -14,7 +15,7 @@ def _not_gantry_slave(axis) -> bool:
 
 
 def _simulated(axis) -> bool:
-    return axis.drive_type == 4
+    return axis.drive_type == DriveType.SIMULATION
 
 
 def _phases(setup) -> list[Phase]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ...resolved import DriveType
 from ...units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use
 from ..parameters import CNC_MOVES, SEQUENCE
@@ -18,7 +19,7 @@ def _phases(setup) -> list[Phase]:
 
 STRATEGY = StrategyDef(
     id="simulation", title="simulated drive: single phase", controlled_by="cnc",
-    matches=lambda axis: axis.drive_type == 4,
+    matches=lambda axis: axis.drive_type == DriveType.SIMULATION,
     describe=lambda axis: (
         "The drive is simulated: homing runs in one phase without a cam and sets the reference after the simulated "
         "distance to the zero pulse (rpf_weg_bis_nip); apart from it the sequence parameters are not used (§3.4)."),
