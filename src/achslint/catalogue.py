@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from pathlib import Path
 
+from .numbers import NumberProblem, parse_reference
 from .syntax import path_pattern
 
 TYPE_LIMITS: dict[str, tuple[int, int]] = {
@@ -239,9 +240,10 @@ class Catalogue:
     def find(self, query: str) -> Parameter | None:
         """Look a parameter up by id, path (with or without indices), alias or unique member name."""
         query = query.strip()
-        match = re.fullmatch(r"P-AXIS-?(\d{1,5})(?:\.\d+)?", query, re.IGNORECASE)
+        match = re.fullmatch(r"P-AXIS-?([0-9]+(?:\.[0-9]+)?)", query, re.IGNORECASE)
         if match:
-            return self.by_id.get(f"P-AXIS-{int(match.group(1)):05d}")
+            reference = parse_reference("P-AXIS-" + match.group(1))
+            return None if isinstance(reference, NumberProblem) else self.by_id.get(reference.target)
         resolved = self.resolve(query)
         if resolved is not None:
             return resolved.parameter

@@ -16,6 +16,8 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Iterator
 
+from .numbers import parse_int
+
 BLANK = "blank"
 COMMENT = "comment"
 END = "end"
@@ -282,10 +284,11 @@ HUGE = 10**30  # stands for a number with more digits than any parameter type or
 
 
 def whole_number(text: str) -> int:
-    """The decimal integer `text`; `±HUGE` beyond 30 significant digits (Python refuses thousands of them)."""
-    if len(text.lstrip("+-").lstrip("0")) > 30:
-        return -HUGE if text.startswith("-") else HUGE
-    return int(text)
+    """The decimal integer `text`; `±HUGE` when it has too many digits to be converted (see `numbers`)."""
+    value = parse_int(text)
+    if isinstance(value, int):
+        return value
+    return -HUGE if text.startswith("-") else HUGE
 
 
 @lru_cache(maxsize=1 << 16)
