@@ -11,6 +11,7 @@ from .context import Options
 from .diagnostics import Diagnostic, Severity
 from .machine import is_startup_list, read_startup
 from .linter import FileResult, FileSettings, Selection, check_bytes, lint_bytes
+from .syntax import split_lines
 
 # Below this many files, starting worker processes costs more than it saves.
 PARALLEL_THRESHOLD = 8
@@ -149,7 +150,7 @@ class Linter:
         for result in list(by_name.values()) + list(extra.values()):
             if self.request.keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
                 try:
-                    result.source_lines = Path(result.name).read_bytes().decode("latin-1").splitlines()
+                    result.source_lines = split_lines(Path(result.name).read_bytes().decode("latin-1"))
                 except OSError:
                     pass
         return list(extra.values())
