@@ -109,7 +109,7 @@ def _mapped_summary(summary: dict, embedded) -> dict:
 def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
     from .syntax import parse_text, split_lines
-    from .xmlinput import _text_of, extract
+    from .xmlinput import extract, source_text
 
     try:
         lists = extract(data, name)
@@ -134,7 +134,7 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
             if rule.check_machine is not None and settings.selection.enabled(code):
                 diagnostics.extend(rule.check_machine(members, []))
     diagnostics.sort(key=Diagnostic.sort_key)
-    lines = split_lines(_text_of(data)) if diagnostics and settings.keep_source else []
+    lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
     return FileResult(name, diagnostics, None, lines)
 
 
