@@ -20,10 +20,7 @@ encoding and byte-order mark, and formatting twice changes nothing.
 from __future__ import annotations
 
 import difflib
-import os
-import tempfile
 from collections import Counter
-from pathlib import Path
 
 from . import syntax
 from .decode import decode
@@ -107,37 +104,3 @@ def unified_diff(before: bytes, after: bytes, name: str, label: str = "formatted
         if not row.endswith(("\n", "\r")):
             out.append("\n" + NO_NEWLINE)
     return "".join(out)
-
-
-class ChangedOnDisk(OSError):
-    """The file is no longer what was read: someone edited, replaced or removed it meanwhile."""
-
-
-def write_atomically(path: Path, data: bytes, expected: bytes | None = None) -> None:
-    """Write next to the file and rename over it: an interrupted run leaves the old file or the new one.
-
-    With `expected` (the bytes the new content was made from), nothing is written
-    when the file changed or vanished in the meantime, so an edit made while
-    achslint ran is never overwritten; `ChangedOnDisk` says so.
-    """
-    folder = path.parent
-    mode = path.stat().st_mode & 0o7777 if path.exists() else None
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".achslint", dir=folder)
-    try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        if mode is not None:
-            os.chmod(temporary, mode)
-        if expected is not None:
-            try:
-                current = path.read_bytes()
-            except FileNotFoundError:
-                raise ChangedOnDisk(f"{path} was removed while achslint was working on it; nothing written") from None
-            if current != expected:
-                raise ChangedOnDisk(f"{path} changed while achslint was working on it; nothing written, run again")
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
