@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from achslint.api import LintRequest, Linter
-from achslint.fmt import ChangedOnDisk, write_atomically
+from achslint.files import ChangedOnDisk, write_atomically
 from achslint.linter import check_bytes
 
 MB = 1 << 20

@@ -25,18 +25,10 @@ from .catalogue import (
     Resolution,
     catalogue,
 )
+from .numbers import NumberProblem, Reference, parse_hex, parse_int, parse_real, parse_reference
 from .units import describe, unit_label
 
-
-@dataclass(frozen=True, slots=True)
-class Reference:
-    """A value that names another parameter: `P-AXIS-00212.0`."""
-
-    target: str
-    index: int | None
-
-    def __str__(self) -> str:
-        return self.target if self.index is None else f"{self.target}.{self.index}"
+__all__ = ["Analysis", "Reference", "Setting", "ValueProblem", "analyse", "comment_in_value_position"]
 
 
 @dataclass(slots=True)
@@ -166,7 +158,7 @@ def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
     for setting in settings:
         if setting.known and setting.parameter.id == parameter_id:
             number = _as_int(setting.line)
-            if number is not None:
+            if isinstance(number, int):
                 value = number
             elif setting.line.value_kind == syntax.SYMBOL:
                 codes = setting.parameter.symbol_codes
@@ -185,12 +177,20 @@ def _axis_and_drive(analysis: Analysis, cat: Catalogue) -> None:
     analysis.drive_type = drive if drive in cat.by_id["P-AXIS-00020"].allowed else None
 
 
-def _as_int(line: syntax.Line) -> int | None:
+def _as_int(line: syntax.Line) -> int | NumberProblem | None:
+    """The integer an INT or HEX value stands for (or why there is none); None for other kinds."""
     if line.value_kind == syntax.INT:
-        return syntax.whole_number(line.value)
+        return parse_int(line.value)
     if line.value_kind == syntax.HEX:
-        return int(line.value, 16)
+        return parse_hex(line.value)
     return None
+
+
+def _unusable_number(setting: Setting, text: str, problem: NumberProblem) -> None:
+    parameter = setting.parameter
+    holds = f", far more than a {parameter.type} holds" if problem.reason == "digits" else ""
+    setting.add_problem(ValueProblem(
+        "LIS202", f"`{setting.canonical}` = `{text}` {problem}{holds}; {_expected(parameter)} is expected"))
 
 
 def comment_in_value_position(line: syntax.Line) -> bool:
@@ -315,10 +315,8 @@ def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | Non
     name = setting.canonical
     if value_kind in (syntax.INT, syntax.HEX):
         number = _as_int(setting.line)
-        if value_kind == syntax.INT and abs(number) >= syntax.HUGE:
-            setting.add_problem(ValueProblem(
-                "LIS202", f"`{name}` = `{text}` has {len(text.lstrip('+-')):,} digits, far more than "
-                          f"a {parameter.type} holds; {_expected(parameter)} is expected"))
+        if isinstance(number, NumberProblem):
+            _unusable_number(setting, text, number)
             return
         setting.value = number
         _check_range(setting, number, unit)
@@ -332,13 +330,10 @@ def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | Non
     if value_kind == syntax.REAL:
         message = f"`{name}` is an integer parameter ({parameter.type}) but `{text}` is a real number"
         replacement = None
-        try:
-            as_float = float(text)
-            if as_float.is_integer():
-                replacement = str(int(as_float))
-                message += f"; write `{replacement}`"
-        except ValueError:  # pragma: no cover - the grammar only lets numbers through
-            pass
+        as_float = parse_real(text)
+        if isinstance(as_float, float) and as_float.is_integer():
+            replacement = str(int(as_float))
+            message += f"; write `{replacement}`"
         setting.add_problem(ValueProblem("LIS201", message, replacement))
         return
     setting.add_problem(
@@ -348,7 +343,10 @@ def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | Non
 
 def _check_real(setting: Setting, text: str, value_kind: str, unit: str | None) -> None:
     if value_kind in (syntax.INT, syntax.HEX, syntax.REAL):
-        number = float(int(text, 16)) if value_kind == syntax.HEX else float(text)
+        number = parse_real(text)
+        if isinstance(number, NumberProblem):
+            _unusable_number(setting, text, number)
+            return
         setting.value = number
         _check_range(setting, number, unit)
         return
@@ -440,16 +438,14 @@ def _unknown_symbol(setting: Setting, text: str) -> None:
     setting.add_problem(ValueProblem("LIS203", message, replacement=replacement))
 
 
-_REFERENCE = re.compile(r"P-AXIS-(\d+)(?:\.(\d+))?")
-
-
 def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Reference | None:
     parameter = setting.parameter
-    match = _REFERENCE.fullmatch(setting.line.value or "")
-    target_id = f"P-AXIS-{int(match.group(1)):05d}"
-    index = int(match.group(2)) if match.group(2) is not None else None
-    reference = Reference(target_id, index)
     name = setting.canonical
+    reference = parse_reference(setting.line.value or "")
+    if isinstance(reference, NumberProblem):
+        setting.add_problem(ValueProblem("LIS205", f"`{name}` refers to `{setting.line.value}`, which {reference}"))
+        return None
+    target_id, index = reference.target, reference.index
     target = cat.by_id.get(target_id)
     if target is None:
         setting.add_problem(

@@ -8,9 +8,14 @@ from pathlib import Path
 
 from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
 from .context import Options
+from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
+from .files import (ChangedOnDisk, Refused, Scope, is_folder, not_a_list_file, read_list, real_path, reason,
+                    write_atomically)
 from .machine import is_startup_list, read_startup
-from .linter import FileResult, FileSettings, Selection, check_bytes, lint_bytes
+from .linter import NOT_A_LIST, FileResult, FileSettings, Selection, check_bytes, lint_bytes, looks_like_a_list
+from .syntax import parse_bytes, split_lines
+from .xmlinput import is_xml, single_list
 
 # Below this many files, starting worker processes costs more than it saves.
 PARALLEL_THRESHOLD = 8
@@ -34,6 +39,7 @@ class LintOutcome:
     results: list[FileResult]
     errors: list[str]
     fail_on: str = "error"
+    notes: list[str] = field(default_factory=list)  # files skipped on purpose (FIFOs, links leading outside)
 
     @property
     def sources(self) -> dict[str, list[str]]:
@@ -59,6 +65,29 @@ def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path, ke
     return FileSettings(selection, options, dict(settings.severity), keep_source)
 
 
+@dataclass
+class Discovery:
+    """What the paths given on the command line come to."""
+
+    targets: list[Target] = field(default_factory=list)
+    errors: list[str] = field(default_factory=list)  # exit code 2: something named or found could not be read
+    notes: list[str] = field(default_factory=list)  # skipped on purpose; the run goes on
+    _seen: set = field(default_factory=set)
+
+    def add(self, target: Target) -> None:
+        """Take a target unless the same file is already taken (named twice, or a folder and a file in it)."""
+        if target.path is not None:
+            try:
+                info = os.stat(target.path)
+                key = (info.st_dev, info.st_ino)
+            except OSError:
+                key = str(target.path)
+            if key in self._seen:
+                return
+            self._seen.add(key)
+        self.targets.append(target)
+
+
 class Linter:
     """Resolves configuration per file and lints targets, serially or on several cores."""
 
@@ -70,48 +99,77 @@ class Linter:
     def config_for(self, path: Path) -> ResolvedConfig:
         return self.fixed_config or discover(path)
 
-    def discover(self) -> tuple[list[Target], list[str]]:
-        """Expand directories by the include/exclude globs and start-up lists by their entries;
-        explicit files are always linted."""
-        targets: list[Target] = []
-        errors: list[str] = []
+    def discover(self) -> Discovery:
+        """Expand folders by the include/exclude globs and start-up lists by their entries; named files are
+        always linted. Each file is taken once, however often it is reached."""
+        found = Discovery()
         self.startups = []
+        scope = Scope.of(self.request.paths)
         for raw in self.request.paths:
             if raw == "-":
                 name = self.request.stdin_filename or "<stdin>"
                 config = self.config_for(Path(name) if self.request.stdin_filename else Path.cwd())
-                targets.append(Target(name, None, config))
+                found.add(Target(name, None, config))
                 continue
             path = Path(raw)
-            if path.is_dir():
-                for found in self._walk(path):
-                    targets.append(Target(str(found), found, self.config_for(found), machine=str(found.parent)))
-            elif path.exists() and is_startup_list(path):
-                targets.extend(self._startup_targets(path))
-            elif path.exists():
-                targets.append(Target(raw, path, self.config_for(path), machine=str(path.parent)))
+            if is_folder(path):
+                for file in self._walk(path, scope, found):
+                    found.add(Target(str(file), file, self.config_for(file), machine=str(file.parent)))
+                continue
+            problem = not_a_list_file(path)
+            if problem is not None:
+                found.errors.append(f"{raw}: {problem}")
+            elif is_startup_list(path):
+                self._startup_targets(path, scope, found)
             else:
-                errors.append(f"{raw}: no such file or directory")
-        return targets, errors
+                found.add(Target(raw, path, self.config_for(path), machine=str(path.parent)))
+        return found
 
-    def _startup_targets(self, path: Path) -> list[Target]:
-        startup = read_startup(path)
+    def _startup_targets(self, path: Path, scope: Scope, found: Discovery) -> None:
+        try:
+            startup = read_startup(path, scope)
+        except OSError as exc:
+            found.errors.append(f"cannot read {path}: {reason(exc)}")
+            return
+        except UnreadableInput as exc:
+            found.errors.append(f"{path}: {exc}")
+            return
         self.startups.append(startup)
         defaults = startup.default.path if startup.default else None
-        return [Target(str(entry.path), entry.path, self.config_for(entry.path), machine=str(path), defaults=defaults)
-                for entry in startup.axes if entry.path is not None]
+        for entry in startup.axes:
+            if entry.path is not None:
+                found.add(Target(str(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
+                                 defaults=defaults))
 
-    def _walk(self, folder: Path) -> list[Path]:
-        found = []
-        for root, dirs, files in os.walk(folder):
+    def _walk(self, folder: Path, scope: Scope, found: Discovery) -> list[Path]:
+        """The lists in a folder tree. A folder that cannot be read, or a list that cannot (a broken link, a
+        loop), is an error: those could be lists nobody checked. FIFOs, devices and links that lead
+        outside the paths given are skipped with a note: they are not lists of this project."""
+        lists = []
+
+        def unreadable(exc: OSError) -> None:
+            found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
+
+        for root, dirs, files in os.walk(folder, onerror=unreadable):
             dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+            config = self.config_for(Path(root) / "x")
+            include = self.request.overrides.apply(config.settings).include
             for name in sorted(files):
                 path = Path(root) / name
-                config = self.config_for(path)
-                include = self.request.overrides.apply(config.settings).include
-                if any(matches_glob(name.lower(), pattern.lower()) for pattern in include) and not config.excluded(path):
-                    found.append(path)
-        return found
+                if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
+                    continue
+                if config.excluded(path):
+                    continue
+                problem = not_a_list_file(path)
+                if problem is None and not scope.contains(path):
+                    found.notes.append(f"{path}: skipped, it links to {real_path(path)}, outside the paths given")
+                elif problem is not None and problem.startswith(SKIPPED_KINDS):
+                    found.notes.append(f"{path}: skipped, it is {problem}")
+                elif problem is not None:
+                    found.errors.append(f"cannot read {path}: {problem}")
+                else:
+                    lists.append(path)
+        return lists
 
     def _machine_level(self, targets: list[Target], results: list[FileResult]) -> list[FileResult]:
         """Run the machine-level rules per machine; returns results for start-up lists with findings."""
@@ -149,7 +207,7 @@ class Linter:
         for result in list(by_name.values()) + list(extra.values()):
             if self.request.keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
                 try:
-                    result.source_lines = Path(result.name).read_bytes().decode("latin-1").splitlines()
+                    result.source_lines = split_lines(read_list(Path(result.name)).decode("latin-1"))
                 except OSError:
                     pass
         return list(extra.values())
@@ -159,7 +217,8 @@ class Linter:
                              self.request.keep_source)
 
     def run(self, stdin=None, progress=None) -> LintOutcome:
-        targets, errors = self.discover()
+        found = self.discover()
+        targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
         mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff)
         work = [(t.name, str(t.path), self.settings_for(t), mode, str(t.defaults) if t.defaults else None)
@@ -167,8 +226,15 @@ class Linter:
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD:
             from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
 
-            with ProcessPoolExecutor(max_workers=jobs) as pool:
-                disk = list(_track(pool.map(_lint_one, work, chunksize=max(1, len(work) // (jobs * 8))), progress, len(work)))
+            from .signals import install
+
+            pool = ProcessPoolExecutor(max_workers=jobs, initializer=install)
+            try:
+                disk = list(_track(pool.map(_lint_one, work, chunksize=max(1, len(work) // (jobs * 8))), progress,
+                                   len(work)))
+            finally:
+                # On an interrupt, drop the work not started yet instead of finishing it.
+                pool.shutdown(cancel_futures=True)
         else:
             disk = list(_track(map(_lint_one, work), progress, len(work)))
         results: list[FileResult] = []
@@ -185,16 +251,21 @@ class Linter:
         results.extend(self._machine_level(targets, results))
         run_config = self.fixed_config or discover(Path.cwd())
         fail_on = self.request.overrides.fail_on or run_config.settings.fail_on
-        return LintOutcome(results, errors, fail_on)
+        return LintOutcome(results, errors, fail_on, found.notes)
+
+
+# Files found in a folder that are skipped with a note rather than reported as unreadable.
+SKIPPED_KINDS = ("a FIFO", "a device", "a socket", "a folder", "not a regular file", "a file of the operating system")
 
 
 def _lint_one(item) -> FileResult:
     name, path, settings, mode, defaults = item
     try:
-        data = Path(path).read_bytes()
-        default_data = Path(defaults).read_bytes() if defaults else None
+        data = read_list(Path(path))
+        default_data = read_list(Path(defaults)) if defaults else None
     except OSError as exc:
-        return FileResult(name, [], f"cannot read {exc.filename or name}: {exc.strerror or exc}")
+        return FileResult(name, [], str(exc) if isinstance(exc, Refused) else
+                          f"cannot read {exc.filename or name}: {reason(exc)}")
     return _process(data, name, settings, mode, Path(path), default_data)
 
 
@@ -205,7 +276,7 @@ def _process(data: bytes, name: str, settings: FileSettings, mode, path: Path | 
     if not fix:
         return check_bytes(data, name, settings, defaults)
     from .fixer import fix_bytes
-    from .fmt import ChangedOnDisk, unified_diff, write_atomically
+    from .fmt import unified_diff
 
     outcome = fix_bytes(data, name, settings, unsafe=unsafe)
     result = outcome.result
@@ -218,13 +289,37 @@ def _process(data: bytes, name: str, settings: FileSettings, mode, path: Path | 
         else:
             try:
                 write_atomically(path, outcome.data, expected=data)
-            except ChangedOnDisk as exc:
-                result.error = str(exc)
             except OSError as exc:
-                result.error = f"cannot write {name}: {exc.strerror or exc}"
+                result.error = write_error(exc, name)
+                result.fixed = 0  # nothing was written, so nothing was fixed
     elif path is None and not show_diff:
         result.fixed_data = data
     return result
+
+
+def write_error(exc: OSError, name: str) -> str:
+    """The one-line message for a write that did not happen."""
+    if isinstance(exc, (ChangedOnDisk, Refused)):
+        return str(exc)
+    return f"cannot write {name}: {reason(exc)}"
+
+
+def read_one_list(path: Path, name: str) -> bytes:
+    """The one axis list a file holds, for the commands that read a single list (explain, dry-run, diff).
+
+    The same checks as for lint: a regular file only (never a FIFO or /proc), XML through the one XML
+    parser (DTDs and entities refused; the file's only `<AchsMds>` / `<AX_MDS>` list), and a file that is
+    not an axis list refused without showing it. Raises `OSError` or `UnreadableInput` with a message.
+    """
+    problem = not_a_list_file(path)
+    if problem is not None:
+        raise Refused(f"{name}: {problem}")
+    data = read_list(path)
+    if is_xml(name):
+        return single_list(data, name)
+    if not looks_like_a_list(parse_bytes(data, name)):
+        raise UnreadableInput(f"{name}: {NOT_A_LIST}")
+    return data
 
 
 def _track(results, progress, total: int):

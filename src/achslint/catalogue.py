@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from pathlib import Path
 
+from .numbers import NumberProblem, parse_reference
 from .syntax import path_pattern
 
 TYPE_LIMITS: dict[str, tuple[int, int]] = {
@@ -204,6 +205,7 @@ class Catalogue:
         }
         self.drive_type_names: dict[int, str] = {int(k): v for k, v in data.get("drive_types", {}).items()}
         self._resolved: dict[str, Resolution | None] = {}
+        self._suggestions: dict[tuple[str, int], tuple[str, ...]] = {}
 
     @staticmethod
     def _entry(raw: dict) -> Parameter:
@@ -239,9 +241,10 @@ class Catalogue:
     def find(self, query: str) -> Parameter | None:
         """Look a parameter up by id, path (with or without indices), alias or unique member name."""
         query = query.strip()
-        match = re.fullmatch(r"P-AXIS-?(\d{1,5})(?:\.\d+)?", query, re.IGNORECASE)
+        match = re.fullmatch(r"P-AXIS-?([0-9]+(?:\.[0-9]+)?)", query, re.IGNORECASE)
         if match:
-            return self.by_id.get(f"P-AXIS-{int(match.group(1)):05d}")
+            reference = parse_reference("P-AXIS-" + match.group(1))
+            return None if isinstance(reference, NumberProblem) else self.by_id.get(reference.target)
         resolved = self.resolve(query)
         if resolved is not None:
             return resolved.parameter
@@ -260,8 +263,28 @@ class Catalogue:
     def _candidates(self) -> list[str]:
         return list(self.by_pattern)
 
+    @cached_property
+    def _by_member(self) -> dict[str, list[str]]:
+        table: dict[str, list[str]] = {}
+        for parameter in self.parameters:
+            table.setdefault(parameter.member, []).append(parameter.path)
+        return table
+
     def suggest(self, path: str, limit: int = 3) -> list[str]:
-        """Known patterns closest to an unknown path, best first."""
+        """Known patterns closest to an unknown path, best first.
+
+        Worked out once per distinct path: a list that repeats one unknown name
+        ten thousand times costs one search, not ten thousand.
+        """
+        key = (path, limit)
+        found = self._suggestions.get(key)
+        if found is None:
+            if len(self._suggestions) > 1 << 14:
+                self._suggestions.clear()  # bounded: pathological inputs with endless distinct names
+            found = self._suggestions[key] = tuple(self._suggest(path, limit))
+        return list(found)
+
+    def _suggest(self, path: str, limit: int) -> list[str]:
         pattern, _ = path_pattern(path)
         hit = self.aliases.get(path) or self.aliases.get(pattern)
         if hit is not None and hit[1].kind == "misspelling":
@@ -269,15 +292,17 @@ class Catalogue:
         lowered = pattern.lower()
         if lowered in self.by_pattern:
             return [lowered]
-        found = difflib.get_close_matches(pattern, self._candidates, n=limit, cutoff=0.75)
-        if found:
-            return found
+        # One search at the loose cutoff; the close matches are the best of those.
+        loose = difflib.get_close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
+        close = [c for c in loose if difflib.SequenceMatcher(None, c, pattern).ratio() >= 0.75]
+        if close:
+            return close
         # Same member name in another group: "kenngr.vb_reflow" -> "getriebe[i].vb_reflow".
         member = pattern.rsplit(".", 1)[-1].split("[", 1)[0]
-        same_member = [p.path for p in self.parameters if p.member == member]
+        same_member = self._by_member.get(member)
         if same_member:
             return same_member[:limit]
-        return difflib.get_close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
+        return loose
 
 
 @lru_cache(maxsize=1)

@@ -57,10 +57,18 @@ class UnknownParameters(str, Enum):
 
 class UsageError(Exception):
     """A problem with what the user asked for: exit code 2 with a one-line message."""
+    # (raised by our own option checks; click's usage errors are turned into the same one line in `main`)
+
+
+def _say(message: str) -> None:
+    """One line on stderr, with control characters from file names and lists shown escaped."""
+    from .display import printable
+
+    typer.echo(f"achslint: {printable(message)}", err=True)
 
 
 def _fail(message: str) -> None:
-    typer.echo(f"achslint: {message}", err=True)
+    _say(message)
     raise typer.Exit(EXIT_ERROR)
 
 
@@ -158,8 +166,7 @@ def lint(
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
     except ConfigError as exc:
         _fail(str(exc))
-    for message in outcome.errors:
-        typer.echo(f"achslint: {message}", err=True)
+    _tell(outcome.errors, outcome.notes, quiet)
     report_stream = sys.stdout
     if fix:
         report_stream = _report_fixes(outcome.results, show_diff, quiet)
@@ -168,7 +175,8 @@ def lint(
 
         get(fmt)(outcome.results, report_stream, color=_use_color(color, report_stream), sources=outcome.sources)
         if statistics:
-            _print_statistics(outcome.results)
+            # Text formats take the counts below the findings; a machine format's output stays one document.
+            _print_statistics(outcome.results, sys.stdout if fmt in TEXT_FORMATS else sys.stderr)
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
     from .diagnostics import Severity
@@ -176,6 +184,18 @@ def lint(
     threshold = Severity(outcome.fail_on).rank
     failing = any(d.severity.rank >= threshold for r in outcome.results for d in r.diagnostics)
     raise typer.Exit(EXIT_FINDINGS if failing and not exit_zero else EXIT_OK)
+
+
+TEXT_FORMATS = ("full", "concise")
+
+
+def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
+    """Errors always go to stderr; notes (files skipped on purpose) unless --quiet."""
+    for message in errors:
+        _say(message)
+    if not quiet:
+        for message in notes:
+            _say(f"note: {message}")
 
 
 def _report_fixes(results, show_diff: bool, quiet: bool):
@@ -230,7 +250,7 @@ class _progress:
         return False
 
 
-def _print_statistics(results) -> None:
+def _print_statistics(results, stream) -> None:
     from collections import Counter
 
     from .rules import registry
@@ -240,7 +260,7 @@ def _print_statistics(results) -> None:
     for code, count in sorted(counts.items(), key=lambda item: (-item[1], item[0])):
         rule = rules.get(code)
         name = rule.name if rule else ""
-        typer.echo(f"{count:6d}  {code}  {name}")
+        stream.write(f"{count:6d}  {code}  {name}\n")
 
 
 @app.command()
@@ -253,27 +273,28 @@ def fmt(
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors."),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
-    from .api import Linter, LintRequest
+    from .api import Linter, LintRequest, write_error
     from .config import ConfigError
     from .decode import UnreadableInput
-    from .fmt import ChangedOnDisk, format_bytes, unified_diff, write_atomically
-
-    try:
-        targets, errors = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
-    except ConfigError as exc:
-        _fail(str(exc))
+    from .files import read_list, reason, write_atomically
+    from .fmt import format_bytes, unified_diff
     from .xmlinput import is_xml
 
-    changed = 0
+    try:
+        found = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
+    except ConfigError as exc:
+        _fail(str(exc))
+    targets, errors = found.targets, found.errors
+    changed = written = 0
     for target in targets:
         if is_xml(target.name):
             errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
             continue
         try:
-            data = sys.stdin.buffer.read() if target.path is None else target.path.read_bytes()
+            data = sys.stdin.buffer.read() if target.path is None else read_list(target.path)
             formatted, differs = format_bytes(data, target.name)
         except OSError as exc:
-            errors.append(f"cannot read {target.name}: {exc.strerror or exc}")
+            errors.append(f"cannot read {target.name}: {reason(exc)}")
             continue
         except UnreadableInput as exc:
             errors.append(f"{target.name}: {exc}")
@@ -289,27 +310,34 @@ def fmt(
             typer.echo(unified_diff(data, formatted, target.name), nl=False)
         elif check:
             if not quiet:
-                typer.echo(f"would reformat {target.name}")
+                typer.echo(_shown(f"would reformat {target.name}"))
         else:
             try:
                 write_atomically(target.path, formatted, expected=data)
-            except ChangedOnDisk as exc:
-                errors.append(str(exc))
-                continue
             except OSError as exc:
-                errors.append(f"cannot write {target.name}: {exc.strerror or exc}")
+                errors.append(write_error(exc, target.name))
                 continue
+            written += 1
             if not quiet:
-                typer.echo(f"reformatted {target.name}")
-    for message in errors:
-        typer.echo(f"achslint: {message}", err=True)
+                typer.echo(_shown(f"reformatted {target.name}"))
+    _tell(errors, found.notes, quiet)
     if not quiet and not diff and targets and (check or targets[0].path is not None):
-        unchanged = len(targets) - changed
-        verb = "would be reformatted" if check else "reformatted"
-        typer.echo(f"{changed} file{'s' if changed != 1 else ''} {verb}, {unchanged} left unchanged", err=True)
+        if check:
+            summary = f"{changed} file{'s' if changed != 1 else ''} would be reformatted, {len(targets) - changed} left unchanged"
+        else:  # only what was really written counts; refused or failed writes are errors above
+            summary = f"{written} file{'s' if written != 1 else ''} reformatted, {len(targets) - changed} left unchanged"
+            if changed > written:
+                summary += f", {changed - written} not written"
+        typer.echo(summary, err=True)
     if errors:
         raise typer.Exit(EXIT_ERROR)
     raise typer.Exit(EXIT_FINDINGS if changed and (check or diff) else EXIT_OK)
+
+
+def _shown(text: str) -> str:
+    from .display import printable
+
+    return printable(text)
 
 
 @app.command()
@@ -347,17 +375,13 @@ def explain(
     """Explain the homing configuration of a list, or describe one parameter."""
     import json
 
-    from .decode import UnreadableInput
     from .explain import explain_list, parameter_card, render_card, render_list
+    from .files import not_a_list_file
 
     path = Path(target)
-    if path.is_file():
-        try:
-            report = explain_list(path.read_bytes(), target, gear)
-        except OSError as exc:
-            _fail(f"cannot read {target}: {exc.strerror or exc}")
-        except UnreadableInput as exc:
-            _fail(f"{target}: {exc}")
+    problem = not_a_list_file(path)
+    if problem is None or problem not in NOT_A_FILE:
+        report = explain_list(_one_list(path, target), target, gear)
         render = render_list
     else:
         from .catalogue import catalogue
@@ -376,6 +400,27 @@ def explain(
         return
     use = _use_color(color, sys.stdout)
     render(report, _console(use))
+
+
+# Why an argument of explain names no file at all (then it is taken as a parameter name).
+NOT_A_FILE = ("no such file or directory", "a name too long for the file system", "a part of the path is not a folder",
+              "a name the file system cannot hold")
+
+
+def _one_list(path: Path, name: str) -> bytes:
+    """The one axis list in a file, or a one-line failure (exit 2)."""
+    from .api import read_one_list
+    from .decode import UnreadableInput
+    from .files import Refused, reason
+
+    try:
+        return read_one_list(path, name)
+    except Refused as exc:
+        _fail(str(exc))
+    except OSError as exc:
+        _fail(f"cannot read {name}: {reason(exc)}")
+    except UnreadableInput as exc:
+        _fail(str(exc))
 
 
 def _console(color: bool):
@@ -421,9 +466,9 @@ def dry_run_command(
 
     from .decode import UnreadableInput
     from .dryrun import dry_run, render, sweep, trace_json
+    from .files import reason
     from .scenario import ScenarioError, ScenarioInput, parse_input, read_scenario
 
-    path = Path(file)
     try:
         given = read_scenario(Path(scenario)) if scenario else ScenarioInput()
         options = {
@@ -433,11 +478,11 @@ def dry_run_command(
         }
         merged = {**given.model_dump(exclude_none=True), **{k: v for k, v in options.items() if v is not None}}
         given = parse_input(merged, "command-line scenario")
-        run = dry_run(path.read_bytes(), file, given, gear=gear)
     except (ScenarioError, UsageError, UnreadableInput) as exc:
         _fail(str(exc))
     except OSError as exc:
-        _fail(f"cannot read {file}: {exc.strerror or exc}")
+        _fail(f"cannot read {scenario}: {reason(exc)}")
+    run = dry_run(_one_list(Path(file), file), file, given, gear=gear)
     if plot:
         from .plot import PlotUnavailable, plot_trace
 
@@ -445,6 +490,8 @@ def dry_run_command(
             plot_trace(run.trace, plot)
         except PlotUnavailable as exc:
             _fail(str(exc))
+        except OSError as exc:
+            _fail(f"cannot write the plot to {plot}: {reason(exc)}")
     summary = sweep(run.simulator, sweep_runs) if sweep_runs else None
     if output_format == ExplainFormat.json:
         document = trace_json(run)
@@ -481,17 +528,10 @@ def diff_command(
     """Show how two lists differ in their effective values (after defaults), by parameter with units."""
     import json
 
-    from .decode import UnreadableInput
     from .listdiff import diff_lists, render
 
-    try:
-        paths = [Path(a), Path(b)] + ([Path(defaults)] if defaults else [])
-        contents = [path.read_bytes() for path in paths]
-        report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
-    except OSError as exc:
-        _fail(f"cannot read {exc.filename}: {exc.strerror or exc}")
-    except UnreadableInput as exc:
-        _fail(str(exc))
+    contents = [_one_list(Path(name), name) for name in (a, b, *([defaults] if defaults else []))]
+    report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
     if output_format == ExplainFormat.json:
         typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
     else:
@@ -530,18 +570,52 @@ def schema() -> None:
     typer.echo(json.dumps(json_schema(), indent=2, ensure_ascii=False))
 
 
-def main() -> None:
-    """Console-script entry point: never lets a traceback reach the user unless --debug."""
-    debug = "--debug" in sys.argv
+def main(argv: Optional[List[str]] = None) -> int:
+    """Entry point (console script, `python -m achslint`, and in-process tests): returns the exit code.
+
+    Whatever happens, the user gets one line on stderr, never a traceback (unless --debug): usage errors
+    as `achslint: error: ...` with a hint, signals as "interrupted" / "terminated" with 128 + the signal
+    number, anything unexpected as an internal error.
+    """
+    from .signals import Stopped, stopping_on_signals
+
+    args = sys.argv[1:] if argv is None else list(argv)
+    _tolerant_streams()
     try:
-        app(standalone_mode=True)
-    except SystemExit:
-        raise
-    except KeyboardInterrupt:
-        typer.echo("achslint: interrupted", err=True)
-        sys.exit(EXIT_ERROR)
+        with stopping_on_signals():
+            code = app(args=args, prog_name="achslint", standalone_mode=False)
+    except Stopped as stop:
+        _say(stop.words)
+        return stop.exit_code
+    except typer.Abort:
+        _say("interrupted")
+        return 130
+    except typer.TyperException as exc:
+        return _usage_error(exc)
     except Exception as exc:  # noqa: BLE001 - the last line of defence
-        if debug:
+        if "--debug" in args:
             raise
-        typer.echo(f"achslint: internal error: {type(exc).__name__}: {exc} (run with --debug for details)", err=True)
-        sys.exit(EXIT_ERROR)
+        _say(f"internal error: {type(exc).__name__}: {exc} (run with --debug for details)")
+        return EXIT_ERROR
+    return code if isinstance(code, int) else EXIT_OK
+
+
+def _usage_error(exc) -> int:
+    """A click/typer usage error as one line: `achslint: error: <what> (see `achslint lint --help`)`."""
+    context = getattr(exc, "ctx", None)
+    if type(exc).__name__ == "NoArgsIsHelpError":  # `achslint` alone: the help is the answer
+        typer.echo(exc.format_message(), err=True)
+        return EXIT_ERROR
+    message = " ".join(exc.format_message().split()).rstrip(".")
+    hint = f" (see `{context.command_path} --help`)" if context is not None else " (see `achslint --help`)"
+    _say(f"error: {message[:1].lower()}{message[1:]}{hint}")
+    return getattr(exc, "exit_code", EXIT_ERROR)
+
+
+def _tolerant_streams() -> None:
+    """Characters the terminal's encoding cannot show become escapes instead of ending the run."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.reconfigure(errors="backslashreplace")
+        except (AttributeError, ValueError, OSError):
+            pass

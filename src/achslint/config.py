@@ -10,6 +10,7 @@ a configuration error (exit code 2) naming the file and the key.
 from __future__ import annotations
 
 import fnmatch
+import os
 from dataclasses import dataclass, field, fields, replace
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
@@ -113,8 +114,8 @@ class ResolvedConfig:
 
     def relative(self, target: Path) -> str:
         try:
-            return PurePosixPath(Path(target).resolve().relative_to(self.root.resolve())).as_posix()
-        except ValueError:
+            return PurePosixPath(Path(os.path.realpath(target)).relative_to(os.path.realpath(self.root))).as_posix()
+        except (ValueError, OSError):
             return PurePosixPath(Path(target)).as_posix()
 
     def ignored_for(self, target: Path) -> list[str]:
@@ -156,7 +157,11 @@ def load_file(path: Path) -> ResolvedConfig:
 
     data = read_toml(path, "configuration", ConfigError)
     if path.name == "pyproject.toml":
-        data = data.get("tool", {}).get("achslint", {})
+        tool = data.get("tool", {})
+        data = tool.get("achslint", {}) if isinstance(tool, dict) else {}
+        if not isinstance(data, dict):
+            raise ConfigError(f"configuration error in {path}: `tool.achslint` must be a table ([tool.achslint]), "
+                              f"not {type(data).__name__}")
     model = _file_model()
     try:
         validated = model.model_validate(data)
@@ -166,25 +171,39 @@ def load_file(path: Path) -> ResolvedConfig:
 
 
 def _has_table(pyproject: Path) -> bool:
+    """Whether a pyproject.toml has a `[tool.achslint]` table (another project's `tool = 5` is not ours)."""
     try:
-        return "achslint" in tomllib.loads(pyproject.read_text(encoding="utf-8")).get("tool", {})
+        tool = tomllib.loads(pyproject.read_text(encoding="utf-8")).get("tool", {})
     except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
         return False
+    return isinstance(tool, dict) and "achslint" in tool
 
 
 @lru_cache(maxsize=256)
 def _config_in(folder: Path) -> Path | None:
     for name in CONFIG_NAMES:
         candidate = folder / name
-        if candidate.is_file() and (name != "pyproject.toml" or _has_table(candidate)):
+        try:
+            found = candidate.is_file()
+        except OSError:  # a folder on the way we may not look into has no configuration for us
+            continue
+        if found and (name != "pyproject.toml" or _has_table(candidate)):
             return candidate
     return None
 
 
 def discover(start: Path) -> ResolvedConfig:
-    """The nearest configuration above `start` (a file or folder), or the defaults."""
-    folder = start.resolve()
-    if not folder.is_dir():
+    """The nearest configuration above `start` (a file or folder), or the defaults.
+
+    Never fails on the path itself: a link loop, a name too long for the file system or a
+    folder we may not read only stop the search where they are.
+    """
+    try:
+        folder = Path(os.path.realpath(start))
+        is_folder = folder.is_dir()
+    except (OSError, RuntimeError, ValueError):
+        folder, is_folder = Path(os.path.abspath(start)), False
+    if not is_folder:
         folder = folder.parent
     for candidate in (folder, *folder.parents):
         found = _config_in(candidate)

@@ -6,27 +6,27 @@
 * one blank before the comment that follows a value — unless the value is a
   string followed by text that is not a `(` comment, where the blanks may be
   part of what the CNC reads (LIS007), so they are left alone;
-* no trailing blanks, and whitespace-only lines become empty lines;
+* no trailing blanks, and blank-only lines become empty lines;
 * the end marker stands alone in column 1 and is the last line: blank lines
   after it are dropped and the file ends with a line break after `Ende`.
 
-Names, values and comment text are never touched, nor are lines the parser
-could not read (LIS001). Each line keeps its own line break, the file keeps
-its encoding and byte-order mark, and formatting twice changes nothing.
+"Blank" means the space and the tab, nothing else: a no-break space, a form
+feed or U+2028 is content to the CNC and to fmt. Names, values and comment text
+are never touched, nor are lines the parser could not read (LIS001). Each line
+keeps its own line break (no two lines are ever joined), the file keeps its
+encoding and byte-order mark, and formatting twice changes nothing.
 """
 
 from __future__ import annotations
 
 import difflib
-import os
-import tempfile
 from collections import Counter
-from pathlib import Path
 
 from . import syntax
 from .decode import decode
 
 NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
+BLANKS = " \t"
 
 
 def value_column(file: syntax.ListFile) -> int:
@@ -45,19 +45,19 @@ def format_line(line: syntax.Line, column: int) -> str:
     if line.kind == syntax.BLANK:
         return ""
     if line.kind == syntax.COMMENT:
-        return (line.indent + (line.comment or "")).rstrip()
+        return (line.indent + (line.comment or "")).rstrip(BLANKS)
     if line.kind == syntax.END:
-        rest = f" {line.rest.rstrip()}" if line.rest else ""
+        rest = f" {line.rest.rstrip(BLANKS)}" if line.rest else ""
         return (line.path or "") + rest
     if not line.path_ok or line.value_kind == syntax.BAD_STRING:
-        return line.body.rstrip()
+        return line.body.rstrip(BLANKS)
     if line.value is None:
         return line.path
     text = line.path.ljust(column - 1) + " " + line.value
     if line.rest is not None:
         separator = " " if _comment_is_free(line) else line.sep2
         text += separator + line.rest
-    return text.rstrip()
+    return text.rstrip(BLANKS)
 
 
 def format_file(file: syntax.ListFile) -> str:
@@ -70,11 +70,16 @@ def format_file(file: syntax.ListFile) -> str:
     newlines = Counter(line.newline for line in file.lines if line.newline)
     usual = newlines.most_common(1)[0][0] if newlines else "\n"
     out = []
+    previous = ""
     for position, line in enumerate(lines):
         newline = line.newline
         if position == len(lines) - 1 and end is not None and position == end and not newline:
             newline = usual
-        out.append(format_line(line, column) + newline)
+        body = format_line(line, column)
+        if not body and previous.endswith("\r") and newline.startswith("\n"):
+            body = line.body  # emptied, this line's LF would join the CR before it into one CRLF
+        out.append(body + newline)
+        previous = newline
     return "".join(out)
 
 
@@ -86,41 +91,16 @@ def format_bytes(data: bytes, name: str = "<bytes>") -> tuple[bytes, bool]:
     return formatted, formatted != data
 
 
+NO_NEWLINE = "\\ No newline at end of file\n"
+
+
 def unified_diff(before: bytes, after: bytes, name: str, label: str = "formatted") -> str:
-    old = decode(before).text.splitlines(keepends=True)
-    new = decode(after).text.splitlines(keepends=True)
-    return "".join(difflib.unified_diff(old, new, f"{name} (original)", f"{name} ({label})"))
-
-
-class ChangedOnDisk(OSError):
-    """The file is no longer what was read: someone edited, replaced or removed it meanwhile."""
-
-
-def write_atomically(path: Path, data: bytes, expected: bytes | None = None) -> None:
-    """Write next to the file and rename over it: an interrupted run leaves the old file or the new one.
-
-    With `expected` (the bytes the new content was made from), nothing is written
-    when the file changed or vanished in the meantime, so an edit made while
-    achslint ran is never overwritten; `ChangedOnDisk` says so.
-    """
-    folder = path.parent
-    mode = path.stat().st_mode & 0o7777 if path.exists() else None
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".achslint", dir=folder)
-    try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        if mode is not None:
-            os.chmod(temporary, mode)
-        if expected is not None:
-            try:
-                current = path.read_bytes()
-            except FileNotFoundError:
-                raise ChangedOnDisk(f"{path} was removed while achslint was working on it; nothing written") from None
-            if current != expected:
-                raise ChangedOnDisk(f"{path} changed while achslint was working on it; nothing written, run again")
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
+    """A unified diff of two versions of a list; a last line without a line break is marked as `diff` marks it."""
+    old = syntax.split_lines(decode(before).text, keepends=True)
+    new = syntax.split_lines(decode(after).text, keepends=True)
+    out = []
+    for row in difflib.unified_diff(old, new, f"{name} (original)", f"{name} ({label})"):
+        out.append(row)
+        if not row.endswith(("\n", "\r")):
+            out.append("\n" + NO_NEWLINE)
+    return "".join(out)

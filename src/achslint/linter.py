@@ -14,7 +14,7 @@ from .context import Context, Options
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .rules import matches, registry
-from .syntax import parse_bytes
+from .syntax import ASSIGNMENT, END, parse_bytes
 from .xmlinput import is_xml
 
 
@@ -68,7 +68,27 @@ def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, de
         default_file = parse_bytes(defaults, "default list") if defaults is not None else None
     except UnreadableInput as exc:
         return FileResult(name, [], f"{name}: {exc}")
+    if not looks_like_a_list(file):
+        return FileResult(name, [], f"{name}: {NOT_A_LIST}")
     return _check_file(file, name, settings, default_file=default_file)
+
+
+NOT_A_LIST = ("not an axis list (no line is a `parameter value` assignment and there is no `Ende`); "
+              "nothing of its content is shown")
+
+
+def looks_like_a_list(file) -> bool:
+    """Whether a file is an axis list at all: some line assigns a well-formed name, or it has the end marker.
+
+    Anything else (a password file, the process environment, a binary) is reported once instead of line by
+    line, so none of its lines end up in a report or a CI log.
+    """
+    content = False
+    for line in file.lines:
+        if line.kind == END or (line.kind == ASSIGNMENT and line.path_ok):
+            return True
+        content = content or line.kind == ASSIGNMENT
+    return not content
 
 
 def _check_file(file, name: str, settings: FileSettings, embedded=None, default_file=None) -> FileResult:
@@ -108,8 +128,8 @@ def _mapped_summary(summary: dict, embedded) -> dict:
 
 def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
-    from .syntax import parse_text
-    from .xmlinput import _text_of, extract
+    from .syntax import parse_text, split_lines
+    from .xmlinput import extract, source_text
 
     try:
         lists = extract(data, name)
@@ -134,7 +154,7 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
             if rule.check_machine is not None and settings.selection.enabled(code):
                 diagnostics.extend(rule.check_machine(members, []))
     diagnostics.sort(key=Diagnostic.sort_key)
-    lines = _text_of(data).splitlines() if diagnostics and settings.keep_source else []
+    lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
     return FileResult(name, diagnostics, None, lines)
 
 

@@ -16,9 +16,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .diagnostics import Diagnostic, Related, Severity
+from .files import Scope, inside, not_a_list_file, read_list
 
 STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
-_ENTRY = re.compile(r"^\s*(?P<key>achs_mds\[(?P<index>\d+)\]|default_achs_mds)\s+(?P<value>\S+)", re.M)
+_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds")
 
 
 @dataclass
@@ -27,7 +28,8 @@ class StartupEntry:
     raw: str
     line: int
     column: int
-    path: Path | None  # resolved file, None when it does not exist
+    path: Path | None  # resolved file, None when it does not exist or is not read
+    refused: str | None = None  # why an existing file is not read (outside the machine's folder, a FIFO, ...)
 
 
 @dataclass
@@ -41,30 +43,43 @@ def is_startup_list(path: Path) -> bool:
     return any(fnmatch.fnmatch(path.name.lower(), pattern) for pattern in STARTUP_NAMES)
 
 
-def _resolve(raw: str, startup: Path) -> Path | None:
-    """Relative entries are taken from the start-up list's folder; lists kept as `./listen/x.lis` next to a
-    start-up list inside `listen/` (the SDK layout) are found from the parent folder too."""
+_MISSING = ("no such file or directory", "a part of the path is not a folder", "a name too long for the file system",
+            "a symbolic link to a file that does not exist")
+
+
+def _resolve(raw: str, startup: Path, scope: Scope | None) -> tuple[Path | None, str | None]:
+    """(file, None) for an entry achslint reads, (None, why) for one it refuses, (None, None) when it is missing.
+
+    Relative entries are taken from the start-up list's folder; lists kept as `./listen/x.lis` next to a
+    start-up list inside `listen/` (the SDK layout) are found from the parent folder too. Either way the
+    file must lie in the start-up list's folder or below it, or under a path the user gave: a start-up
+    list cannot make achslint read (and show) `/proc/self/environ` or `../../secret.lis`.
+    """
     candidate = Path(raw.strip('"'))
-    bases = (Path(),) if candidate.is_absolute() else (startup.parent, startup.parent.parent, Path.cwd())
+    bases = (Path(),) if candidate.is_absolute() else (startup.parent, startup.parent.parent)
     for base in bases:
-        try:
-            if (base / candidate).is_file():
-                return base / candidate
-        except OSError:  # a name the file system cannot even look up (too long, ...) names no list
+        target = base / candidate
+        problem = not_a_list_file(target)
+        if problem in _MISSING:
             continue
-    return None
+        if problem is not None:
+            return None, f"it is {problem}" if problem.startswith("a ") else problem
+        if not inside(target, startup.parent) and not (scope and scope.contains(target)):
+            return None, f"it lies outside the start-up list's folder {startup.parent}"
+        return target, None
+    return None, None
 
 
-def read_startup(path: Path) -> Startup:
-    text = path.read_bytes().decode("latin-1")
-    end = re.search(r"^\s*Ende\s*$", text, re.M)
-    if end:
-        text = text[: end.start()]
+def read_startup(path: Path, scope: Scope | None = None) -> Startup:
+    """The entries of a start-up list. Raises `OSError` / `decode.UnreadableInput` when it cannot be read."""
+    from .syntax import parse_bytes
+
     startup = Startup(path)
-    for match in _ENTRY.finditer(text):
-        line = text.count("\n", 0, match.start("key")) + 1
-        column = match.start("value") - (text.rfind("\n", 0, match.start("value")) + 1) + 1
-        entry = StartupEntry(match.group("key"), match.group("value"), line, column, _resolve(match.group("value"), path))
+    for line in parse_bytes(read_list(path), str(path)).assignments():
+        if not line.path_ok or line.value is None or not _ENTRY.fullmatch(line.path):
+            continue
+        found, refused = _resolve(line.value, path, scope)
+        entry = StartupEntry(line.path, line.value, line.number, line.value_column, found, refused)
         if entry.key == "default_achs_mds":
             startup.default = entry
         else:

@@ -16,6 +16,8 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Iterator
 
+from .numbers import parse_int
+
 BLANK = "blank"
 COMMENT = "comment"
 END = "end"
@@ -255,6 +257,19 @@ def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bo
     return ListFile(name=name, lines=lines, encoding=encoding, bom=bom, end_index=end_index)
 
 
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+")
+
+
+def split_lines(text: str, keepends: bool = False) -> list[str]:
+    """The lines of `text` as the parser numbers them: only CR, LF and CRLF end a line.
+
+    `str.splitlines` also breaks at \\x0b, \\x0c, \\x1c-\\x1e, U+0085, U+2028 and U+2029,
+    which are ordinary characters in a list; using it would shift every line number after them.
+    """
+    lines = _LINE.findall(text)
+    return lines if keepends else [line.rstrip("\r\n") for line in lines]
+
+
 def parse_bytes(data: bytes, name: str = "<bytes>") -> ListFile:
     """Decode and parse list bytes. Raises `decode.UnreadableInput` for UTF-16/32."""
     from .decode import decode
@@ -273,7 +288,7 @@ def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
         match = _SEGMENT.fullmatch(segment)
         if match is None:
             raise ValueError(f"not a valid path: {path!r}")
-        indices = tuple(int(i) for i in re.findall(r"\[([0-9]+)\]", match.group(2)))
+        indices = tuple(whole_number(i) for i in re.findall(r"\[([0-9]+)\]", match.group(2)))
         parts.append((match.group(1), indices))
     return parts
 
@@ -282,10 +297,11 @@ HUGE = 10**30  # stands for a number with more digits than any parameter type or
 
 
 def whole_number(text: str) -> int:
-    """The decimal integer `text`; `±HUGE` beyond 30 significant digits (Python refuses thousands of them)."""
-    if len(text.lstrip("+-").lstrip("0")) > 30:
-        return -HUGE if text.startswith("-") else HUGE
-    return int(text)
+    """The decimal integer `text`; `±HUGE` when it has too many digits to be converted (see `numbers`)."""
+    value = parse_int(text)
+    if isinstance(value, int):
+        return value
+    return -HUGE if text.startswith("-") else HUGE
 
 
 @lru_cache(maxsize=1 << 16)

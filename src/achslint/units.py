@@ -7,6 +7,10 @@ dry-run engine's boundary.
 
 from __future__ import annotations
 
+import math
+
+from .numbers import as_float
+
 # catalogue unit -> (display name, factor to the human unit, human unit)
 _UNITS: dict[str, tuple[str, float, str]] = {
     "0.1um": ("0.1 µm", 1e-4, "mm"),
@@ -38,9 +42,14 @@ def unit_label(unit: str | None) -> str:
 
 
 def _number(value: float) -> str:
-    if value == int(value) and abs(value) < 1e15:
-        return str(int(value))
-    return f"{value:.4g}" if abs(value) < 1e6 else f"{value:.6g}"
+    number = as_float(value)
+    if number is None:  # an integer too large for a float, or inf / nan from elsewhere
+        if isinstance(value, int) and not isinstance(value, bool):
+            return f"a number of about {int(value.bit_length() * math.log10(2)) + 1:,} digits"
+        return str(value)
+    if number.is_integer() and abs(number) < 1e15:
+        return str(int(number))
+    return f"{number:.4g}" if abs(number) < 1e6 else f"{number:.6g}"
 
 
 def to_human(value: float, unit: str | None) -> str | None:
@@ -48,9 +57,10 @@ def to_human(value: float, unit: str | None) -> str | None:
     if unit not in _UNITS or not isinstance(value, (int, float)) or isinstance(value, bool):
         return None
     label, factor, human = _UNITS[unit]
-    if factor == 1.0 and human == label:
+    number = as_float(value)
+    if number is None or (factor == 1.0 and human == label):
         return None
-    converted = value * factor
+    converted = number * factor
     text = f"{_number(converted)} {human}"
     if human == "mm/s":
         text += f" = {_number(converted * 60 / 1000)} m/min"

@@ -1,24 +1,35 @@
 """Axis lists inside XML: TwinCAT tree items / projects and the ISG XML list format.
 
 * TwinCAT (`.xml`, `.xti`, `.tsproj`): each `<AchsMds>` element holds a complete
-  axis list as text (usually CDATA); `<DriveType>` and `<Spindle>` of the same
-  `<IsgAxisDef>` describe the drive type and whether the axis is a spindle.
+  axis list as text (CDATA, plain text with character references, or both);
+  `<DriveType>` and `<Spindle>` of the same `<IsgAxisDef>` describe the drive
+  type and whether the axis is a spindle.
 * ISG XML lists: `<AX_MDS>` with one element per parameter, named by id and
   index (`<P-AXIS-00152.0 Value="0"/>`), inside optional grouping elements.
 
 Both become ordinary list text, linted by the same rules; diagnostics are moved
-back to the line and column of the XML file. The XML is read with defusedxml:
-a DTD, entity declarations and external references are refused.
+back to the line and column of the XML file. The file is read in one pass by
+defusedxml's expat parser, which refuses a DTD, entity declarations and
+external references, reads any encoding expat knows (UTF-16 included), skips
+comments and takes positions from the parser itself, so the time is linear in
+the size of the file.
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from bisect import bisect_right
+from dataclasses import dataclass, field
+from functools import cached_property
+from xml.sax import SAXException
+from xml.sax.handler import ContentHandler
 
 from .decode import UnreadableInput
+from .numbers import parse_int
+from .syntax import split_lines
 
 XML_SUFFIXES = (".xml", ".xti", ".tsproj")
+_ISG_ELEMENT = re.compile(r"(P-AXIS-[0-9]+)((?:\.[0-9]+)*)")
 
 
 @dataclass
@@ -26,30 +37,56 @@ class EmbeddedList:
     """One axis list found in an XML file, with what is needed to map positions back."""
 
     text: str
-    label: str  # e.g. "AchsMds of Achse_1" or "AX_MDS"
-    first_line: int  # XML line of the list's first line
-    first_column: int  # XML column of the list's first character
+    label: str  # "AchsMds" or "AX_MDS"
+    first_line: int  # XML line of the element that holds the list
+    first_column: int
     line_map: list[tuple[int, int]] | None = None  # ISG: XML (line, column) of every synthetic line
     drive_type: int | None = None
     drive_type_line: int | None = None
     spindle: bool | None = None
     spindle_line: int | None = None
+    # TwinCAT: where each piece of the text starts in the XML file, as the parser reported it:
+    # text offsets (ascending) and the XML (line, column) of each.
+    pieces: list[int] = field(default_factory=list)
+    piece_positions: list[tuple[int, int]] = field(default_factory=list)
+
+    @cached_property
+    def _line_starts(self) -> list[int]:
+        starts, offset = [0], 0
+        for line in split_lines(self.text, keepends=True):
+            offset += len(line)
+            starts.append(offset)
+        return starts
 
     def position(self, line: int, column: int) -> tuple[int, int]:
+        """The XML (line, column) of a 1-based (line, column) of the list text."""
         if self.line_map is not None:
-            return self.line_map[min(line, len(self.line_map)) - 1]
-        if line == 1:
-            return self.first_line, self.first_column + column - 1
-        return self.first_line + line - 1, column
+            return self.line_map[max(1, min(line, len(self.line_map))) - 1]
+        if not self.pieces:
+            return self.first_line, self.first_column
+        starts = self._line_starts
+        offset = starts[max(1, min(line, len(starts))) - 1] + max(column, 1) - 1
+        index = max(bisect_right(self.pieces, offset) - 1, 0)
+        start = self.pieces[index]
+        xml_line, xml_column = self.piece_positions[index]
+        between = self.text[start:offset]
+        breaks = between.count("\n")
+        if not breaks:
+            return xml_line, xml_column + len(between)
+        return xml_line + breaks, len(between) - between.rindex("\n")
 
 
 def is_xml(name: str) -> bool:
     return name.lower().endswith(XML_SUFFIXES)
 
 
-def _text_of(data: bytes) -> str:
-    match = re.match(rb'<\?xml[^>]*encoding=["\']([A-Za-z0-9_.-]+)["\']', data)
-    encoding = match.group(1).decode("ascii") if match else "utf-8"
+def source_text(data: bytes) -> str:
+    """The XML file as text, for code frames: by its byte-order mark or declared encoding, else Latin-1."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        encoding = "utf-16"
+    else:
+        match = re.match(rb'<\?xml[^>]*encoding=["\']([A-Za-z0-9_.-]+)["\']', data)
+        encoding = match.group(1).decode("ascii") if match else "utf-8"
     try:
         text = data.decode(encoding)
     except (LookupError, UnicodeDecodeError):
@@ -57,95 +94,156 @@ def _text_of(data: bytes) -> str:
     return text[1:] if text.startswith("\ufeff") else text
 
 
-def _check_safely(data: bytes, name: str) -> None:
-    import xml.etree.ElementTree as StdET
+def _local(name: str) -> str:
+    """An element name without its namespace prefix."""
+    return name.rsplit(":", 1)[-1]
 
+
+class _Collector(ContentHandler):
+    """Gathers the axis lists while expat reads the file once."""
+
+    def __init__(self, locator):
+        super().__init__()
+        self.locator = locator
+        self.twincat: list[EmbeddedList] = []
+        self.isg: list[tuple[EmbeddedList, list[str]]] = []
+        self.isg_depth = 0  # how many <AX_MDS> elements we are inside
+        self.axis_defs: list[list[EmbeddedList]] = []  # the <IsgAxisDef> elements we are inside
+        self.current: EmbeddedList | None = None  # the <AchsMds> being read
+        self.chunks: list[str] = []
+        self.offset = 0
+        self.field: tuple[str, int] | None = None  # <DriveType> / <Spindle> being read, with its line
+        self.field_text: list[str] = []
+        self.axis_fields: list[dict] = []
+
+    def _here(self) -> tuple[int, int]:
+        return self.locator.getLineNumber(), self.locator.getColumnNumber() + 1
+
+    def startElement(self, name, attrs):  # noqa: N802 - SAX interface
+        local = _local(name)
+        line, column = self._here()
+        if local == "IsgAxisDef":
+            self.axis_defs.append([])
+            self.axis_fields.append({})
+        elif local == "AchsMds" and self.current is None:
+            self.current = EmbeddedList("", "AchsMds", line, column)
+            self.chunks, self.offset = [], 0
+        elif local in ("DriveType", "Spindle") and self.axis_defs:
+            self.field, self.field_text = (local, line), []
+        elif local == "AX_MDS":
+            self.isg_depth += 1
+            if self.isg_depth == 1:
+                self.isg.append((EmbeddedList("", "AX_MDS", line, column, line_map=[]), []))
+        elif self.isg_depth and _ISG_ELEMENT.fullmatch(local):
+            self._isg_line(local, attrs.get("Value", ""), (line, column))
+
+    def characters(self, content):
+        if self.current is not None:
+            self.current.pieces.append(self.offset)
+            self.current.piece_positions.append(self._here())
+            self.chunks.append(content)
+            self.offset += len(content)
+        elif self.field is not None:
+            self.field_text.append(content)
+
+    def endElement(self, name):  # noqa: N802 - SAX interface
+        local = _local(name)
+        if local == "AchsMds" and self.current is not None:
+            self.current.text = "".join(self.chunks)
+            self.twincat.append(self.current)
+            if self.axis_defs:
+                self.axis_defs[-1].append(self.current)
+            self.current = None
+        elif self.field is not None and local == self.field[0]:
+            self.axis_fields[-1][local] = ("".join(self.field_text).strip(), self.field[1])
+            self.field = None
+        elif local == "IsgAxisDef" and self.axis_defs:
+            self._describe(self.axis_defs.pop(), self.axis_fields.pop())
+        elif local == "AX_MDS" and self.isg_depth:
+            self.isg_depth -= 1
+            if not self.isg_depth:
+                embedded, lines = self.isg[-1]
+                lines.append("Ende")
+                embedded.line_map.append(self._here())
+
+    @staticmethod
+    def _describe(lists: list[EmbeddedList], fields: dict) -> None:
+        """Give the lists of one <IsgAxisDef> its drive type and spindle flag."""
+        for embedded in lists:
+            if "DriveType" in fields:
+                number = parse_int(fields["DriveType"][0])
+                if isinstance(number, int):
+                    embedded.drive_type, embedded.drive_type_line = number, fields["DriveType"][1]
+            if "Spindle" in fields and fields["Spindle"][0].lower() in ("true", "false"):
+                embedded.spindle = fields["Spindle"][0].lower() == "true"
+                embedded.spindle_line = fields["Spindle"][1]
+
+    def _isg_line(self, element: str, value: str, where: tuple[int, int]) -> None:
+        """One `<P-AXIS-nnnnn.i Value="..."/>` element as a list line."""
+        from .catalogue import catalogue, fill_indices
+
+        embedded, lines = self.isg[-1]
+        match = _ISG_ELEMENT.fullmatch(element)
+        pid, written = match.group(1), match.group(2)
+        indices = tuple(written.split(".")[1:])
+        parameter = catalogue().by_id.get(pid)
+        if parameter is None:
+            path = pid + written.replace(".", "_")  # reported as an unknown parameter
+        else:
+            count = parameter.path.count("[i]")
+            path = fill_indices(parameter.path, (indices + ("0",) * count)[:count])
+        value = value.replace("\r", " ").replace("\n", " ")  # a character reference must not split the line
+        if value and (re.search(r"[ \t(]", value) or value.startswith('"')):
+            value = '"' + value.strip('"') + '"'
+        lines.append(f"{path} {value}".rstrip(" \t"))
+        embedded.line_map.append(where)
+
+
+def _parse(data: bytes, name: str) -> _Collector:
     import defusedxml
-    import defusedxml.ElementTree as SafeET
+    from defusedxml.expatreader import create_parser
 
+    parser = create_parser(forbid_dtd=True)
+    collector = _Collector(parser)
+    parser.setContentHandler(collector)
     try:
-        SafeET.fromstring(data, forbid_dtd=True)
+        parser.feed(data)
+        parser.close()
     except (defusedxml.DTDForbidden, defusedxml.EntitiesForbidden, defusedxml.ExternalReferenceForbidden) as exc:
         raise UnreadableInput(
             f"refusing to read {name}: it declares a DTD or entities ({type(exc).__name__}), which can expand or "
             "load external content"
         ) from None
-    except StdET.ParseError as exc:
-        raise UnreadableInput(f"{name} is not well-formed XML: {exc}") from None
+    except SAXException as exc:
+        raise UnreadableInput(f"{name} is not well-formed XML: {exc.getMessage()}{_where(exc)}") from None
+    except LookupError as exc:  # expat asks Python's codecs for encodings it does not know itself
+        raise UnreadableInput(f"{name} is not well-formed XML: it declares an {exc}; save it as UTF-8") from None
+    return collector
 
 
-def _line_col(text: str, offset: int) -> tuple[int, int]:
-    line = text.count("\n", 0, offset) + 1
-    start = text.rfind("\n", 0, offset) + 1
-    return line, offset - start + 1
-
-
-_ACHSMDS = re.compile(r"<AchsMds>(?P<body><!\[CDATA\[(?P<cdata>.*?)\]\]>|(?P<plain>[^<]*))</AchsMds>", re.S)
-_ELEMENT = re.compile(r"<(?P<id>P-AXIS-\d{5})(?P<index>(?:\.\d+)*)(?P<attrs>[^>]*?)/?>")
-_VALUE = re.compile(r'\bValue\s*=\s*"(?P<value>[^"]*)"')
-
-
-def _unescape(text: str) -> str:
-    return (text.replace("&lt;", "<").replace("&gt;", ">").replace("&quot;", '"')
-            .replace("&apos;", "'").replace("&amp;", "&"))
+def _where(exc: SAXException) -> str:
+    line = getattr(exc, "getLineNumber", lambda: None)()
+    return f" (line {line})" if line else ""
 
 
 def extract(data: bytes, name: str) -> list[EmbeddedList]:
     """Every axis list in an XML file. Raises `UnreadableInput` for unsafe or broken XML, or XML without lists."""
-    _check_safely(data, name)
-    text = _text_of(data)
-    found = [_twincat(text, match) for match in _ACHSMDS.finditer(text)]
-    if not found and re.search(r"<AX_MDS[\s>]", text):
-        found.append(_isg(text))
+    collected = _parse(data, name)
+    found = list(collected.twincat)
+    if not found:
+        for embedded, lines in collected.isg:
+            embedded.text = "\n".join(lines) + "\n"
+            found.append(embedded)
     if not found:
         raise UnreadableInput(f"{name} contains no axis list (no <AchsMds> element and no <AX_MDS> list)")
     return found
 
 
-def _twincat(text: str, match: re.Match) -> EmbeddedList:
-    if match.group("cdata") is not None:
-        body, start = match.group("cdata"), match.start("cdata")
-    else:
-        body, start = _unescape(match.group("plain")), match.start("plain")
-    line, column = _line_col(text, start)
-    # The surrounding <IsgAxisDef> (TwinCAT tree item) names the drive type and the spindle flag.
-    owner_start = text.rfind("<IsgAxisDef", 0, match.start())
-    owner = text[owner_start:match.start()] if owner_start >= 0 else ""
-    embedded = EmbeddedList(body, "AchsMds", line, column)
-    drive = re.search(r"<DriveType>\s*(\d+)\s*</DriveType>", owner)
-    if drive:
-        embedded.drive_type = int(drive.group(1))
-        embedded.drive_type_line = _line_col(text, owner_start + drive.start())[0]
-    spindle = re.search(r"<Spindle>\s*(true|false)\s*</Spindle>", owner, re.I)
-    if spindle:
-        embedded.spindle = spindle.group(1).lower() == "true"
-        embedded.spindle_line = _line_col(text, owner_start + spindle.start())[0]
-    return embedded
-
-
-def _isg(text: str) -> EmbeddedList:
-    from .catalogue import catalogue, fill_indices
-
-    cat = catalogue()
-    lines: list[str] = []
-    positions: list[tuple[int, int]] = []
-    for match in _ELEMENT.finditer(text):
-        pid = match.group("id")
-        indices = tuple(int(i) for i in match.group("index").split(".") if i)
-        value_match = _VALUE.search(match.group("attrs"))
-        value = _unescape(value_match.group("value")) if value_match else ""
-        parameter = cat.by_id.get(pid)
-        if parameter is None:
-            path = pid + match.group("index").replace(".", "_")  # reported as an unknown parameter
-        else:
-            count = parameter.path.count("[i]")
-            wanted = (indices + (0,) * count)[:count]
-            path = fill_indices(parameter.path, wanted)
-        if value and (re.search(r"\s|\(", value) or value.startswith('"')):
-            value = '"' + value.strip('"') + '"'
-        lines.append(f"{path} {value}".rstrip())
-        positions.append(_line_col(text, match.start()))
-    close = text.rfind("</AX_MDS>")
-    lines.append("Ende")
-    positions.append(_line_col(text, close if close >= 0 else len(text)))
-    return EmbeddedList("\n".join(lines) + "\n", "AX_MDS", positions[0][0], positions[0][1], line_map=positions)
+def single_list(data: bytes, name: str) -> bytes:
+    """The one axis list of an XML file as list bytes (for explain, dry-run and diff, which read one list)."""
+    lists = extract(data, name)
+    if len(lists) > 1:
+        where = ", ".join(f"line {embedded.first_line}" for embedded in lists)
+        raise UnreadableInput(f"{name} holds {len(lists)} axis lists (at {where}); this command reads one list, "
+                              "so export the axis you mean on its own")
+    return lists[0].text.encode("utf-8")

@@ -19,6 +19,13 @@ REPORTERS = {
 }
 
 
+def write_json(document, stream) -> None:
+    """The machine formats that are JSON (json, sarif, gitlab) write through here: strict JSON, one document."""
+    from ..display import json_text
+
+    stream.write(json_text(document) + "\n")
+
+
 def get(name: str):
     """The `report(results, stream, **options)` function of a format."""
     module = importlib.import_module(f"{__name__}.{REPORTERS[name]}")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from ..diagnostics import Severity
+from ..display import printable
 
 _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
 
@@ -14,8 +15,17 @@ def _frame(lines: list[str], d) -> list[tuple[str, str]]:
     width = len(str(d.line))
     for number in range(first, d.line + 1):
         if number - 1 < len(lines):
-            rows.append((f"{number:>{width}} │ ", lines[number - 1].expandtabs(1)))
+            rows.append((f"{number:>{width}} │ ", printable(lines[number - 1].expandtabs(1))))
     return rows
+
+
+def _caret(line: str, d) -> str:
+    """Carets under the faulty span, placed by what is shown (escapes are wider than the character)."""
+    shown = line.expandtabs(1)  # a tab is one column in positions and one blank on screen
+    end = d.end_column if d.end_line == d.line else len(shown) + 1
+    before = printable(shown[: d.column - 1])
+    span = printable(shown[d.column - 1: end - 1])
+    return " " * len(before) + "^" * max(len(span), 1)
 
 
 def report(results, stream, *, color: bool = False, sources: dict[str, list[str]] | None = None, **_options) -> None:
@@ -31,23 +41,22 @@ def report(results, stream, *, color: bool = False, sources: dict[str, list[str]
         for d in result.diagnostics:
             total[d.severity.value] += 1
             head = Text()
-            head.append(f"{d.path}:{d.line}:{d.column}: ", style="bold")
+            head.append(f"{printable(d.path)}:{d.line}:{d.column}: ", style="bold")
             head.append(f"{d.code} ", style=_STYLE[d.severity])
             head.append(f"{d.severity.value}: ", style=_STYLE[d.severity])
-            head.append(d.message)
+            head.append(printable(d.message))
             console.print(head)
             for gutter, text in _frame(lines, d):
                 console.print(Text(gutter, style="blue") + Text(text))
             if lines and d.line - 1 < len(lines):
                 width = len(str(d.line))
-                span = max((d.end_column if d.end_line == d.line else len(lines[d.line - 1]) + 1) - d.column, 1)
-                caret = " " * (d.column - 1) + "^" * span
+                caret = _caret(lines[d.line - 1], d)
                 console.print(Text(" " * width + " │ ", style="blue") + Text(caret, style=_STYLE[d.severity]))
             for related in d.related:
-                console.print(Text(f"  related: {related.path}:{related.line}:{related.column}", style="dim")
-                              + Text(f" {related.parameter or ''} {related.message}".rstrip(), style="dim"))
+                console.print(Text(f"  related: {printable(related.path)}:{related.line}:{related.column}", style="dim")
+                              + Text(printable(f" {related.parameter or ''} {related.message}".rstrip()), style="dim"))
             if d.fix is not None:
-                console.print(Text(f"  fix ({d.fix.applicability}): {d.fix.description}", style="green"))
+                console.print(Text(f"  fix ({d.fix.applicability}): {printable(d.fix.description)}", style="green"))
             console.print()
     summary = ", ".join(f"{count} {name}{'s' if count != 1 else ''}" for name, count in total.items())
     files = len(results)

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import hashlib
-import json
 
 from ..diagnostics import Severity
+from . import write_json
 
 SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
 
@@ -13,7 +13,8 @@ SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO:
 def fingerprint(path: str, code: str, anchor: str, occurrence: int) -> str:
     """Stable across unrelated edits: built from the file, the rule, what it is about and the
     occurrence number of that combination, not from the line number."""
-    return hashlib.sha256(f"{path}\0{code}\0{anchor}\0{occurrence}".encode("utf-8")).hexdigest()
+    key = f"{path}\0{code}\0{anchor}\0{occurrence}"
+    return hashlib.sha256(key.encode("utf-8", "surrogatepass")).hexdigest()  # names need not be UTF-8
 
 
 def issues(results) -> list[dict]:
@@ -38,5 +39,4 @@ def issues(results) -> list[dict]:
 
 
 def report(results, stream, **_options) -> None:
-    json.dump(issues(results), stream, ensure_ascii=False, indent=2)
-    stream.write("\n")
+    write_json(issues(results), stream)

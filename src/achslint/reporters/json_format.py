@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import json
 from dataclasses import asdict
 
 from ..diagnostics import Diagnostic
+from . import write_json
 
 
 def diagnostic_dict(d: Diagnostic) -> dict:
@@ -56,5 +56,4 @@ def document(results) -> dict:
 
 
 def report(results, stream, **_options) -> None:
-    json.dump(document(results), stream, ensure_ascii=False, indent=2)
-    stream.write("\n")
+    write_json(document(results), stream)

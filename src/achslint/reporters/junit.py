@@ -4,26 +4,31 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from ..display import printable
+
 
 def document(results) -> ET.Element:
     root = ET.Element("testsuites", name="achslint")
     total = failures = 0
     for result in results:
-        suite = ET.SubElement(root, "testsuite", name=result.name)
+        name = printable(result.name)  # XML 1.0 has no way to hold most control characters
+        suite = ET.SubElement(root, "testsuite", name=name)
         cases = 0
         if result.error:
-            case = ET.SubElement(suite, "testcase", classname=result.name, name="read")
-            ET.SubElement(case, "error", message=result.error).text = result.error
+            case = ET.SubElement(suite, "testcase", classname=name, name="read")
+            error = printable(result.error)
+            ET.SubElement(case, "error", message=error).text = error
             cases, failed = 1, 1
         elif not result.diagnostics:
-            ET.SubElement(suite, "testcase", classname=result.name, name="achslint")
+            ET.SubElement(suite, "testcase", classname=name, name="achslint")
             cases, failed = 1, 0
         else:
             failed = 0
             for d in result.diagnostics:
-                case = ET.SubElement(suite, "testcase", classname=result.name, name=f"{d.code} line {d.line}:{d.column}")
-                failure = ET.SubElement(case, "failure", message=d.message, type=f"{d.code} ({d.severity.value})")
-                failure.text = f"{d.path}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {d.message}"
+                case = ET.SubElement(suite, "testcase", classname=name, name=f"{d.code} line {d.line}:{d.column}")
+                message = printable(d.message)
+                failure = ET.SubElement(case, "failure", message=message, type=f"{d.code} ({d.severity.value})")
+                failure.text = f"{printable(d.path)}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {message}"
                 cases += 1
                 failed += 1
         suite.set("tests", str(cases))

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path, PurePosixPath
 
 from .. import __version__
 from ..diagnostics import Severity, rule_url
+from . import write_json
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
@@ -98,5 +98,4 @@ def document(results) -> dict:
 
 
 def report(results, stream, **_options) -> None:
-    json.dump(document(results), stream, ensure_ascii=False, indent=2)
-    stream.write("\n")
+    write_json(document(results), stream)

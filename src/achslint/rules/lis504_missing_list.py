@@ -40,7 +40,14 @@ SUMMARY = "Start-up list names an axis list that does not exist"
 def check_machine(members, startups):
     for startup in startups:
         for entry in ([startup.default] if startup.default else []) + startup.axes:
-            if entry.path is None:
+            if entry.refused:
+                yield Diagnostic(
+                    str(startup.path), entry.line, entry.column, entry.line, entry.column + len(entry.raw), CODE,
+                    Severity.WARNING,
+                    f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {entry.refused}; "
+                    "name the list (or its folder) on the command line to check it",
+                )
+            elif entry.path is None:
                 yield Diagnostic(
                     str(startup.path), entry.line, entry.column, entry.line, entry.column + len(entry.raw), CODE,
                     Severity.ERROR,
