@@ -105,3 +105,58 @@ def test_lookup_by_id_name_alias_and_member():
     assert cat.find("getriebe[0].vb_reflow").id == "P-AXIS-00218"
     assert cat.find("kenngr.homing_type").id == "P-AXIS-00299"
     assert cat.find("no_such_thing") is None
+
+
+def _tools():
+    import sys
+    from pathlib import Path
+
+    tools = Path(__file__).resolve().parents[1] / "tools"
+    if str(tools) not in sys.path:
+        sys.path.insert(0, str(tools))
+    import build_catalogue
+    import gen_model
+
+    return build_catalogue, gen_model
+
+
+def test_catalogue_and_model_are_rebuilt_from_the_repository():
+    """The committed catalogue.json and model_generated.py are exactly what the tools build from
+    tools/catalogue/params.tsv and the overrides (regenerate with `python tools/build_catalogue.py`)."""
+    build_catalogue, gen_model = _tools()
+    assert build_catalogue.OUTPUT.read_text(encoding="utf-8") == build_catalogue.catalogue_text()
+    assert gen_model.OUTPUT.read_text(encoding="utf-8") == gen_model.model_source()
+
+
+def test_overrides_can_add_a_parameter_the_table_lacks(tmp_path):
+    import pytest
+
+    build_catalogue, _ = _tools()
+    overrides = build_catalogue.OVERRIDES.read_text(encoding="utf-8") + (
+        '\n[add."P-AXIS-09999"]\npath = "kenngr.made_up_limit"\ntype = "UNS16"\nrange = "0 ≤ made_up_limit ≤ 500"\n'
+        'unit_T = "mm"\ndefault = "7"\ndrive_types = "1 4"\ntitle = "A limit for the test"\n')
+    path = tmp_path / "overrides.toml"
+    path.write_text(overrides, encoding="utf-8")
+    entry = [e for e in build_catalogue.build(build_catalogue.read_table(build_catalogue.TABLE),
+                                              build_catalogue.tomllib.loads(overrides))["parameters"]
+             if e["id"] == "P-AXIS-09999"]
+    assert entry == [{"id": "P-AXIS-09999", "path": "kenngr.made_up_limit", "type": "UNS16", "min": 0, "max": 500,
+                      "range_text": "0 ≤ made_up_limit ≤ 500", "default": 7,
+                      "units": {"T": "mm", "R": None, "S": None}, "drive_types": [1, 4],
+                      "title": "A limit for the test"}]
+    # Adding a parameter the table already has is a mistake the tool names.
+    with pytest.raises(SystemExit, match="already a row"):
+        build_catalogue.build(build_catalogue.read_table(build_catalogue.TABLE),
+                              build_catalogue.tomllib.loads(overrides.replace("P-AXIS-09999", "P-AXIS-00001")))
+
+
+def test_every_parameter_is_a_field_of_the_typed_model():
+    """No catalogue parameter is dropped by the generated model (P-AXIS-00560 `kenngr.swe_pos.zero_limit`
+    sits next to the parameter `kenngr.swe_pos` and becomes the field `swe_pos_zero_limit`)."""
+    from achslint.model import axis_model
+
+    axis = axis_model()()
+    for parameter in catalogue().parameters:
+        path = parameter.path.replace("[i]", "[0]")
+        assert axis.get(path) == parameter.typed_default or parameter.typed_default is None, path
+    assert axis.kenngr.swe_pos_zero_limit == catalogue().by_id["P-AXIS-00560"].typed_default

@@ -132,3 +132,14 @@ def test_manual_examples_name_the_strategy_the_cnc_runs(name, strategy, errors):
         assert report["strategy"]["ends_with_braking"] is False
         assert {c["error"] for c in report["corrections"]} == {"P-ERR-110421", "P-ERR-110422"}
         assert report["phases"][0]["text"].startswith("1. to the fixed stop: no move")
+
+
+@pytest.mark.parametrize(("name", "effective"), [("tr_ref_linear", False), ("tr_ref_trapezoid", True)])
+def test_ramp_time_of_homing_counts_only_with_a_non_linear_slope(name, effective):
+    """P-AXIS-00286 (tr_ref) shapes the homing moves only when getriebe[i].slope_type (P-AXIS-00270) is not
+    the step-shaped profile 0 (homing manual §3.2.4): LIS401 names it on the linear slope, and explain agrees."""
+    data = (FIXTURES / "homing" / f"{name}.lis").read_bytes()
+    codes = {d.code for d in achslint.lint(data) if d.parameter == "getriebe[0].tr_ref"}
+    assert codes == (set() if effective else {"LIS401"})
+    rows = {row["parameter"]: row for row in explain_list(data, f"{name}.lis")["parameters"]}
+    assert rows["getriebe[0].tr_ref"]["effective"] is effective

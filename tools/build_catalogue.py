@@ -1,15 +1,19 @@
-"""Build src/achslint/data/catalogue.json from the project's parameter table.
+"""Build src/achslint/data/catalogue.json from the parameter table kept in this repository.
 
 Usage:
-    python tools/build_catalogue.py PARAMS_TSV [--overrides tools/catalogue_overrides.toml]
+    python tools/build_catalogue.py            # tools/catalogue/params.tsv -> catalogue.json (+ model)
+    python tools/build_catalogue.py --check    # exit 1 when the committed files are not what it builds
+    python tools/build_catalogue.py --import-table GATHERED.tsv
+                                               # replace tools/catalogue/params.tsv from a gathered table
 
-The TSV (one row per axis parameter: id, path, aliases, type, range, units,
-default, drive types, error ids, source, notes) is the collected fact base.
-Its range and default columns are free text written for people; this script
-turns them into structured data once, so that the linter never parses prose
-at run time. Everything the table cannot express (our own one-line
-descriptions, extra aliases, known misspellings, achs_mode bits) comes from
-the overrides file.
+`tools/catalogue/params.tsv` holds facts only, one row per axis parameter: id, path, old or misspelt
+name, data type, range, units per axis type, default, drive type codes (P-AXIS-00020), CNC error ids,
+short title, array bounds, axis types, restart flag and the manual page. Its range column keeps the
+manual's range notation; this script turns it into structured bounds once, so that the linter never
+parses it at run time. Everything the table cannot express (our own one-line descriptions, extra
+aliases, known misspellings, achs_mode bits, parameters the table lacks) comes from
+`tools/catalogue_overrides.toml`. The typed model (`src/achslint/model_generated.py`) is generated
+from the catalogue in the same run. Runs on Python 3.10 and later.
 """
 
 from __future__ import annotations
@@ -19,23 +23,23 @@ import csv
 import json
 import re
 import sys
-import tomllib
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-OUTPUT = ROOT / "src" / "achslint" / "data" / "catalogue.json"
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
 
-TYPE_LIMITS = {
-    "BOOLEAN": (0, 1),
-    "UNS08": (0, 2**8 - 1),
-    "UNS16": (0, 2**16 - 1),
-    "UNS32": (0, 2**32 - 1),
-    "UNS64": (0, 2**64 - 1),
-    "SGN08": (-(2**7), 2**7 - 1),
-    "SGN16": (-(2**15), 2**15 - 1),
-    "SGN32": (-(2**31), 2**31 - 1),
-    "SGN64": (-(2**63), 2**63 - 1),
-}
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "src"))
+
+from achslint.catalogue import TYPE_LIMITS  # noqa: E402  (the one table of integer type limits)
+
+TABLE = ROOT / "tools" / "catalogue" / "params.tsv"
+OVERRIDES = ROOT / "tools" / "catalogue_overrides.toml"
+OUTPUT = ROOT / "src" / "achslint" / "data" / "catalogue.json"
+COLUMNS = ("id", "path", "alias", "alias_kind", "type", "range", "unit_T", "unit_R", "unit_S", "default",
+           "drive_types", "errors", "title", "array_bounds", "axis_types", "restart", "source")
 
 # Drive-type names used in the table's drive_types column -> P-AXIS-00020 codes.
 DRIVE_CODES = {
@@ -184,6 +188,7 @@ def _usable(bound) -> bool:
 
 
 def parse_default(raw: str, ptype: str, symbols: list[str] | None):
+    """The default column as a value: a number, a symbol, text, a parameter reference or None."""
     raw = raw.strip()
     if raw in ("", "-"):
         return None
@@ -206,6 +211,7 @@ def parse_default(raw: str, ptype: str, symbols: list[str] | None):
 
 
 def parse_notes(notes: str) -> dict:
+    """The facts in the gathered table's notes column (title, array bounds, axis types, restart)."""
     info: dict = {}
     title = re.search(r"title: ([^;]+)", notes)
     if title:
@@ -220,7 +226,7 @@ def parse_notes(notes: str) -> dict:
     if axis:
         info["axis_types"] = axis.group(1).split(",")
     if re.search(r"not for spindles", notes):
-        info["not_for_spindles"] = True
+        info["axis_types"] = [a for a in info.get("axis_types", ["T", "R", "S"]) if a != "S"]
     if re.search(r"not taken over on list update|change needs restart|ChangeRequiresRestart", notes):
         info["restart"] = True
     return info
@@ -245,84 +251,129 @@ def clean_path(raw: str) -> str:
     return raw.strip().split(" ")[0]
 
 
-def index_bounds(path: str, array_bounds: dict, overrides: dict) -> list[list[int]]:
+def import_table(gathered: Path) -> list[dict[str, str]]:
+    """Rows of our facts table from a gathered parameter table (columns p_axis_id, path, aliases, type,
+    range, unit_T/R/S, default, drive_types, error_ids, source_url, notes): drive type names become
+    P-AXIS-00020 codes, the notes become columns, only the first source address is kept."""
+    rows = []
+    with gathered.open(encoding="utf-8", newline="") as handle:
+        for row in csv.DictReader(handle, delimiter="\t"):
+            path = clean_path(row["path"])
+            notes = parse_notes(row["notes"])
+            alias = clean_path(row["aliases"]) if row["aliases"].strip() else ""
+            codes = drive_codes(row["drive_types"]) or []
+            restart = notes.get("restart") or row["p_axis_id"].strip() in RESTART_IDS
+            rows.append({
+                "id": row["p_axis_id"].strip(),
+                "path": path,
+                "alias": alias if alias != path else "",
+                "alias_kind": ("misspelling" if "spelling" in row["aliases"] else "old") if alias and alias != path else "",
+                "type": row["type"].strip(),
+                "range": row["range"].strip(),
+                **{f"unit_{axis}": unit_of(row[f"unit_{axis}"]) or "" for axis in "TRS"},
+                "default": row["default"].strip(),
+                "drive_types": " ".join(str(code) for code in codes),
+                "errors": " ".join(row["error_ids"].split()),
+                "title": notes.get("title", ""),
+                "array_bounds": " ".join(f"{name}={low}..{high}" for name, (low, high) in notes.get("array_bounds", {}).items()),
+                "axis_types": ",".join(notes.get("axis_types", [])),
+                "restart": "1" if restart else "",
+                "source": (row["source_url"].split() or [""])[0],
+            })
+    return rows
+
+
+def write_table(rows: list[dict[str, str]], path: Path) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("w", encoding="utf-8", newline="") as handle:
+        writer = csv.DictWriter(handle, COLUMNS, delimiter="\t", lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def read_table(path: Path) -> list[dict[str, str]]:
+    with path.open(encoding="utf-8", newline="") as handle:
+        rows = list(csv.DictReader(handle, delimiter="\t"))
+    for number, row in enumerate(rows, start=2):
+        if None in row or any(value is None for value in row.values()):
+            raise SystemExit(f"{path}:{number}: expected {len(COLUMNS)} tab-separated columns")
+    return rows
+
+
+def index_bounds(path: str, array_bounds: dict, defaults: dict) -> list[list[int]]:
     """Bounds for each `[i]` placeholder of the path, in order."""
     result = []
     for member in re.findall(r"(\w+)\[i\]", path):
-        bound = array_bounds.get(member) or overrides.get(member)
+        bound = array_bounds.get(member) or defaults.get(member)
         if bound is None:
             raise SystemExit(f"no array bounds known for {member!r} in {path}")
         result.append(list(bound))
     return result
 
 
-def build(tsv: Path, overrides_path: Path) -> dict:
-    overrides = tomllib.loads(overrides_path.read_text(encoding="utf-8"))
-    default_bounds = overrides.get("array_bounds", {})
-    per_param = overrides.get("parameter", {})
-    entries = []
-    with tsv.open(encoding="utf-8", newline="") as handle:
-        for row in csv.DictReader(handle, delimiter="\t"):
-            pid = row["p_axis_id"].strip()
-            path = clean_path(row["path"])
-            ptype = row["type"].strip()
-            notes = parse_notes(row["notes"])
-            rng = parse_range(row["range"].strip(), ptype)
-            extra = per_param.get(pid, {})
-            entry: dict = {"id": pid, "path": path, "type": ptype}
-            aliases = []
-            if row["aliases"].strip():
-                alias = clean_path(row["aliases"])
-                if alias != path:
-                    kind = "misspelling" if "spelling" in row["aliases"] else "old"
-                    aliases.append({"path": alias, "kind": kind})
-            aliases.extend(extra.get("aliases", []))
-            if aliases:
-                entry["aliases"] = aliases
-            bounds = index_bounds(path, notes.get("array_bounds", {}), default_bounds)
-            if bounds:
-                entry["index_bounds"] = bounds
-            for key in ("symbols", "symbol_codes", "allowed", "max_length"):
-                if key in rng:
-                    entry[key] = rng[key]
-            for key in ("min", "max"):
-                if rng.get(key) is not None:
-                    entry[key] = rng[key]
-                    if rng.get(f"{key}_strict"):
-                        entry[f"{key}_strict"] = True
-            entry["range_text"] = row["range"].strip()
-            entry["default"] = parse_default(row["default"], ptype, entry.get("symbols"))
-            units = {axis: unit_of(row[f"unit_{axis}"]) for axis in "TRS"}
-            if any(units.values()):
-                entry["units"] = units
-            codes = drive_codes(row["drive_types"])
-            if codes:
-                entry["drive_types"] = codes
-            for prefix, group_codes in overrides.get("drive_groups", {}).items():
-                if path.startswith(prefix):
-                    entry["drive_group"] = group_codes
-            if "axis_types" in notes:
-                entry["axis_types"] = notes["axis_types"]
-            if notes.get("not_for_spindles"):
-                entry["axis_types"] = [a for a in entry.get("axis_types", ["T", "R", "S"]) if a != "S"]
-            if notes.get("restart") or pid in RESTART_IDS:
-                entry["restart"] = True
-            if row["error_ids"].strip():
-                entry["errors"] = row["error_ids"].split()
-            if notes.get("title"):
-                entry["title"] = notes["title"]
-            if extra.get("description"):
-                entry["description"] = extra["description"]
-            urls = row["source_url"].split()
-            if urls:
-                entry["source"] = urls[0]
-            entry.update(extra.get("set", {}))
-            for key in extra.get("drop", []):
-                entry.pop(key, None)
-            entries.append(entry)
+def entry_of(row: dict[str, str], overrides: dict) -> dict:
+    """One catalogue entry from a row of the facts table and the overrides."""
+    pid, path, ptype = row["id"], row["path"], row["type"]
+    extra = overrides.get("parameter", {}).get(pid, {})
+    rng = parse_range(row["range"], ptype)
+    entry: dict = {"id": pid, "path": path, "type": ptype}
+    aliases = [{"path": row["alias"], "kind": row["alias_kind"] or "old"}] if row["alias"] else []
+    aliases.extend(extra.get("aliases", []))
+    if aliases:
+        entry["aliases"] = aliases
+    array_bounds = {name: [int(low), int(high)] for name, low, high in
+                    re.findall(r"(\w+)=(\d+)\.\.(\d+)", row["array_bounds"])}
+    bounds = index_bounds(path, array_bounds, overrides.get("array_bounds", {}))
+    if bounds:
+        entry["index_bounds"] = bounds
+    for key in ("symbols", "symbol_codes", "allowed", "max_length"):
+        if key in rng:
+            entry[key] = rng[key]
+    for key in ("min", "max"):
+        if rng.get(key) is not None:
+            entry[key] = rng[key]
+            if rng.get(f"{key}_strict"):
+                entry[f"{key}_strict"] = True
+    entry["range_text"] = row["range"]
+    entry["default"] = parse_default(row["default"], ptype, entry.get("symbols"))
+    units = {axis: row[f"unit_{axis}"] or None for axis in "TRS"}
+    if any(units.values()):
+        entry["units"] = units
+    if row["drive_types"]:
+        entry["drive_types"] = [int(code) for code in row["drive_types"].split()]
+    for prefix, group_codes in overrides.get("drive_groups", {}).items():
+        if path.startswith(prefix):
+            entry["drive_group"] = group_codes
+    if row["axis_types"]:
+        entry["axis_types"] = row["axis_types"].split(",")
+    if row["restart"] == "1":
+        entry["restart"] = True
+    if row["errors"]:
+        entry["errors"] = row["errors"].split()
+    if row["title"]:
+        entry["title"] = row["title"]
+    if extra.get("description"):
+        entry["description"] = extra["description"]
+    if row["source"]:
+        entry["source"] = row["source"]
+    entry.update(extra.get("set", {}))
+    for key in extra.get("drop", []):
+        entry.pop(key, None)
+    return entry
+
+
+def build(rows: list[dict[str, str]], overrides: dict) -> dict:
+    """The catalogue: every row of the table, then the parameters the overrides add (`[add."P-AXIS-…"]`,
+    with the table's columns as keys)."""
+    known = {row["id"] for row in rows}
+    added = []
+    for pid, fields in overrides.get("add", {}).items():
+        if pid in known:
+            raise SystemExit(f"{OVERRIDES.name}: [add.\"{pid}\"] is already a row of the table; use [parameter.\"{pid}\"]")
+        added.append({column: str(fields.get(column, "")) for column in COLUMNS} | {"id": pid})
     return {
         "version": 1,
-        "parameters": entries,
+        "parameters": [entry_of(row, overrides) for row in rows + added],
         "misspellings": overrides.get("misspellings", {}),
         "bitfields": overrides.get("bitfields", {}),
         "drive_types": overrides.get("drive_types", {}),
@@ -341,17 +392,36 @@ def dump(catalogue: dict) -> str:
     return "\n".join(parts) + "\n"
 
 
+def catalogue_text(table: Path = TABLE, overrides: Path = OVERRIDES) -> str:
+    """What catalogue.json should hold, built from the repository's files."""
+    return dump(build(read_table(table), tomllib.loads(overrides.read_text(encoding="utf-8"))))
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("tsv", type=Path)
-    parser.add_argument("--overrides", type=Path, default=ROOT / "tools" / "catalogue_overrides.toml")
+    parser.add_argument("--import-table", type=Path, metavar="GATHERED_TSV",
+                        help="rewrite tools/catalogue/params.tsv from a gathered parameter table first")
+    parser.add_argument("--check", action="store_true", help="change nothing; exit 1 if a generated file is stale")
     parser.add_argument("--output", type=Path, default=OUTPUT)
     args = parser.parse_args(argv)
-    catalogue = build(args.tsv, args.overrides)
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    if args.import_table:
+        rows = import_table(args.import_table)
+        write_table(rows, TABLE)
+        print(f"wrote {len(rows)} rows to {TABLE}", file=sys.stderr)
+    import gen_model  # after the catalogue exists: the model is generated from it
+
+    text = catalogue_text()
+    if args.check:
+        current = args.output.read_text(encoding="utf-8") if args.output.exists() else ""
+        if current != text:
+            print(f"{args.output} is stale: run python tools/build_catalogue.py", file=sys.stderr)
+            return 1
+        return gen_model.main(["--check"])
     args.output.parent.mkdir(parents=True, exist_ok=True)
-    args.output.write_text(dump(catalogue), encoding="utf-8")
-    print(f"wrote {len(catalogue['parameters'])} parameters to {args.output}", file=sys.stderr)
-    return 0
+    args.output.write_text(text, encoding="utf-8")
+    print(f"wrote {text.count(chr(10) + '  {')} parameters to {args.output}", file=sys.stderr)
+    return gen_model.main([])
 
 
 if __name__ == "__main__":

@@ -1,4 +1,7 @@
-"""The typed axis model: pydantic v2 classes generated from the catalogue.
+"""The typed axis model: building it from a list, validating it, and writing it back as a list.
+
+The classes are plain pydantic v2 code generated from the catalogue into `model_generated.py`
+(`python tools/build_catalogue.py`); their shared behaviour is `model_base.AxisBase`.
 
 `AxisParameters` mirrors the list structure: `kopf`, `kenngr` (with
 `kenngr.homing`), `getriebe[0..5]`, `lr_hw[0..1]`, `antr` (with `simu`,
@@ -23,197 +26,29 @@ from __future__ import annotations
 
 import keyword
 import re
-from dataclasses import dataclass
-from functools import lru_cache
-from typing import Any, Literal, Optional
+from typing import Any
 
-from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, ValidationInfo, create_model, model_validator
+from pydantic import BaseModel, ValidationError
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from .catalogue import BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue
+from .catalogue import catalogue
+from .model_base import DEFAULT, AxisBase, Source
 
-
-@dataclass(frozen=True, slots=True)
-class Source:
-    """Where an effective value came from."""
-
-    kind: str  # "list", "default list" or "default"
-    file: str | None = None
-    line: int | None = None
-    column: int | None = None
-
-    def __str__(self) -> str:
-        if self.kind == "default":
-            return "default"
-        return f"{self.file}:{self.line}:{self.column}"
-
-
-DEFAULT = Source("default")
-
-
-class _Node:
-    def __init__(self) -> None:
-        self.children: dict[str, _Node] = {}
-        self.bounds: tuple[int, int] | None = None  # this member is an array
-        self.parameter: Parameter | None = None
-
-
-# Catalogue paths whose group is itself a parameter (`kenngr.swe_pos.zero_limit`, P-AXIS-00560, next to
-# `kenngr.swe_pos`): the model keeps them as one field of the parent group, named by joining the rest with "_".
-_JOINED: dict[str, tuple[str, str]] = {}  # catalogue path -> (written rest, field name)
-
-
-def _tree() -> _Node:
-    root = _Node()
-    for parameter in catalogue().parameters:
-        node = root
-        segments = parameter.path.split(".")
-        bounds = iter(parameter.index_bounds)
-        for position, segment in enumerate(segments):
-            name, is_array = segment.replace("[i]", ""), "[i]" in segment
-            last = position == len(segments) - 1
-            child = node.children.get(name)
-            if not last and child is not None and child.parameter is not None and "[i]" not in parameter.path:
-                rest = ".".join(segments[position:])
-                _JOINED[parameter.path] = (rest, rest.replace(".", "_"))
-                child = node.children[rest] = _Node()
-                child.parameter = parameter
-                break
-            if child is None:
-                child = node.children[name] = _Node()
-            if is_array:
-                child.bounds = next(bounds)
-            node = child
-            if last:
-                node.parameter = parameter
-    return root
+__all__ = ["DEFAULT", "AxisBase", "Source", "axis_model", "build_model", "dumps", "json_schema", "rule_errors"]
 
 
 def _field_name(name: str) -> str:
+    """The Python name of a list member (the generator's rule: keywords and `model_*` get a trailing "_")."""
     if "." in name:
         return name.replace(".", "_")
-    return name + "_" if keyword.iskeyword(name) or name in ("model_config",) or name.startswith("model_") else name
+    return name + "_" if keyword.iskeyword(name) or name.startswith("model_") else name
 
 
-def _class_name(path: list[str]) -> str:
-    return "".join(part.capitalize() for part in re.split(r"[_\W]+", "_".join(path)) if part) or "AxisParameters"
+def axis_model() -> type[AxisBase]:
+    """The `AxisParameters` class of `model_generated.py` (imported on first use: building it takes a while)."""
+    from .model_generated import AxisParameters
 
-
-def _leaf_type(parameter: Parameter) -> tuple[Any, dict]:
-    kind = parameter.kind
-    constraints: dict = {}
-    if kind == BOOL:
-        return bool, constraints
-    if kind == SYMBOL:
-        return Literal[tuple(parameter.symbols)], constraints
-    if kind in (INTEGER, REAL):
-        low, high = parameter.limits
-        if low is not None:
-            constraints["ge"] = low
-        if high is not None:
-            constraints["le"] = high
-        if kind == REAL:
-            return float, constraints
-        return (int | str if parameter.symbols else int), constraints
-    if parameter.max_length:
-        constraints["max_length"] = max(parameter.max_length, len(str(parameter.default or "")))
-    return str, constraints
-
-
-def _description(parameter: Parameter) -> str:
-    text = f"{parameter.id}: {parameter.summary}".rstrip(": ")
-    unit = parameter.unit("T")
-    if unit:
-        text += f" [{unit}]"
-    return text
-
-
-def _build(node: _Node, path: list[str]) -> type[BaseModel]:
-    fields: dict[str, Any] = {}
-    for name, child in node.children.items():
-        field_name = _field_name(name)
-        extra = {"alias": name} if field_name != name else {}
-        if child.parameter is not None:
-            parameter = child.parameter
-            annotation, constraints = _leaf_type(parameter)
-            default = parameter.typed_default
-            if default is None:
-                annotation = Optional[annotation]
-            description = _description(parameter)
-            if child.bounds is not None:
-                size = child.bounds[1] + 1
-                fields[field_name] = (
-                    list[annotation],
-                    Field(default_factory=lambda d=default, n=size: [d] * n, min_length=size, max_length=size,
-                          description=description, **extra),
-                )
-            else:
-                fields[field_name] = (annotation, Field(default, description=description, **constraints, **extra))
-            continue
-        sub = _build(child, path + [name])
-        if child.bounds is not None:
-            size = child.bounds[1] + 1
-            fields[field_name] = (
-                list[sub],
-                Field(default_factory=lambda cls=sub, n=size: [cls() for _ in range(n)], min_length=size,
-                      max_length=size, **extra),
-            )
-        else:
-            fields[field_name] = (sub, Field(default_factory=sub, **extra))
-    config = ConfigDict(populate_by_name=True, extra="forbid", validate_default=False)
-    return create_model(_class_name(path), __config__=config, **fields)
-
-
-class _AxisBase(BaseModel):
-    """Shared behaviour of the generated root model."""
-
-    model_config = ConfigDict(populate_by_name=True, extra="forbid")
-    unknown: dict[str, str] = Field(default_factory=dict, description="Parameters the catalogue does not know, as written.")
-    _sources: dict[str, Source] = PrivateAttr(default_factory=dict)
-    _corrections: list = PrivateAttr(default_factory=list)
-    _findings: list = PrivateAttr(default_factory=list)
-
-    @property
-    def corrections(self) -> list:
-        """The CNC's load-time corrections (`resolved.Correction`) behind the values of this model."""
-        return list(self._corrections)
-
-    @property
-    def findings(self) -> list:
-        """The diagnostics `achslint lint` reports for the list this model was loaded from."""
-        return list(self._findings)
-
-    @model_validator(mode="after")
-    def _cross_rules(self, info: ValidationInfo):
-        """The cross-parameter rules, run by the same rule code as `achslint lint` on the axis the data describes."""
-        if info.context and info.context.get("lenient"):
-            return self
-        errors = [d for d in _rule_findings(dumps(self)) if d.severity.value == "error"]
-        if errors:
-            raise rule_errors(errors)
-        return self
-
-    def source_of(self, path: str) -> Source:
-        """Where the effective value of a canonical path (`getriebe[0].vb_reflow`) came from."""
-        return self._sources.get(path, DEFAULT)
-
-    def get(self, path: str) -> Any:
-        """The effective value of a canonical path, e.g. `getriebe[0].vb_reflow`."""
-        value: Any = self
-        for name, index in _parts(path):
-            value = getattr(value, _field_name(name))
-            if index:
-                value = value[int(index)]
-        return value
-
-
-@lru_cache(maxsize=1)
-def axis_model() -> type[BaseModel]:
-    """The generated `AxisParameters` class (built once per process)."""
-    root = _tree()
-    groups = _build(root, [])
-    fields = {name: (info.annotation, info) for name, info in groups.model_fields.items()}
-    return create_model("AxisParameters", __base__=_AxisBase, **fields)
+    return AxisParameters
 
 
 def json_schema() -> dict:
@@ -225,7 +60,9 @@ def json_schema() -> dict:
 
 def _parts(path: str) -> list[tuple[str, str]]:
     """A canonical path as (member, index) pairs of the model, joined groups as one member."""
-    for catalogue_path, (rest, field) in _JOINED.items():
+    from .model_generated import JOINED
+
+    for catalogue_path, (rest, field) in JOINED.items():
         if path == catalogue_path:
             return _parts(path[: -len(rest) - 1]) + [(field, "")]
     return re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", path)
