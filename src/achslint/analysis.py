@@ -2,13 +2,13 @@
 
 For every assignment the CNC would read, this stage finds the catalogue entry
 (by canonical name or alias), converts the written value to the parameter's
-type and records each problem with the value. Rules then report what this
-stage found; no rule parses values itself.
+type and records what it could not convert as a fact (`facts.py`). Rule
+modules turn those facts into findings; no rule parses values itself, and this
+module holds no rule code or message text.
 """
 
 from __future__ import annotations
 
-import difflib
 import re
 from dataclasses import dataclass, field
 
@@ -25,18 +25,26 @@ from .catalogue import (
     Resolution,
     catalogue,
 )
+from .facts import (
+    BadReference,
+    CommentReadAsValue,
+    IndexOutOfBounds,
+    MissingValue,
+    NotAccepted,
+    NotBoolean,
+    NotPositive,
+    OutOfRange,
+    RealForInteger,
+    TextAfterString,
+    TextForNumber,
+    TooLong,
+    UnknownSymbol,
+    UnusableNumber,
+    ValueFact,
+)
 from .numbers import NumberProblem, Reference, parse_hex, parse_int, parse_real, parse_reference
-from .units import describe, unit_label
 
-__all__ = ["Analysis", "Reference", "Setting", "ValueProblem", "analyse", "comment_in_value_position"]
-
-
-@dataclass(slots=True)
-class ValueProblem:
-    code: str
-    message: str
-    replacement: str | None = None  # a value that would fix it, when there is a clear one
-    span: object = "value"  # the part of the line at fault: "value", "rest" or (column, end_column)
+__all__ = ["Analysis", "Reference", "Setting", "analyse", "comment_in_value_position"]
 
 
 @dataclass(slots=True, eq=False)
@@ -46,7 +54,7 @@ class Setting:
     line: syntax.Line
     resolution: Resolution | None
     value: object = None
-    problems: tuple[ValueProblem, ...] = ()  # a tuple: most settings have none and share the empty one
+    problems: tuple[ValueFact, ...] = ()  # a tuple: most settings have none and share the empty one
     misspelt: bool = field(init=False)
     canonical: str | None = field(init=False)  # canonical concrete path; None when unknown
 
@@ -83,14 +91,8 @@ class Setting:
         alias = self.resolution.alias if self.resolution else None
         return alias.kind if alias else "canonical"
 
-    def add_problem(self, problem: ValueProblem) -> None:
+    def add_problem(self, problem: ValueFact) -> None:
         self.problems = (*self.problems, problem)
-
-    def problem(self, code: str) -> ValueProblem | None:
-        for problem in self.problems:
-            if problem.code == code:
-                return problem
-        return None
 
 
 @dataclass(slots=True)
@@ -142,15 +144,10 @@ def _check_indices(setting: Setting) -> None:
     for position, (index, (low, high)) in enumerate(zip(setting.resolution.indices, parameter.index_bounds)):
         if low <= index <= high:
             continue
-        array = arrays[position]
         start = line.path_column + written[position].start()
-        shown = index if index != syntax.HUGE else f"`{written[position].group(0)[1:-1]}`"
-        setting.add_problem(ValueProblem(
-            "LIS104",
-            f"index {shown} of `{array}` in `{line.path}` is out of bounds: {parameter.id} allows "
-            f"{array}[{low}]..{array}[{high}] (indices are zero-based)",
-            span=(start, start + len(written[position].group(0))),
-        ))
+        text = written[position].group(0)
+        setting.add_problem(IndexOutOfBounds(arrays[position], None if index == syntax.HUGE else index, text[1:-1],
+                                             low, high, (start, start + len(text))))
 
 
 def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
@@ -186,13 +183,6 @@ def _as_int(line: syntax.Line) -> int | NumberProblem | None:
     return None
 
 
-def _unusable_number(setting: Setting, text: str, problem: NumberProblem) -> None:
-    parameter = setting.parameter
-    holds = f", far more than a {parameter.type} holds" if problem.reason == "digits" else ""
-    setting.add_problem(ValueProblem(
-        "LIS202", f"`{setting.canonical}` = `{text}` {problem}{holds}; {_expected(parameter)} is expected"))
-
-
 def comment_in_value_position(line: syntax.Line) -> bool:
     """True when the 'value' is really the start of a comment (`name   # text`)."""
     value = line.value or ""
@@ -207,10 +197,9 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
     value_kind = line.value_kind
     text = line.value or ""
     unit = parameter.unit(analysis.axis_type)
-    name = setting.canonical
 
     if value_kind == syntax.BAD_STRING:
-        return  # reported as a syntax error (LIS001)
+        return  # a syntax error, reported with the line
     if value_kind == syntax.REFERENCE:
         setting.value = _reference(setting, cat, analysis)
         return
@@ -219,20 +208,13 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
         if kind in (STRING,):
             setting.value = ""
             return
-        add_problem(ValueProblem("LIS201", f"`{name}` has no value; {_expected(parameter)} is expected"))
+        add_problem(MissingValue())
         return
     if comment_in_value_position(line):
         if kind in (STRING, SYMBOL):
-            add_problem(
-                ValueProblem(
-                    "LIS007",
-                    f"`{name}` is a string parameter: the CNC reads `{_value_and_rest(line)}` as its value, not as a comment "
-                    f"(after a string only `(` starts a comment); to leave it empty write nothing after the name "
-                    f"or start the comment with `(`",
-                )
-            )
+            add_problem(CommentReadAsValue((line.value or "") + line.sep2 + (line.rest or "")))
         else:
-            add_problem(ValueProblem("LIS201", f"`{name}` has no value (`{text}` starts a comment); {_expected(parameter)} is expected"))
+            add_problem(MissingValue(text))
         return
 
     if kind == BOOL:
@@ -246,54 +228,20 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
     else:
         setting.value = text[1:-1] if value_kind == syntax.STRING else text
         if parameter.max_length is not None and len(setting.value) > parameter.max_length:
-            add_problem(
-                ValueProblem(
-                    "LIS206",
-                    f"`{name}` is {len(setting.value)} characters long; the CNC stores at most "
-                    f"{parameter.max_length} characters for this parameter, shorten the value",
-                )
-            )
+            add_problem(TooLong(len(setting.value), parameter.max_length))
     textual = value_kind in (syntax.SYMBOL, syntax.STRING)
     if kind in (STRING, SYMBOL) and textual and line.rest is not None and not line.rest.startswith("("):
-        add_problem(
-            ValueProblem(
-                "LIS007",
-                f"text `{line.rest}` after the string value of `{name}` is not a `(` comment; the CNC reads it "
-                f"as part of the value or rejects the line; start the comment with `(`",
-                span="rest",
-            )
-        )
-
-
-def _value_and_rest(line: syntax.Line) -> str:
-    return (line.value or "") + line.sep2 + (line.rest or "")
-
-
-def _expected(parameter: Parameter) -> str:
-    kind = parameter.kind
-    if kind == BOOL:
-        return "0 or 1"
-    if kind == INTEGER:
-        return f"an integer ({parameter.type})"
-    if kind == REAL:
-        return "a number (REAL64)"
-    if kind == SYMBOL:
-        return "one of " + ", ".join(parameter.symbols)
-    return "a string"
+        add_problem(TextAfterString(line.rest))
 
 
 def _check_bool(setting: Setting, text: str, value_kind: str) -> None:
     parameter = setting.parameter
-    name = setting.canonical
     if value_kind in (syntax.INT, syntax.HEX):
         number = _as_int(setting.line)
         if number in (0, 1):
             setting.value = bool(number)
             return
-        setting.add_problem(
-            ValueProblem("LIS201", f"`{name}` is BOOLEAN: write 0 (off) or 1 (on), not `{text}`",
-                         replacement="1" if number else "0")
-        )
+        setting.add_problem(NotBoolean(text, replacement="1" if number else "0"))
         return
     if value_kind == syntax.SYMBOL:
         if text in ("TRUE", "FALSE"):
@@ -305,18 +253,15 @@ def _check_bool(setting: Setting, text: str, value_kind: str) -> None:
         if parameter.symbols:
             _unknown_symbol(setting, text)
             return
-    setting.add_problem(
-        ValueProblem("LIS201", f"`{name}` is BOOLEAN: write 0 (off) or 1 (on), not `{text}`")
-    )
+    setting.add_problem(NotBoolean(text))
 
 
 def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | None) -> None:
     parameter = setting.parameter
-    name = setting.canonical
     if value_kind in (syntax.INT, syntax.HEX):
         number = _as_int(setting.line)
         if isinstance(number, NumberProblem):
-            _unusable_number(setting, text, number)
+            setting.add_problem(UnusableNumber(text, number))
             return
         setting.value = number
         _check_range(setting, number, unit)
@@ -328,76 +273,39 @@ def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | Non
         _unknown_symbol(setting, text)
         return
     if value_kind == syntax.REAL:
-        message = f"`{name}` is an integer parameter ({parameter.type}) but `{text}` is a real number"
-        replacement = None
         as_float = parse_real(text)
-        if isinstance(as_float, float) and as_float.is_integer():
-            replacement = str(int(as_float))
-            message += f"; write `{replacement}`"
-        setting.add_problem(ValueProblem("LIS201", message, replacement))
+        whole = isinstance(as_float, float) and as_float.is_integer()
+        setting.add_problem(RealForInteger(text, str(int(as_float)) if whole else None))
         return
-    setting.add_problem(
-        ValueProblem("LIS201", f"`{name}` expects {_expected(parameter)}, not the text `{text}`")
-    )
+    setting.add_problem(TextForNumber(text))
 
 
 def _check_real(setting: Setting, text: str, value_kind: str, unit: str | None) -> None:
     if value_kind in (syntax.INT, syntax.HEX, syntax.REAL):
         number = parse_real(text)
         if isinstance(number, NumberProblem):
-            _unusable_number(setting, text, number)
+            setting.add_problem(UnusableNumber(text, number))
             return
         setting.value = number
         _check_range(setting, number, unit)
         return
-    setting.add_problem(
-        ValueProblem("LIS201", f"`{setting.canonical}` expects a number (REAL64), not the text `{text}`")
-    )
+    setting.add_problem(TextForNumber(text))
 
 
 def _check_range(setting: Setting, number: float, unit: str | None) -> None:
     parameter = setting.parameter
-    name = setting.canonical
     if parameter.allowed:
         if number not in parameter.allowed and number != parameter.default:
-            codes = ", ".join(str(a) for a in parameter.allowed)
-            setting.add_problem(
-                ValueProblem("LIS202", f"`{name}` = {number} is not an accepted value; accepted: {codes}")
-            )
+            setting.add_problem(NotAccepted(number, tuple(parameter.allowed)))
         return
     low, high = parameter.limits
     if parameter.strict_positive_real and number <= 0 and number != parameter.default:
-        setting.add_problem(
-            ValueProblem("LIS202", f"`{name}` = {describe(number, unit)} must be greater than 0")
-        )
+        setting.add_problem(NotPositive(number, unit))
         return
     if low is not None and number < low:
-        setting.add_problem(
-            ValueProblem(
-                "LIS202",
-                f"`{name}` = {describe(number, unit)} is below the minimum {describe(low, unit)}"
-                f"{_range_hint(parameter)}; use a value of at least {_plain(low)}",
-            )
-        )
+        setting.add_problem(OutOfRange(number, low, None, unit))
     elif high is not None and number > high:
-        setting.add_problem(
-            ValueProblem(
-                "LIS202",
-                f"`{name}` = {describe(number, unit)} is above the maximum {describe(high, unit)}"
-                f"{_range_hint(parameter)}; use a value of at most {_plain(high)}",
-            )
-        )
-
-
-def _plain(value: float) -> str:
-    return str(int(value)) if float(value).is_integer() else f"{value:g}"
-
-
-def _range_hint(parameter: Parameter) -> str:
-    text = parameter.range_text.split(";")[0].strip()
-    if not text or text.startswith("("):
-        return f" of {parameter.type}"
-    return f" (manual range: {text})"
+        setting.add_problem(OutOfRange(number, None, high, unit))
 
 
 def _check_symbol(setting: Setting, text: str, value_kind: str) -> None:
@@ -419,73 +327,34 @@ def _check_symbol(setting: Setting, text: str, value_kind: str) -> None:
 
 def _unknown_symbol(setting: Setting, text: str) -> None:
     parameter = setting.parameter
-    choices = list(parameter.symbols)
-    match = difflib.get_close_matches(text, choices, n=1, cutoff=0.6)
-    if not match:
-        upper = [c for c in choices if c == text.upper()]
-        match = upper
-    message = f"`{text}` is not a value of `{setting.canonical}`"
-    if match:
-        message += f" (did you mean `{match[0]}`?)"
-    message += "; accepted: " + ", ".join(choices)
-    if parameter.symbol_codes:
-        message += " (or their numbers " + ", ".join(str(c) for c in parameter.symbol_codes.values()) + ")"
-    strong = difflib.get_close_matches(text, choices, n=2, cutoff=0.8)
-    if not strong and match and match[0] == text.upper():
-        strong = match
-    # Only an unambiguous, close match is offered as a fix.
-    replacement = strong[0] if len(strong) == 1 else None
-    setting.add_problem(ValueProblem("LIS203", message, replacement=replacement))
+    setting.add_problem(UnknownSymbol(text, tuple(parameter.symbols), tuple(parameter.symbol_codes.values())))
 
 
 def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Reference | None:
     parameter = setting.parameter
-    name = setting.canonical
-    reference = parse_reference(setting.line.value or "")
+    written = setting.line.value or ""
+    reference = parse_reference(written)
     if isinstance(reference, NumberProblem):
-        setting.add_problem(ValueProblem("LIS205", f"`{name}` refers to `{setting.line.value}`, which {reference}"))
+        setting.add_problem(BadReference("unreadable", written, problem=reference))
         return None
-    target_id, index = reference.target, reference.index
-    target = cat.by_id.get(target_id)
+    target = cat.by_id.get(reference.target)
+    problem = None
     if target is None:
-        setting.add_problem(
-            ValueProblem("LIS205", f"`{name}` refers to {target_id}, which is not an axis parameter")
-        )
-        return None
-    if target.id == parameter.id:
-        setting.add_problem(
-            ValueProblem("LIS205", f"`{name}` refers to itself ({reference}); write a value instead")
-        )
-        return None
-    if _category(target) != _category(parameter):
-        setting.add_problem(
-            ValueProblem(
-                "LIS205",
-                f"`{name}` ({parameter.type}) refers to {target_id} `{target.path}`, which is {target.type}; "
-                f"a reference must name a parameter of the same kind",
-            )
-        )
-        return None
-    own_unit, target_unit = parameter.unit(analysis.axis_type), target.unit(analysis.axis_type)
-    if own_unit != target_unit:
-        setting.add_problem(
-            ValueProblem(
-                "LIS205",
-                f"`{name}` is in {unit_label(own_unit) or 'no unit'} but refers to {target_id} `{target.path}` "
-                f"in {unit_label(target_unit) or 'no unit'}; the CNC rejects references with different units",
-            )
-        )
-        return None
-    if index is not None and target.index_bounds:
+        problem = BadReference("unknown", written, reference)
+    elif target.id == parameter.id:
+        problem = BadReference("itself", written, reference)
+    elif _category(target) != _category(parameter):
+        problem = BadReference("kind", written, reference, target_path=target.path, target_type=target.type)
+    elif parameter.unit(analysis.axis_type) != target.unit(analysis.axis_type):
+        problem = BadReference("unit", written, reference, target_path=target.path,
+                               own_unit=parameter.unit(analysis.axis_type), target_unit=target.unit(analysis.axis_type))
+    elif reference.index is not None and target.index_bounds:
         low, high = target.index_bounds[0]
-        if not low <= index <= high:
-            setting.add_problem(
-                ValueProblem(
-                    "LIS205",
-                    f"`{name}` refers to {reference}, but {target_id} has indices {low}..{high} only",
-                )
-            )
-            return None
+        if not low <= reference.index <= high:
+            problem = BadReference("index", written, reference, low=low, high=high)
+    if problem is not None:
+        setting.add_problem(problem)
+        return None
     return reference
 
 

@@ -2,29 +2,42 @@
 
 from __future__ import annotations
 
+from ..catalogue import BOOL, INTEGER, REAL, SYMBOL
 from ..diagnostics import Edit, Fix
 
 
-def value_problems(ctx, code: str, fix_applicability: str | None = None):
-    """Report every problem of kind `code` that the analysis stage found in a value.
+def value_facts(ctx, code: str, kinds: tuple[type, ...], message, replacement=None, applicability: str = "safe"):
+    """Report every fact of the given kinds that the conversion stage recorded for a value.
 
-    With `fix_applicability`, a problem that carries a replacement value gets a
-    fix that writes it in place of the old value.
+    `message(fact, setting)` words the finding; `replacement(fact)`, when given and not None, is a value
+    written in place of the old one as a fix of the given applicability.
     """
     for setting in ctx.settings:
-        for problem in setting.problems:
-            if problem.code != code:
+        for fact in setting.problems:
+            if not isinstance(fact, kinds):
                 continue
             line = setting.line
-            start, end = ctx.problem_span(line, problem.span)
+            start, end = ctx.problem_span(line, fact.span)
+            new = replacement(fact) if replacement is not None else None
             fix = None
-            if fix_applicability and problem.replacement is not None and line.value is not None:
-                fix = Fix(
-                    fix_applicability,
-                    f"replace `{line.value}` with `{problem.replacement}`",
-                    (Edit(line.number, start, line.number, start + len(line.value), problem.replacement),),
-                )
-            yield ctx.report(code, line, problem.message, column=start, end_column=end, setting=setting, fix=fix)
+            if new is not None and line.value is not None:
+                fix = Fix(applicability, f"replace `{line.value}` with `{new}`",
+                          (Edit(line.number, start, line.number, start + len(line.value), new),))
+            yield ctx.report(code, line, message(fact, setting), column=start, end_column=end, setting=setting, fix=fix)
+
+
+def expected(parameter) -> str:
+    """What a value of the parameter looks like, for messages."""
+    kind = parameter.kind
+    if kind == BOOL:
+        return "0 or 1"
+    if kind == INTEGER:
+        return f"an integer ({parameter.type})"
+    if kind == REAL:
+        return "a number (REAL64)"
+    if kind == SYMBOL:
+        return "one of " + ", ".join(parameter.symbols)
+    return "a string"
 
 
 def replace_path_fix(line, new_path: str, applicability: str) -> Fix:

@@ -32,17 +32,32 @@ documented inconsistency E.49.
 
 from __future__ import annotations
 
+from ..facts import CommentReadAsValue, TextAfterString
+
 CODE = "LIS007"
 NAME = "text-after-string"
 SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Text after a string value that is not a `(` comment"
 
+FACTS = (CommentReadAsValue, TextAfterString)
+
+
+def message(fact, setting) -> str:
+    name = setting.canonical
+    if isinstance(fact, CommentReadAsValue):
+        return (f"`{name}` is a string parameter: the CNC reads `{fact.text}` as its value, not as a comment "
+                f"(after a string only `(` starts a comment); to leave it empty write nothing after the name "
+                f"or start the comment with `(`")
+    return (f"text `{fact.text}` after the string value of `{name}` is not a `(` comment; the CNC reads it "
+            f"as part of the value or rejects the line; start the comment with `(`")
+
 
 def check(ctx):
     for setting in ctx.settings:
-        problem = setting.problem(CODE)
-        if problem is not None:
-            line = setting.line
-            start, _end = ctx.problem_span(line, problem.span)
-            yield ctx.report(CODE, line, problem.message, column=start, end_column=line.end_column, setting=setting)
+        for fact in setting.problems:
+            if isinstance(fact, FACTS):
+                line = setting.line
+                start, _end = ctx.problem_span(line, fact.span)
+                yield ctx.report(CODE, line, message(fact, setting), column=start, end_column=line.end_column,
+                                 setting=setting)

@@ -28,7 +28,8 @@ Array bounds of the parameter metadata (catalogue `index_bounds`).
 
 from __future__ import annotations
 
-from ._common import value_problems
+from ..facts import IndexOutOfBounds
+from ._common import value_facts
 
 CODE = "LIS104"
 NAME = "index-out-of-bounds"
@@ -36,6 +37,14 @@ SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Array index out of bounds"
 
+FACTS = (IndexOutOfBounds,)
+
+
+def message(fact: IndexOutOfBounds, setting) -> str:
+    shown = fact.index if fact.index is not None else f"`{fact.written}`"
+    return (f"index {shown} of `{fact.array}` in `{setting.line.path}` is out of bounds: {setting.parameter.id} allows "
+            f"{fact.array}[{fact.low}]..{fact.array}[{fact.high}] (indices are zero-based)")
+
 
 def check(ctx):
-    yield from value_problems(ctx, CODE)
+    yield from value_facts(ctx, CODE, FACTS, message)

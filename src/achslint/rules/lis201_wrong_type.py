@@ -34,7 +34,8 @@ Data types of the catalogue (P-AXIS parameter pages); BOOLEAN is 0/1 (axis param
 
 from __future__ import annotations
 
-from ._common import value_problems
+from ..facts import MissingValue, NotBoolean, RealForInteger, TextForNumber
+from ._common import expected, value_facts
 
 CODE = "LIS201"
 NAME = "wrong-type"
@@ -42,6 +43,25 @@ SEVERITY = "error"
 FIX = "sometimes"
 SUMMARY = "Value of the wrong data type"
 
+FACTS = (MissingValue, NotBoolean, RealForInteger, TextForNumber)
+
+
+def message(fact, setting) -> str:
+    name, parameter = setting.canonical, setting.parameter
+    if isinstance(fact, MissingValue):
+        starts = f" (`{fact.comment}` starts a comment)" if fact.comment else ""
+        return f"`{name}` has no value{starts}; {expected(parameter)} is expected"
+    if isinstance(fact, NotBoolean):
+        return f"`{name}` is BOOLEAN: write 0 (off) or 1 (on), not `{fact.text}`"
+    if isinstance(fact, RealForInteger):
+        text = f"`{name}` is an integer parameter ({parameter.type}) but `{fact.text}` is a real number"
+        return text + (f"; write `{fact.replacement}`" if fact.replacement else "")
+    return f"`{name}` expects {expected(parameter)}, not the text `{fact.text}`"
+
+
+def replacement(fact) -> str | None:
+    return getattr(fact, "replacement", None)
+
 
 def check(ctx):
-    yield from value_problems(ctx, CODE, fix_applicability="unsafe")
+    yield from value_facts(ctx, CODE, FACTS, message, replacement, applicability="unsafe")

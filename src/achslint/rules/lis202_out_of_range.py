@@ -38,7 +38,9 @@ Value ranges of the P-AXIS parameter pages (catalogue `range`); P-AXIS-00355, P-
 
 from __future__ import annotations
 
-from ._common import value_problems
+from ..facts import NotAccepted, NotPositive, OutOfRange, UnusableNumber
+from ..units import describe
+from ._common import expected, value_facts
 
 CODE = "LIS202"
 NAME = "out-of-range"
@@ -46,6 +48,34 @@ SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Value outside the parameter's range"
 
+FACTS = (UnusableNumber, NotAccepted, NotPositive, OutOfRange)
+
+
+def message(fact, setting) -> str:
+    name, parameter = setting.canonical, setting.parameter
+    if isinstance(fact, UnusableNumber):
+        holds = f", far more than a {parameter.type} holds" if fact.problem.reason == "digits" else ""
+        return f"`{name}` = `{fact.text}` {fact.problem}{holds}; {expected(parameter)} is expected"
+    if isinstance(fact, NotAccepted):
+        return f"`{name}` = {fact.number} is not an accepted value; accepted: {', '.join(map(str, fact.accepted))}"
+    if isinstance(fact, NotPositive):
+        return f"`{name}` = {describe(fact.number, fact.unit)} must be greater than 0"
+    side, bound, least = ("below the minimum", fact.low, "at least") if fact.low is not None else (
+        "above the maximum", fact.high, "at most")
+    return (f"`{name}` = {describe(fact.number, fact.unit)} is {side} {describe(bound, fact.unit)}"
+            f"{_range_hint(parameter)}; use a value of {least} {_plain(bound)}")
+
+
+def _plain(value: float) -> str:
+    return str(int(value)) if float(value).is_integer() else f"{value:g}"
+
+
+def _range_hint(parameter) -> str:
+    text = parameter.range_text.split(";")[0].strip()
+    if not text or text.startswith("("):
+        return f" of {parameter.type}"
+    return f" (manual range: {text})"
+
 
 def check(ctx):
-    yield from value_problems(ctx, CODE)
+    yield from value_facts(ctx, CODE, FACTS, message)

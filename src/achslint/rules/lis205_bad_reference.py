@@ -32,7 +32,9 @@ List format facts §6 (parameter references and their loader errors).
 
 from __future__ import annotations
 
-from ._common import value_problems
+from ..facts import BadReference
+from ..units import unit_label
+from ._common import value_facts
 
 CODE = "LIS205"
 NAME = "bad-reference"
@@ -40,6 +42,26 @@ SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Parameter reference that cannot be resolved"
 
+FACTS = (BadReference,)
+
+
+def message(fact: BadReference, setting) -> str:
+    name, parameter, reference = setting.canonical, setting.parameter, fact.reference
+    target = reference.target if reference is not None else ""
+    if fact.reason == "unreadable":
+        return f"`{name}` refers to `{fact.written}`, which {fact.problem}"
+    if fact.reason == "unknown":
+        return f"`{name}` refers to {target}, which is not an axis parameter"
+    if fact.reason == "itself":
+        return f"`{name}` refers to itself ({reference}); write a value instead"
+    if fact.reason == "kind":
+        return (f"`{name}` ({parameter.type}) refers to {target} `{fact.target_path}`, which is {fact.target_type}; "
+                f"a reference must name a parameter of the same kind")
+    if fact.reason == "unit":
+        return (f"`{name}` is in {unit_label(fact.own_unit) or 'no unit'} but refers to {target} `{fact.target_path}` "
+                f"in {unit_label(fact.target_unit) or 'no unit'}; the CNC rejects references with different units")
+    return f"`{name}` refers to {reference}, but {target} has indices {fact.low}..{fact.high} only"
+
 
 def check(ctx):
-    yield from value_problems(ctx, CODE)
+    yield from value_facts(ctx, CODE, FACTS, message)

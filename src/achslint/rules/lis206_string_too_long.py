@@ -28,7 +28,8 @@ Maximum string lengths of the parameter metadata (e.g. P-AXIS-00297: 15 characte
 
 from __future__ import annotations
 
-from ._common import value_problems
+from ..facts import TooLong
+from ._common import value_facts
 
 CODE = "LIS206"
 NAME = "string-too-long"
@@ -36,6 +37,13 @@ SEVERITY = "error"
 FIX = "none"
 SUMMARY = "String longer than the parameter allows"
 
+FACTS = (TooLong,)
+
+
+def message(fact: TooLong, setting) -> str:
+    return (f"`{setting.canonical}` is {fact.length} characters long; the CNC stores at most "
+            f"{fact.max_length} characters for this parameter, shorten the value")
+
 
 def check(ctx):
-    yield from value_problems(ctx, CODE)
+    yield from value_facts(ctx, CODE, FACTS, message)
