@@ -1,11 +1,12 @@
-"""Every rule against its fixtures: `bad.lis` must produce exactly the expected
-diagnostics of that rule, `good.lis` none of them."""
+"""Every rule against its fixtures: `bad.*` must produce exactly the findings of
+its snapshot `bad.snap`, `good.*` none of them."""
 
 from __future__ import annotations
 
-import pytest
-
+import sys
 from pathlib import Path
+
+import pytest
 
 from achslint.api import lint
 from achslint.rules import registry
@@ -15,29 +16,17 @@ from .conftest import FIXTURES
 RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
 
 
-def fixture(rule_dir, kind: str):
-    """The `bad` or `good` fixture of a rule: a list (.lis), an XML file, or a machine folder (LIS5xx)."""
-    for suffix in (".lis", ".xml", ""):
-        candidate = rule_dir / f"{kind}{suffix}"
-        if candidate.exists():
-            return candidate
-    raise FileNotFoundError(f"{rule_dir} has no {kind}.lis or {kind}.xml")
+def _snapshots():
+    tools = Path(__file__).resolve().parents[1] / "tools"
+    if str(tools) not in sys.path:
+        sys.path.insert(0, str(tools))
+    import update_snapshots
+
+    return update_snapshots
 
 
-def selection(rule_dir):
-    """The rule itself, plus the codes in `also_select` (LIS009 needs the rules its suppressions name)."""
-    extra = rule_dir / "also_select"
-    return [rule_dir.name, *(extra.read_text().split() if extra.exists() else [])]
-
-
-def expected(path):
-    """Rows `LINE CODE`, or `FILE LINE CODE` for machine folders."""
-    rows = []
-    for line in path.read_text().splitlines():
-        if line.strip():
-            *where, number, code = line.split()
-            rows.append((*where, int(number), code))
-    return sorted(rows)
+fixture = _snapshots().fixture
+selection = _snapshots().selection
 
 
 def machine_findings(folder, select):
@@ -52,17 +41,15 @@ def machine_findings(folder, select):
 
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])
-def test_bad_fixture_triggers_rule(rule_dir):
-    code = rule_dir.name
-    bad = fixture(rule_dir, "bad")
-    if bad.is_dir():
-        assert machine_findings(bad, selection(rule_dir)) == expected(rule_dir / "bad.expected")
-        return
-    found = [d for d in lint(bad, select=selection(rule_dir)) if d.code == code]
-    assert sorted((d.line, d.code) for d in found) == expected(rule_dir / "bad.expected")
-    for diagnostic in found:
-        assert diagnostic.message, "every diagnostic explains itself"
-        assert diagnostic.severity is not None
+def test_bad_fixture_matches_its_snapshot(rule_dir):
+    """Every finding of the rule on `bad.*` — position, end, severity, message, related locations and the
+    fix as a diff — is exactly what `bad.snap` holds (`python tools/update_snapshots.py CODE` rewrites it)."""
+    snapshots = _snapshots()
+    assert snapshots.findings(rule_dir), f"{rule_dir.name}: the bad fixture must trigger the rule"
+    snap = rule_dir / "bad.snap"
+    assert snap.exists(), f"no {snap}: run python tools/update_snapshots.py {rule_dir.name}"
+    assert snapshots.render(rule_dir) == snap.read_text(encoding="utf-8"), (
+        f"{rule_dir.name} changed: run python tools/update_snapshots.py {rule_dir.name} and review the diff")
 
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])
