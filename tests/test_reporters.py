@@ -44,11 +44,18 @@ def test_snapshot(name, results):
     assert output == snapshot.read_text(encoding="utf-8")
 
 
-@pytest.mark.parametrize("name", sorted(REPORTERS))
-def test_machine_formats_never_colour(name, results):
+@pytest.mark.parametrize("name", sorted(set(REPORTERS) - {"full"}))
+def test_machine_formats_never_colour_even_when_asked(name, results):
     stream = io.StringIO()
-    get(name)(results, stream, color=name == "full" and False, sources={})
+    get(name)(results, stream, color=True, sources={})
     assert "\x1b[" not in stream.getvalue()
+
+
+@pytest.mark.parametrize("color", [True, False])
+def test_full_format_colours_only_when_asked(color, results):
+    stream = io.StringIO()
+    get("full")(results, stream, color=color, sources={})
+    assert ("\x1b[" in stream.getvalue()) is color
 
 
 def test_sarif_is_valid_against_the_sarif_2_1_0_schema(results):
