@@ -12,7 +12,25 @@ FIXTURES = ROOT / "fixtures"
 
 
 def run_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> subprocess.CompletedProcess:
-    """Run the real entry point (`python -m achslint`) in a subprocess."""
+    """Run the CLI's entry point (`achslint.cli.main`, what the console script calls) in this process, with
+    its own stdin, stdout, stderr and environment; the result looks like a finished subprocess."""
+    from typer.testing import CliRunner
+
+    from achslint.cli import main
+
+    full_env = {"NO_COLOR": "1", "FORCE_COLOR": None, **(env or {})}
+    runner = CliRunner()
+    with runner.isolation(input=stdin, env=full_env) as streams:
+        code = main(list(args))
+        sys.stdout.flush()
+        sys.stderr.flush()
+        out, err = streams[0].getvalue(), streams[1].getvalue()
+    return subprocess.CompletedProcess(["achslint", *args], code, out, err)
+
+
+def run_real_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> subprocess.CompletedProcess:
+    """Run the real entry point (`python -m achslint`) in a subprocess: for the smoke tests of the entry
+    point itself (exit codes, stdin, signals, parallel runs)."""
     full_env = {**os.environ, "NO_COLOR": "1", **(env or {})}
     full_env.pop("FORCE_COLOR", None)
     return subprocess.run(
