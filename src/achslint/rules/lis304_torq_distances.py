@@ -14,6 +14,8 @@ torq_max_distance, so with min ≥ max the stop can never be detected.
 Example
 -------
 ```
+kenngr.antr_typ                     2          ( SERCOS
+kenngr.homing.homing_type           TORQ
 kenngr.homing.torq_min_distance     200000
 kenngr.homing.torq_max_distance     100000
 ```
@@ -21,6 +23,8 @@ kenngr.homing.torq_max_distance     100000
 Use instead
 -----------
 ```
+kenngr.antr_typ                     2
+kenngr.homing.homing_type           TORQ
 kenngr.homing.torq_min_distance     0
 kenngr.homing.torq_max_distance     200000
 ```
