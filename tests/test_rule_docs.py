@@ -2,8 +2,9 @@
 
 A section is turned into input from its ``` code blocks:
 
-* Blocks without a file marker are joined into one list and linted on their own, with every rule enabled
-  (the rule's code is picked from the findings, so a snippet needs no `Ende` line).
+* A block without a file marker is one list, linted on its own with every rule enabled (the rule's code is
+  picked from the findings, so a snippet needs no `Ende` line). Every such block of the Example must trigger
+  the rule, no block of Use instead may.
 * Blocks whose first line names a file (`# file: achsmds2.lis`, or `<!-- file: Axis_X.xti -->` in XML) are
   written side by side into an empty folder, which is linted as a machine through the real API: through its
   start-up list (`hochlauf*.lis`) when it has one, the file itself when there is only one, otherwise the
@@ -20,6 +21,7 @@ import pytest
 from achslint import lint
 from achslint.api import LintRequest, run_lint
 from achslint.config import Overrides
+from achslint.diagnostics import Diagnostic, Severity
 from achslint.rules import Rule, registry
 
 BLOCK = re.compile(r"^```[^\n]*\n(.*?)^```", re.M | re.S)
@@ -43,13 +45,13 @@ def file_name(block: str) -> str | None:
     return None if match is None else match.group("lis") or match.group("xml")
 
 
-def codes_found(rule: Rule, title: str, tmp_path: Path) -> list[str]:
-    """The codes achslint reports for the code blocks of one section of a rule's docstring."""
+def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
+    """What achslint reports for each case (a list, or a machine) that one section of a rule's docstring shows."""
     blocks = code_blocks(rule, title)
     prefix = EXAMPLE_PREFIX.get(rule.code, "") if title == "Example" else ""
     names = [file_name(block) for block in blocks]
     if not any(names):
-        return [d.code for d in lint((prefix + "\n".join(blocks)).encode("utf-8"), name="achsmds1.lis")]
+        return [lint((prefix + block).encode("utf-8"), name="achsmds1.lis") for block in blocks]
     assert all(names), f"{rule.code} '{title}': name the file of every block, or of none"
     for name, block in zip(names, blocks):
         (tmp_path / name).write_text(block, encoding="latin-1" if name.endswith(".lis") else "utf-8")
@@ -57,14 +59,24 @@ def codes_found(rule: Rule, title: str, tmp_path: Path) -> list[str]:
     target = startup[0] if startup else tmp_path / names[0] if len(names) == 1 else tmp_path
     outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1))
     assert not outcome.errors, outcome.errors
-    return [d.code for result in outcome.results for d in result.diagnostics]
+    return [[d for result in outcome.results for d in result.diagnostics]]
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
 def test_example_triggers_the_rule(rule, tmp_path):
-    assert rule.code in codes_found(rule, "Example", tmp_path), f"{rule.code}: its Example does not trigger it"
+    for number, found in enumerate(findings(rule, "Example", tmp_path), 1):
+        assert rule.code in {d.code for d in found}, f"{rule.code}: case {number} of its Example does not trigger it"
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
 def test_use_instead_does_not_trigger_the_rule(rule, tmp_path):
-    assert rule.code not in codes_found(rule, "Use instead", tmp_path), f"{rule.code}: its Use instead triggers it"
+    for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
+        assert rule.code not in {d.code for d in found}, f"{rule.code}: case {number} of its Use instead triggers it"
+
+
+@pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
+def test_use_instead_is_a_correct_list(rule, tmp_path):
+    """What the docs recommend draws no error or warning from any rule (snippets may leave out `Ende`)."""
+    for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
+        serious = [f"{d.code} {d.message}" for d in found if d.severity is not Severity.INFO and d.code != "LIS002"]
+        assert serious == [], f"{rule.code}: case {number} of its Use instead"
