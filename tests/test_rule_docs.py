@@ -24,7 +24,7 @@ from achslint.config import Overrides
 from achslint.diagnostics import Diagnostic, Severity
 from achslint.rules import Rule, registry
 
-BLOCK = re.compile(r"^```[^\n]*\n(.*?)^```", re.M | re.S)
+BLOCK = re.compile(r"^```[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
 FILE_MARKER = re.compile(r"^(?:#\s*file:\s*(?P<lis>\S+)|<!--\s*file:\s*(?P<xml>\S+)\s*-->)\s*$")
 
 # What a code block cannot show. A byte-order mark is invisible in a code block, so LIS006's Example says
@@ -52,11 +52,17 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     names = [file_name(block) for block in blocks]
     if not any(names):
         return [lint((prefix + block).encode("utf-8"), name="achsmds1.lis") for block in blocks]
-    assert all(names), f"{rule.code} '{title}': name the file of every block, or of none"
-    for name, block in zip(names, blocks):
-        (tmp_path / name).write_text(block, encoding="latin-1" if name.endswith(".lis") else "utf-8")
+    files = {name: block for name, block in zip(names, blocks, strict=True) if name}
+    assert len(files) == len(blocks), f"{rule.code} '{title}': name the file of every block (each once), or of none"
+    for name, text in files.items():
+        (tmp_path / name).write_text(text, encoding="latin-1" if name.endswith(".lis") else "utf-8")
     startup = sorted(tmp_path.glob("hochlauf*.lis"))
-    target = startup[0] if startup else tmp_path / names[0] if len(names) == 1 else tmp_path
+    if startup:
+        target = startup[0]
+    elif len(files) == 1:
+        target = tmp_path / next(iter(files))
+    else:
+        target = tmp_path
     outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1))
     assert not outcome.errors, outcome.errors
     return [[d for result in outcome.results for d in result.diagnostics]]

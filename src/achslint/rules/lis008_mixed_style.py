@@ -18,7 +18,7 @@ a tab and the others with spaces:
 
 ```
 kopf.achs_nr\t1                   ( tab
-kopf.log_achs_name\tX             ( tab
+kopf.log_achs_name\tX           ( tab
 kenngr.swe_pos            10000000  ( spaces
 ```
 

@@ -34,8 +34,8 @@ kenngr.homing.homing_type                   TORQ
 kenngr.homing.torq_max_distance             200000
 getriebe[0].homing.torq_move_velocity       5000
 getriebe[0].homing.torq_move_acceleration   100
-kenngr.homing.torq_detect_time              25000      ( stop after 25 ms
-kenngr.homing.torq_detect_velocity_limit    300        ( below 30 % of the move speed
+kenngr.homing.torq_detect_time              25000      ( 25 ms at the torque limit
+kenngr.homing.torq_detect_velocity_limit    300        ( 30 % residual speed
 ```
 
 Reference
