@@ -11,12 +11,23 @@ a byte-order mark; Windows editors add one when a file is saved as
 
 Example
 -------
-A list saved by an editor as "UTF-8 with BOM".
+A list saved by an editor as "UTF-8 with BOM": the file starts with the bytes
+EF BB BF, in front of its first line:
+
+```
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
 
 Use instead
 -----------
-Save the list as ANSI / Latin-1 or as UTF-8 without BOM (`achslint lint --fix`
-removes the mark).
+The same list saved as ANSI / Latin-1 or as UTF-8 without BOM (`achslint lint
+--fix` removes the mark):
+
+```
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
 
 Reference
 ---------

@@ -12,11 +12,25 @@ exports. They make diffs noisy and alignment break in some viewers.
 
 Example
 -------
-A list exported on Windows (CRLF) with lines appended on Linux (LF).
+A list exported on Windows (CRLF) with lines appended on Linux (LF), or one
+edited in different editors, so that some lines separate name and value with
+a tab and the others with spaces:
+
+```
+kopf.achs_nr\t1                   ( tab
+kopf.log_achs_name\tX           ( tab
+kenngr.swe_pos            10000000  ( spaces
+```
 
 Use instead
 -----------
-One line-break style and one separator style per file.
+One line-break style and one separator style per file:
+
+```
+kopf.achs_nr              1
+kopf.log_achs_name        X
+kenngr.swe_pos            10000000
+```
 
 Reference
 ---------

@@ -14,6 +14,7 @@ without noticing the other.
 Example
 -------
 ```
+kenngr.antr_typ                2          ( SERCOS
 kenngr.homing_type             CNC_CONTROLLED
 kenngr.homing.homing_type      DRIVE_CONTROLLED
 ```
@@ -21,6 +22,7 @@ kenngr.homing.homing_type      DRIVE_CONTROLLED
 Use instead
 -----------
 ```
+kenngr.antr_typ                2
 kenngr.homing.homing_type      DRIVE_CONTROLLED
 ```
 

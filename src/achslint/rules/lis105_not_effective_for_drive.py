@@ -24,7 +24,11 @@ antr.sercos.drive_supports_cnc_homing 1
 
 Use instead
 -----------
-Remove the parameter, or check that the drive type is the one you meant.
+Remove the parameter, or check that the drive type is the one you meant:
+
+```
+kenngr.antr_typ                  8      ( CANopen
+```
 
 Reference
 ---------

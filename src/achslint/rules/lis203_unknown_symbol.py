@@ -13,12 +13,14 @@ strategy than the one you configured.
 Example
 -------
 ```
+kenngr.antr_typ                2          ( SERCOS
 kenngr.homing.homing_type      DRIVE_CONROLLED
 ```
 
 Use instead
 -----------
 ```
+kenngr.antr_typ                2
 kenngr.homing.homing_type      DRIVE_CONTROLLED
 ```
 

@@ -15,6 +15,9 @@ Example
 -------
 ```
 kenngr.achs_mode               0x5
+```
+
+```
 kenngr.achs_mode               0x401
 ```
 
@@ -22,6 +25,9 @@ Use instead
 -----------
 ```
 kenngr.achs_mode               0x1        ( linear
+```
+
+```
 kenngr.achs_mode               0x404      ( modulo, modulo calculation for a conveyor
 ```
 

@@ -14,6 +14,7 @@ P-AXIS-00156 is 1, P-AXIS-00157 must be 1 as well.
 Example
 -------
 ```
+kenngr.antr_typ                 1          ( conventional drive
 kenngr.ref_ohne_nocken          1
 kenngr.ref_ohne_rev             0
 ```
@@ -21,6 +22,7 @@ kenngr.ref_ohne_rev             0
 Use instead
 -----------
 ```
+kenngr.antr_typ                 1
 kenngr.ref_ohne_nocken          1
 kenngr.ref_ohne_rev             1
 ```

@@ -16,6 +16,7 @@ Swapped values make homing slow and the reference inaccurate.
 Example
 -------
 ```
+kenngr.antr_typ                 1          ( conventional drive, cam and zero pulse
 getriebe[0].vb_refmax           20000
 getriebe[0].vb_reflow           100000
 ```
@@ -23,6 +24,7 @@ getriebe[0].vb_reflow           100000
 Use instead
 -----------
 ```
+kenngr.antr_typ                 1
 getriebe[0].vb_refmax           100000
 getriebe[0].vb_reflow           20000
 ```

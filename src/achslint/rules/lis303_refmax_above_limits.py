@@ -18,6 +18,7 @@ torq_move_velocity): the axis homes slower than written, and `explain` and
 Example
 -------
 ```
+kenngr.antr_typ                 1          ( conventional drive, cam and zero pulse
 getriebe[0].vb_not_referenced   50000
 getriebe[0].vb_refmax           150000
 ```
@@ -25,6 +26,7 @@ getriebe[0].vb_refmax           150000
 Use instead
 -----------
 ```
+kenngr.antr_typ                 1
 getriebe[0].vb_not_referenced   50000
 getriebe[0].vb_refmax           50000
 ```

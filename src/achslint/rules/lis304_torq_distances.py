@@ -14,15 +14,25 @@ torq_max_distance, so with min ≥ max the stop can never be detected.
 Example
 -------
 ```
-kenngr.homing.torq_min_distance     200000
-kenngr.homing.torq_max_distance     100000
+kenngr.antr_typ                             2          ( SERCOS
+kenngr.homing.homing_type                   TORQ
+kenngr.homing.torq_detect_time              25000
+getriebe[0].homing.torq_move_velocity       5000
+getriebe[0].homing.torq_move_acceleration   100
+kenngr.homing.torq_min_distance             200000     ( 20 mm
+kenngr.homing.torq_max_distance             100000     ( 10 mm
 ```
 
 Use instead
 -----------
 ```
-kenngr.homing.torq_min_distance     0
-kenngr.homing.torq_max_distance     200000
+kenngr.antr_typ                             2
+kenngr.homing.homing_type                   TORQ
+kenngr.homing.torq_detect_time              25000
+getriebe[0].homing.torq_move_velocity       5000
+getriebe[0].homing.torq_move_acceleration   100
+kenngr.homing.torq_min_distance             0
+kenngr.homing.torq_max_distance             200000     ( 20 mm
 ```
 
 Reference

@@ -19,8 +19,13 @@ kenngr.homing.homing_type       TORQ
 
 Use instead
 -----------
-A cam-based CNC-controlled homing (`CNC_CONTROLLED`) on this drive, or a drive
-type that supports fixed-stop homing.
+A cam-based CNC-controlled homing on this drive, or a drive type that supports
+fixed-stop homing:
+
+```
+kenngr.antr_typ                 1          ( conventional
+kenngr.homing.homing_type       CNC_CONTROLLED
+```
 
 Reference
 ---------

@@ -24,6 +24,8 @@ kenngr.homing_max_movement_dist 1800000    ( 180°
 Use instead
 -----------
 ```
+kenngr.achs_typ                 2
+getriebe[0].moduloo             3600000
 kenngr.homing_max_movement_dist 3600000    ( at least one revolution
 ```
 

@@ -19,13 +19,16 @@ corrections are applied before `explain` and `dry-run` describe the axis.
 Example
 -------
 ```
+kenngr.antr_typ                     8          ( CANopen
 kenngr.homing_overflow_evaluation   1
 kenngr.homing_without_zero_pulse    1
+antr.encoder_bit_range              20
 ```
 
 Use instead
 -----------
 ```
+kenngr.antr_typ                     8
 kenngr.homing_overflow_evaluation   1
 kenngr.homing_without_zero_pulse    0
 antr.encoder_bit_range              20

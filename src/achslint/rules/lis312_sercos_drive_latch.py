@@ -19,7 +19,8 @@ drive's configuration.
 Example
 -------
 ```
-kenngr.antr_typ                         2
+kenngr.antr_typ                         2          ( SERCOS
+kenngr.homing.homing_type               CNC_CONTROLLED
 antr.sercos.drive_supports_cnc_homing   1
 ```
 

@@ -19,17 +19,23 @@ be set (at least 1) and must not exceed the axis limits `vb_max` / `a_max`.
 Example
 -------
 ```
-kenngr.homing.homing_type            TORQ
-kenngr.homing.torq_max_distance      200000
+kenngr.antr_typ                             2          ( SERCOS
+kenngr.homing.homing_type                   TORQ
+kenngr.homing.torq_max_distance             200000     ( 20 mm
+getriebe[0].homing.torq_move_velocity       5000       ( 5 mm/s
+getriebe[0].homing.torq_move_acceleration   100
 ```
 
 Use instead
 -----------
 ```
-kenngr.homing.homing_type                  TORQ
-kenngr.homing.torq_max_distance            200000
-kenngr.homing.torq_detect_time             25000
-kenngr.homing.torq_detect_velocity_limit   300
+kenngr.antr_typ                             2
+kenngr.homing.homing_type                   TORQ
+kenngr.homing.torq_max_distance             200000
+getriebe[0].homing.torq_move_velocity       5000
+getriebe[0].homing.torq_move_acceleration   100
+kenngr.homing.torq_detect_time              25000      ( 25 ms at the torque limit
+kenngr.homing.torq_detect_velocity_limit    300        ( 30 % residual speed
 ```
 
 Reference

@@ -23,7 +23,14 @@ kenngr.gantry_slave_no_homing     1
 
 Use instead
 -----------
-Remove `kenngr.gantry_slave_no_homing` from the spindle's list.
+Remove `kenngr.gantry_slave_no_homing` from the spindle's list; it belongs in
+the list of a linear or rotary gantry slave:
+
+```
+kenngr.achs_typ                   1          ( linear axis
+kenngr.gantry_ax_nr               1          ( slave of the axis with kopf.achs_nr 1
+kenngr.gantry_slave_no_homing     1
+```
 
 Reference
 ---------

@@ -18,6 +18,7 @@ referencing speed, is the usual cause.
 Example
 -------
 ```
+kenngr.antr_typ                1               ( conventional drive, cam and zero pulse
 kenngr.swe_neg                 -10000000       ( -1000 mm
 kenngr.ref_richt               0
 getriebe[0].vb_reflow          50000           ( 50 mm/s
@@ -28,6 +29,11 @@ getriebe[0].pos_refpkt         -9950000        ( -995 mm
 Use instead
 -----------
 ```
+kenngr.antr_typ                1
+kenngr.swe_neg                 -10000000
+kenngr.ref_richt               0
+getriebe[0].vb_reflow          50000
+getriebe[0].a_ref              100
 getriebe[0].pos_refpkt         -9800000        ( -980 mm: 20 mm inside the limit
 ```
 

@@ -15,6 +15,7 @@ stops it, and homing never completes.
 Example
 -------
 ```
+kenngr.antr_typ                    1          ( conventional drive
 kenngr.ref_ohne_nocken             1
 kenngr.ref_ohne_rev                1
 kenngr.homing_without_zero_pulse   1
@@ -23,6 +24,7 @@ kenngr.homing_without_zero_pulse   1
 Use instead
 -----------
 ```
+kenngr.antr_typ                    1
 kenngr.ref_ohne_nocken             1
 kenngr.ref_ohne_rev                1
 kenngr.homing_without_zero_pulse   0          ( reference on the zero pulse

@@ -17,7 +17,8 @@ spindle then cannot be homed or positioned (M19).
 Example
 -------
 ```
-kenngr.achs_typ        4
+kenngr.achs_typ        4          ( spindle
+kenngr.antr_typ        1          ( conventional drive
 kenngr.ref_ohne_rev    1
 kenngr.vorz_richtung   1
 kenngr.beweg_richt     1
@@ -27,6 +28,11 @@ kenngr.ref_richt       0
 Use instead
 -----------
 ```
+kenngr.achs_typ        4
+kenngr.antr_typ        1
+kenngr.ref_ohne_rev    1
+kenngr.vorz_richtung   1
+kenngr.beweg_richt     1
 kenngr.ref_richt       1          ( home in the preferred direction
 ```
 

@@ -16,7 +16,8 @@ state. Homing from standstill still works, so this is a warning.
 Example
 -------
 ```
-kenngr.achs_typ        4
+kenngr.achs_typ        4          ( spindle
+kenngr.antr_typ        1          ( conventional drive
 kenngr.ref_ohne_rev    0
 ```
 
@@ -24,6 +25,7 @@ Use instead
 -----------
 ```
 kenngr.achs_typ        4
+kenngr.antr_typ        1
 kenngr.ref_ohne_rev    1          ( flying homing, also from rotation
 ```
 

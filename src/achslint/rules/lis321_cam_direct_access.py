@@ -15,6 +15,7 @@ PLC is not read. Only an explicit 1 in the list is reported.
 Example
 -------
 ```
+kenngr.antr_typ              1          ( conventional drive
 kenngr.ref_ohne_nocken       0
 lr_hw[0].cam_direct_access   1
 ```
@@ -22,6 +23,8 @@ lr_hw[0].cam_direct_access   1
 Use instead
 -----------
 ```
+kenngr.antr_typ              1
+kenngr.ref_ohne_nocken       0
 lr_hw[0].cam_direct_access   0          ( cam signal from the PLC via the HLI
 ```
 

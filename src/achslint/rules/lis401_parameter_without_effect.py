@@ -18,6 +18,7 @@ forgotten `ref_ohne_nocken`, a homing type left at the drive default).
 Example
 -------
 ```
+kenngr.antr_typ                 1          ( conventional drive
 kenngr.ref_ohne_nocken          1          ( zero pulse only
 kenngr.ref_ohne_rev             1
 kenngr.fast_from_cam            0
@@ -27,6 +28,7 @@ getriebe[0].vb_refmax           200000
 Use instead
 -----------
 ```
+kenngr.antr_typ                 1
 kenngr.ref_ohne_nocken          1
 kenngr.ref_ohne_rev             1
 ```

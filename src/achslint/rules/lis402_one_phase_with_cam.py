@@ -15,6 +15,7 @@ starting on the cam. Three-phase homing handles that case by itself.
 Example
 -------
 ```
+kenngr.antr_typ                 1          ( conventional drive
 kenngr.ref_ohne_nocken          0
 kenngr.ref_ohne_rev             1
 ```
@@ -22,6 +23,7 @@ kenngr.ref_ohne_rev             1
 Use instead
 -----------
 ```
+kenngr.antr_typ                 1
 kenngr.ref_ohne_nocken          0
 kenngr.ref_ohne_rev             0
 ```

@@ -19,13 +19,18 @@ the tolerance.
 Example
 -------
 ```
+kenngr.antr_typ                    1          ( conventional drive, cam and reversal
 kenngr.homing_without_zero_pulse   1
+getriebe[0].vb_refmax              200000
 getriebe[0].vb_reflow              100000     ( 6 m/min -> 100 µm per 1 ms cycle
 ```
 
 Use instead
 -----------
 ```
+kenngr.antr_typ                    1
+kenngr.homing_without_zero_pulse   1
+getriebe[0].vb_refmax              200000
 getriebe[0].vb_reflow              20000      ( 1.2 m/min -> 20 µm per cycle
 ```
 

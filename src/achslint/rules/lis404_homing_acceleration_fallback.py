@@ -17,6 +17,7 @@ reference position).
 Example
 -------
 ```
+kenngr.antr_typ                             1          ( conventional drive
 getriebe[0].lslope_profil.a_grenz_stufe_1   2000
 getriebe[0].lslope_profil.a_grenz_stufe_2   1000
 ```
@@ -24,6 +25,7 @@ getriebe[0].lslope_profil.a_grenz_stufe_2   1000
 Use instead
 -----------
 ```
+kenngr.antr_typ                             1
 getriebe[0].a_ref                           500
 ```
 

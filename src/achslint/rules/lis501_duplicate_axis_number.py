@@ -15,14 +15,29 @@ silently takes over the other's parameters.
 Example
 -------
 ```
-achsmds1.lis:  kopf.achs_nr   1
-achsmds2.lis:  kopf.achs_nr   1
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
+
+```
+# file: achsmds2.lis
+kopf.achs_nr          1          ( copied from achsmds1.lis
+kopf.log_achs_name    Y
 ```
 
 Use instead
 -----------
 ```
-achsmds2.lis:  kopf.achs_nr   2
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
+
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y
 ```
 
 Reference

@@ -13,14 +13,29 @@ the name you expect.
 Example
 -------
 ```
-achsmds1.lis:  kopf.log_achs_name   X
-achsmds3.lis:  kopf.log_achs_name   X
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
+
+```
+# file: achsmds3.lis
+kopf.achs_nr          3
+kopf.log_achs_name    X          ( copied from achsmds1.lis
 ```
 
 Use instead
 -----------
 ```
-achsmds3.lis:  kopf.log_achs_name   Z
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
+
+```
+# file: achsmds3.lis
+kopf.achs_nr          3
+kopf.log_achs_name    Z
 ```
 
 Reference

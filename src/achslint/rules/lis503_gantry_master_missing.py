@@ -12,13 +12,31 @@ axis or to none, and the gantry difference monitoring compares the wrong pair.
 Example
 -------
 ```
-achsmds2.lis:  kenngr.gantry_ax_nr   7      (no list with kopf.achs_nr 7)
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X1
+```
+
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    X2
+kenngr.gantry_ax_nr   7          ( no list of this machine has kopf.achs_nr 7
 ```
 
 Use instead
 -----------
 ```
-achsmds2.lis:  kenngr.gantry_ax_nr   1      (the master's kopf.achs_nr)
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X1
+```
+
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    X2
+kenngr.gantry_ax_nr   1          ( the master's kopf.achs_nr
 ```
 
 Reference

@@ -14,12 +14,31 @@ missing or unreadable.
 Example
 -------
 ```
-achs_mds[2]          ./listen/achsmds3.lis      (file not there)
+# file: hochlauf.lis
+zahl_mds             2
+achs_mds[0]          ./achsmds1.lis
+achs_mds[1]          ./achsmds3.lis      ( there is no achsmds3.lis
+```
+
+```
+# file: achsmds1.lis
+kopf.achs_nr         1
 ```
 
 Use instead
 -----------
-Fix the path, add the list, or remove the entry (and lower `zahl_mds`).
+Fix the path, add the list, or remove the entry (and lower `zahl_mds`):
+
+```
+# file: hochlauf.lis
+zahl_mds             1
+achs_mds[0]          ./achsmds1.lis
+```
+
+```
+# file: achsmds1.lis
+kopf.achs_nr         1
+```
 
 Reference
 ---------

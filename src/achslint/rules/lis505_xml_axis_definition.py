@@ -16,15 +16,31 @@ checks then follow the wrong drive.
 Example
 -------
 ```
-<DriveType>2</DriveType>            (SERCOS in the tree item)
-...
-kenngr.antr_typ     4               (simulation in the axis list)
+<!-- file: Axis_Z.xti -->
+<TreeItem><ItemName>Axis_Z</ItemName>
+<IsgAxisDef><DriveType>2</DriveType><Spindle>false</Spindle>
+<AchsMds><![CDATA[
+kopf.achs_nr         3
+kenngr.antr_typ      4          ( simulation, but the tree item says 2, SERCOS
+Ende
+]]></AchsMds></IsgAxisDef></TreeItem>
 ```
 
 Use instead
 -----------
 The same drive type in both places, and `kenngr.achs_typ 4` exactly when
-`<Spindle>true</Spindle>`.
+`<Spindle>true</Spindle>`:
+
+```
+<!-- file: Axis_Z.xti -->
+<TreeItem><ItemName>Axis_Z</ItemName>
+<IsgAxisDef><DriveType>2</DriveType><Spindle>false</Spindle>
+<AchsMds><![CDATA[
+kopf.achs_nr         3
+kenngr.antr_typ      2          ( SERCOS, as in the tree item
+Ende
+]]></AchsMds></IsgAxisDef></TreeItem>
+```
 
 Reference
 ---------

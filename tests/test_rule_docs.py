@@ -1,0 +1,88 @@
+"""Every rule's documentation works: its *Example* triggers the rule and its *Use instead* does not.
+
+A section is turned into input from its ``` code blocks:
+
+* A block without a file marker is one list, linted on its own with every rule enabled (the rule's code is
+  picked from the findings, so a snippet needs no `Ende` line). Every such block of the Example must trigger
+  the rule, no block of Use instead may.
+* Blocks whose first line names a file (`# file: achsmds2.lis`, or `<!-- file: Axis_X.xti -->` in XML) are
+  written side by side into an empty folder, which is linted as a machine through the real API: through its
+  start-up list (`hochlauf*.lis`) when it has one, the file itself when there is only one, otherwise the
+  folder. The marker line stays in the file; it is a comment there.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from achslint import lint
+from achslint.api import LintRequest, run_lint
+from achslint.config import Overrides
+from achslint.diagnostics import Diagnostic, Severity
+from achslint.rules import Rule, registry
+
+BLOCK = re.compile(r"^```[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
+FILE_MARKER = re.compile(r"^(?:#\s*file:\s*(?P<lis>\S+)|<!--\s*file:\s*(?P<xml>\S+)\s*-->)\s*$")
+
+# What a code block cannot show. A byte-order mark is invisible in a code block, so LIS006's Example says
+# in prose that the list starts with one and the test puts it there.
+EXAMPLE_PREFIX = {"LIS006": "\ufeff"}
+
+RULES = list(registry().values())
+
+
+def code_blocks(rule: Rule, title: str) -> list[str]:
+    blocks = BLOCK.findall(rule.section(title))
+    assert blocks, f"{rule.code}: the '{title}' section has no code block to run"
+    return blocks
+
+
+def file_name(block: str) -> str | None:
+    match = FILE_MARKER.match(block.split("\n", 1)[0])
+    return None if match is None else match.group("lis") or match.group("xml")
+
+
+def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
+    """What achslint reports for each case (a list, or a machine) that one section of a rule's docstring shows."""
+    blocks = code_blocks(rule, title)
+    prefix = EXAMPLE_PREFIX.get(rule.code, "") if title == "Example" else ""
+    names = [file_name(block) for block in blocks]
+    if not any(names):
+        return [lint((prefix + block).encode("utf-8"), name="achsmds1.lis") for block in blocks]
+    files = {name: block for name, block in zip(names, blocks, strict=True) if name}
+    assert len(files) == len(blocks), f"{rule.code} '{title}': name the file of every block (each once), or of none"
+    for name, text in files.items():
+        (tmp_path / name).write_text(text, encoding="latin-1" if name.endswith(".lis") else "utf-8")
+    startup = sorted(tmp_path.glob("hochlauf*.lis"))
+    if startup:
+        target = startup[0]
+    elif len(files) == 1:
+        target = tmp_path / next(iter(files))
+    else:
+        target = tmp_path
+    outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1))
+    assert not outcome.errors, outcome.errors
+    return [[d for result in outcome.results for d in result.diagnostics]]
+
+
+@pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
+def test_example_triggers_the_rule(rule, tmp_path):
+    for number, found in enumerate(findings(rule, "Example", tmp_path), 1):
+        assert rule.code in {d.code for d in found}, f"{rule.code}: case {number} of its Example does not trigger it"
+
+
+@pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
+def test_use_instead_does_not_trigger_the_rule(rule, tmp_path):
+    for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
+        assert rule.code not in {d.code for d in found}, f"{rule.code}: case {number} of its Use instead triggers it"
+
+
+@pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
+def test_use_instead_is_a_correct_list(rule, tmp_path):
+    """What the docs recommend draws no error or warning from any rule (snippets may leave out `Ende`)."""
+    for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
+        serious = [f"{d.code} {d.message}" for d in found if d.severity is not Severity.INFO and d.code != "LIS002"]
+        assert serious == [], f"{rule.code}: case {number} of its Use instead"
