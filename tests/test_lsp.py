@@ -215,7 +215,12 @@ async def test_machine_rule_uses_open_buffers_and_files(client: LanguageClient, 
     assert duplicate.related_information[0].location.uri == (machine / "achsmds1.lis").resolve().as_uri()
     change(client, uri, 2, "kopf.achs_nr  3\nkopf.log_achs_name  Y\nEnde\n")  # the buffer, not the file, counts
     assert "LIS501" not in codes(await diagnostics_when(client, uri))
-    close_doc(client, uri)
+    # both open: editing the first list updates the findings shown for the second
+    first = open_doc(client, machine / "achsmds1.lis", one.replace("achs_nr  1", "achs_nr  3"))
+    assert "LIS501" in codes(await diagnostics_when(client, uri, lambda f: "LIS501" in codes(f)))
+    change(client, first, 2, one)
+    assert "LIS501" not in codes(await diagnostics_when(client, uri, lambda f: "LIS501" not in codes(f)))
+    close_doc(client, first), close_doc(client, uri)
 
 
 # -- hover, completion ---------------------------------------------------------------------------------------

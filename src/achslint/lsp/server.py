@@ -54,13 +54,14 @@ class AchslintServer(LanguageServer):
         return {lsp.PositionEncodingKind.Utf8: "utf-8", lsp.PositionEncodingKind.Utf32: "utf-32"}.get(encoding, "utf-16")
 
     # -- diagnostics -----------------------------------------------------------------------------
-    def publish(self, uri: str, peers: bool = True) -> None:
+    def publish(self, uri: str) -> None:
         self._timers.pop(uri, None)
         document = self.session.documents.get(uri)
         if document is None:
             return
+        peers: list[str] = []
         try:
-            snapshot, found = self.session.diagnostics(uri)
+            snapshot, found, peers = self.session.diagnostics(uri)
             diagnostics = features.publishable(document, snapshot, found)
         except Exception as exc:  # noqa: BLE001 - a finding that cannot be computed must not end the server
             log.error("achslint: cannot lint %s: %s\n%s", uri, exc, traceback.format_exc())
@@ -70,15 +71,8 @@ class AchslintServer(LanguageServer):
                                           source="achslint")]
         self.text_document_publish_diagnostics(
             lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version))
-        if peers and document.path is not None:
-            self.publish_peers(document)
-
-    def publish_peers(self, document: Document) -> None:
-        """Other open lists of the same folder (or start-up list): their machine findings may have changed."""
-        near = {document.path.parent, document.path.parent.parent}
-        for uri, other in list(self.session.documents.items()):
-            if other is not document and other.path is not None and other.path.parent in near:
-                self.publish(uri, peers=False)
+        for peer in peers:  # other open lists of the machine whose machine findings changed with this one
+            self.publish(peer)
 
     def schedule(self, uri: str, delay_ms: int | None = None) -> None:
         delay = self.session.settings.debounce_ms if delay_ms is None else delay_ms
@@ -93,7 +87,7 @@ class AchslintServer(LanguageServer):
 
     def publish_all(self) -> None:
         for uri in list(self.session.documents):
-            self.publish(uri, peers=False)
+            self.publish(uri)
 
 
 server = AchslintServer()
@@ -177,8 +171,12 @@ def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams):
     ls.session.close(uri)
     ls.text_document_publish_diagnostics(lsp.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
     if document is not None and document.path is not None:
+        # Its neighbours now see the file on disk instead of the buffer.
+        near = {document.path.parent, document.path.parent.parent}
         ls.session.forget_disk()
-        ls.publish_peers(document)
+        for other in list(ls.session.documents.values()):
+            if other.path is not None and other.path.parent in near:
+                ls.publish(other.uri)
 
 
 @server.feature(lsp.WORKSPACE_DID_CHANGE_CONFIGURATION)
@@ -277,7 +275,7 @@ def code_action(ls: AchslintServer, params: lsp.CodeActionParams):
     document = ls.session.documents.get(uri)
     if document is None:
         return []
-    snapshot, found = ls.session.diagnostics(uri)
+    snapshot, found, _ = ls.session.diagnostics(uri)
 
     def fix_all():
         from ..fixer import fix_bytes

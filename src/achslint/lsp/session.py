@@ -104,11 +104,20 @@ def xml_bytes(text: str) -> bytes:
     return text.encode("utf-8")
 
 
+_REAL: dict[str, str] = {}
+
+
 def _real(path: Path | str) -> str:
-    try:
-        return os.path.realpath(path)
-    except (OSError, ValueError):
-        return os.path.abspath(path)
+    """The real path of a file (cached until the session forgets what it knows about the disk)."""
+    key = str(path)
+    found = _REAL.get(key)
+    if found is None:
+        try:
+            found = os.path.realpath(key)
+        except (OSError, ValueError):
+            found = os.path.abspath(key)
+        _REAL[key] = found
+    return found
 
 
 class Session:
@@ -118,21 +127,25 @@ class Session:
         self.documents: dict[str, Document] = {}
         self._snapshots: dict[str, Snapshot] = {}
         self._disk: dict[tuple, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
+        self._by_real: dict[str, Document] = {}  # open files by real path
+        self._machines: dict[str, Machine | None] = {}  # real path of a list -> its machine (until forget_disk)
+        self._machine_found: dict[str, list] = {}  # uri -> the machine findings last reported for it
 
     # -- documents ---------------------------------------------------------------------------
     def open(self, document: Document) -> None:
         self.documents[document.uri] = document
+        if document.path is not None:
+            self._by_real[_real(document.path)] = document
 
     def close(self, uri: str) -> None:
-        self.documents.pop(uri, None)
+        document = self.documents.pop(uri, None)
         self._snapshots.pop(uri, None)
+        self._machine_found.pop(uri, None)
+        if document is not None and document.path is not None:
+            self._by_real.pop(_real(document.path), None)
 
     def by_path(self, path: Path | str) -> Document | None:
-        real = _real(path)
-        for document in self.documents.values():
-            if document.path is not None and _real(document.path) == real:
-                return document
-        return None
+        return self._by_real.get(_real(path))
 
     def text_of(self, path: Path) -> bytes:
         """A list as the editor has it: the open buffer, else the file."""
@@ -146,6 +159,9 @@ class Session:
         from .. import config
 
         self._disk.clear()
+        self._machines.clear()
+        _REAL.clear()
+        self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
         for uri in list(self._snapshots):
             self._snapshots[uri] = None  # type: ignore[assignment]
         config._config_in.cache_clear()
@@ -197,16 +213,29 @@ class Session:
         result = check_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
 
-    def diagnostics(self, uri: str) -> tuple[Snapshot | None, list[Diagnostic]]:
-        """The document's findings: its own and those of the machine it belongs to."""
+    def diagnostics(self, uri: str) -> tuple[Snapshot | None, list[Diagnostic], list[str]]:
+        """The document's findings, its own and those of the machine it belongs to, and the other open
+        documents whose machine findings changed with it (their editors need them again)."""
         snapshot = self.snapshot(uri)
         if snapshot is None:
-            return None, []
+            return None, [], []
         own = list(snapshot.result.diagnostics)
         document = self.documents[uri]
+        peers: list[str] = []
         if document.path is not None and not is_xml(document.name):
-            own.extend(self.machine_diagnostics(document, snapshot))
-        return snapshot, own
+            by_member = self.machine_diagnostics(document, snapshot)
+            mine = by_member.pop(_real(document.path), [])
+            self._machine_found[uri] = [_key(d) for d in mine]
+            own.extend(mine)
+            own.sort(key=Diagnostic.sort_key)
+            for real, found in by_member.items():
+                other = self._by_real.get(real)
+                if other is None or other.uri not in self.documents:
+                    continue
+                keys = [_key(d) for d in found]
+                if self._machine_found.get(other.uri) != keys:
+                    peers.append(other.uri)
+        return snapshot, own, peers
 
     # -- machines --------------------------------------------------------------------------------
     def machine(self, document: Document) -> Machine | None:
@@ -215,6 +244,11 @@ class Session:
         if path is None:
             return None
         real = _real(path)
+        if real not in self._machines:
+            self._machines[real] = self._find_machine(path, real)
+        return self._machines[real]
+
+    def _find_machine(self, path: Path, real: str) -> Machine | None:
         if is_startup_list(path):
             return self._startup_machine(path, None)
         for folder in (path.parent, path.parent.parent):
@@ -302,10 +336,11 @@ class Session:
             cached = self._disk[key] = FileResult(target.name, [], full.error, summary=full.summary)
         return FileResult(target.name, [], cached.error, summary=cached.summary)
 
-    def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> list[Diagnostic]:
+    def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> dict[str, list[Diagnostic]]:
+        """The machine-level findings of every list of the document's machine, by real path."""
         machine = self.machine(document)
         if machine is None:
-            return []
+            return {}
         real = _real(document.path)
         results = []
         for target in machine.targets:
@@ -316,10 +351,15 @@ class Session:
         linter = Linter(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
         linter.startups = machine.startups
         extra = linter._machine_level(machine.targets, results)
-        found = []
+        found: dict[str, list[Diagnostic]] = {}
         for result in results + extra:
-            if _real(result.name) == real:
-                for d in result.diagnostics:
-                    d.path = document.name
-                    found.append(d)
+            found.setdefault(_real(result.name), []).extend(result.diagnostics)
+        for member, diagnostics in found.items():
+            owner = self._by_real.get(member)
+            for d in diagnostics:
+                d.path = owner.name if owner is not None else d.path
         return found
+
+
+def _key(d: Diagnostic) -> tuple:
+    return (d.line, d.column, d.code, d.message, d.severity)
