@@ -14,13 +14,13 @@ import pytest
 pytest.importorskip("pygls.lsp.server", reason="the lsp extra is not installed")
 pytest_lsp = pytest.importorskip("pytest_lsp")
 
-from lsprotocol import types as lsp  # noqa: E402
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities  # noqa: E402
+from lsprotocol import types as lsp
+from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
-from achslint.api import lint  # noqa: E402
-from achslint.fmt import format_bytes  # noqa: E402
+from achslint.api import lint
+from achslint.fmt import format_bytes
 
-from .conftest import FIXTURES  # noqa: E402
+from .conftest import FIXTURES
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 WORK = Path(os.environ.get("ACHSLINT_LSP_TEST_DIR", "")) if os.environ.get("ACHSLINT_LSP_TEST_DIR") else None

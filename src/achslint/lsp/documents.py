@@ -63,8 +63,8 @@ class LineCache:
             template = self._parsed[body] = parse_text(body).lines[0]
         return template
 
-    def parse(self, text: str, name: str) -> ListFile:
-        raw_lines = split_lines(text, keepends=True)
+    def parse(self, text: str, name: str, raw_lines: list[str] | None = None) -> ListFile:
+        raw_lines = list(raw_lines) if raw_lines is not None else split_lines(text, keepends=True)
         if not raw_lines or raw_lines[-1].endswith(("\n", "\r")):
             raw_lines.append("")  # the parser reads an empty last line after a final line break
         previous, current = self._previous, {}
@@ -94,6 +94,7 @@ class Document:
     version: int | None = None
     encoding: str = "utf-16"  # the position encoding agreed with the client
     _lines: list[str] | None = field(default=None, repr=False)
+    _raw: list[str] | None = field(default=None, repr=False)  # the lines with their breaks
     cache: LineCache = field(default_factory=LineCache, repr=False)
 
     @property
@@ -105,10 +106,16 @@ class Document:
     def lines(self) -> list[str]:
         """Line texts without their breaks, numbered as the parser numbers them."""
         if self._lines is None:
-            self._lines = split_lines(self.text)
+            self._lines = [raw.rstrip("\r\n") for raw in self.raw_lines]
             if not self._lines or self.text.endswith(("\n", "\r")):
                 self._lines.append("")
         return self._lines
+
+    @property
+    def raw_lines(self) -> list[str]:
+        if self._raw is None:
+            self._raw = split_lines(self.text, keepends=True)
+        return self._raw
 
     @property
     def bom(self) -> bool:
@@ -149,7 +156,7 @@ class Document:
     # -- edits -----------------------------------------------------------------------------------
     def offset(self, line: int, character: int) -> int:
         """The offset in `text` of an LSP position (clamped)."""
-        raw = split_lines(self.text, keepends=True)
+        raw = self.raw_lines
         if line >= len(raw):
             return len(self.text)
         start = sum(len(r) for r in raw[:line])
@@ -160,13 +167,16 @@ class Document:
         """Apply one content change (a whole-document change when `start` is None)."""
         if start is None or end is None:
             self.text = new_text
+            self._lines = self._raw = None
         else:
             a, b = self.offset(*start), self.offset(*end)
             self.text = self.text[:a] + new_text + self.text[max(a, b):]
-        self._lines = None
+        self._lines = self._raw = None
 
     def parse(self) -> ListFile:
-        return self.cache.parse(self.body, self.name)
+        if self.bom:
+            return self.cache.parse(self.body, self.name)
+        return self.cache.parse(self.text, self.name, self.raw_lines)
 
 
 def blank_file(name: str) -> ListFile:

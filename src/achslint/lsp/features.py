@@ -17,7 +17,14 @@ from pathlib import Path
 from lsprotocol import types as lsp
 
 from .. import syntax
-from ..catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue, fill_indices
+from ..catalogue import (
+    BOOL,
+    INTEGER,
+    REAL,
+    Parameter,
+    catalogue,
+    fill_indices,
+)
 from ..diagnostics import Diagnostic, Severity
 from ..numbers import Reference
 from ..rules import registry
@@ -35,8 +42,7 @@ _CODE = re.compile(r"LIS[0-9]{3}", re.IGNORECASE)
 def lsp_range(document: Document, line: int, column: int, end_line: int, end_column: int) -> lsp.Range:
     start = document.to_lsp(line, column)
     end = document.to_lsp(end_line, end_column)
-    if end < start:
-        end = start
+    end = max(end, start)
     return lsp.Range(lsp.Position(*start), lsp.Position(*end))
 
 
@@ -53,8 +59,8 @@ def rules_document() -> str | None:
     checkout = Path(__file__).resolve().parents[3] / "docs" / "rules.md"
     if checkout.is_file():
         return checkout.as_uri()
-    from ..docs import rules_markdown
     from .. import __version__
+    from ..docs import rules_markdown
 
     base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     target = Path(base) / "achslint" / f"rules-{__version__}.md"
@@ -223,8 +229,8 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
         return "\n".join([
             "**Ende** — the end marker" if markdown else "Ende — the end marker",
             "",
-            "The CNC stops reading the list here: lines after it are ignored (LIS003). Without it the "
-            "CNC reports the list as incomplete (LIS002); `End` or `ENDE` are not the marker (LIS004).",
+            ("The CNC stops reading the list here: lines after it are ignored (LIS003). Without it the "
+             "CNC reports the list as incomplete (LIS002); `End` or `ENDE` are not the marker (LIS004)."),
         ])
     if part in ("rest", "comment"):
         text = line.rest if part == "rest" else (line.indent + (line.comment or ""))
@@ -253,9 +259,9 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
     if isinstance(written, Reference):
         target = values.referenced(canonical, written)
         referenced = values.parameter(target)
-        out = [f"{written} → {target} ({referenced.summary})", "",
-               f"resolved value: {value_words(values, target)}",
-               f"from: {values.origin(target)}" if values.is_set(target) else "from: the built-in default"]
+        origin = f"from: {values.origin(target)}" if values.is_set(target) else "from: the built-in default"
+        out = [f"{written} → {target} ({referenced.summary})", "", f"resolved value: {value_words(values, target)}",
+               origin]
         return "\n".join(out)
     if isinstance(written, bool):
         words = f"{int(written)} ({'on' if written else 'off'})"
@@ -320,7 +326,11 @@ def _snippet_path(pattern: str, typed: tuple[int, ...], bounds, snippets: bool) 
     return "".join(out)
 
 
-def complete(document: Document, snapshot, line_number: int, column: int, snippets: bool = True) -> lsp.CompletionList:
+def complete(document: Document, snapshot, line_number: int, column: int, snippets: bool = True,
+             edit_range_default: bool = False) -> lsp.CompletionList:
+    """Completion at a 1-based position: rule codes after `noqa:`, parameter paths at the start of a
+    line, symbols and references in the value. With `edit_range_default` (the client supports
+    `itemDefaults.editRange`) the range the items replace is sent once instead of with every item."""
     text = document.line(line_number)
     before = text[: column - 1]
     context = snapshot.context if snapshot is not None else None
@@ -332,7 +342,10 @@ def complete(document: Document, snapshot, line_number: int, column: int, snippe
     if match:
         typed = match.group(1) or ""
         start = column - len(typed)
-        return lsp.CompletionList(False, _path_items(document, context, line_number, start, column, typed, snippets))
+        where = lsp_range(document, line_number, start, line_number, column)
+        items = _path_items(context, typed, snippets, None if edit_range_default else where)
+        defaults = lsp.CompletionItemDefaults(edit_range=where) if edit_range_default else None
+        return lsp.CompletionList(False, items, item_defaults=defaults)
     match = _VALUE_PREFIX.match(before)
     if match:
         start = column - len(match.group(2))
@@ -345,32 +358,34 @@ def _edit(document: Document, line: int, start: int, end: int, text: str) -> lsp
     return lsp.TextEdit(lsp_range(document, line, start, line, end), text)
 
 
-def _path_items(document, context, line, start, end, typed, snippets) -> list[lsp.CompletionItem]:
+def _path_items(context, typed, snippets, where: lsp.Range | None) -> list[lsp.CompletionItem]:
+    """Paths that take effect for the list's drive and axis type; old names marked deprecated. Items carry
+    no documentation: `completionItem/resolve` adds the card of the one the user looks at."""
     pattern, indices = syntax.path_pattern(typed)
     # Segments the user finished (up to the last dot) must match; the client filters the rest.
     done = pattern.rsplit(".", 1)[0] + "." if "." in pattern else ""
     done_indices = indices[: done.count("[i]")]
-    cat = catalogue()
     items = []
-    for parameter in cat.parameters:
+    plain, snippet = lsp.InsertTextFormat.PlainText, lsp.InsertTextFormat.Snippet
+    for parameter in catalogue().parameters:
         if not parameter.path.startswith(done) or not _applies(parameter, context):
             continue
         insert = _snippet_path(parameter.path, done_indices, parameter.index_bounds, snippets)
         label = fill_indices(parameter.path, done_indices)
+        is_snippet = snippets and "$" in insert
         items.append(lsp.CompletionItem(
             label=label, kind=lsp.CompletionItemKind.Field, detail=f"{parameter.id} {parameter.type}",
-            filter_text=label, sort_text=label,
-            text_edit=_edit(document, line, start, end, insert),
-            insert_text_format=lsp.InsertTextFormat.Snippet if snippets and "$" in insert else lsp.InsertTextFormat.PlainText,
-            data={"p_axis": parameter.id},
+            text_edit=lsp.TextEdit(where, insert) if where is not None else None,
+            text_edit_text=insert if where is None and insert != label else None,
+            insert_text_format=snippet if is_snippet else plain,
         ))
         for alias in parameter.aliases:
             if alias.kind != "old" or not alias.path.startswith(done):
                 continue
             items.append(lsp.CompletionItem(
                 label=alias.path, kind=lsp.CompletionItemKind.Field, detail=f"old name of {parameter.path}",
-                tags=[lsp.CompletionItemTag.Deprecated], filter_text=alias.path, sort_text="~" + alias.path,
-                text_edit=_edit(document, line, start, end, alias.path), data={"p_axis": parameter.id},
+                tags=[lsp.CompletionItemTag.Deprecated], sort_text="~" + alias.path,
+                text_edit=lsp.TextEdit(where, alias.path) if where is not None else None,
             ))
     return items
 
@@ -420,10 +435,9 @@ def _code_items(document, snapshot, line, start, end) -> list[lsp.CompletionItem
 
 def resolve_item(item: lsp.CompletionItem, markdown: bool = True) -> lsp.CompletionItem:
     """Add the parameter card to a path item (computed only for the item the user looks at)."""
-    data = item.data if isinstance(item.data, dict) else {}
-    parameter = catalogue().by_id.get(data.get("p_axis", ""))
-    if parameter is not None and item.documentation is None:
-        text = "\n".join(card_text(parameter, markdown))
+    resolution = catalogue().resolve(item.label) if item.kind == lsp.CompletionItemKind.Field else None
+    if resolution is not None and item.documentation is None:
+        text = "\n".join(card_text(resolution.parameter, markdown))
         item.documentation = lsp.MarkupContent(lsp.MarkupKind.Markdown if markdown else lsp.MarkupKind.PlainText, text)
     return item
 
@@ -490,7 +504,7 @@ def noqa_edit(document: Document, file, d: Diagnostic) -> lsp.TextEdit | None:
 def code_actions(document: Document, snapshot, found: list[Diagnostic], request: lsp.Range,
                  only: list[str] | None, fix_all_edits) -> list[lsp.CodeAction]:
     start_line, end_line = request.start.line + 1, request.end.line + 1
-    wanted = lambda kind: not only or any(kind == k or kind.startswith(k + ".") for k in only)  # noqa: E731
+    wanted = lambda kind: not only or any(kind == k or kind.startswith(k + ".") for k in only)
     actions = []
     xml = snapshot is None or snapshot.file is None
     if wanted(lsp.CodeActionKind.QuickFix):
@@ -635,5 +649,3 @@ def inlay_hints(document: Document, snapshot, request: lsp.Range) -> list[lsp.In
             hints.append(lsp.InlayHint(lsp.Position(*where), f" = {human}", padding_left=True))
     return hints
 
-
-__all__ = ["AXIS_TYPE_NAMES", "SYMBOL"]

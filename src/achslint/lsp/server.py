@@ -49,6 +49,14 @@ class AchslintServer(LanguageServer):
             return False
 
     @property
+    def edit_range_default(self) -> bool:
+        try:
+            defaults = self.client_capabilities.text_document.completion.completion_list.item_defaults
+        except AttributeError:
+            return False
+        return bool(defaults) and "editRange" in defaults
+
+    @property
     def encoding(self) -> str:
         encoding = self.workspace.position_encoding if self.workspace is not None else None
         return {lsp.PositionEncodingKind.Utf8: "utf-8", lsp.PositionEncodingKind.Utf32: "utf-32"}.get(encoding, "utf-16")
@@ -258,7 +266,7 @@ def completion(ls: AchslintServer, params: lsp.CompletionParams):
     document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
     if document is None or is_xml(document.name):
         return None
-    return features.complete(document, snapshot, line, column, ls.snippets)
+    return features.complete(document, snapshot, line, column, ls.snippets, ls.edit_range_default)
 
 
 @server.feature(lsp.COMPLETION_ITEM_RESOLVE)

@@ -16,8 +16,15 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..api import LintRequest, Linter, Target, file_settings
-from ..config import ConfigError, Overrides, ResolvedConfig, Settings, discover, matches_glob
+from ..api import Linter, LintRequest, Target, file_settings
+from ..config import (
+    ConfigError,
+    Overrides,
+    ResolvedConfig,
+    Settings,
+    discover,
+    matches_glob,
+)
 from ..decode import UnreadableInput
 from ..diagnostics import Diagnostic
 from ..files import not_a_list_file, read_list
@@ -41,7 +48,7 @@ class ClientSettings:
     debounce_ms: int = 200
 
     @classmethod
-    def from_dict(cls, raw) -> "ClientSettings":
+    def from_dict(cls, raw) -> ClientSettings:
         if not isinstance(raw, dict):
             return cls()
         raw = raw.get("achslint", raw) if isinstance(raw.get("achslint"), dict) else raw
