@@ -521,9 +521,10 @@ def code_actions(document: Document, snapshot, found: list[Diagnostic], request:
             if not xml and d.path == document.name:
                 edit = noqa_edit(document, snapshot.file, d)
                 if edit is not None:
+                    whole_file = edit.new_text.startswith("# achslint: noqa")
                     actions.append(lsp.CodeAction(
-                        title=f"Suppress {d.code} on this line (noqa)" if edit.range.start.line or d.line == 1
-                        else f"Suppress {d.code} in this file (noqa)",
+                        title=f"Suppress {d.code} in this file (noqa)" if whole_file
+                        else f"Suppress {d.code} on this line (noqa)",
                         kind=lsp.CodeActionKind.QuickFix, diagnostics=[diagnostic],
                         edit=lsp.WorkspaceEdit(changes={document.uri: [edit]})))
     if not xml and any(d.fix is not None and d.fix.applicability == "safe" for d in found):
