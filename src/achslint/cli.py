@@ -561,6 +561,18 @@ def config_command(
 
 
 @app.command()
+def server() -> None:
+    """Run the language server for editors on standard input/output (needs `pip install 'achslint[lsp]'`)."""
+    from .lsp import MISSING, available
+
+    if not available():
+        _fail(MISSING)
+    from .lsp.server import run
+
+    run()
+
+
+@app.command()
 def schema() -> None:
     """Print the JSON Schema of the axis parameter model."""
     import json

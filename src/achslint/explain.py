@@ -49,26 +49,7 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
             "velocity_human": to_human(phase.velocity, "um/s" if axis_type == "T" else "0.001deg/s") if phase.velocity else None,
             "ends_when": phase.ends_when, "note": phase.note, "text": text,
         })
-    parameters = []
-    for path in homing_parameter_paths(gear):
-        parameter = values.parameter(path)
-        value = values.get(path)
-        unit = parameter.unit(axis_type)
-        origin = values.origin(path)
-        found = effect(strategy, values, path)
-        correction = values.correction(path)
-        parameters.append({
-            "parameter": path,
-            "p_axis": parameter.id,
-            "value": _plain(value),
-            "written": _plain(correction.written) if correction else None,
-            "correction": correction.error if correction else None,
-            "unit": unit_label(unit) or None,
-            "human": to_human(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else None,
-            "source": {"kind": origin.kind, "line": origin.setting.line.number if origin.setting else None},
-            "effective": found.effective,
-            "reason": found.reason,
-        })
+    parameters = [parameter_row(values, strategy, path) for path in homing_parameter_paths(gear)]
     acceleration = strategy.setup.acceleration
     return {
         "version": 1,
@@ -95,6 +76,28 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
         "phases": phases,
         "corrections": [c.as_dict() for c in values.corrections],
         "parameters": parameters,
+    }
+
+
+def parameter_row(values, strategy, path: str) -> dict:
+    """One parameter of the axis (canonical path): value, unit, human unit, source, correction and effect."""
+    parameter = values.parameter(path)
+    value = values.get(path)
+    unit = parameter.unit(values.axis_type)
+    origin = values.origin(path)
+    found = effect(strategy, values, path)
+    correction = values.correction(path)
+    return {
+        "parameter": path,
+        "p_axis": parameter.id,
+        "value": _plain(value),
+        "written": _plain(correction.written) if correction else None,
+        "correction": correction.error if correction else None,
+        "unit": unit_label(unit) or None,
+        "human": to_human(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else None,
+        "source": {"kind": origin.kind, "line": origin.setting.line.number if origin.setting else None},
+        "effective": found.effective,
+        "reason": found.reason,
     }
 
 

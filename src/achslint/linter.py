@@ -41,6 +41,7 @@ class FileSettings:
     options: Options = field(default_factory=Options)
     severity: dict[str, str] = field(default_factory=dict)  # code -> severity override
     keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
+    keep_context: bool = False  # keep the rules' Context on the result (the language server reuses it)
 
 
 @dataclass
@@ -53,6 +54,7 @@ class FileResult:
     diff: str = ""  # what --fix --diff would change
     fixed_data: bytes | None = None  # the fixed content (standard input only)
     summary: dict | None = None  # what the machine-level rules need (machine.summary)
+    context: Context | None = None  # with FileSettings.keep_context: the parsed, resolved list
 
 
 def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None) -> FileResult:
@@ -68,6 +70,14 @@ def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, de
         default_file = parse_bytes(defaults, "default list") if defaults is not None else None
     except UnreadableInput as exc:
         return FileResult(name, [], f"{name}: {exc}")
+    if not looks_like_a_list(file):
+        return FileResult(name, [], f"{name}: {NOT_A_LIST}")
+    return _check_file(file, name, settings, default_file=default_file)
+
+
+def check_parsed(file, name: str, settings: FileSettings | None = None, default_file=None) -> FileResult:
+    """`check_bytes` for a list that is already parsed (the language server parses edited lines only)."""
+    settings = settings or FileSettings()
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
     return _check_file(file, name, settings, default_file=default_file)
@@ -114,7 +124,8 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
     ranks = {code: rank for rank, code in enumerate(rules)}
     diagnostics.sort(key=lambda d: ((d.line << 24) + d.column << 8) + ranks.get(d.code, 255))
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
-    return FileResult(name, diagnostics, None, lines, summary=machine.summary(ctx))
+    return FileResult(name, diagnostics, None, lines, summary=machine.summary(ctx),
+                      context=ctx if settings.keep_context else None)
 
 
 def _mapped_summary(summary: dict, embedded) -> dict:

@@ -132,9 +132,8 @@ class ResolvedAxis:
             return value
         return self.parameter(path).typed_default
 
-    def _follow(self, path: str, reference: Reference, depth: int):
-        if depth > 8:  # a reference cycle; LIS205 reports self-references
-            return self.parameter(path).typed_default
+    def referenced(self, path: str, reference: Reference) -> str:
+        """The canonical concrete path a reference written at `path` points to (`P-AXIS-00212.0`)."""
         target = self.catalogue.by_id[reference.target]
         count = target.path.count("[i]")
         if count:
@@ -142,7 +141,12 @@ class ResolvedAxis:
             indices = ((reference.index,) + (0,) * (count - 1)) if reference.index is not None else (own + (0,) * count)[:count]
         else:
             indices = ()
-        concrete = fill_indices(target.path, indices)
+        return fill_indices(target.path, indices)
+
+    def _follow(self, path: str, reference: Reference, depth: int):
+        if depth > 8:  # a reference cycle; LIS205 reports self-references
+            return self.parameter(path).typed_default
+        concrete = self.referenced(path, reference)
         correction = self._corrected.get(concrete)
         return correction.used if correction is not None else self.written(concrete, depth + 1)
 

@@ -1,0 +1,287 @@
+#!/usr/bin/env python
+"""The language server's budgets (`benchmarks/run` runs this as its `lsp` part).
+
+    python benchmarks/lsp.py [--quick]
+
+- diagnostics after a one-character edit of a 2,000-line list: the server's own work for the
+  edit (apply the change, parse the edited line, lint, machine rules, LSP conversion), median,
+  against Lark's bare parse of the same text (tree only, our grammar);
+- hover on a parameter and completion of a path and of a symbol on that list, median, the
+  answer serialised as the server sends it;
+- the server process's resident memory after opening 100 typical lists (250 lines, in ten
+  folders of ten axes) over stdio, once every list's diagnostics arrived;
+- for information, the same edit end to end through a real server process (stdio, JSON-RPC,
+  debounce 0): from sending the change to receiving its diagnostics.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from generate import axis_list
+
+BUDGET_DIAGNOSTICS_MS = 50
+BUDGET_ANSWER_MS = 20
+BUDGET_MEMORY_MB = 300
+
+
+def verdict(ok: bool) -> str:
+    return "ok" if ok else "OVER BUDGET"
+
+
+def median_ms(samples: list[float]) -> float:
+    return statistics.median(samples) * 1000
+
+
+def bare_parse_ms(text: str, runs: int) -> float:
+    from lark import Lark
+
+    from achslint.syntax import _grammar_text
+
+    bare = Lark(_grammar_text(), parser="lalr", lexer="contextual", maybe_placeholders=False)
+    samples = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        bare.parse(text)
+        samples.append(time.perf_counter() - start)
+    return median_ms(samples)
+
+
+def in_process(runs: int) -> bool:
+    from lsprotocol import converters
+
+    from achslint.lsp import features
+    from achslint.lsp.documents import Document
+    from achslint.lsp.session import Session
+
+    converter = converters.get_converter()
+
+    def sent(answer) -> str:  # what the server puts on the wire
+        return json.dumps(converter.unstructure(answer))
+
+    folder = Path(tempfile.mkdtemp(prefix="achslint-lsp-bench-"))
+    path = folder / "achsmds1.lis"
+    text = axis_list(2000)
+    path.write_text(text, encoding="utf-8")
+    session = Session(folder)
+    document = Document(path.as_uri(), path, text, 1)
+    session.open(document)
+    snapshot, found, _ = session.diagnostics(document.uri)  # the first lint (not timed)
+    features.publishable(document, snapshot, found)
+    lines = document.lines
+    target = next(i for i, line in enumerate(lines) if line.split()[1:2] and line.split()[1].isdigit())
+    column = len(lines[target]) - 1
+
+    edit_samples = []
+    for run in range(runs):
+        start = time.perf_counter()
+        digit = str(run % 10)
+        document.apply((target, column), (target, column + 1), digit)  # one character
+        snapshot, found, _ = session.diagnostics(document.uri)
+        sent(features.publishable(document, snapshot, found))
+        edit_samples.append(time.perf_counter() - start)
+    edit = median_ms(edit_samples)
+    bare = bare_parse_ms(document.text, max(5, runs // 4))
+    ok_edit = edit <= BUDGET_DIAGNOSTICS_MS
+    print(f"language server, a {len(lines) - 1:,}-line list ({len(found)} findings)")
+    print(f"  diagnostics after a one-character edit   {edit:7.1f} ms median "
+          f"(budget <= {BUDGET_DIAGNOSTICS_MS} ms)  -> {verdict(ok_edit)}")
+    print(f"  Lark bare parse of the whole text         {bare:7.1f} ms  (edit / bare parse = {edit / bare:.2f})")
+
+    snapshot = session.snapshot(document.uri)
+    symbol_line = next(i for i, line in enumerate(lines) if line.startswith("kenngr.homing.homing_type"))
+    path_line = target  # a numeric parameter with a unit
+
+    def hover():
+        from lsprotocol import types as lsp
+
+        text_ = features.hover_text(snapshot.context, snapshot.file, path_line + 1, 3)
+        assert text_ and "In this list" in text_, text_
+        return sent(lsp.Hover(lsp.MarkupContent(lsp.MarkupKind.Markdown, text_ or "")))
+
+    typing = Document(document.uri + "-typing", None, "\n".join(
+        "getriebe[0].vb_re" if i == path_line else line for i, line in enumerate(lines)), 1)
+    session.open(typing)
+    typing_snapshot = session.snapshot(typing.uri)
+
+    def completed(line: int, column: int, wanted: str, where=document, current=snapshot) -> str:
+        answer = features.complete(where, current, line + 1, column)
+        assert any(item.label == wanted for item in answer.items), wanted
+        return sent(answer)
+
+    def complete_path():  # the line's path cut after `vb_re`, as if being typed
+        return completed(path_line, len("getriebe[0].vb_re") + 1, "getriebe[0].vb_reflow", typing, typing_snapshot)
+
+    def complete_top():
+        return completed(path_line, 1, "kenngr.homing.homing_type")
+
+    def complete_symbol():
+        return completed(symbol_line, len("kenngr.homing.homing_type") + 26, "CNC_CONTROLLED")
+
+    ok = ok_edit
+    for label, call in (("hover on a parameter (card, value, effect)", hover),
+                        ("completion of getriebe[0].vb_re", complete_path),
+                        ("completion at a line start (all paths)", complete_top),
+                        ("completion of a symbol value", complete_symbol)):
+        call()
+        samples = []
+        for _ in range(runs):
+            start = time.perf_counter()
+            call()
+            samples.append(time.perf_counter() - start)
+        took = median_ms(samples)
+        ok = ok and took <= BUDGET_ANSWER_MS
+        print(f"  {label:<44} {took:6.2f} ms (budget <= {BUDGET_ANSWER_MS} ms)  -> {verdict(took <= BUDGET_ANSWER_MS)}")
+    return ok
+
+
+class Client:
+    """A minimal LSP client over a server process's stdio."""
+
+    def __init__(self, command: list[str]):
+        self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                        stderr=subprocess.DEVNULL)
+        self.published: dict[str, tuple[float, int | None]] = {}
+        self.responses: dict[int, dict] = {}
+        self.lock = threading.Condition()
+        self.reader = threading.Thread(target=self._read, daemon=True)
+        self.reader.start()
+        self.next_id = 0
+
+    def _read(self) -> None:
+        stream = self.process.stdout
+        while True:
+            length = None
+            while True:
+                header = stream.readline()
+                if not header:
+                    return
+                if header in (b"\r\n", b"\n"):
+                    break
+                if header.lower().startswith(b"content-length:"):
+                    length = int(header.split(b":")[1])
+            message = json.loads(stream.read(length))
+            with self.lock:
+                if message.get("method") == "textDocument/publishDiagnostics":
+                    params = message["params"]
+                    self.published[params["uri"]] = (time.perf_counter(), params.get("version"))
+                elif "id" in message and "method" not in message:
+                    self.responses[message["id"]] = message
+                self.lock.notify_all()
+
+    def send(self, message: dict) -> None:
+        body = json.dumps({"jsonrpc": "2.0", **message}).encode("utf-8")
+        self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        self.process.stdin.flush()
+
+    def request(self, method: str, params: dict) -> dict:
+        self.next_id += 1
+        number = self.next_id
+        self.send({"id": number, "method": method, "params": params})
+        with self.lock:
+            self.lock.wait_for(lambda: number in self.responses, timeout=120)
+            return self.responses.pop(number)
+
+    def wait(self, check, timeout: float = 300) -> None:
+        with self.lock:
+            if not self.lock.wait_for(check, timeout=timeout):
+                raise SystemExit("the server did not answer in time")
+
+    def rss_mb(self) -> float:
+        for line in Path(f"/proc/{self.process.pid}/status").read_text().splitlines():
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024
+        return float("nan")
+
+    def close(self) -> None:
+        try:
+            self.request("shutdown", None)
+            self.send({"method": "exit"})
+            self.process.wait(timeout=10)
+        except Exception:  # noqa: BLE001 - the measurement is done
+            self.process.kill()
+
+
+def server_process(lists: int, runs: int) -> bool:
+    folder = Path(tempfile.mkdtemp(prefix="achslint-lsp-memory-"))
+    client = Client([sys.executable, "-m", "achslint", "server"])
+    client.request("initialize", {"processId": os.getpid(), "rootUri": folder.as_uri(), "capabilities": {},
+                                  "initializationOptions": {"debounceMs": 0}})
+    client.send({"method": "initialized", "params": {}})
+    uris = []
+    for number in range(lists):
+        machine = folder / f"machine{number // 10}"
+        machine.mkdir(exist_ok=True)
+        path = machine / f"achsmds{number % 10 + 1}.lis"
+        text = axis_list(250, seed=number + 1)
+        path.write_text(text, encoding="utf-8")
+        uris.append(path.as_uri())
+        client.send({"method": "textDocument/didOpen", "params": {"textDocument": {
+            "uri": path.as_uri(), "languageId": "achsmds", "version": 1, "text": text}}})
+    started = time.perf_counter()
+    client.wait(lambda: all(uri in client.published for uri in uris))
+    opened = time.perf_counter() - started
+    time.sleep(0.5)
+    rss = client.rss_mb()
+    ok = rss <= BUDGET_MEMORY_MB
+    print(f"language server process, {lists} lists of 250 lines open ({lists // 10} machines of 10 axes)")
+    print(f"  resident memory   {rss:7.1f} MB (budget <= {BUDGET_MEMORY_MB} MB)  -> {verdict(ok)}")
+    print(f"  all diagnostics published {opened:5.2f} s after the last didOpen was sent")
+
+    big = folder / "big" / "achsmds1.lis"
+    big.parent.mkdir()
+    text = axis_list(2000)
+    big.write_text(text, encoding="utf-8")
+    uri = big.as_uri()
+    client.send({"method": "textDocument/didOpen", "params": {"textDocument": {
+        "uri": uri, "languageId": "achsmds", "version": 1, "text": text}}})
+    client.wait(lambda: uri in client.published)
+    lines = text.splitlines()
+    target = next(i for i, line in enumerate(lines) if line.split()[1:2] and line.split()[1].isdigit())
+    column = len(lines[target]) - 1
+    samples = []
+    for run in range(runs):
+        version = run + 2
+        sent = time.perf_counter()
+        client.send({"method": "textDocument/didChange", "params": {
+            "textDocument": {"uri": uri, "version": version},
+            "contentChanges": [{"range": {"start": {"line": target, "character": column},
+                                          "end": {"line": target, "character": column + 1}}, "text": str(run % 10)}]}})
+        client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
+        samples.append(client.published[uri][0] - sent)
+    print(f"  end to end (stdio, 2,000-line list, debounce 0): change -> diagnostics  {median_ms(samples):6.1f} ms median "
+          "(information)")
+    client.close()
+    return ok
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description="Measure the language server against its budgets.")
+    parser.add_argument("--quick", action="store_true", help="fewer repetitions")
+    args = parser.parse_args()
+    try:
+        import pygls.lsp.server  # noqa: F401
+    except ImportError:
+        print("language server: SKIPPED (pip install 'achslint[lsp]' to measure it)")
+        return 0
+    runs = 15 if args.quick else 41
+    ok = in_process(runs)
+    print()
+    ok = server_process(100, runs) and ok
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,183 @@
+"""Open documents: their text, LSP positions, and a parse that only re-reads edited lines.
+
+This module does not import pygls, so the benchmarks and tests can use it on its own.
+
+Lines are numbered as the parser numbers them (only CR, LF and CRLF end a line, as in the
+Language Server Protocol), not by `str.splitlines`, which also breaks at form feeds and
+U+2028 and would shift every line after them. Columns in achslint are code points, 1-based;
+LSP positions are 0-based and count UTF-16 code units unless the client agreed on UTF-32
+(code points) or UTF-8.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..syntax import BLANK, END, Line, ListFile, parse_text, split_lines
+
+BOM = "\ufeff"
+
+
+def units(text: str, encoding: str) -> int:
+    """The length of `text` in the client's position units."""
+    if encoding == "utf-32" or text.isascii():
+        return len(text)
+    if encoding == "utf-8":
+        return len(text.encode("utf-8", "surrogatepass"))
+    return len(text) + sum(1 for char in text if ord(char) > 0xFFFF)
+
+
+def code_points(text: str, count: int, encoding: str) -> int:
+    """How many code points of `text` make up `count` units (clamped to the text)."""
+    if encoding == "utf-32" or text.isascii():
+        return max(0, min(count, len(text)))
+    seen = 0
+    for index, char in enumerate(text):
+        if seen >= count:
+            return index
+        seen += units(char, encoding)
+    return len(text)
+
+
+class LineCache:
+    """Parses a document line by line, reusing the lines an edit did not touch.
+
+    Every line of a list is read on its own by the grammar (a line break always ends a
+    statement), so parsing the changed lines and keeping the others gives the same lines
+    as parsing the whole text; a test checks this on generated edits.
+    """
+
+    LIMIT = 1 << 16  # distinct line texts kept; a pathological document cannot grow it without bound
+
+    def __init__(self) -> None:
+        self._parsed: dict[str, Line] = {}  # line body -> its parse (number 0, no line break)
+        self._previous: dict[tuple[int, str], Line] = {}  # (number, text with break) -> Line of the last parse
+
+    def _one(self, body: str) -> Line:
+        template = self._parsed.get(body)
+        if template is None:
+            if len(self._parsed) > self.LIMIT:
+                self._parsed.clear()
+            template = self._parsed[body] = parse_text(body).lines[0]
+        return template
+
+    def parse(self, text: str, name: str, raw_lines: list[str] | None = None) -> ListFile:
+        raw_lines = list(raw_lines) if raw_lines is not None else split_lines(text, keepends=True)
+        if not raw_lines or raw_lines[-1].endswith(("\n", "\r")):
+            raw_lines.append("")  # the parser reads an empty last line after a final line break
+        previous, current = self._previous, {}
+        lines: list[Line] = []
+        end_index = None
+        for number, raw in enumerate(raw_lines, 1):
+            key = (number, raw)
+            line = previous.get(key)
+            if line is None:
+                body = raw.rstrip("\r\n")
+                line = copy.copy(self._one(body))
+                line.newline = raw[len(body):]
+                line.number = number
+            current[key] = line
+            lines.append(line)
+            if end_index is None and line.kind == END:
+                end_index = number - 1
+        self._previous = current
+        return ListFile(name=name, lines=lines, end_index=end_index)
+
+
+@dataclass
+class Document:
+    uri: str
+    path: Path | None  # None for documents that are not files (untitled, other schemes)
+    text: str
+    version: int | None = None
+    encoding: str = "utf-16"  # the position encoding agreed with the client
+    _lines: list[str] | None = field(default=None, repr=False)
+    _raw: list[str] | None = field(default=None, repr=False)  # the lines with their breaks
+    cache: LineCache = field(default_factory=LineCache, repr=False)
+
+    @property
+    def name(self) -> str:
+        """What diagnostics and results call the document: its path, else its URI."""
+        return str(self.path) if self.path is not None else self.uri
+
+    @property
+    def lines(self) -> list[str]:
+        """Line texts without their breaks, numbered as the parser numbers them."""
+        if self._lines is None:
+            self._lines = [raw.rstrip("\r\n") for raw in self.raw_lines]
+            if not self._lines or self.text.endswith(("\n", "\r")):
+                self._lines.append("")
+        return self._lines
+
+    @property
+    def raw_lines(self) -> list[str]:
+        if self._raw is None:
+            self._raw = split_lines(self.text, keepends=True)
+        return self._raw
+
+    @property
+    def bom(self) -> bool:
+        return self.text.startswith(BOM)
+
+    @property
+    def body(self) -> str:
+        """The text as achslint reads it: without a byte-order mark the editor kept as a character."""
+        return self.text[1:] if self.bom else self.text
+
+    def line(self, number: int) -> str:
+        """Line `number` (1-based) as achslint sees it (without the byte-order mark)."""
+        lines = self.lines
+        if not 1 <= number <= len(lines):
+            return ""
+        text = lines[number - 1]
+        return text[1:] if number == 1 and self.bom else text
+
+    # -- positions -------------------------------------------------------------------------------
+    def to_lsp(self, line: int, column: int) -> tuple[int, int]:
+        """A 1-based achslint (line, column) as a 0-based LSP (line, character)."""
+        lines = self.lines
+        line = max(1, min(line, len(lines)))
+        text = self.line(line)
+        column = max(1, min(column, len(text) + 1))
+        shift = 1 if line == 1 and self.bom else 0
+        return line - 1, units(text[: column - 1], self.encoding) + shift
+
+    def from_lsp(self, line: int, character: int) -> tuple[int, int]:
+        """A 0-based LSP position as a 1-based achslint (line, column), clamped to the document."""
+        lines = self.lines
+        number = max(1, min(line + 1, len(lines)))
+        text = self.line(number)
+        if number == 1 and self.bom:
+            character = max(0, character - 1)
+        return number, code_points(text, character, self.encoding) + 1
+
+    # -- edits -----------------------------------------------------------------------------------
+    def offset(self, line: int, character: int) -> int:
+        """The offset in `text` of an LSP position (clamped)."""
+        raw = self.raw_lines
+        if line >= len(raw):
+            return len(self.text)
+        start = sum(len(r) for r in raw[:line])
+        body = raw[line].rstrip("\r\n")
+        return start + code_points(body, character, self.encoding)
+
+    def apply(self, start: tuple[int, int] | None, end: tuple[int, int] | None, new_text: str) -> None:
+        """Apply one content change (a whole-document change when `start` is None)."""
+        if start is None or end is None:
+            self.text = new_text
+            self._lines = self._raw = None
+        else:
+            a, b = self.offset(*start), self.offset(*end)
+            self.text = self.text[:a] + new_text + self.text[max(a, b):]
+        self._lines = self._raw = None
+
+    def parse(self) -> ListFile:
+        if self.bom:
+            return self.cache.parse(self.body, self.name)
+        return self.cache.parse(self.text, self.name, self.raw_lines)
+
+
+def blank_file(name: str) -> ListFile:
+    return ListFile(name=name, lines=[Line(BLANK, number=1)])

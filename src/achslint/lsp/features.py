@@ -1,0 +1,652 @@
+"""Editor features as Language Server Protocol answers, computed from achslint's own data.
+
+Each function takes the session's document and snapshot and returns lsprotocol types. The
+texts come from the catalogue (`explain.parameter_card`), the resolved axis
+(`explain.parameter_row`: value, source, correction, effect under the homing strategy), the
+units module, the rules' documentation and their fixes; formatting is `fmt`'s.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import re
+from functools import lru_cache
+from pathlib import Path
+
+from lsprotocol import types as lsp
+
+from .. import syntax
+from ..catalogue import (
+    BOOL,
+    INTEGER,
+    REAL,
+    Parameter,
+    catalogue,
+    fill_indices,
+)
+from ..diagnostics import Diagnostic, Severity
+from ..numbers import Reference
+from ..rules import registry
+from ..units import describe, unit_label
+from .documents import Document, units
+
+SEVERITY = {Severity.ERROR: lsp.DiagnosticSeverity.Error, Severity.WARNING: lsp.DiagnosticSeverity.Warning,
+            Severity.INFO: lsp.DiagnosticSeverity.Information}
+FIX_ALL = "source.fixAll.achslint"
+_CODE = re.compile(r"LIS[0-9]{3}", re.IGNORECASE)
+
+
+# -- positions ------------------------------------------------------------------------------------
+
+def lsp_range(document: Document, line: int, column: int, end_line: int, end_column: int) -> lsp.Range:
+    start = document.to_lsp(line, column)
+    end = document.to_lsp(end_line, end_column)
+    end = max(end, start)
+    return lsp.Range(lsp.Position(*start), lsp.Position(*end))
+
+
+def uri_of(path: str | Path) -> str:
+    return Path(os.path.abspath(path)).as_uri()
+
+
+# -- rule documentation ------------------------------------------------------------------------------
+
+@lru_cache(maxsize=1)
+def rules_document() -> str | None:
+    """A file URI of the rule documentation: docs/rules.md of a source checkout, else a copy generated
+    from the rule modules into the user's cache folder (the same text); None when neither works."""
+    checkout = Path(__file__).resolve().parents[3] / "docs" / "rules.md"
+    if checkout.is_file():
+        return checkout.as_uri()
+    from .. import __version__
+    from ..docs import rules_markdown
+
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    target = Path(base) / "achslint" / f"rules-{__version__}.md"
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        text = rules_markdown()
+        if not target.is_file() or target.read_text(encoding="utf-8") != text:
+            target.write_text(text, encoding="utf-8")
+    except OSError:
+        return None
+    return target.as_uri()
+
+
+def rule_href(code: str) -> str | None:
+    base = rules_document()
+    return f"{base}#{code.lower()}" if base else None
+
+
+# -- diagnostics -----------------------------------------------------------------------------------
+
+def to_lsp_diagnostic(document: Document, d: Diagnostic) -> lsp.Diagnostic:
+    related = []
+    for r in d.related:
+        where = lsp_range(document, r.line, r.column, r.line, r.column + 1) if r.path == d.path else \
+            lsp.Range(lsp.Position(max(r.line - 1, 0), max(r.column - 1, 0)), lsp.Position(max(r.line - 1, 0), r.column))
+        target = document.uri if r.path == d.path else uri_of(r.path)
+        text = r.message or (f"`{r.parameter}`" if r.parameter else "related")
+        if r.parameter and r.message:
+            text = f"`{r.parameter}`: {r.message}"
+        related.append(lsp.DiagnosticRelatedInformation(lsp.Location(target, where), text))
+    href = rule_href(d.code)
+    return lsp.Diagnostic(
+        range=lsp_range(document, d.line, d.column, d.end_line, d.end_column),
+        message=d.message,
+        severity=SEVERITY[d.severity],
+        code=d.code,
+        code_description=lsp.CodeDescription(href) if href else None,
+        source="achslint",
+        related_information=related or None,
+        data={"fix": d.fix.applicability} if d.fix else None,
+    )
+
+
+def publishable(document: Document, snapshot, found: list[Diagnostic]) -> list[lsp.Diagnostic]:
+    out = [to_lsp_diagnostic(document, d) for d in found]
+    start = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1))
+    if snapshot is not None and snapshot.result.error:
+        out.insert(0, lsp.Diagnostic(start, snapshot.result.error, lsp.DiagnosticSeverity.Error, source="achslint"))
+    if snapshot is not None and snapshot.config_error:
+        out.insert(0, lsp.Diagnostic(start, f"{snapshot.config_error} (the built-in defaults are used)",
+                                     lsp.DiagnosticSeverity.Error, source="achslint"))
+    return out
+
+
+# -- where the cursor is -------------------------------------------------------------------------------
+
+def part_at(line: syntax.Line, column: int) -> str | None:
+    """"path", "value", "rest", "end" or "comment": the part of a parsed line at a 1-based column."""
+    if line.kind == syntax.END:
+        return "end" if column <= line.path_column + len(line.path or "") else "rest"
+    if line.kind == syntax.COMMENT:
+        return "comment"
+    if line.kind != syntax.ASSIGNMENT:
+        return None
+    if column < line.path_column:
+        return None
+    if column <= line.path_column + len(line.path or ""):
+        return "path"
+    if line.value is not None and line.value_column <= column <= line.value_column + len(line.value):
+        return "value"
+    if line.rest is not None and column >= line.rest_column:
+        return "rest"
+    return None
+
+
+def code_at(text: str, index: int) -> str | None:
+    """A rule code (LIS202) around a 0-based index of `text`."""
+    for match in _CODE.finditer(text):
+        if match.start() <= index <= match.end():
+            return match.group(0).upper()
+    return None
+
+
+def setting_of(context, line: syntax.Line):
+    if context is None:
+        return None
+    for setting in context.analysis.settings:
+        if setting.line is line:
+            return setting
+    return None
+
+
+# -- hover --------------------------------------------------------------------------------------------
+
+def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
+    from ..explain import parameter_card
+
+    card = parameter_card(parameter)
+    b = (lambda s: f"**{s}**") if markdown else (lambda s: s)
+    c = (lambda s: f"`{s}`") if markdown else (lambda s: s)
+    out = [f"{b(card['p_axis'])} {c(card['path'])}", "", card["description"], ""]
+    rows = [
+        ("type", card["type"]),
+        ("unit", card["units"] and ", ".join(f"{v} ({k})" for k, v in card["units"].items())),
+        ("range", card["range"]),
+        ("checked range", card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}"),
+        ("symbols", card["symbols"] and ", ".join(card["symbols"])),
+        ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
+        ("max length", card["max_length"]),
+        ("default", card["default"] if card["default"] not in (None, "") else None),
+        ("indices", card["index_bounds"] and ", ".join(f"{a}..{b_}" for a, b_ in card["index_bounds"])),
+        ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
+        ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
+        ("old names", ", ".join(f"{a['path']} ({a['kind']})" for a in card["aliases"] if a["kind"] != "misspelling")),
+        ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
+    ]
+    for key, value in rows:
+        if value not in (None, "", [], {}):
+            out.append(f"- {key}: {value}")
+    return out
+
+
+def value_words(values, path: str) -> str:
+    parameter = values.parameter(path)
+    unit = parameter.unit(values.axis_type)
+    value = values.get(path)
+    if isinstance(value, bool):
+        return str(int(value))
+    if isinstance(value, (int, float)):
+        return describe(value, unit)
+    return "(empty)" if value in ("", None) else str(value)
+
+
+def axis_lines(context, path: str, markdown: bool = True) -> list[str]:
+    """This list's value of a parameter: human units, where it comes from, correction, effect."""
+    from ..explain import parameter_row
+    from ..homing.registry import is_homing_parameter
+
+    values = context.values
+    strategy = context.strategy
+    row = parameter_row(values, strategy, path)
+    c = (lambda s: f"`{s}`") if markdown else (lambda s: s)
+    out = [("**In this list**" if markdown else "In this list") + f" ({c(path)}):"]
+    out.append(f"- value: {value_words(values, path)}")
+    out.append(f"- from: {values.origin(path)}" if values.is_set(path) else "- from: the built-in default")
+    correction = values.correction(path)
+    if correction is not None:
+        out.append(f"- CNC correction {correction.error}: written {correction.written}, the CNC uses "
+                   f"{correction.used} — {correction.reason}")
+    found_effect = row["effective"]
+    if is_homing_parameter(path) or not found_effect:
+        verdict = "takes effect" if found_effect else "has no effect"
+        out.append(f"- {verdict} under {strategy.title}: {row['reason']}")
+    return out
+
+
+def hover_text(context, file, line_number: int, column: int, markdown: bool = True) -> str | None:
+    """The hover text at a 1-based (line, column) of a parsed list with its context."""
+    if file is None or not 1 <= line_number <= len(file.lines):
+        return None
+    line = file.lines[line_number - 1]
+    part = part_at(line, column)
+    if part is None:
+        return None
+    if part == "end":
+        return "\n".join([
+            "**Ende** — the end marker" if markdown else "Ende — the end marker",
+            "",
+            ("The CNC stops reading the list here: lines after it are ignored (LIS003). Without it the "
+             "CNC reports the list as incomplete (LIS002); `End` or `ENDE` are not the marker (LIS004)."),
+        ])
+    if part in ("rest", "comment"):
+        text = line.rest if part == "rest" else (line.indent + (line.comment or ""))
+        start = line.rest_column if part == "rest" else 1
+        code = code_at(text or "", column - start)
+        return rule_text(code, markdown) if code else None
+    setting = setting_of(context, line)
+    resolution = catalogue().resolve(line.path or "") if line.path_ok else None
+    if resolution is None:
+        return None
+    parameter = resolution.parameter
+    canonical = setting.canonical if setting is not None else None
+    if part == "path":
+        out = card_text(parameter, markdown)
+        if resolution.alias is not None and resolution.alias.kind != "alternative":
+            out.insert(2, f"(written with the {resolution.alias.kind} name {line.path})")
+        if context is not None and canonical is not None:
+            out += [""] + axis_lines(context, canonical, markdown)
+        return "\n".join(out)
+    # the value
+    if context is None or canonical is None:
+        return None
+    values = context.values
+    unit = parameter.unit(values.axis_type)
+    written = setting.value
+    if isinstance(written, Reference):
+        target = values.referenced(canonical, written)
+        referenced = values.parameter(target)
+        origin = f"from: {values.origin(target)}" if values.is_set(target) else "from: the built-in default"
+        out = [f"{written} → {target} ({referenced.summary})", "", f"resolved value: {value_words(values, target)}",
+               origin]
+        return "\n".join(out)
+    if isinstance(written, bool):
+        words = f"{int(written)} ({'on' if written else 'off'})"
+    elif isinstance(written, (int, float)):
+        words = describe(written, unit)
+    elif written is not None and parameter.symbols:
+        words = f"{written} (one of {', '.join(parameter.symbols)})"
+    else:
+        return None
+    out = [words]
+    correction = values.correction(canonical)
+    if correction is not None:
+        out.append(f"the CNC uses {value_words(values, canonical)} instead ({correction.error}: {correction.reason})")
+    return "\n\n".join(out)
+
+
+def rule_text(code: str, markdown: bool = True) -> str | None:
+    rule = registry().get(code)
+    if rule is None:
+        return None
+    head = f"{rule.code} {rule.name} ({rule.severity.value}; fix: {rule.fix})"
+    out = [f"**{head}**" if markdown else head, "", rule.summary]
+    for title in ("What", "Why"):
+        body = rule.section(title)
+        if body:
+            out += ["", f"{title}: {body}"]
+    href = rule_href(code)
+    if href and markdown:
+        out += ["", f"[Documentation]({href})"]
+    return "\n".join(out)
+
+
+# -- completion ------------------------------------------------------------------------------------
+
+_PATH_PREFIX = re.compile(r"^[ \t]*([A-Za-z_][A-Za-z0-9_\-.\[\]]*)?$")
+_VALUE_PREFIX = re.compile(r"^[ \t]*([A-Za-z_][A-Za-z0-9_\-.\[\]]*)[ \t]+(\S*)$")
+_NOQA_PREFIX = re.compile(r"noqa:[ \t]*(?:[A-Za-z0-9]+[ \t]*,[ \t]*)*([A-Za-z0-9]*)$", re.IGNORECASE)
+
+
+def _applies(parameter: Parameter, context) -> bool:
+    """Whether a parameter takes effect for the list's drive and axis type (as LIS105 judges it)."""
+    if context is None:
+        return True
+    analysis = context.analysis
+    if analysis.drive_type is not None and parameter.drive_group and analysis.drive_type not in parameter.drive_group:
+        return False
+    return not (analysis.axis_type_known and parameter.axis_types and analysis.axis_type not in parameter.axis_types)
+
+
+def _snippet_path(pattern: str, typed: tuple[int, ...], bounds, snippets: bool) -> str:
+    """A catalogue pattern with the typed indices filled in and the others as snippet placeholders."""
+    text = fill_indices(pattern, typed)
+    number = 0
+    out = []
+    parts = text.split("[i]")
+    for index, part in enumerate(parts):
+        out.append(part.replace("$", "\\$") if snippets else part)
+        if index < len(parts) - 1:
+            low = bounds[len(typed) + index][0] if len(typed) + index < len(bounds) else 0
+            number += 1
+            out.append(f"[${{{number}:{low}}}]" if snippets else f"[{low}]")
+    return "".join(out)
+
+
+def complete(document: Document, snapshot, line_number: int, column: int, snippets: bool = True,
+             edit_range_default: bool = False) -> lsp.CompletionList:
+    """Completion at a 1-based position: rule codes after `noqa:`, parameter paths at the start of a
+    line, symbols and references in the value. With `edit_range_default` (the client supports
+    `itemDefaults.editRange`) the range the items replace is sent once instead of with every item."""
+    text = document.line(line_number)
+    before = text[: column - 1]
+    context = snapshot.context if snapshot is not None else None
+    noqa = _NOQA_PREFIX.search(before)
+    if noqa and "noqa" in before.lower():
+        start = column - len(noqa.group(1))
+        return lsp.CompletionList(False, _code_items(document, snapshot, line_number, start, column))
+    match = _PATH_PREFIX.match(before)
+    if match:
+        typed = match.group(1) or ""
+        start = column - len(typed)
+        where = lsp_range(document, line_number, start, line_number, column)
+        items = _path_items(context, typed, snippets, None if edit_range_default else where)
+        defaults = lsp.CompletionItemDefaults(edit_range=where) if edit_range_default else None
+        return lsp.CompletionList(False, items, item_defaults=defaults)
+    match = _VALUE_PREFIX.match(before)
+    if match:
+        start = column - len(match.group(2))
+        return lsp.CompletionList(False, _value_items(document, context, line_number, start, column,
+                                                      match.group(1), match.group(2)))
+    return lsp.CompletionList(False, [])
+
+
+def _edit(document: Document, line: int, start: int, end: int, text: str) -> lsp.TextEdit:
+    return lsp.TextEdit(lsp_range(document, line, start, line, end), text)
+
+
+def _path_items(context, typed, snippets, where: lsp.Range | None) -> list[lsp.CompletionItem]:
+    """Paths that take effect for the list's drive and axis type; old names marked deprecated. Items carry
+    no documentation: `completionItem/resolve` adds the card of the one the user looks at."""
+    pattern, indices = syntax.path_pattern(typed)
+    # Segments the user finished (up to the last dot) must match; the client filters the rest.
+    done = pattern.rsplit(".", 1)[0] + "." if "." in pattern else ""
+    done_indices = indices[: done.count("[i]")]
+    items = []
+    plain, snippet = lsp.InsertTextFormat.PlainText, lsp.InsertTextFormat.Snippet
+    for parameter in catalogue().parameters:
+        if not parameter.path.startswith(done) or not _applies(parameter, context):
+            continue
+        insert = _snippet_path(parameter.path, done_indices, parameter.index_bounds, snippets)
+        label = fill_indices(parameter.path, done_indices)
+        is_snippet = snippets and "$" in insert
+        items.append(lsp.CompletionItem(
+            label=label, kind=lsp.CompletionItemKind.Field, detail=f"{parameter.id} {parameter.type}",
+            text_edit=lsp.TextEdit(where, insert) if where is not None else None,
+            text_edit_text=insert if where is None and insert != label else None,
+            insert_text_format=snippet if is_snippet else plain,
+        ))
+        for alias in parameter.aliases:
+            if alias.kind != "old" or not alias.path.startswith(done):
+                continue
+            items.append(lsp.CompletionItem(
+                label=alias.path, kind=lsp.CompletionItemKind.Field, detail=f"old name of {parameter.path}",
+                tags=[lsp.CompletionItemTag.Deprecated], sort_text="~" + alias.path,
+                text_edit=lsp.TextEdit(where, alias.path) if where is not None else None,
+            ))
+    return items
+
+
+def _value_items(document, context, line, start, end, path, typed) -> list[lsp.CompletionItem]:
+    resolution = catalogue().resolve(path)
+    if resolution is None:
+        return []
+    parameter = resolution.parameter
+    items = []
+    for symbol in parameter.symbols:
+        items.append(lsp.CompletionItem(label=symbol, kind=lsp.CompletionItemKind.EnumMember,
+                                        detail=f"{parameter.path} ({parameter.id})",
+                                        documentation=f"a value of {parameter.path}: {parameter.summary}",
+                                        text_edit=_edit(document, line, start, end, symbol)))
+    if parameter.kind == BOOL and not parameter.symbols:
+        for value, words in (("0", "off"), ("1", "on")):
+            items.append(lsp.CompletionItem(label=value, kind=lsp.CompletionItemKind.Value, detail=words,
+                                            text_edit=_edit(document, line, start, end, value)))
+    if parameter.kind in (INTEGER, REAL) and (typed.upper().startswith("P") or not typed):
+        axis_type = context.values.axis_type if context is not None else "T"
+        unit = parameter.unit(axis_type)
+        for other in catalogue().parameters:
+            if other is parameter or other.kind not in (INTEGER, REAL) or other.unit(axis_type) != unit:
+                continue
+            label = other.id + (".0" if "[i]" in other.path else "")
+            items.append(lsp.CompletionItem(
+                label=label, kind=lsp.CompletionItemKind.Reference, detail=other.path,
+                documentation=f"take the value of {other.path} ({unit_label(unit) or 'no unit'}): {other.summary}",
+                sort_text="~" + label, text_edit=_edit(document, line, start, end, label)))
+    return items
+
+
+def _code_items(document, snapshot, line, start, end) -> list[lsp.CompletionItem]:
+    here = set()
+    if snapshot is not None:
+        here = {d.code for d in snapshot.result.diagnostics if d.line == line}
+    items = []
+    for code, rule in registry().items():
+        items.append(lsp.CompletionItem(
+            label=code, kind=lsp.CompletionItemKind.Constant, detail=rule.summary,
+            documentation=f"{rule.name} ({rule.severity.value})",
+            sort_text=("0" if code in here else "1") + code,
+            text_edit=_edit(document, line, start, end, code)))
+    return items
+
+
+def resolve_item(item: lsp.CompletionItem, markdown: bool = True) -> lsp.CompletionItem:
+    """Add the parameter card to a path item (computed only for the item the user looks at)."""
+    resolution = catalogue().resolve(item.label) if item.kind == lsp.CompletionItemKind.Field else None
+    if resolution is not None and item.documentation is None:
+        text = "\n".join(card_text(resolution.parameter, markdown))
+        item.documentation = lsp.MarkupContent(lsp.MarkupKind.Markdown if markdown else lsp.MarkupKind.PlainText, text)
+    return item
+
+
+# -- code actions ----------------------------------------------------------------------------------
+
+def text_edits(document: Document, fix) -> list[lsp.TextEdit]:
+    edits = [lsp.TextEdit(lsp_range(document, e.line, e.column, e.end_line, e.end_column), e.content)
+             for e in fix.edits]
+    if fix.remove_bom and document.bom:
+        edits.append(lsp.TextEdit(lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)), ""))
+    return edits
+
+
+def diff_edits(document: Document, new_text: str) -> list[lsp.TextEdit]:
+    """The line edits that turn the document's text into `new_text`."""
+    old = syntax.split_lines(document.text, keepends=True)
+    new = syntax.split_lines(new_text, keepends=True)
+    edits = []
+    matcher = difflib.SequenceMatcher(None, old, new, autojunk=False)
+    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
+        if tag == "equal":
+            continue
+        edits.append(lsp.TextEdit(lsp.Range(_line_start(document, old, i1), _line_start(document, old, i2)),
+                                  "".join(new[j1:j2])))
+    return edits
+
+
+def _line_start(document: Document, old: list[str], index: int) -> lsp.Position:
+    if index < len(old) or (old and old[-1].endswith(("\n", "\r"))):
+        return lsp.Position(index, 0)
+    if not old:
+        return lsp.Position(0, 0)
+    return lsp.Position(len(old) - 1, units(old[-1], document.encoding))
+
+
+def noqa_edit(document: Document, file, d: Diagnostic) -> lsp.TextEdit | None:
+    """Where `noqa: CODE` goes: into the line's trailing comment, else a new comment after the value
+    (`#` after a number or reference, `(` after text, where only `(` starts a comment)."""
+    from ..suppression import LINE_NOQA
+
+    if file is None or not 1 <= d.line <= len(file.lines):
+        return None
+    line = file.lines[d.line - 1]
+    end = document.to_lsp(d.line, line.end_column)
+    at_end = lsp.Range(lsp.Position(*end), lsp.Position(*end))
+    if line.kind != syntax.ASSIGNMENT or not line.path_ok or line.value is None:
+        top = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 0))
+        return lsp.TextEdit(top, f"# achslint: noqa: {d.code}{line.newline or chr(10)}")
+    trailing = line.rest or ""
+    existing = LINE_NOQA.search(trailing)
+    if existing and existing.group("codes"):
+        column = line.rest_column + existing.end()
+        where = document.to_lsp(d.line, column)
+        return lsp.TextEdit(lsp.Range(lsp.Position(*where), lsp.Position(*where)), f", {d.code}")
+    if existing:
+        return None  # a bare noqa already suppresses everything
+    if line.rest is not None:
+        return lsp.TextEdit(at_end, f"  noqa: {d.code}")
+    marker = "#" if line.value_kind in (syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE) else "("
+    return lsp.TextEdit(at_end, f"  {marker} noqa: {d.code}")
+
+
+def code_actions(document: Document, snapshot, found: list[Diagnostic], request: lsp.Range,
+                 only: list[str] | None, fix_all_edits) -> list[lsp.CodeAction]:
+    start_line, end_line = request.start.line + 1, request.end.line + 1
+    wanted = lambda kind: not only or any(kind == k or kind.startswith(k + ".") for k in only)
+    actions = []
+    xml = snapshot is None or snapshot.file is None
+    if wanted(lsp.CodeActionKind.QuickFix):
+        for d in found:
+            if not (d.line <= end_line and d.end_line >= start_line):
+                continue
+            diagnostic = to_lsp_diagnostic(document, d)
+            if d.fix is not None and d.fix.edits or (d.fix is not None and d.fix.remove_bom):
+                unsafe = d.fix.applicability != "safe"
+                actions.append(lsp.CodeAction(
+                    title=f"{d.code}: {d.fix.description}" + (" (unsafe fix: check the result)" if unsafe else ""),
+                    kind=lsp.CodeActionKind.QuickFix, diagnostics=[diagnostic], is_preferred=not unsafe,
+                    edit=lsp.WorkspaceEdit(changes={document.uri: text_edits(document, d.fix)})))
+            if not xml and d.path == document.name:
+                edit = noqa_edit(document, snapshot.file, d)
+                if edit is not None:
+                    whole_file = edit.new_text.startswith("# achslint: noqa")
+                    actions.append(lsp.CodeAction(
+                        title=f"Suppress {d.code} in this file (noqa)" if whole_file
+                        else f"Suppress {d.code} on this line (noqa)",
+                        kind=lsp.CodeActionKind.QuickFix, diagnostics=[diagnostic],
+                        edit=lsp.WorkspaceEdit(changes={document.uri: [edit]})))
+    if not xml and any(d.fix is not None and d.fix.applicability == "safe" for d in found):
+        for kind in (FIX_ALL, lsp.CodeActionKind.SourceFixAll):
+            if only and wanted(kind):
+                edits = fix_all_edits()
+                if edits:
+                    actions.append(lsp.CodeAction("achslint: fix all safe findings", kind=FIX_ALL,
+                                                  edit=lsp.WorkspaceEdit(changes={document.uri: edits})))
+                break
+        else:
+            if not only or wanted(lsp.CodeActionKind.QuickFix):
+                edits = fix_all_edits()
+                if edits:
+                    actions.append(lsp.CodeAction("achslint: fix all safe findings", kind=lsp.CodeActionKind.QuickFix,
+                                                  edit=lsp.WorkspaceEdit(changes={document.uri: edits})))
+    return actions
+
+
+# -- formatting ------------------------------------------------------------------------------------
+
+def format_document(document: Document, file) -> list[lsp.TextEdit]:
+    from ..fmt import format_file
+
+    formatted = format_file(file)
+    return diff_edits(document, ("\ufeff" if document.bom else "") + formatted)
+
+
+def format_range(document: Document, file, request: lsp.Range) -> list[lsp.TextEdit]:
+    from ..fmt import format_line, value_column
+
+    column = value_column(file)
+    edits = []
+    first, last = request.start.line + 1, request.end.line + (1 if request.end.character else 0)
+    for line in file.lines[max(first, 1) - 1: max(last, first)]:
+        body = format_line(line, column)
+        if body != line.body:
+            edits.append(lsp.TextEdit(lsp_range(document, line.number, 1, line.number, line.end_column), body))
+    return edits
+
+
+# -- outline and definitions ---------------------------------------------------------------------------
+
+def document_symbols(document: Document, file) -> list[lsp.DocumentSymbol]:
+    groups: dict[str, list[lsp.DocumentSymbol]] = {}
+    out: list[lsp.DocumentSymbol] = []
+    for line in file.lines:
+        if line.kind == syntax.END:
+            where = lsp_range(document, line.number, line.path_column, line.number, line.end_column)
+            out.append(lsp.DocumentSymbol("Ende", lsp.SymbolKind.Event, where, where, detail="end marker"))
+            continue
+        if line.kind != syntax.ASSIGNMENT or not line.path_ok or not line.path:
+            continue
+        head, _, tail = line.path.partition(".")
+        where = lsp_range(document, line.number, 1, line.number, line.end_column)
+        name_range = lsp_range(document, line.number, line.path_column, line.number, line.path_column + len(line.path))
+        symbol = lsp.DocumentSymbol(tail or head, lsp.SymbolKind.Field, where, name_range, detail=line.value or "")
+        if not tail:
+            out.append(symbol)
+            continue
+        if head not in groups:
+            groups[head] = []
+            out.append(lsp.DocumentSymbol(head, lsp.SymbolKind.Array if "[" in head else lsp.SymbolKind.Namespace,
+                                          where, name_range, children=groups[head]))
+        groups[head].append(symbol)
+    for group in out:
+        if group.children:
+            group.range = lsp.Range(group.children[0].range.start, group.children[-1].range.end)
+    return out
+
+
+def definition(document: Document, snapshot, line_number: int, column: int, startup_entries) -> list[lsp.Location]:
+    file = snapshot.file if snapshot is not None else None
+    if file is None or not 1 <= line_number <= len(file.lines):
+        return []
+    line = file.lines[line_number - 1]
+    if part_at(line, column) != "value":
+        return []
+    if snapshot.startup:
+        for entry in startup_entries():
+            if entry.line == line_number and entry.path is not None:
+                zero = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 0))
+                return [lsp.Location(uri_of(entry.path), zero)]
+        return []
+    context = snapshot.context
+    setting = setting_of(context, line)
+    if setting is None or not isinstance(setting.value, Reference) or setting.canonical is None:
+        return []
+    values = context.values
+    target = values.referenced(setting.canonical, setting.value)
+    origin = values.origin(target)
+    if origin.setting is None:
+        return []
+    found = origin.setting.line
+    if origin.kind == "list":
+        return [lsp.Location(document.uri, lsp_range(document, found.number, found.path_column, found.number,
+                                                     found.path_column + len(found.path or "")))]
+    start = lsp.Position(found.number - 1, found.path_column - 1)
+    return [lsp.Location(uri_of(origin.file), lsp.Range(start, lsp.Position(found.number - 1, found.path_column - 1
+                                                                             + len(found.path or ""))))]
+
+
+def inlay_hints(document: Document, snapshot, request: lsp.Range) -> list[lsp.InlayHint]:
+    """Human units after raw numeric values (`20000` → `= 20 mm/s = 1.2 m/min`)."""
+    from ..units import to_human
+
+    context = snapshot.context if snapshot is not None else None
+    if context is None:
+        return []
+    hints = []
+    first, last = request.start.line + 1, request.end.line + 1
+    axis_type = context.values.axis_type
+    for setting in context.analysis.settings:
+        line = setting.line
+        if not first <= line.number <= last or setting.parameter is None or setting.problems:
+            continue
+        value = setting.value
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value:
+            continue
+        human = to_human(value, setting.parameter.unit(axis_type))
+        if human:
+            where = document.to_lsp(line.number, line.value_column + len(line.value or ""))
+            hints.append(lsp.InlayHint(lsp.Position(*where), f" = {human}", padding_left=True))
+    return hints
+

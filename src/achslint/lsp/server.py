@@ -1,0 +1,364 @@
+"""`achslint server`: the language server (stdio), on pygls 2.
+
+The handlers only translate between the protocol and `session` / `features`; no finding,
+card or fix is computed here. Every handler is guarded: whatever a document contains, the
+server answers (at worst with nothing) and keeps running.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+import logging
+import traceback
+from pathlib import Path
+
+from lsprotocol import types as lsp
+from pygls.lsp.server import LanguageServer
+from pygls.uris import to_fs_path
+
+from .. import __version__
+from ..xmlinput import is_xml
+from . import features
+from .documents import Document
+from .session import ClientSettings, Session
+
+log = logging.getLogger("achslint.lsp")
+
+
+class AchslintServer(LanguageServer):
+    def __init__(self) -> None:
+        super().__init__("achslint", __version__, text_document_sync_kind=lsp.TextDocumentSyncKind.Incremental)
+        self.session = Session()
+        self._timers: dict[str, asyncio.TimerHandle] = {}
+
+    # -- client capabilities -------------------------------------------------------------------
+    @property
+    def markdown(self) -> bool:
+        try:
+            formats = self.client_capabilities.text_document.hover.content_format
+        except AttributeError:
+            return True
+        return not formats or lsp.MarkupKind.Markdown in formats
+
+    @property
+    def snippets(self) -> bool:
+        try:
+            return bool(self.client_capabilities.text_document.completion.completion_item.snippet_support)
+        except AttributeError:
+            return False
+
+    @property
+    def edit_range_default(self) -> bool:
+        try:
+            defaults = self.client_capabilities.text_document.completion.completion_list.item_defaults
+        except AttributeError:
+            return False
+        return bool(defaults) and "editRange" in defaults
+
+    @property
+    def encoding(self) -> str:
+        encoding = self.workspace.position_encoding if self.workspace is not None else None
+        return {lsp.PositionEncodingKind.Utf8: "utf-8", lsp.PositionEncodingKind.Utf32: "utf-32"}.get(encoding, "utf-16")
+
+    # -- diagnostics -----------------------------------------------------------------------------
+    def publish(self, uri: str) -> None:
+        self._timers.pop(uri, None)
+        document = self.session.documents.get(uri)
+        if document is None:
+            return
+        peers: list[str] = []
+        try:
+            snapshot, found, peers = self.session.diagnostics(uri)
+            diagnostics = features.publishable(document, snapshot, found)
+        except Exception as exc:  # noqa: BLE001 - a finding that cannot be computed must not end the server
+            log.error("achslint: cannot lint %s: %s\n%s", uri, exc, traceback.format_exc())
+            diagnostics = [lsp.Diagnostic(lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)),
+                                          f"achslint could not check this document: internal error "
+                                          f"{type(exc).__name__}: {exc}", lsp.DiagnosticSeverity.Error,
+                                          source="achslint")]
+        self.text_document_publish_diagnostics(
+            lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version))
+        for peer in peers:  # other open lists of the machine whose machine findings changed with this one
+            self.publish(peer)
+
+    def schedule(self, uri: str, delay_ms: int | None = None) -> None:
+        delay = self.session.settings.debounce_ms if delay_ms is None else delay_ms
+        timer = self._timers.pop(uri, None)
+        if timer is not None:
+            timer.cancel()
+        if delay <= 0:
+            self.publish(uri)
+            return
+        loop = asyncio.get_running_loop()
+        self._timers[uri] = loop.call_later(delay / 1000, self.publish, uri)
+
+    def publish_all(self) -> None:
+        for uri in list(self.session.documents):
+            self.publish(uri)
+
+
+server = AchslintServer()
+
+
+def guarded(default=None):
+    """Answer `default` instead of failing when a handler meets something unexpected (logged on stderr)."""
+    def wrap(handler):
+        @functools.wraps(handler)
+        def run(ls, params):
+            try:
+                return handler(ls, params)
+            except Exception as exc:  # noqa: BLE001 - the server keeps running whatever a document holds
+                log.error("achslint: %s failed: %s\n%s", handler.__name__, exc, traceback.format_exc())
+                return default() if callable(default) else default
+        return run
+    return wrap
+
+
+def _path(uri: str) -> Path | None:
+    try:
+        path = to_fs_path(uri)
+    except Exception:  # noqa: BLE001 - an odd URI is simply not a file
+        return None
+    return Path(path) if path and uri.startswith("file:") else None
+
+
+@server.feature(lsp.INITIALIZE)
+@guarded()
+def initialize(ls: AchslintServer, params: lsp.InitializeParams):
+    ls.session.settings = ClientSettings.from_dict(params.initialization_options or {})
+    folders = params.workspace_folders or []
+    root = _path(folders[0].uri) if folders else (_path(params.root_uri) if params.root_uri else None)
+    ls.session.root = root
+
+
+@server.feature(lsp.TEXT_DOCUMENT_DID_OPEN)
+@guarded()
+def did_open(ls: AchslintServer, params: lsp.DidOpenTextDocumentParams):
+    item = params.text_document
+    ls.session.open(Document(item.uri, _path(item.uri), item.text, item.version, ls.encoding))
+    ls.publish(item.uri)
+
+
+@server.feature(lsp.TEXT_DOCUMENT_DID_CHANGE)
+@guarded()
+def did_change(ls: AchslintServer, params: lsp.DidChangeTextDocumentParams):
+    document = ls.session.documents.get(params.text_document.uri)
+    if document is None:
+        return
+    for change in params.content_changes:
+        if isinstance(change, lsp.TextDocumentContentChangePartial):
+            start, end = change.range.start, change.range.end
+            document.apply((start.line, start.character), (end.line, end.character), change.text)
+        else:
+            document.apply(None, None, change.text)
+    document.version = params.text_document.version
+    ls.schedule(document.uri)
+
+
+@server.feature(lsp.TEXT_DOCUMENT_DID_SAVE)
+@guarded()
+def did_save(ls: AchslintServer, params: lsp.DidSaveTextDocumentParams):
+    uri = params.text_document.uri
+    if uri.endswith(".toml"):
+        ls.session.forget_disk()
+        ls.publish_all()
+    elif uri in ls.session.documents:
+        ls.session.forget_disk()  # the saved list is now what its neighbours see on disk
+        ls.schedule(uri, 0)
+
+
+@server.feature(lsp.TEXT_DOCUMENT_DID_CLOSE)
+@guarded()
+def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams):
+    uri = params.text_document.uri
+    timer = ls._timers.pop(uri, None)
+    if timer is not None:
+        timer.cancel()
+    document = ls.session.documents.get(uri)
+    ls.session.close(uri)
+    ls.text_document_publish_diagnostics(lsp.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+    if document is not None and document.path is not None:
+        # Its neighbours now see the file on disk instead of the buffer.
+        near = {document.path.parent, document.path.parent.parent}
+        ls.session.forget_disk()
+        for other in list(ls.session.documents.values()):
+            if other.path is not None and other.path.parent in near:
+                ls.publish(other.uri)
+
+
+@server.feature(lsp.WORKSPACE_DID_CHANGE_CONFIGURATION)
+@guarded()
+def did_change_configuration(ls: AchslintServer, params: lsp.DidChangeConfigurationParams):
+    if isinstance(params.settings, dict) and params.settings:
+        ls.session.settings = ClientSettings.from_dict(params.settings)
+    ls.session.forget_disk()
+    ls.publish_all()
+
+
+@server.feature(lsp.WORKSPACE_DID_CHANGE_WATCHED_FILES)
+@guarded()
+def did_change_watched_files(ls: AchslintServer, params: lsp.DidChangeWatchedFilesParams):
+    ls.session.forget_disk()
+    ls.publish_all()
+
+
+# -- requests ---------------------------------------------------------------------------------------
+
+def _where(ls: AchslintServer, uri: str, position: lsp.Position):
+    document = ls.session.documents.get(uri)
+    if document is None:
+        return None, None, 0, 0
+    line, column = document.from_lsp(position.line, position.character)
+    return document, ls.session.snapshot(uri), line, column
+
+
+def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
+    """The embedded list, its context and the list position under an XML position (TwinCAT CDATA, ISG XML)."""
+    from ..decode import UnreadableInput
+    from ..linter import check_parsed
+    from ..syntax import parse_text
+    from ..xmlinput import extract
+    from .session import xml_bytes
+
+    try:
+        lists = extract(xml_bytes(document.text), document.name)
+    except UnreadableInput:
+        return None
+    for embedded in lists:
+        count = len(embedded.text.splitlines()) + 1
+        for number in range(1, count + 1):
+            xml_line, xml_column = embedded.position(number, 1)
+            if xml_line != line:
+                continue
+            file = parse_text(embedded.text, document.name)
+            config, _ = ls.session.config_for(document)
+            result = check_parsed(file, document.name, ls.session.file_settings(config, document.path, document.name))
+            list_column = 1 if embedded.line_map is not None else column - xml_column + 1
+            return result.context, file, number, max(list_column, 1)
+    return None
+
+
+@server.feature(lsp.TEXT_DOCUMENT_HOVER)
+@guarded()
+def hover(ls: AchslintServer, params: lsp.HoverParams):
+    document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
+    if document is None or snapshot is None:
+        return None
+    if is_xml(document.name):
+        found = _xml_target(ls, document, line, column)
+        if found is None:
+            return None
+        context, file, line, column = found
+    else:
+        context, file = snapshot.context, snapshot.file
+    text = features.hover_text(context, file, line, column, ls.markdown)
+    if not text:
+        return None
+    kind = lsp.MarkupKind.Markdown if ls.markdown else lsp.MarkupKind.PlainText
+    return lsp.Hover(lsp.MarkupContent(kind, text))
+
+
+@server.feature(lsp.TEXT_DOCUMENT_COMPLETION, lsp.CompletionOptions(trigger_characters=[".", "[", " ", ":", ","],
+                                                                     resolve_provider=True))
+@guarded()
+def completion(ls: AchslintServer, params: lsp.CompletionParams):
+    document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
+    if document is None or is_xml(document.name):
+        return None
+    return features.complete(document, snapshot, line, column, ls.snippets, ls.edit_range_default)
+
+
+@server.feature(lsp.COMPLETION_ITEM_RESOLVE)
+@guarded(default=None)
+def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem):
+    return features.resolve_item(item, ls.markdown)
+
+
+@server.feature(lsp.TEXT_DOCUMENT_CODE_ACTION, lsp.CodeActionOptions(
+    code_action_kinds=[lsp.CodeActionKind.QuickFix, features.FIX_ALL, lsp.CodeActionKind.SourceFixAll]))
+@guarded(default=list)
+def code_action(ls: AchslintServer, params: lsp.CodeActionParams):
+    uri = params.text_document.uri
+    document = ls.session.documents.get(uri)
+    if document is None:
+        return []
+    snapshot, found, _ = ls.session.diagnostics(uri)
+
+    def fix_all():
+        from ..fixer import fix_bytes
+
+        config, _ = ls.session.config_for(document)
+        settings = ls.session.file_settings(config, document.path, document.name)
+        settings.keep_context = False
+        outcome = fix_bytes(document.body.encode("utf-8"), document.name, settings)
+        if not outcome.fixed:
+            return []
+        text = outcome.data.decode("utf-8")
+        return features.diff_edits(document, ("\ufeff" if document.bom else "") + text)
+
+    return features.code_actions(document, snapshot, found, params.range, params.context.only, fix_all)
+
+
+def _list_file(ls: AchslintServer, uri: str):
+    document = ls.session.documents.get(uri)
+    if document is None or is_xml(document.name):
+        return None, None
+    snapshot = ls.session.snapshot(uri)
+    return document, snapshot.file if snapshot is not None else None
+
+
+@server.feature(lsp.TEXT_DOCUMENT_FORMATTING)
+@guarded(default=list)
+def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams):
+    document, file = _list_file(ls, params.text_document.uri)
+    return features.format_document(document, file) if file is not None else []
+
+
+@server.feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
+@guarded(default=list)
+def range_formatting(ls: AchslintServer, params: lsp.DocumentRangeFormattingParams):
+    document, file = _list_file(ls, params.text_document.uri)
+    return features.format_range(document, file, params.range) if file is not None else []
+
+
+@server.feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+@guarded(default=list)
+def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams):
+    document, file = _list_file(ls, params.text_document.uri)
+    return features.document_symbols(document, file) if file is not None else []
+
+
+@server.feature(lsp.TEXT_DOCUMENT_DEFINITION)
+@guarded(default=list)
+def definition(ls: AchslintServer, params: lsp.DefinitionParams):
+    document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
+    if document is None or is_xml(document.name):
+        return []
+    if snapshot is not None and snapshot.startup and snapshot.file is None:
+        snapshot.file = document.parse()
+
+    def entries():
+        from ..machine import read_startup
+
+        startup = read_startup(document.path)
+        return ([startup.default] if startup.default else []) + startup.axes
+
+    return features.definition(document, snapshot, line, column, entries)
+
+
+@server.feature(lsp.TEXT_DOCUMENT_INLAY_HINT)
+@guarded(default=list)
+def inlay_hint(ls: AchslintServer, params: lsp.InlayHintParams):
+    if not ls.session.settings.inlay_hints:
+        return []
+    document = ls.session.documents.get(params.text_document.uri)
+    if document is None or is_xml(document.name):
+        return []
+    return features.inlay_hints(document, ls.session.snapshot(document.uri), params.range)
+
+
+def run() -> None:
+    """Serve on standard input and output until the client says exit."""
+    logging.basicConfig(level=logging.WARNING, format="%(message)s")
+    server.start_io()

@@ -1,0 +1,372 @@
+"""What the language server knows about the open documents, computed by achslint's own API.
+
+Nothing here decides what a finding is: the file-level findings come from the linter
+(`linter.check_parsed` / `check_bytes`, the same path as `achslint lint`), the settings from
+the nearest configuration (`config.discover`, `api.file_settings`), and the machine-level
+findings from `api.Linter`'s machine step, fed with the lists of the document's folder (or
+of the start-up list that names it) as the editor has them: open buffers, else the files.
+
+This module does not import pygls: the benchmarks time it directly.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..api import Linter, LintRequest, Target, file_settings
+from ..config import (
+    ConfigError,
+    Overrides,
+    ResolvedConfig,
+    Settings,
+    discover,
+    matches_glob,
+)
+from ..decode import UnreadableInput
+from ..diagnostics import Diagnostic
+from ..files import not_a_list_file, read_list
+from ..linter import FileResult, check_bytes, check_parsed
+from ..machine import is_startup_list, read_startup
+from ..syntax import parse_bytes
+from ..xmlinput import is_xml
+from .documents import Document
+
+
+@dataclass
+class ClientSettings:
+    """Settings the editor sends (initializationOptions / workspace/didChangeConfiguration, section `achslint`).
+
+    They act like the command-line flags: on top of the nearest configuration file."""
+
+    select: list[str] | None = None
+    extend_select: list[str] = field(default_factory=list)
+    ignore: list[str] = field(default_factory=list)
+    inlay_hints: bool = False
+    debounce_ms: int = 200
+
+    @classmethod
+    def from_dict(cls, raw) -> ClientSettings:
+        if not isinstance(raw, dict):
+            return cls()
+        raw = raw.get("achslint", raw) if isinstance(raw.get("achslint"), dict) else raw
+
+        def codes(key):
+            value = raw.get(key)
+            if isinstance(value, str):
+                value = value.split(",")
+            if not isinstance(value, list):
+                return None
+            return [str(c).strip().upper() for c in value if str(c).strip()]
+
+        debounce = raw.get("debounceMs", raw.get("debounce_ms", 200))
+        return cls(
+            select=codes("select") or None,
+            extend_select=codes("extendSelect") or codes("extend_select") or [],
+            ignore=codes("ignore") or [],
+            inlay_hints=bool(raw.get("inlayHints", raw.get("inlay_hints", False))),
+            debounce_ms=debounce if isinstance(debounce, int) and 0 <= debounce <= 5000 else 200,
+        )
+
+    @property
+    def overrides(self) -> Overrides:
+        return Overrides(select=self.select, extend_select=list(self.extend_select), ignore=list(self.ignore))
+
+
+@dataclass
+class Snapshot:
+    """One version of a document, linted: the file-level findings and the rules' context."""
+
+    version: int | None
+    text: str
+    result: FileResult
+    file: object = None  # syntax.ListFile (lists only)
+    context: object = None  # context.Context (lists only)
+    config_error: str | None = None
+    startup: bool = False  # a start-up list: only its entries are checked (LIS504), as in `achslint lint`
+
+
+@dataclass
+class Machine:
+    """The lists that form a machine with a document, as `achslint lint` would group them."""
+
+    targets: list[Target]
+    startups: list
+    defaults: Path | None = None  # the default list loaded under the document (start-up list)
+
+
+_ENCODING = re.compile(r'<\?xml[^>]*encoding=["\']([A-Za-z0-9_.-]+)["\']')
+
+
+def xml_bytes(text: str) -> bytes:
+    """An XML document's text as bytes in the encoding it declares (positions stay those the editor shows)."""
+    match = _ENCODING.match(text)
+    if match:
+        try:
+            return text.encode(match.group(1))
+        except (LookupError, UnicodeEncodeError):
+            pass
+    return text.encode("utf-8")
+
+
+_REAL: dict[str, str] = {}
+
+
+def _real(path: Path | str) -> str:
+    """The real path of a file (cached until the session forgets what it knows about the disk)."""
+    key = str(path)
+    found = _REAL.get(key)
+    if found is None:
+        try:
+            found = os.path.realpath(key)
+        except (OSError, ValueError):
+            found = os.path.abspath(key)
+        _REAL[key] = found
+    return found
+
+
+class Session:
+    def __init__(self, root: Path | None = None):
+        self.root = root
+        self.settings = ClientSettings()
+        self.documents: dict[str, Document] = {}
+        self._snapshots: dict[str, Snapshot] = {}
+        self._disk: dict[tuple, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
+        self._by_real: dict[str, Document] = {}  # open files by real path
+        self._machines: dict[str, Machine | None] = {}  # real path of a list -> its machine (until forget_disk)
+        self._machine_found: dict[str, list] = {}  # uri -> the machine findings last reported for it
+
+    # -- documents ---------------------------------------------------------------------------
+    def open(self, document: Document) -> None:
+        self.documents[document.uri] = document
+        if document.path is not None:
+            self._by_real[_real(document.path)] = document
+
+    def close(self, uri: str) -> None:
+        document = self.documents.pop(uri, None)
+        self._snapshots.pop(uri, None)
+        self._machine_found.pop(uri, None)
+        if document is not None and document.path is not None:
+            self._by_real.pop(_real(document.path), None)
+
+    def by_path(self, path: Path | str) -> Document | None:
+        return self._by_real.get(_real(path))
+
+    def text_of(self, path: Path) -> bytes:
+        """A list as the editor has it: the open buffer, else the file."""
+        document = self.by_path(path)
+        if document is not None:
+            return document.body.encode("utf-8")
+        return read_list(path)
+
+    def forget_disk(self) -> None:
+        """Files changed on disk (or a configuration did): read them again next time."""
+        from .. import config
+
+        self._disk.clear()
+        self._machines.clear()
+        _REAL.clear()
+        self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
+        for uri in list(self._snapshots):
+            self._snapshots[uri] = None  # type: ignore[assignment]
+        config._config_in.cache_clear()
+        config._load_cached.cache_clear()
+
+    # -- configuration -------------------------------------------------------------------------
+    def config_for(self, document: Document) -> tuple[ResolvedConfig, str | None]:
+        start = document.path or self.root or Path.cwd()
+        try:
+            return discover(start), None
+        except ConfigError as exc:
+            return ResolvedConfig(Settings()), str(exc)
+
+    def file_settings(self, config: ResolvedConfig, path: Path | None, name: str):
+        settings = file_settings(config, self.settings.overrides, path or Path(name), keep_source=False)
+        settings.keep_context = True
+        return settings
+
+    # -- linting ---------------------------------------------------------------------------------
+    def snapshot(self, uri: str) -> Snapshot | None:
+        """The linted current version of a document (computed when the text changed)."""
+        document = self.documents.get(uri)
+        if document is None:
+            return None
+        found = self._snapshots.get(uri)
+        if found is not None and found.text is document.text:
+            return found
+        found = self._snapshots[uri] = self._lint(document)
+        return found
+
+    def _lint(self, document: Document) -> Snapshot:
+        config, config_error = self.config_for(document)
+        settings = self.file_settings(config, document.path, document.name)
+        name = document.name
+        if document.path is not None and is_startup_list(document.path):
+            return Snapshot(document.version, document.text, FileResult(name, []), config_error=config_error,
+                            startup=True)
+        if is_xml(name):
+            result = check_bytes(xml_bytes(document.text), name, settings)
+            return Snapshot(document.version, document.text, result, config_error=config_error)
+        default_file = None
+        machine = self.machine(document)
+        if machine is not None and machine.defaults is not None:
+            try:
+                default_file = parse_bytes(self.text_of(machine.defaults), str(machine.defaults))
+            except (OSError, UnreadableInput):
+                default_file = None  # the start-up list's LIS504 says why
+        file = document.parse()
+        result = check_parsed(file, name, settings, default_file)
+        return Snapshot(document.version, document.text, result, file, result.context, config_error)
+
+    def diagnostics(self, uri: str) -> tuple[Snapshot | None, list[Diagnostic], list[str]]:
+        """The document's findings, its own and those of the machine it belongs to, and the other open
+        documents whose machine findings changed with it (their editors need them again)."""
+        snapshot = self.snapshot(uri)
+        if snapshot is None:
+            return None, [], []
+        own = list(snapshot.result.diagnostics)
+        document = self.documents[uri]
+        peers: list[str] = []
+        if document.path is not None and not is_xml(document.name):
+            by_member = self.machine_diagnostics(document, snapshot)
+            mine = by_member.pop(_real(document.path), [])
+            self._machine_found[uri] = [_key(d) for d in mine]
+            own.extend(mine)
+            own.sort(key=Diagnostic.sort_key)
+            for real, found in by_member.items():
+                other = self._by_real.get(real)
+                if other is None or other.uri not in self.documents:
+                    continue
+                keys = [_key(d) for d in found]
+                if self._machine_found.get(other.uri) != keys:
+                    peers.append(other.uri)
+        return snapshot, own, peers
+
+    # -- machines --------------------------------------------------------------------------------
+    def machine(self, document: Document) -> Machine | None:
+        """The start-up list that names the document (its folder or the one above), else its folder's lists."""
+        path = document.path
+        if path is None:
+            return None
+        real = _real(path)
+        if real not in self._machines:
+            self._machines[real] = self._find_machine(path, real)
+        return self._machines[real]
+
+    def _find_machine(self, path: Path, real: str) -> Machine | None:
+        if is_startup_list(path):
+            return self._startup_machine(path, None)
+        for folder in (path.parent, path.parent.parent):
+            try:
+                candidates = sorted(p for p in folder.iterdir() if is_startup_list(p))
+            except OSError:
+                continue
+            for candidate in candidates:
+                machine = self._startup_machine(candidate, real)
+                if machine is not None:
+                    return machine
+        return self._folder_machine(path)
+
+    def _startup_machine(self, startup_path: Path, member: str | None) -> Machine | None:
+        if not_a_list_file(startup_path) is not None:
+            return None
+        try:
+            startup = self._read_startup(startup_path)
+        except (OSError, UnreadableInput):
+            return None
+        if member is not None and not any(e.path is not None and _real(e.path) == member for e in startup.axes):
+            return None
+        defaults = startup.default.path if startup.default else None
+        targets = [Target(str(e.path), e.path, self._config(e.path), machine=str(startup_path), defaults=defaults)
+                   for e in startup.axes if e.path is not None]
+        return Machine(targets, [startup], defaults)
+
+    @staticmethod
+    def _read_startup(path: Path):
+        """A start-up list's entries, as saved on disk (the CNC and `achslint lint` read the file too)."""
+        return read_startup(path)
+
+    def _config(self, path: Path) -> ResolvedConfig:
+        try:
+            return discover(path)
+        except ConfigError:
+            return ResolvedConfig(Settings())
+
+    def _folder_machine(self, path: Path) -> Machine | None:
+        """The lists of the document's folder that `achslint lint FOLDER` would take (include/exclude)."""
+        folder = path.parent
+        config = self._config(path)
+        include = self.settings.overrides.apply(config.settings).include
+        targets = []
+        try:
+            names = sorted(os.listdir(folder))
+        except OSError:
+            return None
+        for name in names:
+            candidate = folder / name
+            if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
+                continue
+            if config.excluded(candidate) or (not_a_list_file(candidate) is not None and self.by_path(candidate) is None):
+                continue
+            targets.append(Target(str(candidate), candidate, self._config(candidate), machine=str(folder)))
+        if not any(_real(t.path) == _real(path) for t in targets):
+            return None  # not a list `lint FOLDER` would take: no machine rules, as on the command line
+        return Machine(targets, [])
+
+    def _summary_result(self, target: Target) -> FileResult:
+        """A member's result (its summary is what the machine rules compare): open buffer or file."""
+        document = self.by_path(target.path)
+        if document is not None and not is_startup_list(target.path):
+            snapshot = self.snapshot(document.uri)
+            return FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
+        try:
+            info = os.stat(target.path)
+            stamp = (info.st_mtime_ns, info.st_size)
+            defaults_stamp = None
+            if target.defaults is not None:
+                default_info = os.stat(target.defaults)
+                defaults_stamp = (str(target.defaults), default_info.st_mtime_ns, default_info.st_size)
+        except OSError as exc:
+            return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
+        key = (_real(target.path), stamp, defaults_stamp, repr(self.settings.overrides))
+        cached = self._disk.get(key)
+        if cached is None:
+            try:
+                data = read_list(target.path)
+                defaults = self.text_of(target.defaults) if target.defaults is not None else None
+            except OSError as exc:
+                return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
+            settings = file_settings(target.config, self.settings.overrides, target.path, keep_source=False)
+            full = check_bytes(data, target.name, settings, defaults)
+            cached = self._disk[key] = FileResult(target.name, [], full.error, summary=full.summary)
+        return FileResult(target.name, [], cached.error, summary=cached.summary)
+
+    def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> dict[str, list[Diagnostic]]:
+        """The machine-level findings of every list of the document's machine, by real path."""
+        machine = self.machine(document)
+        if machine is None:
+            return {}
+        real = _real(document.path)
+        results = []
+        for target in machine.targets:
+            if _real(target.path) == real and not snapshot.startup:
+                results.append(FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary))
+            else:
+                results.append(self._summary_result(target))
+        linter = Linter(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
+        linter.startups = machine.startups
+        extra = linter._machine_level(machine.targets, results)
+        found: dict[str, list[Diagnostic]] = {}
+        for result in results + extra:
+            found.setdefault(_real(result.name), []).extend(result.diagnostics)
+        for member, diagnostics in found.items():
+            owner = self._by_real.get(member)
+            for d in diagnostics:
+                d.path = owner.name if owner is not None else d.path
+        return found
+
+
+def _key(d: Diagnostic) -> tuple:
+    return (d.line, d.column, d.code, d.message, d.severity)

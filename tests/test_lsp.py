@@ -1,0 +1,389 @@
+"""`achslint server` end to end: a real LSP client (pytest-lsp) talks to the server over stdio."""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import random
+import shutil
+import sys
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("pygls.lsp.server", reason="the lsp extra is not installed")
+pytest_lsp = pytest.importorskip("pytest_lsp")
+
+from lsprotocol import types as lsp
+from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+
+from achslint.api import lint
+from achslint.fmt import format_bytes
+
+from .conftest import FIXTURES
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+WORK = Path(os.environ.get("ACHSLINT_LSP_TEST_DIR", "")) if os.environ.get("ACHSLINT_LSP_TEST_DIR") else None
+
+
+@pytest_lsp.fixture(scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "achslint", "server"]))
+async def client(lsp_client: LanguageClient):
+    await lsp_client.initialize_session(lsp.InitializeParams(
+        capabilities=client_capabilities("visual-studio-code"),
+        initialization_options={"debounceMs": 20, "inlayHints": True},
+    ))
+    yield
+    await lsp_client.shutdown_session()
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory) -> Path:
+    return tmp_path_factory.mktemp("lsp")
+
+
+# -- helpers ------------------------------------------------------------------------------------------
+
+def open_doc(client: LanguageClient, path: Path, text: str | None = None, language: str = "achsmds") -> str:
+    uri = path.resolve().as_uri()
+    if text is None:
+        text = path.read_bytes().decode("latin-1")
+    client.diagnostics.pop(uri, None)
+    client.text_document_did_open(lsp.DidOpenTextDocumentParams(lsp.TextDocumentItem(uri, language, 1, text)))
+    return uri
+
+
+def close_doc(client: LanguageClient, uri: str) -> None:
+    client.text_document_did_close(lsp.DidCloseTextDocumentParams(lsp.TextDocumentIdentifier(uri)))
+
+
+async def diagnostics_when(client: LanguageClient, uri: str, check=lambda found: True, timeout: float = 10.0):
+    """The diagnostics last published for `uri`, once they satisfy `check`."""
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + timeout
+    while loop.time() < deadline:
+        found = client.diagnostics.get(uri)
+        if found is not None and check(found):
+            return list(found)
+        await asyncio.sleep(0.02)
+    raise AssertionError(f"no matching diagnostics for {uri}: {client.diagnostics.get(uri)}")
+
+
+def codes(found) -> list[str]:
+    return sorted(str(d.code) for d in found if d.code)
+
+
+def change(client: LanguageClient, uri: str, version: int, text: str) -> None:
+    client.diagnostics.pop(uri, None)
+    client.text_document_did_change(lsp.DidChangeTextDocumentParams(
+        lsp.VersionedTextDocumentIdentifier(version=version, uri=uri), [lsp.TextDocumentContentChangeWholeDocument(text)]))
+
+
+def offset(text: str, position: lsp.Position) -> int:
+    lines = text.splitlines(keepends=True)
+    return sum(len(line) for line in lines[: position.line]) + position.character
+
+
+def apply_edits(text: str, edits: list[lsp.TextEdit]) -> str:
+    for edit in sorted(edits, key=lambda e: (e.range.start.line, e.range.start.character), reverse=True):
+        start, end = offset(text, edit.range.start), offset(text, edit.range.end)
+        text = text[:start] + edit.new_text + text[end:]
+    return text
+
+
+async def hover_at(client, uri, line, character) -> str:
+    found = await client.text_document_hover_async(lsp.HoverParams(lsp.TextDocumentIdentifier(uri),
+                                                                   lsp.Position(line, character)))
+    return found.contents.value if found is not None else ""
+
+
+def position_of(text: str, needle: str, shift: int = 0) -> lsp.Position:
+    index = text.index(needle) + shift
+    before = text[:index]
+    return lsp.Position(before.count("\n"), index - (before.rfind("\n") + 1))
+
+
+# -- diagnostics ------------------------------------------------------------------------------------------
+
+async def test_diagnostics_are_those_of_lint_with_rule_links(client: LanguageClient, folder: Path):
+    path = folder / "lint" / "achsmds1.lis"
+    path.parent.mkdir()
+    shutil.copy(FIXTURES / "rules" / "LIS005" / "bad.lis", path)
+    uri = open_doc(client, path)
+    found = await diagnostics_when(client, uri)
+    expected = lint(path)
+    assert [(d.range.start.line + 1, d.range.start.character + 1, d.code, d.message) for d in found] == \
+        [(d.line, d.column, d.code, d.message) for d in expected]
+    duplicate = next(d for d in found if d.code == "LIS005")
+    assert duplicate.severity == lsp.DiagnosticSeverity.Warning and duplicate.source == "achslint"
+    assert duplicate.code_description.href.endswith("#lis005")
+    assert duplicate.code_description.href.startswith("file://")
+    related = duplicate.related_information[0]
+    assert related.location.uri == uri and related.location.range.start.line == 4
+    assert "first assignment" in related.message
+    close_doc(client, uri)
+
+
+async def test_edit_and_quick_fix_make_the_diagnostic_disappear(client: LanguageClient, folder: Path):
+    path = folder / "fix" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = (FIXTURES / "rules" / "LIS203" / "bad.lis").read_bytes().decode("latin-1")
+    path.write_text(text, encoding="latin-1")
+    uri = open_doc(client, path, text)
+    found = await diagnostics_when(client, uri, lambda f: "LIS203" in codes(f))
+    wrong = next(d for d in found if d.code == "LIS203")
+    actions = await client.text_document_code_action_async(lsp.CodeActionParams(
+        lsp.TextDocumentIdentifier(uri), wrong.range, lsp.CodeActionContext([wrong])))
+    fix = next(a for a in actions if a.is_preferred)
+    assert "DRIVE_CONTROLLED" in fix.title and fix.kind == lsp.CodeActionKind.QuickFix
+    assert any("noqa" in a.title for a in actions)
+    fixed = apply_edits(text, fix.edit.changes[uri])
+    assert "DRIVE_CONTROLLED" in fixed and "DRIVE_CONROLLED" not in fixed
+    change(client, uri, 2, fixed)
+    after = await diagnostics_when(client, uri)
+    assert not [d for d in after if d.code == "LIS203" and d.range.start.line == wrong.range.start.line]
+    # an edit that breaks the value again brings the finding back (debounced, after the last change)
+    change(client, uri, 3, fixed.replace("DRIVE_CONTROLLED", "DRIVE_X"))
+    again = await diagnostics_when(client, uri)
+    assert [d for d in again if d.code == "LIS203" and d.range.start.line == wrong.range.start.line]
+    close_doc(client, uri)
+
+
+async def test_incremental_edits_are_applied_at_the_right_place(client: LanguageClient, folder: Path):
+    path = folder / "incremental" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = "kopf.achs_nr  1\n\x0ckenngr.achs_typ  1\nkenngr.ref_richt  1\nEnde\n"  # a form feed is no line break
+    uri = open_doc(client, path, text)
+    await diagnostics_when(client, uri)
+    client.diagnostics.pop(uri, None)
+    client.text_document_did_change(lsp.DidChangeTextDocumentParams(
+        lsp.VersionedTextDocumentIdentifier(version=2, uri=uri),
+        [lsp.TextDocumentContentChangePartial(lsp.Range(lsp.Position(2, 18), lsp.Position(2, 19)), "7")]))
+    found = await diagnostics_when(client, uri)
+    # ref_richt 7 is not a boolean: the edit landed on line 3, after the line with the form feed
+    assert [(d.code, d.range.start.line, d.range.start.character) for d in found] == [("LIS001", 1, 0), ("LIS201", 2, 18)]
+    close_doc(client, uri)
+
+
+async def test_noqa_and_fix_all_actions(client: LanguageClient, folder: Path):
+    path = folder / "noqa" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = (FIXTURES / "rules" / "LIS102" / "bad.lis").read_text(encoding="latin-1").replace("Ende", "End")
+    uri = open_doc(client, path, text)
+    found = await diagnostics_when(client, uri, lambda f: {"LIS004", "LIS102"} <= set(codes(f)))
+    old = next(d for d in found if d.code == "LIS102")
+    actions = await client.text_document_code_action_async(lsp.CodeActionParams(
+        lsp.TextDocumentIdentifier(uri), old.range, lsp.CodeActionContext([old])))
+    noqa = next(a for a in actions if "noqa" in a.title)
+    suppressed = apply_edits(text, noqa.edit.changes[uri])
+    assert "noqa: LIS102" in suppressed
+    change(client, uri, 2, suppressed)
+    after = await diagnostics_when(client, uri)
+    assert "LIS102" not in codes(after) and "LIS004" in codes(after)
+    whole = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 0))
+    fix_all = await client.text_document_code_action_async(lsp.CodeActionParams(
+        lsp.TextDocumentIdentifier(uri), whole, lsp.CodeActionContext([], only=["source.fixAll.achslint"])))
+    assert [a.kind for a in fix_all] == ["source.fixAll.achslint"]
+    fixed = apply_edits(suppressed, fix_all[0].edit.changes[uri])
+    assert fixed.splitlines()[-1] == "Ende"
+    close_doc(client, uri)
+
+
+async def test_config_of_the_files_folder_is_honoured(client: LanguageClient, folder: Path):
+    bad = (FIXTURES / "rules" / "LIS203" / "bad.lis").read_bytes()
+    plain, configured = folder / "plain", folder / "configured"
+    plain.mkdir(), configured.mkdir()
+    (configured / ".achslint.toml").write_text('ignore = ["LIS203"]\n', encoding="utf-8")
+    (plain / "achsmds1.lis").write_bytes(bad)
+    (configured / "achsmds1.lis").write_bytes(bad)
+    first = open_doc(client, plain / "achsmds1.lis")
+    second = open_doc(client, configured / "achsmds1.lis")
+    assert "LIS203" in codes(await diagnostics_when(client, first))
+    assert "LIS203" not in codes(await diagnostics_when(client, second))
+    close_doc(client, first), close_doc(client, second)
+
+
+async def test_machine_rule_uses_open_buffers_and_files(client: LanguageClient, folder: Path):
+    machine = folder / "machine"
+    machine.mkdir()
+    one = "kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n"
+    (machine / "achsmds1.lis").write_text(one, encoding="latin-1")
+    (machine / "achsmds2.lis").write_text("kopf.achs_nr  2\nkopf.log_achs_name  Y\nEnde\n", encoding="latin-1")
+    uri = open_doc(client, machine / "achsmds2.lis", "kopf.achs_nr  1\nkopf.log_achs_name  Y\nEnde\n")
+    found = await diagnostics_when(client, uri, lambda f: "LIS501" in codes(f))
+    duplicate = next(d for d in found if d.code == "LIS501")
+    assert duplicate.range.start.line == 0
+    assert duplicate.related_information[0].location.uri == (machine / "achsmds1.lis").resolve().as_uri()
+    change(client, uri, 2, "kopf.achs_nr  3\nkopf.log_achs_name  Y\nEnde\n")  # the buffer, not the file, counts
+    assert "LIS501" not in codes(await diagnostics_when(client, uri))
+    # both open: editing the first list updates the findings shown for the second
+    first = open_doc(client, machine / "achsmds1.lis", one.replace("achs_nr  1", "achs_nr  3"))
+    assert "LIS501" in codes(await diagnostics_when(client, uri, lambda f: "LIS501" in codes(f)))
+    change(client, first, 2, one)
+    assert "LIS501" not in codes(await diagnostics_when(client, uri, lambda f: "LIS501" not in codes(f)))
+    close_doc(client, first), close_doc(client, uri)
+
+
+# -- hover, completion ---------------------------------------------------------------------------------------
+
+async def test_hover_parameter_with_effect(client: LanguageClient, folder: Path):
+    path = folder / "hover" / "achsmds1.lis"
+    path.parent.mkdir()
+    shutil.copy(FIXTURES / "lists" / "achsmds1.lis", path)
+    text = path.read_bytes().decode("latin-1")
+    uri = open_doc(client, path, text)
+    where = position_of(text, "getriebe[0].vb_refmax", 3)
+    card = await hover_at(client, uri, where.line, where.character)
+    assert "P-AXIS-00219" in card and "getriebe[i].vb_refmax" in card
+    assert "100000 µm/s (= 100 mm/s = 6 m/min)" in card
+    assert f"line {where.line + 1}" in card
+    assert "takes effect under" in card
+    value = position_of(text, "100000        ( P-AXIS-00219", 2)
+    assert "= 100 mm/s" in await hover_at(client, uri, value.line, value.character)
+    reference = position_of(text, "P-AXIS-00212.0", 3)
+    assert "getriebe[0].dynamik.vb_max" in await hover_at(client, uri, reference.line, reference.character)
+    end = position_of(text, "\nEnde", 2)
+    assert "end marker" in await hover_at(client, uri, end.line, end.character)
+    definition = await client.text_document_definition_async(lsp.DefinitionParams(
+        lsp.TextDocumentIdentifier(uri), reference))
+    assert definition[0].uri == uri and definition[0].range.start.line == position_of(text, "getriebe[0].dynamik.vb_max").line
+    close_doc(client, uri)
+
+
+async def test_hover_parameter_without_effect_and_noqa_code(client: LanguageClient, folder: Path):
+    path = folder / "hover2" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = (FIXTURES / "rules" / "LIS401" / "bad.lis").read_text(encoding="latin-1")
+    text = text.replace("kenngr.fast_from_cam                            0",
+                        "kenngr.fast_from_cam                            0  # noqa: LIS401")
+    uri = open_doc(client, path, text)
+    where = position_of(text, "getriebe[0].vb_refmax", 2)
+    card = await hover_at(client, uri, where.line, where.character)
+    assert "has no effect under" in card and "200000 µm/s" in card
+    code = position_of(text, "noqa: LIS401", 8)
+    assert "LIS401 parameter-without-effect" in await hover_at(client, uri, code.line, code.character)
+    close_doc(client, uri)
+
+
+async def test_completion_paths_symbols_references_and_codes(client: LanguageClient, folder: Path):
+    path = folder / "complete" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = "kenngr.antr_typ  1\nkenngr.achs_typ  1\ngetriebe[2].vb_re\nkenngr.homing.homing_type  C\nEnde\n"
+    uri = open_doc(client, path, text)
+
+    async def items(line, character):
+        found = await client.text_document_completion_async(lsp.CompletionParams(
+            lsp.TextDocumentIdentifier(uri), lsp.Position(line, character)))
+        return found.items if isinstance(found, lsp.CompletionList) else found
+
+    paths = await items(2, len("getriebe[2].vb_re"))
+    labels = {i.label for i in paths}
+    assert "getriebe[2].vb_reflow" in labels and "getriebe[2].vb_refmax" in labels
+    assert all(label.startswith("getriebe[2].") for label in labels)
+    resolved = await client.completion_item_resolve_async(next(i for i in paths if i.label == "getriebe[2].vb_reflow"))
+    assert "P-AXIS-00218" in resolved.documentation.value
+    top = {i.label for i in await items(2, 0)}
+    assert "kenngr.homing.homing_type" in top
+    assert not any(label.startswith("antr.sercos.") for label in top)  # a conventional drive: no SERCOS group
+    symbols = {i.label for i in await items(3, len("kenngr.homing.homing_type  C"))}
+    assert {"CNC_CONTROLLED", "DRIVE_CONTROLLED", "TORQ"} <= symbols
+    change(client, uri, 2, text.replace("vb_re\n", "vb_reflow  P-AXIS-002\n").replace("  C\n", "  TORQ  ( noqa: LIS3\n"))
+    await diagnostics_when(client, uri)
+    references = {i.label for i in await items(2, len("getriebe[2].vb_reflow  P-AXIS-002"))}
+    assert "P-AXIS-00219.0" in references
+    rule_codes = {i.label for i in await items(3, len("kenngr.homing.homing_type  TORQ  ( noqa: LIS3"))}
+    assert {"LIS301", "LIS401"} <= rule_codes
+    close_doc(client, uri)
+
+
+# -- formatting, outline, definitions, inlay hints ---------------------------------------------------------
+
+async def test_formatting_gives_fmt_output(client: LanguageClient, folder: Path):
+    path = folder / "fmt" / "achsmds1.lis"
+    path.parent.mkdir()
+    data = (FIXTURES / "lsp" / "unaligned.lis").read_bytes()
+    text = data.decode("latin-1")
+    uri = open_doc(client, path, text)
+    edits = await client.text_document_formatting_async(lsp.DocumentFormattingParams(
+        lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True)))
+    assert edits
+    assert apply_edits(text, edits) == format_bytes(data)[0].decode("latin-1")
+    ranged = await client.text_document_range_formatting_async(lsp.DocumentRangeFormattingParams(
+        lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(1, 0), lsp.Position(1, 5)), lsp.FormattingOptions(4, True)))
+    assert [e.range.start.line for e in ranged] == [1]
+    close_doc(client, uri)
+
+
+async def test_document_symbols_are_grouped(client: LanguageClient, folder: Path):
+    path = folder / "outline" / "achsmds1.lis"
+    path.parent.mkdir()
+    shutil.copy(FIXTURES / "lists" / "achsmds1.lis", path)
+    uri = open_doc(client, path)
+    symbols = await client.text_document_document_symbol_async(lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri)))
+    names = [s.name for s in symbols]
+    assert names[:3] == ["kopf", "kenngr", "lr_hw[0]"] and "getriebe[0]" in names and names[-1] == "Ende"
+    gear = next(s for s in symbols if s.name == "getriebe[0]")
+    assert "vb_reflow" in [c.name for c in gear.children]
+    hints = await client.text_document_inlay_hint_async(lsp.InlayHintParams(
+        lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(0, 0), lsp.Position(40, 0))))
+    assert any(h.label == " = 100 mm/s = 6 m/min" for h in hints)
+    close_doc(client, uri)
+
+
+async def test_definition_from_a_startup_list_opens_the_named_list(client: LanguageClient, folder: Path):
+    machine = folder / "startup"
+    machine.mkdir()
+    shutil.copy(FIXTURES / "lsp" / "hochlauf.lis", machine / "hochlauf.lis")
+    shutil.copy(FIXTURES / "lists" / "achsmds1.lis", machine / "achsmds1.lis")
+    text = (machine / "hochlauf.lis").read_text(encoding="latin-1")
+    uri = open_doc(client, machine / "hochlauf.lis", text)
+    found = await diagnostics_when(client, uri, lambda f: "LIS504" in codes(f))  # achsmds2.lis is missing
+    assert [d.range.start.line for d in found if d.code == "LIS504"] == [3]
+    where = position_of(text, "./achsmds1.lis", 3)
+    target = await client.text_document_definition_async(lsp.DefinitionParams(lsp.TextDocumentIdentifier(uri), where))
+    assert target[0].uri == (machine / "achsmds1.lis").resolve().as_uri()
+    close_doc(client, uri)
+
+
+# -- XML, robustness ------------------------------------------------------------------------------------------
+
+async def test_twincat_xml_diagnostics_and_hover_at_xml_positions(client: LanguageClient, folder: Path):
+    path = folder / "xml" / "Axis_X.xti"
+    path.parent.mkdir()
+    shutil.copy(FIXTURES / "lsp" / "axis.xml", path)
+    text = path.read_text(encoding="utf-8")
+    uri = open_doc(client, path, text, language="xml")
+    found = await diagnostics_when(client, uri, lambda f: "LIS203" in codes(f))
+    wrong = next(d for d in found if d.code == "LIS203")
+    expected = position_of(text, "DRIVE_CONROLLED")
+    assert (wrong.range.start.line, wrong.range.start.character) == (expected.line, expected.character)
+    where = position_of(text, "getriebe[0].vb_reflow", 4)
+    card = await hover_at(client, uri, where.line, where.character)
+    assert "P-AXIS-00218" in card and "20 mm/s" in card
+    first = position_of(text, "kopf.achs_nr", 2)  # the first list line shares the XML line of <AchsMds>
+    assert "P-AXIS-00016" in await hover_at(client, uri, first.line, first.character)
+    close_doc(client, uri)
+
+
+async def test_random_bytes_give_diagnostics_never_a_crash(client: LanguageClient, folder: Path):
+    generator = random.Random(15)
+    samples = [bytes(generator.randrange(256) for _ in range(2000)).decode("latin-1") for _ in range(3)]
+    samples += ["\x00\ufeff" * 50 + "Ende\r\r\n\u2028x", "getriebe[" * 500 + "\n" * 3, "\ufeffkopf.achs_nr 1\nEnd"]
+    (folder / "random").mkdir()
+    for number, text in enumerate(samples):
+        uri = open_doc(client, folder / "random" / f"achsmds{number}.lis", text)
+        found = await diagnostics_when(client, uri)
+        assert found, f"sample {number}"
+        for line in (0, 1, 5):
+            await hover_at(client, uri, line, 3)
+            await client.text_document_completion_async(lsp.CompletionParams(
+                lsp.TextDocumentIdentifier(uri), lsp.Position(line, 3)))
+        await client.text_document_formatting_async(lsp.DocumentFormattingParams(
+            lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True)))
+        await client.text_document_document_symbol_async(lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri)))
+        await client.text_document_code_action_async(lsp.CodeActionParams(
+            lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(0, 0), lsp.Position(3, 0)), lsp.CodeActionContext([])))
+        close_doc(client, uri)
+    # still alive and still right
+    uri = open_doc(client, folder / "random" / "achsmds_ok.lis", "kopf.achs_nr  1\nEnd\n")
+    assert "LIS004" in codes(await diagnostics_when(client, uri))
+    close_doc(client, uri)
