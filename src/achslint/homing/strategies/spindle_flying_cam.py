@@ -30,5 +30,5 @@ STRATEGY = StrategyDef(
     phases=_phases, with_cam=True, with_zero_pulse=True, one_phase=True, reference_speed="vb_reflow",
     ends_with_braking=False, variants=_sequence.variants,
     unused="flying spindle homing reads only the cam, the zero pulse and vb_reflow",
-    simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
+    simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
 )

@@ -28,5 +28,5 @@ STRATEGY = StrategyDef(
     phases=_phases, with_zero_pulse=True, one_phase=True, reference_speed="vb_reflow",
     ends_with_braking=False, variants=_sequence.variants,
     unused="flying spindle homing without cam reads only the zero pulse and vb_reflow",
-    simulate=lambda sim, trace, x, cam_shift: sim.zero_pulse_only(trace, x),
+    simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
 )
