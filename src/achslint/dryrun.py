@@ -190,10 +190,12 @@ def trace_json(run: DryRun) -> dict:
 
 # --- text ------------------------------------------------------------------------------------
 
-def _num(value: float, digits: int = 4) -> str:
-    """A number for the text output: fixed decimals, no trailing zeros beyond what is needed."""
+def _num(value: float, digits: int = 4, fixed: bool = False) -> str:
+    """A number for the text output: `digits` decimals (trailing zeros dropped unless `fixed`, for columns)."""
     text = f"{value:.{digits}f}"
-    return text.rstrip("0").rstrip(".") if "." in text else text
+    if text.startswith("-") and float(text) == 0:
+        text = text[1:]
+    return text if fixed or "." not in text else text.rstrip("0").rstrip(".")
 
 
 def header_lines(run: DryRun) -> list[str]:
@@ -242,7 +244,8 @@ def render(run: DryRun, console) -> None:
         for number, p in enumerate(trace.phases, 1):
             table.add_row(str(number), Text(p.name) + Text(f"\n{p.ended_by}", style="dim"),
                           {"positive": "+", "negative": "-"}.get(p.direction or "", ""), _num(p.velocity, 3),
-                          _num(p.start_position), _num(p.end_position), _num(p.end_time))
+                          _num(p.start_position, fixed=True), _num(p.end_position, fixed=True),
+                          _num(p.end_time, fixed=True))
         console.print(table)
     if trace.events:
         events = Table(title="Events", title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
@@ -250,7 +253,7 @@ def render(run: DryRun, console) -> None:
         events.add_column(f"at {unit}", no_wrap=True, justify="right")
         events.add_column("event", ratio=1, overflow="fold")
         for e in trace.events:
-            events.add_row(_num(e.time), _num(e.position), e.kind)
+            events.add_row(_num(e.time, fixed=True), _num(e.position, fixed=True), e.kind)
         console.print(events)
     if trace.reference:
         ref = trace.reference
@@ -312,11 +315,11 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
         "assumed_geometry": assumed,
     }
     if references:
-        spread = max(references) - min(references)
+        spread = round(max(references) - min(references), 9)
         pulses = Counter(round((ref - scenario.zero_pulse_phase) / period) for ref in references)
         usual = pulses.most_common(1)[0][1]
         summary.update({
-            "reference_min": min(references), "reference_max": max(references), "spread": spread,
+            "reference_min": round(min(references), 9), "reference_max": round(max(references), 9), "spread": spread,
             "distinct_pulses": len(pulses), "one_revolution_jumps": len(references) - usual,
         })
     return _finite(summary)
