@@ -425,3 +425,51 @@ def test_any_numbers_give_exit_0_1_2_and_strict_json(axis, scalars, pairs, drive
     else:
         document = json.loads(out, parse_constant=_refuse)
         assert document["outcome"] in ("homed", "failed", "skipped", "not_required")
+
+
+# --- the plot ----------------------------------------------------------------------------------------
+
+def test_plot_png_has_size_and_is_not_blank(tmp_path):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.image
+
+    target = tmp_path / "homing.png"
+    code, _, err = run_main("dry-run", str(X_AXIS), "--start", "50", "--cam", "-300,-250", "--plot", str(target))
+    assert code == 0 and f"wrote {target}" in err
+    pixels = matplotlib.image.imread(str(target))
+    assert pixels.shape[0] == 750 and pixels.shape[1] == 1200  # 12 × 7.5 in at 100 dpi
+    # Not blank: many distinct colours (curves, shades, markers), and not mostly one value.
+    flat = pixels.reshape(-1, pixels.shape[-1])[::7]
+    assert len({tuple(p) for p in flat.round(2).tolist()}) > 20
+    code, _, err = run_main("dry-run", str(X_AXIS), "--plot", str(tmp_path / "homing.svg"))
+    assert code == 0 and b"<svg" in (tmp_path / "homing.svg").read_bytes()[:500]
+
+
+def test_plot_series_reference_limits_and_failure():
+    pytest.importorskip("matplotlib")
+    from achslint.plot import build_figure
+
+    trace = linear("getriebe[0].pos_refpkt -9500000\nkenngr.swe_neg -10000000\nkenngr.swe_pos 10000000\n",
+                   zero_pulse_phase=-102.3)
+    figure = build_figure(trace)
+    top = figure.axes[0]
+    by_gid = {line.get_gid(): line for line in top.get_lines() if line.get_gid()}
+    # The reference marker sits at the zero pulse -102.3 (scenario frame), the final square at -102.4 (braked 0.1).
+    assert approx(by_gid["reference"].get_ydata()[0], -102.3)
+    assert approx(by_gid["final"].get_ydata()[0], trace.phases[-1].end_position)
+    # Limit switches ±1010 as lines; the software limits ±1000 (homed frame) lie at value - (−950 − (−102.3)).
+    assert sorted(line.get_ydata()[0] for line in top.get_lines() if line.get_gid() == "limit switch") == [-1010, 1010]
+    soft = sorted(line.get_ydata()[0] for line in top.get_lines() if line.get_gid() == "software limit (after homing)")
+    assert approx(soft[0], -1000 + 950 - 102.3, 1e-6) and approx(soft[1], 1000 + 950 - 102.3, 1e-6)
+    labels = [text.get_text() for text in top.get_legend().get_texts()]
+    assert any("−102.3 mm → −950 mm" in label for label in labels)
+    assert sum(label[:2] in ("1.", "2.", "3.") for label in labels) == 3  # every phase named in the legend
+    assert len(figure.axes) == 3  # position, velocity and the zoom on the reference
+    failed = build_figure(linear(start_position=-200.0))
+    labels = [text.get_text() for text in failed.axes[0].get_legend().get_texts()]
+    assert any(label.startswith("FAILED: ") and "limit switch" in label for label in labels)
+    assert any(line.get_gid() == "failure" for line in failed.axes[0].get_lines())
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
