@@ -18,7 +18,15 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from achslint.cli import main
-from achslint.dryrun import DryRunRefused, dry_run, prepare, render, sweep, sweep_words, trace_json
+from achslint.dryrun import (
+    DryRunRefused,
+    dry_run,
+    prepare,
+    render,
+    sweep,
+    sweep_words,
+    trace_json,
+)
 from achslint.scenario import ScenarioError, ScenarioInput, parse_input
 
 from .conftest import FIXTURES
@@ -37,7 +45,7 @@ def approx(value, expected, tolerance=1e-9):
 SPINDLE = ("kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\n"
            "kenngr.ref_richt 1\ngetriebe[0].vb_reflow 36000\ngetriebe[0].a_ref 5000\n"
            "getriebe[0].lslope_profil.a_grenz_stufe_1 360\ngetriebe[0].lslope_profil.a_grenz_stufe_2 720\n")
-SPINDLE_SCENE = dict(cam=(-100.0, -80.0), zero_pulse_period=360.0, zero_pulse_phase=300.0, hardware_latch=True)
+SPINDLE_SCENE = {"cam": (-100.0, -80.0), "zero_pulse_period": 360.0, "zero_pulse_phase": 300.0, "hardware_latch": True}
 
 
 def spindle(extra: str = "", **scene):
@@ -103,8 +111,8 @@ ROTARY = ("kenngr.antr_typ 1\nkenngr.achs_typ 2\nkenngr.achs_mode 0x4\nkenngr.re
 
 
 def rotary(extra: str = "", **scene):
-    base = dict(start_position=0.0, cam=(-345.0, -325.0), zero_pulse_period=5.0, zero_pulse_phase=-327.5,
-                hardware_latch=True)
+    base = {"start_position": 0.0, "cam": (-345.0, -325.0), "zero_pulse_period": 5.0, "zero_pulse_phase": -327.5,
+                "hardware_latch": True}
     return dry_run((ROTARY + extra + "Ende\n").encode(), "r.lis", ScenarioInput(**{**base, **scene})).trace
 
 
@@ -138,8 +146,8 @@ def test_rotary_modulo_axis_reaches_a_cam_behind_it_without_limit_switches():
 
 AXIS = ("kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
         "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n")
-SCENE = dict(start_position=0.0, cam=(-120.0, -100.0), zero_pulse_period=5.0, zero_pulse_phase=-102.5,
-             hardware_latch=True, cycle_time_ms=1.0, limit_switches=(-1010.0, 1010.0))
+SCENE = {"start_position": 0.0, "cam": (-120.0, -100.0), "zero_pulse_period": 5.0, "zero_pulse_phase": -102.5,
+             "hardware_latch": True, "cycle_time_ms": 1.0, "limit_switches": (-1010.0, 1010.0)}
 
 
 def linear(extra: str = "", **scene):

@@ -90,8 +90,13 @@ def assert_consistent(data: bytes) -> str:
     # dry-run refuses exactly when lint says the CNC does not run the homing (LIS306, LIS319), with that text.
     refusing = {d.code for d in diagnostics} & {"LIS306", "LIS319"}
     try:
-        simulated = dry_run(data, "t.lis").trace.strategy.id
+        trace = dry_run(data, "t.lis").trace
+        simulated = trace.strategy.id
         assert not refusing, refusing
+        shown = report["strategy"]["acceleration"]
+        if shown and shown["value"]:
+            # explain and dry-run name the same homing acceleration.
+            assert trace.acceleration == shown["value"], (trace.acceleration, shown)
     except DryRunRefused as exc:
         assert refusing and any(code in str(exc) for code in refusing), str(exc)
         simulated = prepare(data, "t.lis").strategy.id

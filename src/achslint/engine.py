@@ -762,7 +762,7 @@ class Simulator:
         if search.trigger == "zero_pulse":
             return (lambda x: False), (lambda x, s, initially: self._next_pulse(x, s))
         if search.trigger in ("fixed_stop", "limit_switch"):
-            points = [scenario.fixed_stop] if search.trigger == "fixed_stop" else list(scenario.limit_switches)
+            points = [scenario.fixed_stop] if search.trigger == "fixed_stop" else list(scenario.limit_switches or ())
 
             def to_point(x, s, initially):
                 ahead = [(p - x) * s for p in points if p is not None and (p - x) * s >= 0]
