@@ -173,7 +173,7 @@ def test_overflow_offset_beyond_one_revolution_is_reset_to_zero():
 
 def test_overflow_without_bit_range_says_what_stands_in():
     trace = linear("kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 0\n")
-    warning = next(w for w in trace.warnings if w["code"] == "OVERFLOW-PERIOD")
+    warning = next(w for w in trace.warnings if "encoder_bit_range is 0" in w["message"])
     assert "zero_pulse_period (5 mm)" in warning["message"]
 
 

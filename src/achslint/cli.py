@@ -509,8 +509,8 @@ def dry_run_command(
             console.print(sweep_words(summary), markup=False, highlight=False)
     if plot:
         _say(f"wrote {plot}")
-    failed = run.trace.outcome == "failed" or (summary is not None and summary["outcomes"].get("failed", 0))
-    raise typer.Exit(EXIT_FINDINGS if failed and not (allow_failures and run.trace.outcome != "failed") else EXIT_OK)
+    sweep_failed = summary is not None and summary["outcomes"].get("failed", 0) > 0 and not allow_failures
+    raise typer.Exit(EXIT_FINDINGS if run.trace.outcome == "failed" or sweep_failed else EXIT_OK)
 
 
 @app.command("diff")

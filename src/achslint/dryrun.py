@@ -124,7 +124,7 @@ def annotate(simulator: Simulator, trace: Trace) -> None:
     setup = simulator.strategy.setup
     if simulator.overflow and setup.overflow_period is None and simulator.strategy.moves:
         given = "zero_pulse_period" not in trace.scenario.assumed
-        trace.warn("OVERFLOW-PERIOD", (
+        trace.warn(None, (
             "antr.encoder_bit_range is 0, so the distance between encoder overflows is unknown; the dry-run uses "
             f"the scenario's zero_pulse_period ({trace.scenario.zero_pulse_period:g} {trace.unit}"
             f"{'' if given else ', assumed'}) instead. Set encoder_bit_range to the encoder's bits per revolution"))

@@ -6,7 +6,13 @@ ends it was detected. Positions of events follow from the motion equations in
 closed form (no time-stepping loop); a signal without hardware latch is seen at
 the next CNC cycle (error at most v·T), a latched zero pulse exactly. After the
 reference event the axis brakes, so it stands beyond the reference by the
-braking distance v²/2a (TF5200 homing manual §2: "Axis position after homing").
+braking distance v²/2a (TF5200 homing manual §2: "Axis position after homing"),
+except in flying spindle homing (§2.3.2.1), where the spindle keeps turning and
+the trace ends at the reference event, still moving.
+
+On spindles and modulo rotary axes the cam and the zero pulses recur every
+revolution (`getriebe[i].modulou..moduloo`); trace positions keep counting
+past the range, the reference and final positions are wrapped into it.
 
 Units: mm (degrees for rotary axes and spindles) and seconds. Positions in the
 trace are in the scenario's frame (the actual values before homing);
@@ -812,11 +818,11 @@ def _dir(s: int) -> str:
     return "positive" if s > 0 else "negative"
 
 
-def _acceleration(strategy: HomingStrategy, scenario: Scenario) -> tuple[float, str]:
+def _acceleration(strategy: HomingStrategy, scenario: Scenario) -> tuple[float | None, str]:
     """The acceleration the strategy's moves use, and where it comes from (shown in the header and JSON)."""
     setup = strategy.setup
     if strategy.id == "fixed_stop":
-        return setup.torq_acceleration or 1.0, "getriebe[i].homing.torq_move_acceleration (P-AXIS-00334)"
+        return setup.torq_acceleration, "getriebe[i].homing.torq_move_acceleration (P-AXIS-00334)"
     if strategy.controlled_by == "drive":
         drive = scenario.drive
         if drive is None:
