@@ -13,9 +13,9 @@ def test_default_scenario_is_printed_as_assumed(cli):
     result = cli("dry-run", X_AXIS)
     out = result.stdout.decode()
     assert result.returncode == 0, result.stderr
-    assert "assumed: start_position, cam" in out
+    assert "Assumed (not given): start_position, cam" in out
     assert "Outcome: homed" in out
-    assert "Final position: -950.1000 mm (homed)" in out
+    assert "Final position: -950.1 mm (homed, at standstill)" in out
 
 
 def test_scenario_file_and_options(cli, tmp_path):

@@ -315,8 +315,9 @@ def test_spindle_flying_homing_in_degrees():
     trace = dry_run(spindle, "s.lis", ScenarioInput(start_position=0.0, zero_pulse_period=360.0,
                                                      zero_pulse_phase=90.0, hardware_latch=True)).trace
     # A spindle accelerates with its default ramps, min(a_grenz_stufe_1, a_grenz_stufe_2), not a_ref (§2.3.2.1).
-    # 36 °/s at 360 °/s²: ramp 0.1 s over 1.8°; the pulse at 90° is reached at 0.1 + 88.2/36 = 2.55 s;
-    # braking 1.8° -> stands at 91.8°, i.e. pos_refpkt (0) + 1.8°.
+    # 36 °/s at 360 °/s²: ramp 0.1 s over 1.8°; the pulse at 90° is reached at 0.1 + 88.2/36 = 2.55 s.
+    # Flying homing does not stop (§2.3.2.1): the trace ends there, turning at 36 °/s, with the value pos_refpkt 0.
     assert trace.strategy.id == "spindle_flying_zero_pulse" and trace.unit == "deg"
     assert approx(trace.reference["position"], 90.0) and approx(trace.events[-1].time, 2.55)
-    assert approx(trace.final_position, 1.8)
+    assert approx(trace.final_position, 0.0) and approx(trace.reference["speed"], 36.0)
+    assert approx(trace.phases[-1].end_time, 2.55) and trace.ends_moving

@@ -453,36 +453,41 @@ def dry_run_command(
     zero_pulse_period: Optional[float] = typer.Option(None, "--zero-pulse-period", help="Travel per encoder revolution."),
     zero_pulse_phase: Optional[float] = typer.Option(None, "--zero-pulse-phase", help="Position of one zero pulse."),
     latch: Optional[bool] = typer.Option(None, "--latch/--no-latch", help="Whether a hardware latch captures the zero pulse."),
-    cycle_time_ms: Optional[float] = typer.Option(None, "--cycle-time-ms", help="CNC cycle time in ms."),
+    cycle_time_ms: Optional[float] = typer.Option(None, "--cycle-time-ms", help="CNC cycle time in ms (default: the configuration's cycle-time-us)."),
     limit_switches: Optional[str] = typer.Option(None, "--limit-switches", help="Hardware limit switch positions NEG,POS."),
     fixed_stop: Optional[float] = typer.Option(None, "--fixed-stop", help="Position of the mechanical stop (TORQ)."),
     cam_jitter: Optional[float] = typer.Option(None, "--cam-jitter", help="Spread of the cam edge, for --sweep and LIS405."),
-    sweep_runs: int = typer.Option(0, "--sweep", min=0, help="Simulate N start positions and cam jitters and report the spread."),
+    sweep_runs: int = typer.Option(0, "--sweep", min=0, max=1_000_000, help="Simulate N start positions and cam jitters and report the outcomes and the spread."),
+    allow_failures: bool = typer.Option(False, "--allow-failures", help="Exit 0 even when sweep runs fail."),
     plot: Optional[str] = typer.Option(None, "--plot", help="Write position and velocity over time to a PNG or SVG file."),
+    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file (its scenario table and cycle-time-us) instead of searching for one."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
     import json
 
     from .decode import UnreadableInput
-    from .dryrun import dry_run, render, sweep, trace_json
+    from .dryrun import DryRunRefused, dry_run, render, scenario_input, sweep, sweep_words, trace_json
     from .files import reason
-    from .scenario import ScenarioError, ScenarioInput, parse_input, read_scenario
+    from .scenario import ScenarioError
 
     try:
-        given = read_scenario(Path(scenario)) if scenario else ScenarioInput()
         options = {
             "start_position": start, "cam": _pair(cam, "--cam"), "zero_pulse_period": zero_pulse_period,
             "zero_pulse_phase": zero_pulse_phase, "hardware_latch": latch, "cycle_time_ms": cycle_time_ms,
             "limit_switches": _pair(limit_switches, "--limit-switches"), "fixed_stop": fixed_stop, "cam_jitter": cam_jitter,
         }
-        merged = {**given.model_dump(exclude_none=True), **{k: v for k, v in options.items() if v is not None}}
-        given = parse_input(merged, "command-line scenario")
+        given, cycle_time_us = scenario_input(Path(file), Path(scenario) if scenario else None, options,
+                                              Path(config) if config else None)
     except (ScenarioError, UsageError, UnreadableInput) as exc:
         _fail(str(exc))
     except OSError as exc:
         _fail(f"cannot read {scenario}: {reason(exc)}")
-    run = dry_run(_one_list(Path(file), file), file, given, gear=gear)
+    try:
+        run = dry_run(_one_list(Path(file), file), file, given, gear=gear, cycle_time_us=cycle_time_us)
+        summary = sweep(run.simulator, sweep_runs) if sweep_runs else None
+    except (ScenarioError, DryRunRefused) as exc:
+        _fail(str(exc))
     if plot:
         from .plot import PlotUnavailable, plot_trace
 
@@ -492,29 +497,20 @@ def dry_run_command(
             _fail(str(exc))
         except OSError as exc:
             _fail(f"cannot write the plot to {plot}: {reason(exc)}")
-    summary = sweep(run.simulator, sweep_runs) if sweep_runs else None
     if output_format == ExplainFormat.json:
         document = trace_json(run)
         if summary is not None:
             document["sweep"] = summary
-        typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
+        typer.echo(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
     else:
         console = _console(_use_color(color, sys.stdout))
         render(run, console)
         if summary is not None:
-            console.print(_sweep_words(summary))
-    raise typer.Exit(EXIT_FINDINGS if run.trace.outcome == "failed" else EXIT_OK)
-
-
-def _sweep_words(summary: dict) -> str:
-    unit = summary["unit"]
-    outcomes = ", ".join(f"{count} {name}" for name, count in sorted(summary["outcomes"].items()))
-    text = f"Sweep of {summary['runs']} runs: {outcomes}."
-    if "spread" in summary:
-        text += (f" Reference between {summary['reference_min']:.4f} and {summary['reference_max']:.4f} {unit} "
-                 f"(spread {summary['spread']:.4g} {unit}); {summary['distinct_pulses']} distinct zero pulse(s), "
-                 f"{summary['one_revolution_jumps']} run(s) jumped by one or more encoder revolutions.")
-    return text
+            console.print(sweep_words(summary), markup=False, highlight=False)
+    if plot:
+        _say(f"wrote {plot}")
+    sweep_failed = summary is not None and summary["outcomes"].get("failed", 0) > 0 and not allow_failures
+    raise typer.Exit(EXIT_FINDINGS if run.trace.outcome == "failed" or sweep_failed else EXIT_OK)
 
 
 @app.command("diff")

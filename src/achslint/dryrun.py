@@ -1,29 +1,50 @@
 """`achslint dry-run`: simulate the configured homing of a list in a scenario.
 
-Builds the effective values and the strategy, completes the scenario, runs the
-engine, adds the analyses (LIS317 soft limits, LIS405 from the engine) and
-renders the trace as a table, as JSON (schema below) or as a plot.
+Builds the resolved axis and the strategy, completes the scenario (the
+configuration's `scenario` table, then the scenario file, then the
+command-line options; `cycle-time-us` of the configuration as the cycle),
+refuses what the CNC would not run (LIS306, LIS319) and scenarios that do not
+fit the axis (a `[drive]` table on an axis that does not home drive-controlled),
+runs the engine, adds the analyses (LIS317 soft limits, LIS405 from the engine,
+every CNC correction as a warning with its P-ERR id) and renders the trace as a
+table, as JSON (schema below) or as a plot.
 
-JSON (version 1): {"version", "axis", "strategy": {"id", "description"}, "scenario",
-"phases": [{"name", "direction", "velocity", "start_position", "end_position",
-"start_time", "end_time", "ended_by"}], "events": [{"time", "position", "kind"}],
-"reference": {"kind", "position", "value"} | null, "final_position", "total_time",
-"total_distance", "outcome", "failure", "warnings": [{"code", "message"}], "units"}.
-Positions are mm (degrees for rotary axes and spindles), velocities per second,
-times in seconds; phase and event positions are in the scenario frame (actual
-values before homing), `reference.value` and `final_position` in the homed frame.
+JSON (version 1): {"version", "axis": {..., "acceleration", "acceleration_source"},
+"strategy": {"id", "description"}, "scenario", "phases": [{"name", "direction",
+"velocity", "start_position", "end_position", "start_time", "end_time",
+"ended_by"}], "events": [{"time", "position", "kind"}], "reference": {"kind",
+"position", "value", "speed"} | null, "final_position", "ends_moving",
+"total_time", "total_distance", "outcome", "failure", "warnings": [{"code",
+"message"}], "corrections", "units"}. Positions are mm (degrees for rotary
+axes and spindles), velocities per second, times in seconds; phase and event
+positions are in the scenario frame (actual values before homing, continuous:
+on a modulo axis they keep counting past the modulo range so a revolution
+shows as 360°), `reference.position` (wrapped into the modulo range),
+`reference.value` and `final_position` in the homed frame. Numbers are always
+finite: the JSON never contains NaN or Infinity.
 """
 
 from __future__ import annotations
 
+import importlib
+import math
 import random
 from collections import Counter
 from dataclasses import dataclass
+from pathlib import Path
 
 from .engine import Simulator, Trace
 from .homing import classify
 from .resolved import ResolvedAxis, resolve_bytes
-from .scenario import default_scenario
+from .scenario import ScenarioError, default_scenario, parse_input
+
+# Rules whose finding means the CNC does not run the homing at all: the dry-run refuses with their text.
+REFUSING_RULES = ("lis306_torq_drive_type", "lis319_spindle_homing_direction")
+
+
+
+class DryRunRefused(Exception):
+    """The CNC would not run this homing (exit code 2, one line)."""
 
 
 @dataclass
@@ -33,26 +54,106 @@ class DryRun:
     trace: Trace
 
 
+def scenario_input(file: Path, scenario: Path | None, options: dict, config: Path | None = None):
+    """The scenario a dry run uses and the cycle time: the configuration's `scenario` table (found next to the
+    list, or `config`), then the scenario file, then the command-line options (each later source wins, key by
+    key; a `[drive]` table as a whole). Each source is validated on its own, so errors name it."""
+    from .config import ConfigError, discover, load_file
+    from .tomlfile import read_toml
+
+    try:
+        resolved = load_file(config) if config else discover(file)
+    except ConfigError as exc:
+        raise ScenarioError(str(exc)) from None
+    base = dict(resolved.settings.scenario)
+    if base:
+        parse_input(base, f"{resolved.path}: [scenario]")
+    from_file = read_toml(scenario, "scenario", ScenarioError) if scenario else {}
+    if scenario:
+        parse_input(from_file, str(scenario))
+    given = {k: v for k, v in options.items() if v is not None}
+    if given:
+        parse_input(given, "command-line scenario")
+    merged = {**base, **from_file, **given}
+    return parse_input(merged, "scenario"), resolved.settings.cycle_time_us
+
+
 def prepare(data: bytes, name: str, given=None, *, gear: int = 0,
             cycle_time_us: int = 1000, defaults: bytes | None = None) -> Simulator:
     values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
+    if getattr(given, "drive", None) is not None and strategy.controlled_by != "drive":
+        raise ScenarioError(
+            f"scenario: the [drive] table describes drive-controlled homing, but {name} homes "
+            f"{strategy.title} (homing type {values.homing_type}): remove the [drive] table")
     return Simulator(values, strategy, default_scenario(strategy, given, cycle_time_us))
+
+
+def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None:
+    """The lint finding that makes the CNC refuse this homing (drive type, spindle direction), if any."""
+    from .context import Context
+    from .syntax import parse_bytes
+
+    context = Context(name, parse_bytes(data, name),
+                      default_file=parse_bytes(defaults, "default list") if defaults is not None else None)
+    for module in REFUSING_RULES:
+        rule = importlib.import_module(f"{__package__}.rules.{module}")
+        for diagnostic in rule.check(context):
+            return f"{name}: dry-run refused, the CNC does not run this homing: {rule.CODE} {diagnostic.message}"
+    return None
 
 
 def dry_run(data: bytes, name: str, given=None, *, gear: int = 0,
             cycle_time_us: int = 1000, defaults: bytes | None = None) -> DryRun:
     simulator = prepare(data, name, given, gear=gear, cycle_time_us=cycle_time_us, defaults=defaults)
+    refused = refusal(data, name, defaults)
+    if refused:
+        raise DryRunRefused(refused)
     trace = simulator.run()
     simulator.check_soft_limits(trace)
+    annotate(simulator, trace)
     return DryRun(simulator.values, simulator, trace)
+
+
+def annotate(simulator: Simulator, trace: Trace) -> None:
+    """Warnings about what the simulation takes from the CNC's corrections and from stand-ins."""
+    for correction in simulator.values.corrections:
+        trace.warn(correction.error, f"the CNC corrects {correction.parameter} {_plain(correction.written)} -> "
+                                     f"{_plain(correction.used)}: {correction.reason}; the dry-run uses the "
+                                     "corrected value")
+    setup = simulator.strategy.setup
+    if simulator.overflow and setup.overflow_period is None and simulator.strategy.moves:
+        given = "zero_pulse_period" not in trace.scenario.assumed
+        trace.warn(None, (
+            "antr.encoder_bit_range is 0, so the distance between encoder overflows is unknown; the dry-run uses "
+            f"the scenario's zero_pulse_period ({trace.scenario.zero_pulse_period:g} {trace.unit}"
+            f"{'' if given else ', assumed'}) instead. Set encoder_bit_range to the encoder's bits per revolution"))
+
+
+def _plain(value) -> str:
+    return str(int(value)) if isinstance(value, bool) else str(value)
+
+
+def _finite(value):
+    """The document with every non-finite float replaced by None (strict JSON parsers reject NaN)."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    return value
+
+
+def _round(value):
+    return None if value is None or not math.isfinite(value) else round(value, 9)
 
 
 def trace_json(run: DryRun) -> dict:
     trace = run.trace
     values = run.values
-    r = lambda v: None if v is None else round(v, 9)  # noqa: E731 - keep JSON free of float noise
-    return {
+    r = _round  # keep JSON free of float noise
+    return _finite({
         "version": 1,
         "units": {"position": trace.unit, "velocity": f"{trace.unit}/s", "time": "s",
                   "acceleration": f"{trace.unit}/s^2"},
@@ -62,6 +163,7 @@ def trace_json(run: DryRun) -> dict:
             "drive_type": values.drive_type,
             "homing_type": values.homing_type,
             "acceleration": r(trace.acceleration),
+            "acceleration_source": trace.acceleration_source,
         },
         "strategy": {"id": trace.strategy.id, "description": trace.strategy.title},
         "scenario": trace.scenario.as_dict(),
@@ -76,87 +178,168 @@ def trace_json(run: DryRun) -> dict:
             "kind": trace.reference["kind"], "position": r(trace.reference["position"]),
             "value": r(trace.reference["value"]), "speed": r(trace.reference["speed"])},
         "final_position": r(trace.final_position),
+        "ends_moving": trace.ends_moving,
         "total_time": r(trace.total_time),
         "total_distance": r(trace.total_distance),
         "outcome": trace.outcome,
         "failure": trace.failure,
         "warnings": trace.warnings,
         "corrections": [c.as_dict() for c in values.corrections],
-    }
+    })
+
+
+# --- text ------------------------------------------------------------------------------------
+
+def _num(value: float, digits: int = 4, fixed: bool = False) -> str:
+    """A number for the text output: `digits` decimals (trailing zeros dropped unless `fixed`, for columns)."""
+    text = f"{value:.{digits}f}"
+    if text.startswith("-") and float(text) == 0:
+        text = text[1:]
+    return text if fixed or "." not in text else text.rstrip("0").rstrip(".")
+
+
+def header_lines(run: DryRun) -> list[str]:
+    trace = run.trace
+    unit = trace.unit
+    scenario = trace.scenario
+    cam = f"[{_num(scenario.cam[0])}, {_num(scenario.cam[1])}]" if scenario.cam else "none"
+    switches = (f"[{_num(scenario.limit_switches[0])}, {_num(scenario.limit_switches[1])}]"
+                if scenario.limit_switches else "none")
+    lines = [
+        f"Scenario: start {_num(scenario.start_position)} {unit}, cam {cam}, zero pulse every "
+        f"{_num(scenario.zero_pulse_period)} {unit} (one at {_num(scenario.zero_pulse_phase)}), "
+        f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {_num(scenario.cycle_time * 1000)} ms, "
+        f"limit switches {switches}"
+        + (f", modulo [{_num(scenario.modulo[0])}, {_num(scenario.modulo[1])}) {unit}" if scenario.modulo else "")]
+    lines.append(f"Assumed (not given): {', '.join(scenario.assumed) or 'nothing'}")
+    if trace.acceleration is None:
+        lines.append(f"Homing acceleration: {trace.acceleration_source}")
+    else:
+        lines.append(f"Homing acceleration {_num(trace.acceleration)} {unit}/s² from {trace.acceleration_source}")
+    return lines
 
 
 def render(run: DryRun, console) -> None:
+    from rich import box
     from rich.table import Table
     from rich.text import Text
 
     trace = run.trace
     unit = trace.unit
     console.print(Text(f"Homing: {trace.strategy.title}", style="bold"))
-    scenario = trace.scenario
-    assumed = ", ".join(scenario.assumed) or "nothing"
-    cam = f"[{scenario.cam[0]:g}, {scenario.cam[1]:g}]" if scenario.cam else "none"
-    console.print(f"Scenario: start {scenario.start_position:g} {unit}, cam {cam}, zero pulse every "
-                  f"{scenario.zero_pulse_period:g} {unit} (one at {scenario.zero_pulse_phase:g}), "
-                  f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {scenario.cycle_time * 1000:g} ms, "
-                  f"limit switches [{scenario.limit_switches[0]:g}, {scenario.limit_switches[1]:g}]; assumed: {assumed}")
-    console.print(f"Homing acceleration {trace.acceleration:g} {unit}/s²")
+    for line in header_lines(run):
+        console.print(Text(line))
     for correction in run.values.corrections:
         console.print(Text(f"CNC correction {correction.error}: ", style="yellow")
-                      + Text(f"{correction.parameter} {correction.written} -> {correction.used}: {correction.reason}"))
-    table = Table(title="Phases", title_justify="left")
-    for column in ("#", "phase", "direction", f"speed {unit}/s", f"from {unit}", f"to {unit}", "t start s", "t end s", "ended by"):
-        table.add_column(column)
-    for number, p in enumerate(trace.phases, 1):
-        table.add_row(str(number), p.name, p.direction or "", f"{p.velocity:g}", f"{p.start_position:.4f}",
-                      f"{p.end_position:.4f}", f"{p.start_time:.4f}", f"{p.end_time:.4f}", p.ended_by)
+                      + Text(f"{correction.parameter} {_plain(correction.written)} -> {_plain(correction.used)}: "
+                             f"{correction.reason}"))
     if trace.phases:
+        # Numbers never wrap or shrink; the phase name and what ended it wrap instead (fits 80 columns).
+        table = Table(title="Phases", title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
+        table.add_column("#", no_wrap=True)
+        table.add_column("phase / ended by", ratio=1, overflow="fold")
+        table.add_column("dir", no_wrap=True)
+        for column in (f"{unit}/s", f"from {unit}", f"to {unit}", "t end s"):
+            table.add_column(column, no_wrap=True, justify="right")
+        for number, p in enumerate(trace.phases, 1):
+            table.add_row(str(number), Text(p.name) + Text(f"\n{p.ended_by}", style="dim"),
+                          {"positive": "+", "negative": "-"}.get(p.direction or "", ""), _num(p.velocity, 3),
+                          _num(p.start_position, fixed=True), _num(p.end_position, fixed=True),
+                          _num(p.end_time, fixed=True))
         console.print(table)
     if trace.events:
-        events = Table(title="Events", title_justify="left")
-        for column in ("t s", f"position {unit}", "event"):
-            events.add_column(column)
+        events = Table(title="Events", title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
+        events.add_column("t s", no_wrap=True, justify="right")
+        events.add_column(f"at {unit}", no_wrap=True, justify="right")
+        events.add_column("event", ratio=1, overflow="fold")
         for e in trace.events:
-            events.add_row(f"{e.time:.4f}", f"{e.position:.4f}", e.kind)
+            events.add_row(_num(e.time, fixed=True), _num(e.position, fixed=True), e.kind)
         console.print(events)
     if trace.reference:
         ref = trace.reference
-        console.print(f"Reference: {ref['kind']} at {ref['position']:.4f} {unit} (actual value before homing) "
-                      f"becomes {ref['value']:g} {unit}")
+        console.print(Text(f"Reference: {ref['kind']} at {_num(ref['position'])} {unit} (actual value before "
+                           f"homing) becomes {_num(ref['value'])} {unit}"))
     if trace.final_position is not None:
-        console.print(f"Final position: {trace.final_position:.4f} {unit} (homed); total {trace.total_time:.3f} s, "
-                      f"{trace.total_distance:.3f} {unit} travelled")
+        where = ("the spindle turns on at " + _num(trace.reference["speed"], 3) + f" {unit}/s"
+                 if trace.ends_moving and trace.reference else "at standstill")
+        console.print(Text(f"Final position: {_num(trace.final_position)} {unit} (homed, {where}); total "
+                           f"{_num(trace.total_time, 3)} s, {_num(trace.total_distance, 3)} {unit} travelled"))
     style = {"homed": "green", "failed": "red"}.get(trace.outcome, "yellow")
     console.print(Text(f"Outcome: {trace.outcome}", style=f"bold {style}") +
                   Text(f" — {trace.failure}" if trace.failure else ""))
     for warning in trace.warnings:
-        console.print(Text(f"{warning['code']}: ", style="yellow") + Text(warning["message"]))
+        if warning["code"] and warning["code"].startswith("P-ERR"):
+            continue  # shown above as a CNC correction
+        prefix = Text(f"{warning['code']}: ", style="yellow") if warning["code"] else Text("note: ", style="yellow")
+        console.print(prefix + Text(warning["message"]))
 
 
 # --- sweeps -----------------------------------------------------------------------------------
 
+GEOMETRY = ("cam", "zero_pulse_period", "zero_pulse_phase", "limit_switches")
+
+
 def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
-    """Simulate many start positions and cam jitters; summarise the spread of the reference."""
+    """Simulate many start positions and cam jitters; count the outcomes with their reasons and summarise the
+    spread of the reference. Start positions are drawn between the limit switches, or over one revolution on a
+    modulo axis without them."""
     scenario = simulator.scenario
     rng = random.Random(seed)
-    low, high = scenario.limit_switches
+    if scenario.limit_switches is not None:
+        low, high = scenario.limit_switches
+    elif scenario.modulo is not None:
+        low, high = scenario.modulo
+    else:  # pragma: no cover - every non-modulo scenario has limit switches
+        low, high = scenario.start_position - 100.0, scenario.start_position + 100.0
     jitter = scenario.cam_jitter
     references: list[float] = []
     outcomes: Counter = Counter()
+    reasons: Counter = Counter()
     for _ in range(runs):
         start = rng.uniform(low, high)
         shift = rng.uniform(-jitter, jitter) if jitter else 0.0
         trace = simulator.run(start=start, cam_shift=shift)
         outcomes[trace.outcome] += 1
-        if trace.reference is not None and trace.outcome == "homed":
+        if trace.outcome != "homed":
+            reason = trace.phases[-1].ended_by if trace.phases and trace.outcome == "failed" else trace.failure
+            reasons[(trace.outcome, reason or trace.outcome)] += 1
+        elif trace.reference is not None:
             references.append(trace.reference["position"])
     period = scenario.zero_pulse_period
-    summary = {"runs": runs, "outcomes": dict(outcomes), "unit": simulator.unit}
+    assumed = [name for name in GEOMETRY if name in scenario.assumed and not (
+        name == "limit_switches" and scenario.modulo is not None)]
+    summary = {
+        "runs": runs, "outcomes": dict(outcomes), "unit": simulator.unit, "start_range": [low, high],
+        "reasons": [{"outcome": outcome, "reason": reason, "count": count}
+                    for (outcome, reason), count in reasons.most_common()],
+        "assumed_geometry": assumed,
+    }
     if references:
-        spread = max(references) - min(references)
+        spread = round(max(references) - min(references), 9)
         pulses = Counter(round((ref - scenario.zero_pulse_phase) / period) for ref in references)
         usual = pulses.most_common(1)[0][1]
         summary.update({
-            "reference_min": min(references), "reference_max": max(references), "spread": spread,
+            "reference_min": round(min(references), 9), "reference_max": round(max(references), 9), "spread": spread,
             "distinct_pulses": len(pulses), "one_revolution_jumps": len(references) - usual,
         })
-    return summary
+    return _finite(summary)
+
+
+def sweep_words(summary: dict) -> str:
+    """The sweep in words: counts per outcome with the reasons, the spread, and a loud note on assumed geometry."""
+    unit = summary["unit"]
+    lines = []
+    if summary["assumed_geometry"]:
+        lines.append(f"NOTE: the sweep runs in an ASSUMED geometry ({', '.join(summary['assumed_geometry'])} not "
+                     "given): its failures and spread describe the default scenario, not your machine. Give the "
+                     "real geometry with --scenario or --cam/--zero-pulse-period/--zero-pulse-phase/--limit-switches.")
+    low, high = summary["start_range"]
+    outcomes = ", ".join(f"{name} ×{count}" for name, count in sorted(summary["outcomes"].items()))
+    lines.append(f"Sweep of {summary['runs']} runs (start between {_num(low)} and {_num(high)} {unit}): {outcomes}.")
+    for item in summary["reasons"]:
+        lines.append(f"  {item['outcome']}: {item['reason']} ×{item['count']}")
+    if "spread" in summary:
+        lines.append(f"Reference between {_num(summary['reference_min'])} and {_num(summary['reference_max'])} "
+                     f"{unit} (spread {summary['spread']:.4g} {unit}); {summary['distinct_pulses']} distinct zero "
+                     f"pulse(s), {summary['one_revolution_jumps']} run(s) jumped by one or more encoder revolutions.")
+    return "\n".join(lines)

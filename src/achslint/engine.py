@@ -6,7 +6,13 @@ ends it was detected. Positions of events follow from the motion equations in
 closed form (no time-stepping loop); a signal without hardware latch is seen at
 the next CNC cycle (error at most v·T), a latched zero pulse exactly. After the
 reference event the axis brakes, so it stands beyond the reference by the
-braking distance v²/2a (TF5200 homing manual §2: "Axis position after homing").
+braking distance v²/2a (TF5200 homing manual §2: "Axis position after homing"),
+except in flying spindle homing (§2.3.2.1), where the spindle keeps turning and
+the trace ends at the reference event, still moving.
+
+On spindles and modulo rotary axes the cam and the zero pulses recur every
+revolution (`getriebe[i].modulou..moduloo`); trace positions keep counting
+past the range, the reference and final positions are wrapped into it.
 
 Units: mm (degrees for rotary axes and spindles) and seconds. Positions in the
 trace are in the scenario's frame (the actual values before homing);
@@ -70,7 +76,8 @@ class Trace:
     strategy: HomingStrategy
     scenario: Scenario
     unit: str  # "mm" or "deg"
-    acceleration: float
+    acceleration: float | None
+    acceleration_source: str = ""
     phases: list[PhaseRecord] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
     reference: dict | None = None  # kind, position (scenario frame), value (homed frame)
@@ -78,6 +85,7 @@ class Trace:
     outcome: str = "homed"
     failure: str | None = None
     warnings: list[dict] = field(default_factory=list)
+    ends_moving: bool = False  # flying spindle homing: the trace ends at the reference, still turning
 
     @property
     def total_time(self) -> float:
@@ -115,6 +123,14 @@ class _Ramp:
     def speed_at(self, t: float) -> float:
         return min(self.a * t, self.v)
 
+    def run_until(self, t: float) -> list[Segment]:
+        """The segments up to t after the start, without braking (the axis is still moving then)."""
+        t0, x0, s, a = self.t0, self.x0, self.s, self.a
+        segments = [Segment(t0, t0 + min(t, self.t_acc), x0, 0.0, s * a)]
+        if t > self.t_acc:
+            segments.append(Segment(t0 + self.t_acc, t0 + t, x0 + s * self.d_acc, s * self.v, 0.0))
+        return segments
+
     def stop(self, t_brake: float) -> tuple[list[Segment], float, float]:
         """Brake from time t0 + t_brake; returns the segments, the end time and the end position."""
         s, a, t0, x0 = self.s, self.a, self.t0, self.x0
@@ -142,7 +158,7 @@ class Simulator:
         self.rotary = setup.rotary
         self.unit = setup.unit
         self.direction = setup.direction
-        self.acceleration = setup.acceleration.value or 1.0
+        self.acceleration, self.acceleration_source = _acceleration(strategy, scenario)
         self.fast = setup.fast
         self.slow = setup.slow
         self.fast_from_cam = setup.fast_from_cam
@@ -153,11 +169,19 @@ class Simulator:
         self.refpkt = setup.reference_position
         self.soft_limits = setup.soft_limits
         self.overflow = setup.overflow
+        self.modulo = setup.modulo  # (low, high) in degrees when positions wrap, else None
+        self.revolution = self.modulo[1] - self.modulo[0] if self.modulo else 0.0
+        self.start = scenario.start_position  # path monitoring counts from here (set by run)
 
     # -- helpers -----------------------------------------------------------------------------
     def _active(self, lo: float, hi: float):
-        """Membership and crossing distances of the region where the cam signal is active."""
+        """Membership and crossing distances of the region where the cam signal is active.
+
+        On a modulo axis (spindle, rotary axis with MODULO) the cam recurs every revolution: the zone is
+        [lo, hi] + k·revolution, so every crossing distance is finite."""
         inside_cam = self.cam_level
+        if self.modulo:
+            return self._active_modulo(lo, hi, inside_cam)
 
         def active(x: float) -> bool:
             return (lo <= x <= hi) == inside_cam
@@ -182,14 +206,62 @@ class Simulator:
 
         return active, entry, exit_
 
-    def _bound(self, x: float, s: int, travelled: float, extra: float = INF) -> tuple[float, str]:
-        """The first limit in the way: limit switch, homing_max_movement_dist or a phase-specific maximum."""
-        switch = self.scenario.limit_switches[1] - x if s > 0 else x - self.scenario.limit_switches[0]
-        bounds = [(max(switch, 0.0), "limit switch reached")]
+    def _active_modulo(self, lo: float, hi: float, inside_cam: bool):
+        period, width = self.revolution, hi - lo
+
+        def offset(x: float) -> float:  # where x lies past the cam's start, within one revolution
+            return (x - lo) % period
+
+        def active(x: float) -> bool:
+            return (offset(x) <= width) == inside_cam
+
+        def entry(x: float, s: int) -> float:
+            if active(x):
+                return 0.0
+            r = offset(x)
+            if inside_cam:  # outside the cam: to the next cam start (s > 0) or back to its end (s < 0)
+                return period - r if s > 0 else r - width
+            return width - r if s > 0 else r  # on the cam, the active region is outside it
+
+        def exit_(x: float, s: int) -> float:
+            if not active(x):
+                return 0.0
+            r = offset(x)
+            if inside_cam:
+                return width - r if s > 0 else r
+            return period - r if s > 0 else r - width
+
+        return active, entry, exit_
+
+    def wrap(self, x: float) -> float:
+        """A position of a modulo axis brought into its range [modulou, moduloo); others unchanged."""
+        if not self.modulo:
+            return x
+        low = self.modulo[0]
+        return low + (x - low) % self.revolution
+
+    HORIZON_REVOLUTIONS = 100  # a modulo axis without any bound gives up after this many revolutions
+
+    def _bound(self, x: float, s: int, travelled: float = 0.0, extra: float = INF) -> tuple[float, str]:
+        """The first limit in the way: limit switch, homing_max_movement_dist or a phase-specific maximum.
+
+        homing_max_movement_dist bounds the displacement from the homing start position (§2.4.1: the reference
+        must be found "within a distance from the homing start position"), not the path length travelled, so
+        moving back and forth across the cam does not use it up."""
+        switches = self.scenario.limit_switches
+        bounds = []
+        if switches is not None:
+            switch = switches[1] - x if s > 0 else x - switches[0]
+            bounds.append((max(switch, 0.0), "limit switch reached"))
         if self.total_max > 0:
-            bounds.append((max(self.total_max - travelled, 0.0), "homing_max_movement_dist exceeded (P-ERR-70394)"))
+            room = self.total_max - s * (x - self.start)
+            bounds.append((max(room, 0.0), "homing_max_movement_dist exceeded (P-ERR-70394)"))
         if extra < INF:
-            bounds.append((extra, "maximum search distance exceeded"))
+            bounds.append((extra, "zero_pulse_search_max_dist exceeded (maximum search distance)"))
+        if not bounds:
+            span = self.revolution * self.HORIZON_REVOLUTIONS if self.modulo else 1e7
+            turns = f"{self.HORIZON_REVOLUTIONS} revolutions" if self.modulo else f"{span:g} {self.unit}"
+            bounds.append((span, f"nothing found within {turns} and nothing else bounds the search"))
         return min(bounds)
 
     def _sample(self, ramp: _Ramp, distance: float, latched: bool) -> float:
@@ -234,14 +306,15 @@ class Simulator:
     def _reference(self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float) -> None:
         trace.events.append(Event(time, position, kind))
         speed = abs(trace.phases[-1].segments[-1].v0)  # the braking segment starts at the event
-        trace.reference = {"kind": kind, "position": position, "value": value, "speed": speed}
-        trace.final_position = value + (x_end - position)
+        trace.reference = {"kind": kind, "position": self.wrap(position), "value": value, "speed": speed}
+        trace.final_position = self.wrap(value + (x_end - position))
 
     # -- strategies --------------------------------------------------------------------------
     def run(self, start: float | None = None, cam_shift: float = 0.0) -> Trace:
         """Simulate from `start` (the scenario's start position by default); the strategy picks the sequence."""
-        trace = Trace(self.strategy, self.scenario, self.unit, self.acceleration)
+        trace = Trace(self.strategy, self.scenario, self.unit, self.acceleration, self.acceleration_source)
         x = self.scenario.start_position if start is None else start
+        self.start = x
         return self.strategy.definition.simulate(self, trace, x, cam_shift)
 
     def check_soft_limits(self, trace: Trace) -> None:
@@ -331,7 +404,9 @@ class Simulator:
         event = "encoder overflow" if self.overflow else "zero pulse"
         latched = scenario.hardware_latch or self.overflow
         self._check_pulse_margin(trace, activation, s, speed)
-        before = cam_distance if self.zero_search_max > 0 else 0.0
+        # zero_pulse_search_max_dist counts from where the zero-pulse logic is armed (the cam edge plus the shift):
+        # the manual does not say; this is the reading under which the shift cannot make a pulse unreachable.
+        before = abs(activation - x) if self.zero_search_max > 0 else 0.0
         search_max = self.zero_search_max if self.zero_search_max > 0 else INF
         x_end, t_end, x_ref = self._move(trace, name, x, t, s, speed, pulse_distance, latched,
                                          f"the {event} was detected" + ("" if latched else " (sampled each cycle)"),
@@ -410,6 +485,78 @@ class Simulator:
                 return trace
             travelled, x = abs(x_end - x), x_end
         return self._reference_search(trace, "on to the reference", x, t, s, self.slow, 0.0, travelled)
+
+    def flying(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
+        """Flying homing of a spindle (§2.3.2.1): no reversal and no stop.
+
+        The spindle turns in the homing direction at vb_reflow with its default ramps. With a cam
+        (ref_ohne_nocken 0) the cam counts where it changes from operated to not operated: a spindle off the
+        cam turns onto it and through it, one on the cam turns until it leaves it; that edge (sampled each
+        cycle) arms the zero-pulse logic, shift_offset_zero_pulse_activation later. Without a cam the logic
+        is armed at once. The next zero pulse is the reference, and the spindle keeps turning at the speed it
+        has: the trace ends at the reference event, moving."""
+        s, speed = self.direction, self.slow
+        scenario = self.scenario
+        ramp = _Ramp(0.0, x, s, speed, self.acceleration)
+        name = "reference on the fly"
+        t_edge = None
+        if self.strategy.with_cam:
+            if scenario.cam is None:
+                return self.stand_still(trace, "failed", "flying homing with cam needs a reference cam but the "
+                                                         "scenario has none")
+            lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
+            active, entry, exit_ = self._active(lo, hi)
+            if active(x):
+                edge = exit_(x, s)
+                trace.events.append(Event(0.0, x, "on the cam at the start: turns until the cam is left"))
+            else:
+                span = (hi - lo) if self.cam_level else (self.revolution or INF) - (hi - lo)
+                edge = entry(x, s) + span
+            bound, reason = self._bound(x, s)
+            if edge > bound:
+                return self._flying_abort(trace, ramp, name, bound, reason)
+            t_edge = self._sample(ramp, edge, False)
+            x_edge = x + s * ramp.distance_at(t_edge)
+            activation = x_edge + s * self.shift
+        else:
+            activation = x
+        event = "encoder overflow" if self.overflow else "zero pulse"
+        latched = scenario.hardware_latch or self.overflow
+        distance = abs(activation - x) + self._next_pulse(activation, s)
+        extra = abs(activation - x) + self.zero_search_max if self.zero_search_max > 0 else INF
+        bound, reason = self._bound(x, s, 0.0, extra)
+        if distance > bound:
+            return self._flying_abort(trace, ramp, name, bound, reason, t_edge, x)
+        if t_edge is not None:
+            self._check_pulse_margin(trace, activation, s, speed)
+        t_ref = self._sample(ramp, distance, latched)
+        x_ref = x + s * ramp.distance_at(t_ref)
+        segments = ramp.run_until(t_ref)
+        trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_ref, 0.0, t_ref,
+                                        f"the {event} was detected; the spindle turns on without stopping", segments))
+        if t_edge is not None:
+            self._edge_event(trace, t_edge, x + s * ramp.distance_at(t_edge))
+        trace.events.append(Event(t_ref, x_ref, event))
+        trace.reference = {"kind": event, "position": self.wrap(x_ref), "value": self.refpkt,
+                           "speed": ramp.speed_at(t_ref)}
+        trace.final_position = self.wrap(self.refpkt)
+        trace.ends_moving = True
+        return trace
+
+    def _edge_event(self, trace: Trace, t: float, position: float) -> None:
+        armed = ("cam left, zero-pulse logic armed" if not self.shift
+                 else f"cam left, zero-pulse logic armed {self.shift:g} {self.unit} later")
+        trace.events.append(Event(t, position, armed))
+
+    def _flying_abort(self, trace: Trace, ramp: _Ramp, name: str, bound: float, reason: str,
+                      t_edge: float | None = None, x: float = 0.0) -> Trace:
+        """A flying search that a bound ends: the CNC aborts homing and the spindle brakes."""
+        segments, t_end, x_end = ramp.stop(ramp.time_to(bound))
+        trace.phases.append(PhaseRecord(name, _dir(ramp.s), ramp.v, ramp.x0, x_end, ramp.t0, t_end, reason, segments))
+        if t_edge is not None and t_edge <= ramp.time_to(bound):
+            self._edge_event(trace, t_edge, ramp.x0 + ramp.s * ramp.distance_at(t_edge))
+        trace.outcome, trace.failure = "failed", f"{name}: {reason} before the event was found"
+        return trace
 
     def zero_pulse_only(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         if not self.strategy.setup.zero_pulse:
@@ -621,7 +768,7 @@ class Simulator:
         if search.trigger == "zero_pulse":
             return (lambda x: False), (lambda x, s, initially: self._next_pulse(x, s))
         if search.trigger in ("fixed_stop", "limit_switch"):
-            points = [scenario.fixed_stop] if search.trigger == "fixed_stop" else list(scenario.limit_switches)
+            points = [scenario.fixed_stop] if search.trigger == "fixed_stop" else list(scenario.limit_switches or ())
 
             def to_point(x, s, initially):
                 ahead = [(p - x) * s for p in points if p is not None and (p - x) * s >= 0]
@@ -669,3 +816,23 @@ def _point_to_point(trace: Trace, name: str, x: float, t: float, s: int, speed: 
 
 def _dir(s: int) -> str:
     return "positive" if s > 0 else "negative"
+
+
+def _acceleration(strategy: HomingStrategy, scenario: Scenario) -> tuple[float | None, str]:
+    """The acceleration the strategy's moves use, and where it comes from (shown in the header and JSON)."""
+    setup = strategy.setup
+    if strategy.id == "fixed_stop":
+        return setup.torq_acceleration, "getriebe[i].homing.torq_move_acceleration (P-AXIS-00334)"
+    if strategy.controlled_by == "drive":
+        drive = scenario.drive
+        if drive is None:
+            return None, "the drive's own (not simulated without a [drive] table)"
+        return drive.acceleration, "the drive's ([drive] acceleration of the scenario)"
+    acceleration = setup.acceleration
+    source = {
+        "a_ref": "getriebe[i].a_ref (P-AXIS-00285)",
+        "fallback": "a_ref is 0: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) (P-AXIS-00005/00006, §3.2.4)",
+        "default ramps": "spindle default ramps: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) "
+                         "(P-AXIS-00005/00006; a_ref is for axis types T and R, §2.3.2.1)",
+    }[acceleration.source]
+    return acceleration.value or 1.0, source

@@ -1,8 +1,21 @@
-"""`dry-run --plot`: position and velocity over time, phases shaded, events marked (matplotlib)."""
+"""`dry-run --plot`: position and velocity over time (matplotlib, `pip install 'achslint[plot]'`).
+
+What the figure shows: each phase in its own shade with its number and name in a legend beside the plot
+(labels never overlap the curves); the cam zone (every revolution of it on a modulo axis); zero-pulse marks;
+limit switches and software limits as lines; the reference point with "actual value -> new value"; the
+final position; a failure marker with the reason; and an inset zooming on the phase where the reference is
+found. `build_figure` returns the figure (tests read its data series); `plot_trace` writes PNG or SVG.
+"""
 
 from __future__ import annotations
 
+import math
+
 from .engine import Trace
+
+# One colour per phase (colour-blind friendly qualitative palette), repeated for long sequences.
+PHASE_COLOURS = ("#4477aa", "#ee6677", "#228833", "#ccbb44", "#66ccee", "#aa3377", "#bbbbbb")
+MAX_PULSE_MARKS = 80
 
 
 class PlotUnavailable(Exception):
@@ -22,9 +35,7 @@ def samples(trace: Trace, per_segment: int = 40) -> tuple[list[float], list[floa
     return times, positions, velocities
 
 
-def plot_trace(trace: Trace, target: str) -> None:
-    if not target.lower().endswith((".png", ".svg")):
-        raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
+def _pyplot():
     try:
         import matplotlib
 
@@ -32,28 +43,194 @@ def plot_trace(trace: Trace, target: str) -> None:
         import matplotlib.pyplot as plt
     except ImportError:
         raise PlotUnavailable("--plot needs matplotlib: pip install 'achslint[plot]'") from None
+    return plt
+
+
+def _fmt(value: float) -> str:
+    text = f"{value:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text.replace("-", "\u2212")
+
+
+def _soft_limits_in_trace_frame(trace: Trace) -> tuple[float, float] | None:
+    """The software limits (homed frame) drawn where they lie in the trace's frame, once the reference is known."""
+    setup = trace.strategy.setup
+    if trace.reference is None or setup.spindle or setup.modulo:
+        return None
+    offset = trace.reference["value"] - trace.reference["position"]
+    low, high = setup.soft_limits
+    return low - offset, high - offset
+
+
+def build_figure(trace: Trace):
+    """The figure for a trace (matplotlib Figure); the caller saves or closes it."""
+    plt = _pyplot()
+    from matplotlib.patches import Patch
+
     times, positions, velocities = samples(trace)
-    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6))
     unit = trace.unit
-    top.plot(times, positions, color="tab:blue")
+    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(12, 7.5),
+                                         gridspec_kw={"height_ratios": [3, 1.4]})
+    figure.subplots_adjust(left=0.08, right=0.66, top=0.9, bottom=0.08, hspace=0.08)
+    top.plot(times, positions, color="black", linewidth=1.4, label="position", gid="position")
+    bottom.plot(times, velocities, color="black", linewidth=1.2, label="velocity", gid="velocity")
     top.set_ylabel(f"position [{unit}]")
-    bottom.plot(times, velocities, color="tab:orange")
     bottom.set_ylabel(f"velocity [{unit}/s]")
     bottom.set_xlabel("time [s]")
-    shades = ("#f0f0f0", "#dde8f5")
-    for number, phase in enumerate(trace.phases):
+    bottom.axhline(0.0, color="grey", linewidth=0.6)
+
+    handles = []
+    for number, phase in enumerate(trace.phases, 1):
+        colour = PHASE_COLOURS[(number - 1) % len(PHASE_COLOURS)]
         for axis in (top, bottom):
-            axis.axvspan(phase.start_time, phase.end_time, color=shades[number % 2], zorder=0)
-        top.annotate(f" {number + 1}", (phase.start_time, 0.92), xycoords=("data", "axes fraction"),
-                     fontsize=9, fontweight="bold")
-    if trace.scenario.cam:
-        top.axhspan(*trace.scenario.cam, color="tab:green", alpha=0.15, label="reference cam")
+            axis.axvspan(phase.start_time, phase.end_time, color=colour, alpha=0.18, zorder=0, linewidth=0)
+        top.text((phase.start_time + phase.end_time) / 2, 1.01, str(number), transform=top.get_xaxis_transform(),
+                 ha="center", va="bottom", fontsize=9, fontweight="bold", color=colour)
+        handles.append(Patch(color=colour, alpha=0.45, label=_wrap(
+            f"{number}. {phase.name} ({phase.direction or '-'}, {_fmt(phase.velocity)} {unit}/s)", 48)))
+
+    low, high = (min(positions), max(positions)) if positions else (trace.scenario.start_position,) * 2
+    span = max(high - low, 1e-6)
+    y_low, y_high = low - 0.08 * span, high + 0.08 * span
+    scenario = trace.scenario
+    if scenario.cam:
+        lo, hi = scenario.cam
+        shown = False
+        revolution = (scenario.modulo[1] - scenario.modulo[0]) if scenario.modulo else 0.0
+        shifts = [0.0]
+        if revolution:
+            first = math.floor((y_low - hi) / revolution)
+            shifts = [k * revolution for k in range(first, first + int(span / revolution) + 3)]
+        for shift in shifts:
+            if lo + shift <= y_high and hi + shift >= y_low:
+                top.axhspan(lo + shift, hi + shift, color="#117733", alpha=0.14, zorder=0, linewidth=0,
+                            gid="cam")
+                shown = True
+        if shown:
+            handles.append(Patch(color="#117733", alpha=0.3, label=f"reference cam [{_fmt(lo)}, {_fmt(hi)}]"
+                                 + (" every revolution" if revolution else "")))
+    if trace.strategy.with_zero_pulse and scenario.zero_pulse_period > 0:
+        period, phase_at = scenario.zero_pulse_period, scenario.zero_pulse_phase
+        first = math.ceil((y_low - phase_at) / period)
+        last = math.floor((y_high - phase_at) / period)
+        if 0 <= last - first <= MAX_PULSE_MARKS:
+            marks = [phase_at + k * period for k in range(first, last + 1)]
+            top.hlines(marks, 0, 0.012, transform=top.get_yaxis_transform(), color="#882255", linewidth=1.5,
+                       gid="zero_pulses")
+            handles.append(plt.Line2D([], [], color="#882255", linewidth=1.5,
+                                      label=f"zero pulses (every {_fmt(period)} {unit})"))
+    lines = []
+    if scenario.limit_switches:
+        lines += [(value, "limit switch", "#cc3311", "-") for value in scenario.limit_switches]
+    soft = _soft_limits_in_trace_frame(trace)
+    if soft:
+        lines += [(value, "software limit (after homing)", "#ee7733", "--") for value in soft]
+    labels: dict[str, list[str]] = {}
+    styles: dict[str, tuple[str, str]] = {}
+    for value, name, colour, style in lines:
+        top.axhline(value, color=colour, linestyle=style, linewidth=1.0, gid=name)
+        labels.setdefault(name, []).append(_fmt(value))
+        styles[name] = (colour, style)
+        if low - span <= value <= high + span:  # widen the view to lines near the motion, not to far ones
+            y_low, y_high = min(y_low, value), max(y_high, value)
+    for name, values in labels.items():
+        colour, style = styles[name]
+        handles.append(plt.Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}"))
+    top.set_ylim(y_low - 0.02 * span, y_high + 0.02 * span)
+
+    reference = trace.reference
+    reference_event = None
+    if reference is not None:
+        reference_event = next((e for e in reversed(trace.events) if e.kind == reference["kind"]), None)
+        t_ref = reference_event.time if reference_event else (trace.phases[-1].end_time if trace.phases else 0.0)
+        x_ref = reference_event.position if reference_event else reference["position"]
+        top.plot([t_ref], [x_ref], marker="*", markersize=14, color="#ddaa33", markeredgecolor="black",
+                 linestyle="none", gid="reference", zorder=5)
+        handles.append(plt.Line2D([], [], marker="*", markersize=12, color="#ddaa33", markeredgecolor="black",
+                                  linestyle="none", label=f"reference ({reference['kind']}): "
+                                  f"{_fmt(reference['position'])} {unit} \u2192 {_fmt(reference['value'])} {unit}"))
+    if trace.final_position is not None and trace.phases:
+        last = trace.phases[-1]
+        top.plot([last.end_time], [last.end_position], marker="s", markersize=8, color="white",
+                 markeredgecolor="black", linestyle="none", gid="final", zorder=5)
+        moving = " (still turning)" if trace.ends_moving else ""
+        handles.append(plt.Line2D([], [], marker="s", color="white", markeredgecolor="black", linestyle="none",
+                                  label=f"final position {_fmt(trace.final_position)} {unit} (homed){moving}"))
     for event in trace.events:
-        top.plot([event.time], [event.position], marker="o", color="tab:red")
-        top.annotate(event.kind, (event.time, event.position), textcoords="offset points", xytext=(4, 4), fontsize=7)
-    phases = "   ".join(f"{n}. {p.name}" for n, p in enumerate(trace.phases, 1))
-    top.set_title(f"{trace.strategy.title}: {trace.outcome}\n{phases}", fontsize=10)
-    top.legend(loc="lower right", fontsize=8) if trace.scenario.cam else None
-    figure.tight_layout()
-    figure.savefig(target)
-    plt.close(figure)
+        if event is reference_event:
+            continue
+        top.plot([event.time], [event.position], marker="o", markersize=5, color="#555555", linestyle="none",
+                 zorder=4)
+    if trace.events:
+        kinds = list(dict.fromkeys(e.kind for e in trace.events if e is not reference_event))
+        if kinds:
+            handles.append(plt.Line2D([], [], marker="o", markersize=5, color="#555555", linestyle="none",
+                                      label=_wrap("events: " + "; ".join(kinds), 48)))
+    if trace.outcome == "failed":
+        where = (trace.phases[-1].end_time, trace.phases[-1].end_position) if trace.phases else (0.0, low)
+        top.plot([where[0]], [where[1]], marker="X", markersize=14, color="#cc3311", linestyle="none",
+                 gid="failure", zorder=6)
+        handles.append(plt.Line2D([], [], marker="X", markersize=12, color="#cc3311", linestyle="none",
+                                  label=_wrap(f"FAILED: {trace.failure or 'homing failed'}", 48)))
+
+    top.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
+               borderaxespad=0.0)
+    title = f"{trace.strategy.title}: {trace.outcome}"
+    if trace.phases:
+        title += f" in {_fmt(trace.total_time)} s"
+    figure.suptitle(title, fontsize=11, x=0.37)
+    if reference_event is not None and trace.phases:
+        _inset(figure, top, trace, reference_event)
+    if not trace.phases:
+        top.text(0.5, 0.5, "no homing motion" + (f": {trace.failure}" if trace.failure else ""),
+                 transform=top.transAxes, ha="center", va="center", fontsize=10)
+    return figure
+
+
+def _inset(figure, top, trace: Trace, event) -> None:
+    """A zoom on the moments around the reference event (the phase where it is found is often a sliver)."""
+    phase = next((p for p in trace.phases if p.start_time <= event.time <= p.end_time), trace.phases[-1])
+    window = max(min(phase.end_time - phase.start_time, 0.5), 1e-3)
+    t0, t1 = max(phase.start_time, event.time - window / 2), min(phase.end_time, event.time + window / 2)
+    if t1 - t0 < 1e-9:
+        t0, t1 = event.time - window / 2, event.time + window / 2
+    inset = figure.add_axes([0.74, 0.1, 0.22, 0.26])
+    times, positions, _ = samples(trace, per_segment=400)
+    pairs = [(t, x) for t, x in zip(times, positions) if t0 <= t <= t1]
+    if pairs:
+        inset.plot([t for t, _ in pairs], [x for _, x in pairs], color="black", linewidth=1.2, gid="zoom")
+    inset.plot([event.time], [event.position], marker="*", markersize=12, color="#ddaa33", markeredgecolor="black",
+               linestyle="none")
+    inset.axhline(event.position, color="#ddaa33", linewidth=0.8, linestyle=":")
+    scenario = trace.scenario
+    if trace.strategy.with_zero_pulse and scenario.zero_pulse_period > 0 and pairs:
+        y0, y1 = min(x for _, x in pairs), max(x for _, x in pairs)
+        period, phase_at = scenario.zero_pulse_period, scenario.zero_pulse_phase
+        first, last = math.ceil((y0 - phase_at) / period), math.floor((y1 - phase_at) / period)
+        if 0 <= last - first <= MAX_PULSE_MARKS:
+            inset.hlines([phase_at + k * period for k in range(first, last + 1)], 0, 0.05,
+                         transform=inset.get_yaxis_transform(), color="#882255", linewidth=2.0, gid="zoom_pulses")
+    inset.set_title(f"zoom: {event.kind} at t = {_fmt(event.time)} s", fontsize=8)
+    inset.tick_params(labelsize=7)
+
+
+def _wrap(text: str, width: int) -> str:
+    words, lines, line = text.split(), [], ""
+    for word in words:
+        if line and len(line) + 1 + len(word) > width:
+            lines.append(line)
+            line = word
+        else:
+            line = f"{line} {word}".strip()
+    lines.append(line)
+    return "\n".join(lines)
+
+
+def plot_trace(trace: Trace, target: str) -> None:
+    if not target.lower().endswith((".png", ".svg")):
+        raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
+    plt = _pyplot()
+    figure = build_figure(trace)
+    try:
+        figure.savefig(target, dpi=100)
+    finally:
+        plt.close(figure)

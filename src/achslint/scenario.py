@@ -10,11 +10,13 @@ value is listed as "assumed" in the output:
 * the reference cam begins 100 (mm or °) away from the start in the homing
   direction and is 20 wide, or three braking distances at the fast homing speed
   when that is wider (so the axis can stop on it);
-* zero pulses repeat every 5 mm (10° on rotary axes) and the first one after
+* zero pulses repeat every 5 mm (10° on rotary axes, once per revolution on
+  spindles) and the first one after
   the cam edge lies half a period behind it (the manual's recommendation);
 * a hardware latch is available when the strategy references on a zero pulse;
 * the cycle time is the configured CNC cycle (default 1 ms);
-* limit switches sit 10 beyond the software limits;
+* limit switches sit 10 beyond the software limits (none on spindles and
+  modulo rotary axes, where the cam and the zero pulses recur every revolution);
 * a fixed stop (TORQ) sits 100 away from the start in the homing direction.
 
 Drive-controlled homing is simulated when the scenario describes the drive's
@@ -39,43 +41,66 @@ class ScenarioError(Exception):
     """A scenario that cannot be used (exit code 2)."""
 
 
+# Plausibility bounds of scenario numbers (human units). Positions and distances are checked against
+# ±1e9 here and against the unit's own bound (±1e6 mm, ±1e9 °) once the axis type is known.
+POSITION_BOUND = {"mm": 1e6, "deg": 1e9}
+ANY_POSITION = 1e9
+MIN_PERIOD = 0.001  # 1 µm (or 0.001°)
+CYCLE_MS = (0.05, 100.0)
+MAX_RATE = 1e9  # velocities and accelerations per second
+
+
 @lru_cache(maxsize=1)
 def _models() -> dict:
-    """The pydantic models that validate scenario input (built on first use: lint does not need them)."""
+    """The pydantic models that validate scenario input (built on first use: lint does not need them).
+
+    Every number must be finite (`nan` and `inf` are refused) and plausible; see the bounds above."""
+    from typing import Annotated
+
     from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+    Position = Annotated[float, Field(ge=-ANY_POSITION, le=ANY_POSITION)]
+    Rate = Annotated[float, Field(gt=0, le=MAX_RATE)]
+    strict = ConfigDict(extra="forbid", allow_inf_nan=False)
 
     class SearchInput(BaseModel):
         """One search move of the drive's "Standard" method (Triamec FirstSearchMove / SecondSearchMove)."""
 
-        model_config = ConfigDict(extra="forbid")
+        model_config = strict
 
         trigger: Literal["cam", "zero_pulse", "fixed_stop", "limit_switch"] = "cam"
-        signed_max_distance: float
+        signed_max_distance: Position
         active_low: bool = False
         dynamic_reduction: float = Field(1.0, gt=0, le=1)
+
+        @model_validator(mode="after")
+        def _moves(self):
+            if self.signed_max_distance == 0:
+                raise ValueError("signed_max_distance must not be 0: its sign gives the search direction")
+            return self
 
     class DriveInput(BaseModel):
         """The drive's own homing method, for drive-controlled homing (Triamec drive homing)."""
 
-        model_config = ConfigDict(extra="forbid")
+        model_config = strict
 
         method: Literal["standard", "immediate", "at-position", "absolute-encoder", "nc"]
-        velocity: float = Field(10.0, gt=0)
-        acceleration: float = Field(100.0, gt=0)
-        reference_position: float | None = None
-        home_position: float | None = None
-        encoder_offset: float = 0.0
+        velocity: Rate = 10.0
+        acceleration: Rate = 100.0
+        reference_position: Position | None = None
+        home_position: Position | None = None
+        encoder_offset: Position = 0.0
         first_search: SearchInput | None = None
-        relocate_distance: float = 0.0
+        relocate_distance: Position = 0.0
         second_search: SearchInput | None = None
         # method "nc": TwinCAT NC / AX5000 reference modes
         reference_mode: Literal["plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos",
                                 "hardware-latch-neg"] = "plc-cam"
         invert_cam_search: bool = False
         invert_sync_search: bool = False
-        velocity_sync: float | None = Field(None, gt=0)
-        reference_mask_period: float | None = Field(None, gt=0)
-        latch_position: float | None = None
+        velocity_sync: Rate | None = None
+        reference_mask_period: float | None = Field(None, ge=MIN_PERIOD, le=ANY_POSITION)
+        latch_position: Position | None = None
 
         @model_validator(mode="after")
         def _searches(self):
@@ -86,17 +111,17 @@ def _models() -> dict:
     class ScenarioInput(BaseModel):
         """What a scenario file may contain. Every key is optional."""
 
-        model_config = ConfigDict(extra="forbid")
+        model_config = strict
 
-        start_position: float | None = None
-        cam: tuple[float, float] | None = None
-        zero_pulse_period: float | None = Field(None, gt=0)
-        zero_pulse_phase: float | None = None
+        start_position: Position | None = None
+        cam: tuple[Position, Position] | None = None
+        zero_pulse_period: float | None = Field(None, ge=MIN_PERIOD, le=ANY_POSITION)
+        zero_pulse_phase: Position | None = None
         hardware_latch: bool | None = None
-        cycle_time_ms: float | None = Field(None, gt=0)
-        limit_switches: tuple[float, float] | None = None
-        fixed_stop: float | None = None
-        cam_jitter: float | None = Field(None, ge=0)
+        cycle_time_ms: float | None = Field(None, ge=CYCLE_MS[0], le=CYCLE_MS[1])
+        limit_switches: tuple[Position, Position] | None = None
+        fixed_stop: Position | None = None
+        cam_jitter: float | None = Field(None, ge=0, le=ANY_POSITION)
         drive: DriveInput | None = None
 
         @model_validator(mode="after")
@@ -105,6 +130,10 @@ def _models() -> dict:
                 pair = getattr(self, name)
                 if pair is not None and pair[0] >= pair[1]:
                     raise ValueError(f"{name} must be [low, high] with low < high, got {list(pair)}")
+            if self.cam_jitter is not None and self.zero_pulse_period is not None \
+                    and self.cam_jitter >= self.zero_pulse_period:
+                raise ValueError(f"cam_jitter ({self.cam_jitter:g}) must be smaller than zero_pulse_period "
+                                 f"({self.zero_pulse_period:g})")
             return self
 
     return {"SearchInput": SearchInput, "DriveInput": DriveInput, "ScenarioInput": ScenarioInput}
@@ -126,17 +155,19 @@ class Scenario:
     zero_pulse_phase: float
     hardware_latch: bool
     cycle_time: float  # seconds
-    limit_switches: tuple[float, float]
+    limit_switches: tuple[float, float] | None  # None: none (modulo axes unless the scenario names them)
     fixed_stop: float | None
     cam_jitter: float = 0.0
     drive: object = None  # DriveInput
     assumed: list[str] = field(default_factory=list)
+    modulo: tuple[float, float] | None = None  # positions recur every revolution (spindles, modulo rotary axes)
 
     def as_dict(self) -> dict:
         data = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "assumed"}
         data["cycle_time_ms"] = data.pop("cycle_time") * 1000
         data["cam"] = list(self.cam) if self.cam else None
-        data["limit_switches"] = list(self.limit_switches)
+        data["limit_switches"] = list(self.limit_switches) if self.limit_switches else None
+        data["modulo"] = list(self.modulo) if self.modulo else None
         data["assumed"] = list(self.assumed)
         data["drive"] = self.drive.model_dump() if self.drive else None
         return data
@@ -147,21 +178,29 @@ def read_scenario(path: Path):
 
 
 def parse_input(data: dict, where: str = "scenario"):
-    """A validated ScenarioInput; any problem is a ScenarioError naming the key."""
+    """A validated ScenarioInput; any problem is a ScenarioError naming the key (nested keys in full)."""
     from pydantic import ValidationError
 
-    model = _models()["ScenarioInput"]
+    models = _models()
+    levels = {(): models["ScenarioInput"], ("drive",): models["DriveInput"],
+              ("drive", "first_search"): models["SearchInput"], ("drive", "second_search"): models["SearchInput"]}
+    if not isinstance(data, dict):
+        raise ScenarioError(f"{where}: a scenario is a table of keys, not {type(data).__name__}")
     try:
-        return model.model_validate(data)
+        return models["ScenarioInput"].model_validate(data)
     except ValidationError as exc:
         problems = []
         for item in exc.errors():
-            key = ".".join(str(p) for p in item["loc"]) or "(scenario)"
+            loc = tuple(str(p) for p in item["loc"])
+            key = ".".join(loc) or "(scenario)"
             if item["type"] == "extra_forbidden":
-                problems.append(f"unknown key `{key}` (known: {', '.join(model.model_fields)})")
+                model = levels.get(loc[:-1])
+                known = f" (known: {', '.join(model.model_fields)})" if model is not None else ""
+                problems.append(f"unknown key `{key}`{known}")
             else:
-                problems.append(f"`{key}`: {item['msg']}")
-        raise ScenarioError(f"{where}: " + "; ".join(problems)) from None
+                message = item["msg"].removeprefix("Value error, ")
+                problems.append(f"`{key}`: {message}" if loc else message)
+        raise ScenarioError(f"{where}: " + "; ".join(problems).replace("\n", " ")) from None
 
 
 def default_scenario(strategy, given=None, cycle_time_us: int = 1000) -> Scenario:
@@ -170,12 +209,22 @@ def default_scenario(strategy, given=None, cycle_time_us: int = 1000) -> Scenari
     direction = setup.torq_direction if strategy.id == "fixed_stop" else setup.direction
     braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
     return complete(given, direction=direction, rotary=setup.rotary, soft_limits=setup.soft_limits,
-                    cycle_time=cycle_time_us / 1e6, zero_pulse=strategy.with_zero_pulse, braking=braking)
+                    cycle_time=cycle_time_us / 1e6, zero_pulse=strategy.with_zero_pulse, braking=braking,
+                    modulo=setup.modulo, spindle=setup.spindle, armed_on_exit=strategy.id == "spindle_flying_cam")
 
 
 def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, float],
-             cycle_time: float, zero_pulse: bool, braking: float = 0.0) -> Scenario:
-    """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry."""
+             cycle_time: float, zero_pulse: bool, braking: float = 0.0,
+             modulo: tuple[float, float] | None = None, spindle: bool = False,
+             armed_on_exit: bool = False) -> Scenario:
+    """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry.
+
+    On a modulo axis (spindle, rotary axis with MODULO) positions recur every revolution: there are no limit
+    switches unless the scenario names them, a spindle has one zero pulse per revolution, and the cam must be
+    narrower than a revolution. Raises ScenarioError for values beyond the unit's plausibility bound."""
+    unit = "deg" if rotary else "mm"
+    _check_bounds(given, unit)
+    revolution = modulo[1] - modulo[0] if modulo else 0.0
     assumed: list[str] = []
 
     def pick(name, default):
@@ -191,10 +240,16 @@ def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, f
         assumed.append("cam")
         near = start + direction * 100.0
         width = max(20.0, 3 * braking)
+        if revolution:
+            width = min(width, revolution / 2)
         cam = (near - width, near) if direction < 0 else (near, near + width)
-    period = pick("zero_pulse_period", 10.0 if rotary else 5.0)
-    # Ideal phase: the first pulse half a period after the cam edge that starts the search.
-    edge = cam[1] if direction < 0 else cam[0]
+    elif revolution and cam[1] - cam[0] >= revolution:
+        raise ScenarioError(f"scenario: `cam` [{cam[0]:g}, {cam[1]:g}] is as wide as the modulo range of "
+                            f"{revolution:g}° or wider: the cam would be operated all the time")
+    period = pick("zero_pulse_period", revolution if spindle and revolution else (10.0 if rotary else 5.0))
+    # Ideal phase: the first pulse half a period after the cam edge that arms the zero-pulse logic (the edge
+    # where the cam is reached; for flying spindle homing the edge where it is left).
+    edge = cam[1] if (direction < 0) != armed_on_exit else cam[0]
     phase = pick("zero_pulse_phase", edge + direction * period / 2)
     latch = pick("hardware_latch", zero_pulse)
     cycle_ms = getattr(given, "cycle_time_ms", None)
@@ -202,8 +257,38 @@ def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, f
     if cycle_ms is None:
         assumed.append("cycle_time_ms")
     low, high = soft_limits
-    limits = pick("limit_switches", (low - 10.0, high + 10.0))
+    if modulo:
+        limits = getattr(given, "limit_switches", None)  # none unless the scenario names them
+    else:
+        limits = pick("limit_switches", (low - 10.0, high + 10.0))
     stop = pick("fixed_stop", start + direction * 100.0)
     jitter = pick("cam_jitter", 0.0)
-    return Scenario(start, tuple(cam), period, phase, latch, cycle, tuple(limits), stop, jitter,
-                    getattr(given, "drive", None), assumed)
+    if jitter and jitter >= period:
+        raise ScenarioError(f"scenario: `cam_jitter` ({jitter:g}) must be smaller than the zero-pulse period "
+                            f"({period:g} {unit})")
+    return Scenario(start, tuple(cam), period, phase, latch, cycle, tuple(limits) if limits else None, stop, jitter,
+                    getattr(given, "drive", None), assumed, modulo)
+
+
+def _check_bounds(given, unit: str) -> None:
+    """Positions and distances within ±1e6 mm (±1e9 °): beyond that the arithmetic loses the micrometre."""
+    if given is None:
+        return
+    bound = POSITION_BOUND[unit]
+    data = given.model_dump(exclude_none=True)
+    found = []
+
+    def walk(prefix: str, value) -> None:
+        if isinstance(value, dict):
+            for key, item in value.items():
+                walk(f"{prefix}.{key}" if prefix else key, item)
+        elif isinstance(value, (list, tuple)):
+            for item in value:
+                walk(prefix, item)
+        elif isinstance(value, float) and not isinstance(value, bool) and abs(value) > bound \
+                and not prefix.endswith(("velocity", "acceleration", "velocity_sync")):
+            found.append(f"`{prefix}` = {value:g} is beyond ±{bound:g} {unit}")
+
+    walk("", data)
+    if found:
+        raise ScenarioError("scenario: " + "; ".join(found))

@@ -90,7 +90,7 @@ CAM = {
 
 ZERO_PULSE = {
     "kenngr.homing_without_zero_pulse": Use("selects zero pulse or cam edge for the reference"),
-    "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search"),
+    "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search, counted from where the zero-pulse logic is armed (the cam edge plus shift_offset_zero_pulse_activation; the manual does not say, this is the tool's reading)"),
     "kenngr.homing_overflow_evaluation": Use("references on the encoder overflow instead of the zero pulse"),
     "antr.encoder_bit_range": Use("encoder bits whose overflow marks the reference", when=_overflow,
                                   otherwise="only with encoder-overflow homing (homing_overflow_evaluation = 1)"),

@@ -122,6 +122,21 @@ class HomingSetup:
         return Acceleration(float(fallback), "fallback")
 
     @cached_property
+    def modulo(self) -> tuple[float, float] | None:
+        """The modulo range [modulou, moduloo) of this gear stage in degrees, or None when positions do not wrap.
+
+        Spindles always count modulo; a rotary axis does with the MODULO bit (0x4) of kenngr.achs_mode
+        (P-AXIS-00015), and not with LINEAR (a rotary axis with a restricted range). Linear axes never do here
+        (MODULO_LINEAR conveyors are not simulated modulo)."""
+        if not self.rotary:
+            return None
+        if not self.spindle and not int(self.axis.get("kenngr.achs_mode")) & 0x4:
+            return None
+        low = self.axis.get(self.stage("modulou")) * POSITION
+        high = self.axis.get(self.stage("moduloo")) * POSITION
+        return (low, high) if high > low else None
+
+    @cached_property
     def shift(self) -> float:
         return self.axis.get("kenngr.shift_offset_zero_pulse_activation") * POSITION
 

@@ -24,11 +24,11 @@ STRATEGY = StrategyDef(
         **SEQUENCE, **CAM,
         "getriebe[i].vb_reflow": Use("speed at which the spindle references"),
         "kenngr.shift_offset_zero_pulse_activation": Use("delays the zero-pulse detection after the cam edge (§2.6)"),
-        "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search"),
+        "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search, counted from where the zero-pulse logic is armed (the cam edge plus shift_offset_zero_pulse_activation; the manual does not say, this is the tool's reading)"),
     },
     example="kenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\n",
     phases=_phases, with_cam=True, with_zero_pulse=True, one_phase=True, reference_speed="vb_reflow",
     ends_with_braking=False, variants=_sequence.variants,
     unused="flying spindle homing reads only the cam, the zero pulse and vb_reflow",
-    simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
+    simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
 )

@@ -22,11 +22,11 @@ STRATEGY = StrategyDef(
     parameters={
         **SEQUENCE,
         "getriebe[i].vb_reflow": Use("speed at which the spindle references"),
-        "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search"),
+        "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search, counted from the start (without a cam the zero-pulse logic is armed at once)"),
     },
     example="kenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 1\n",
     phases=_phases, with_zero_pulse=True, one_phase=True, reference_speed="vb_reflow",
     ends_with_braking=False, variants=_sequence.variants,
     unused="flying spindle homing without cam reads only the zero pulse and vb_reflow",
-    simulate=lambda sim, trace, x, cam_shift: sim.zero_pulse_only(trace, x),
+    simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
 )
