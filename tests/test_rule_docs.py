@@ -50,6 +50,8 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     blocks = code_blocks(rule, title)
     prefix = EXAMPLE_PREFIX.get(rule.code, "") if title == "Example" else ""
     names = [file_name(block) for block in blocks]
+    if rule.produced_by == "dry-run":
+        return [dry_run_findings(rule, blocks, names)]
     if not any(names):
         return [lint((prefix + block).encode("utf-8"), name="achsmds1.lis") for block in blocks]
     files = {name: block for name, block in zip(names, blocks, strict=True) if name}
@@ -66,6 +68,24 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1))
     assert not outcome.errors, outcome.errors
     return [[d for result in outcome.results for d in result.diagnostics]]
+
+
+def dry_run_findings(rule: Rule, blocks: list[str], names: list[str | None]) -> list[Diagnostic]:
+    """A rule only the dry-run reports (LIS405): its section holds one list and one `scenario.toml`; the
+    dry-run's warnings stand in for findings (code and message only)."""
+    from achslint.dryrun import dry_run
+    from achslint.scenario import parse_input
+
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10
+        import tomli as tomllib
+
+    lists = [block for block, name in zip(blocks, names, strict=True) if name is None]
+    scenarios = [block for block, name in zip(blocks, names, strict=True) if name == "scenario.toml"]
+    assert len(lists) == 1 and len(scenarios) == 1, f"{rule.code}: a dry-run rule shows one list and one scenario.toml"
+    trace = dry_run(lists[0].encode("latin-1"), "achsmds1.lis", parse_input(tomllib.loads(scenarios[0]))).trace
+    return [Diagnostic("achsmds1.lis", 1, 1, 1, 1, w["code"], rule.severity, w["message"]) for w in trace.warnings]
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])

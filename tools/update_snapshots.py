@@ -83,8 +83,29 @@ def _fix_diff(diagnostic, base: Path) -> list[str]:
     return ["    " + line for line in list(diff)[2:]]
 
 
+def dry_run_warnings(rule_dir: Path, kind: str = "bad") -> list[str]:
+    """For a rule only the dry-run reports (LIS405): its warnings on `<kind>.lis` with `<kind>.toml`."""
+    from achslint.dryrun import dry_run
+    from achslint.scenario import read_scenario
+
+    data = (rule_dir / f"{kind}.lis").read_bytes()
+    trace = dry_run(data, f"{kind}.lis", read_scenario(rule_dir / f"{kind}.toml")).trace
+    return [w["message"] for w in trace.warnings if w["code"] == rule_dir.name]
+
+
+def is_dry_run_rule(rule_dir: Path) -> bool:
+    from achslint.rules import registry
+
+    rule = registry().get(rule_dir.name)
+    return rule is not None and rule.produced_by == "dry-run"
+
+
 def render(rule_dir: Path) -> str:
     """The snapshot text of one rule."""
+    if is_dry_run_rule(rule_dir):
+        lines = [f"# {rule_dir.name}: dry-run of bad.lis with bad.toml; regenerate with "
+                 f"python tools/update_snapshots.py {rule_dir.name}"]
+        return "\n".join(lines + [f"\ndry-run warning {rule_dir.name}\n  {m}" for m in dry_run_warnings(rule_dir)]) + "\n"
     base = rule_dir / "bad" if (rule_dir / "bad").is_dir() else rule_dir
     out = [f"# {rule_dir.name} on its bad fixture; regenerate with python tools/update_snapshots.py {rule_dir.name}"]
     for d in findings(rule_dir):

@@ -70,6 +70,7 @@ RULE_MODULES = (
     "lis402_one_phase_with_cam",
     "lis403_cam_edge_repeatability",
     "lis404_homing_acceleration_fallback",
+    "lis405_zero_pulse_near_cam_edge",
     "lis501_duplicate_axis_number",
     "lis502_duplicate_axis_name",
     "lis503_gantry_master_missing",
@@ -93,6 +94,7 @@ class Rule:
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
     check_after: Callable | None = None
     check_machine: Callable | None = None
+    produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
 
     def section(self, title: str) -> str:
         """The text of one docstring section ("What", "Why", ...)."""
@@ -117,6 +119,7 @@ def registry() -> dict[str, Rule]:
             parameters=tuple(getattr(module, "PARAMETERS", ())),
             check_after=getattr(module, "check_after", None),
             check_machine=getattr(module, "check_machine", None),
+            produced_by=getattr(module, "PRODUCED_BY", "lint"),
         )
     return rules
 

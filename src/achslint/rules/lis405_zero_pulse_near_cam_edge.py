@@ -1,0 +1,76 @@
+"""
+What
+----
+The zero pulse that ends homing lies so close to the point where the CNC starts
+looking for it (the cam edge, moved by `kenngr.shift_offset_zero_pulse_activation`)
+that the spread of the cam switch and the sampling of one control cycle can put
+the activation on either side of the pulse. Only `achslint dry-run` reports this:
+it needs the machine's geometry (cam position, zero-pulse phase, cam jitter) from
+a scenario, which an axis list does not hold.
+
+Why
+---
+When the activation falls just behind the pulse, the CNC takes the next pulse one
+encoder revolution later: the machine's zero point then moves by a whole revolution
+(for example 5 mm on a 5 mm ball screw) from one homing to the next, without any
+message. Moving the activation point about half a revolution away from the pulse
+makes the choice of pulse insensitive to the cam's spread.
+
+Example
+-------
+```
+kenngr.antr_typ             1
+kenngr.ref_richt            0
+getriebe[0].vb_refmax       100000
+getriebe[0].vb_reflow       10000
+getriebe[0].a_ref           500
+```
+```
+# file: scenario.toml
+start_position = 0.0
+cam = [-120.0, -100.0]
+zero_pulse_period = 5.0
+zero_pulse_phase = -100.005
+cam_jitter = 0.02
+limit_switches = [-1010.0, 1010.0]
+```
+
+Use instead
+-----------
+```
+kenngr.antr_typ                            1
+kenngr.ref_richt                           0
+getriebe[0].vb_refmax                      100000
+getriebe[0].vb_reflow                      10000
+getriebe[0].a_ref                          500
+kenngr.shift_offset_zero_pulse_activation  25050
+```
+```
+# file: scenario.toml
+start_position = 0.0
+cam = [-120.0, -100.0]
+zero_pulse_period = 5.0
+zero_pulse_phase = -100.005
+cam_jitter = 0.02
+limit_switches = [-1010.0, 1010.0]
+```
+The dry-run's message names the shift that puts the pulse half a revolution
+away (here 25050 × 0.1 µm = 2.505 mm).
+
+Reference
+---------
+TF5200 homing manual §2.3.1.3 (phase 3: zero pulse after leaving the cam) and P-AXIS-00494
+(`shift_offset_zero_pulse_activation`). The margin is the distance travelled in
+one control cycle at the search speed plus the scenario's `cam_jitter`.
+"""
+
+from __future__ import annotations
+
+CODE = "LIS405"
+NAME = "zero-pulse-near-cam-edge"
+SEVERITY = "warning"
+FIX = "none"
+SUMMARY = "Zero pulse too close to the cam edge: the reference can jump by one revolution (dry-run)"
+
+# Found by the homing simulation (engine.Simulator), not by linting a list: `achslint dry-run` reports it.
+PRODUCED_BY = "dry-run"
