@@ -10,7 +10,7 @@ first use:
 
 __version__ = "0.1.0"
 
-__all__ = ["__version__", "load", "lint"]
+__all__ = ["__version__", "load", "lint", "lint_text"]
 
 
 def load(source, *, defaults=None, strict=False):
@@ -26,3 +26,10 @@ def lint(source, *, select=None, ignore=None, name=None):
     from .api import lint as _lint
 
     return _lint(source, select=select, ignore=ignore, name=name)
+
+
+def lint_text(text, *, filename="<string>", select=None, ignore=None):
+    """Lint the text of a list and return its diagnostics (reported under `filename`)."""
+    from .api import lint_text as _lint_text
+
+    return _lint_text(text, filename=filename, select=select, ignore=ignore)

@@ -38,8 +38,12 @@ class LintRequest:
 class LintOutcome:
     results: list[FileResult]
     errors: list[str]
-    fail_on: str = "error"
     notes: list[str] = field(default_factory=list)  # files skipped on purpose (FIFOs, links leading outside)
+
+    @property
+    def failing(self) -> bool:
+        """Whether some file has a finding at or above the fail-on of the configuration nearest to it."""
+        return any(result.failing for result in self.results)
 
     @property
     def sources(self) -> dict[str, list[str]]:
@@ -62,7 +66,7 @@ def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path, ke
     selection = Selection(settings.select, list(settings.extend_select),
                           [*settings.ignore, *config.ignored_for(target)])
     options = Options(settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um)
-    return FileSettings(selection, options, dict(settings.severity), keep_source)
+    return FileSettings(selection, options, dict(settings.severity), keep_source, settings.fail_on)
 
 
 @dataclass
@@ -197,13 +201,14 @@ class Linter:
                     if override:
                         d.severity = Severity(override)
                     if owner is None:
-                        owner = extra.setdefault(d.path, FileResult(d.path, []))
+                        owner = extra.setdefault(d.path, FileResult(d.path, [], fail_on=chosen.fail_on))
                     owner.diagnostics.append(d)
                     owner.diagnostics.sort(key=Diagnostic.sort_key)
         for startup in self.startups:  # start-up lists without axis lists still get LIS504
             if str(startup.path) not in groups:
+                chosen = self.settings_for(Target(str(startup.path), startup.path, self.config_for(startup.path)))
                 for d in registry()["LIS504"].check_machine([], [startup]):
-                    extra.setdefault(d.path, FileResult(d.path, [])).diagnostics.append(d)
+                    extra.setdefault(d.path, FileResult(d.path, [], fail_on=chosen.fail_on)).diagnostics.append(d)
         for result in list(by_name.values()) + list(extra.values()):
             if self.request.keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
                 try:
@@ -247,11 +252,10 @@ class Linter:
                 result = next(from_disk)
             if result.error:
                 errors.append(result.error)
+            result.fail_on = self.settings_for(target).fail_on
             results.append(result)
         results.extend(self._machine_level(targets, results))
-        run_config = self.fixed_config or discover(Path.cwd())
-        fail_on = self.request.overrides.fail_on or run_config.settings.fail_on
-        return LintOutcome(results, errors, fail_on, found.notes)
+        return LintOutcome(results, errors, found.notes)
 
 
 # Files found in a folder that are skipped with a note rather than reported as unreadable.
@@ -349,6 +353,12 @@ def lint(source, *, select=None, ignore=None, name=None):
     data, default_name = _as_bytes(source)
     settings = FileSettings(Selection(list(select) if select else None, [], list(ignore or [])))
     return lint_bytes(data, name or default_name, settings)
+
+
+def lint_text(text: str, *, filename: str = "<string>", select=None, ignore=None) -> list[Diagnostic]:
+    """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
+    settings = FileSettings(Selection(list(select) if select else None, [], list(ignore or [])))
+    return lint_bytes(text.encode("utf-8"), filename, settings)
 
 
 def load(source, *, defaults=None, strict: bool = False):

@@ -72,17 +72,13 @@ def _fail(message: str) -> None:
     raise typer.Exit(EXIT_ERROR)
 
 
-def _codes(values: Optional[List[str]]) -> list[str]:
-    codes: list[str] = []
-    for value in values or []:
-        for part in value.split(","):
-            code = part.strip().upper()
-            if not code:
-                continue
-            if not (code == "ALL" or (code.startswith("LIS") and code[3:].isdigit())):
-                raise UsageError(f"{part.strip()!r} is not a rule code or prefix (such as LIS2 or LIS202)")
-            codes.append(code)
-    return codes
+def _codes(values: Optional[List[str]], option: str) -> list[str]:
+    from .config import parse_codes
+
+    try:
+        return parse_codes(values or [])
+    except ValueError as exc:
+        raise UsageError(f"{option}: {exc}") from None
 
 
 def _use_color(choice: Color, stream) -> bool:
@@ -137,6 +133,7 @@ def lint(
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing; only the exit code tells the result."),
     statistics: bool = typer.Option(False, "--statistics", help="Print the number of diagnostics per rule code."),
     debug: bool = typer.Option(False, "--debug", help="Show a traceback on internal errors."),
+    allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
 ) -> None:
     """Lint axis parameter lists."""
     from .api import LintRequest, run_lint
@@ -144,9 +141,9 @@ def lint(
 
     try:
         overrides = Overrides(
-            select=_codes(select) or None,
-            extend_select=_codes(extend_select),
-            ignore=_codes(ignore),
+            select=_codes(select, "--select") or None,
+            extend_select=_codes(extend_select, "--extend-select"),
+            ignore=_codes(ignore, "--ignore"),
             fail_on=fail_on.value if fail_on else None,
             unknown_parameters=unknown_parameters.value if unknown_parameters else None,
             cycle_time_us=cycle_time_us,
@@ -167,6 +164,8 @@ def lint(
     except ConfigError as exc:
         _fail(str(exc))
     _tell(outcome.errors, outcome.notes, quiet)
+    if not outcome.results and not outcome.errors and not allow_empty:
+        _fail(_nothing_found(paths))
     report_stream = sys.stdout
     if fix:
         report_stream = _report_fixes(outcome.results, show_diff, quiet)
@@ -179,14 +178,18 @@ def lint(
             _print_statistics(outcome.results, sys.stdout if fmt in TEXT_FORMATS else sys.stderr)
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
-    from .diagnostics import Severity
-
-    threshold = Severity(outcome.fail_on).rank
-    failing = any(d.severity.rank >= threshold for r in outcome.results for d in r.diagnostics)
-    raise typer.Exit(EXIT_FINDINGS if failing and not exit_zero else EXIT_OK)
+    raise typer.Exit(EXIT_FINDINGS if outcome.failing and not exit_zero else EXIT_OK)
 
 
 TEXT_FORMATS = ("full", "concise")
+
+
+def _nothing_found(paths: List[str]) -> str:
+    """Why a run that checked nothing fails (a CI job pointed at the wrong folder must not pass)."""
+    shown = ", ".join(paths)
+    return (f"no axis list found in {shown} (folders are searched for the `include` patterns, achsmds*.lis by "
+            "default, and for XML exports holding <AchsMds> or <AX_MDS>); check the path or --include, "
+            "or pass --allow-empty when an empty run is fine")
 
 
 def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
@@ -271,6 +274,7 @@ def fmt(
     config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
     stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name used for input read from -."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors."),
+    allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
     from .api import Linter, LintRequest, write_error
@@ -285,6 +289,9 @@ def fmt(
     except ConfigError as exc:
         _fail(str(exc))
     targets, errors = found.targets, found.errors
+    if not targets and not errors and not allow_empty:
+        _tell([], found.notes, quiet)
+        _fail(_nothing_found(paths))
     changed = written = 0
     for target in targets:
         if is_xml(target.name):

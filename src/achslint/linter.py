@@ -41,6 +41,7 @@ class FileSettings:
     options: Options = field(default_factory=Options)
     severity: dict[str, str] = field(default_factory=dict)  # code -> severity override
     keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
+    fail_on: str = "error"  # lowest severity that fails the run (from the configuration nearest the file)
 
 
 @dataclass
@@ -53,6 +54,13 @@ class FileResult:
     diff: str = ""  # what --fix --diff would change
     fixed_data: bytes | None = None  # the fixed content (standard input only)
     summary: dict | None = None  # what the machine-level rules need (machine.summary)
+    fail_on: str = "error"  # lowest severity that fails the run for this file (its configuration's fail-on)
+
+    @property
+    def failing(self) -> bool:
+        """Whether a finding reaches this file's fail-on severity."""
+        threshold = Severity(self.fail_on).rank
+        return any(d.severity.rank >= threshold for d in self.diagnostics)
 
 
 def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None) -> FileResult:
