@@ -130,8 +130,13 @@ class Linter:
         return found
 
     def _startup_targets(self, path: Path, scope: Scope, found: Discovery) -> None:
+        config = self.config_for(path)
+        if self.request.overrides.cnc_root is not None:
+            root, origin = Path(self.request.overrides.cnc_root), "given by --cnc-root"
+        else:
+            root, origin = config.cnc_root(), f"`cnc-root` in {config.path}"
         try:
-            startup = read_startup(path, scope)
+            startup = read_startup(path, scope, root, origin)
         except OSError as exc:
             found.errors.append(f"cannot read {path}: {reason(exc)}")
             return
@@ -142,7 +147,7 @@ class Linter:
         defaults = startup.default.path if startup.default else None
         for entry in startup.axes:
             if entry.path is not None:
-                found.add(Target(str(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
+                found.add(Target(_shown(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
                                  defaults=defaults))
 
     def _walk(self, folder: Path, scope: Scope, found: Discovery) -> list[Path]:
@@ -256,6 +261,14 @@ class Linter:
             results.append(result)
         results.extend(self._machine_level(targets, results))
         return LintOutcome(results, errors, found.notes)
+
+
+def _shown(path: Path) -> str:
+    """A path as reports show it: relative to the working directory when it lies below it."""
+    try:
+        return str(path.relative_to(Path.cwd()))
+    except ValueError:
+        return str(path)
 
 
 # Files found in a folder that are skipped with a note rather than reported as unreadable.

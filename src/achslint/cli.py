@@ -81,6 +81,15 @@ def _codes(values: Optional[List[str]], option: str) -> list[str]:
         raise UsageError(f"{option}: {exc}") from None
 
 
+def _folder(text: str, option: str) -> str:
+    """An existing folder given on the command line, made absolute."""
+    from .files import is_folder
+
+    if not is_folder(Path(text)):
+        raise UsageError(f"{option} {text}: not a folder")
+    return os.path.abspath(text)
+
+
 def _use_color(choice: Color, stream) -> bool:
     if choice == Color.always:
         return True
@@ -134,6 +143,7 @@ def lint(
     statistics: bool = typer.Option(False, "--statistics", help="Print the number of diagnostics per rule code."),
     debug: bool = typer.Option(False, "--debug", help="Show a traceback on internal errors."),
     allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
+    cnc_root: Optional[str] = typer.Option(None, "--cnc-root", metavar="DIR", help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist)."),
 ) -> None:
     """Lint axis parameter lists."""
     from .api import LintRequest, run_lint
@@ -149,6 +159,7 @@ def lint(
             cycle_time_us=cycle_time_us,
             repeatability_tolerance_um=repeatability_tolerance_um,
             include=include,
+            cnc_root=_folder(cnc_root, "--cnc-root") if cnc_root is not None else None,
         )
     except UsageError as exc:
         _fail(str(exc))

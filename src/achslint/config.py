@@ -62,6 +62,7 @@ class Settings:
     cycle_time_us: int = 1000
     repeatability_tolerance_um: float = 20.0
     scenario: dict[str, Any] = field(default_factory=dict)  # scenario defaults for dry-run
+    cnc_root: str | None = None  # the CNC working directory start-up entries are resolved against
 
     def as_file_keys(self) -> dict[str, Any]:
         """The settings as a configuration file spells them."""
@@ -93,6 +94,7 @@ def _file_model():
         repeatability_tolerance_um: float = Field(default.repeatability_tolerance_um,
                                                   alias="repeatability-tolerance-um", ge=0)
         scenario: dict[str, Any] = Field(default_factory=dict)
+        cnc_root: str | None = Field(None, alias="cnc-root", min_length=1)
 
         @field_validator("select", "extend_select", "ignore")
         @classmethod
@@ -134,6 +136,12 @@ class ResolvedConfig:
             return PurePosixPath(Path(os.path.realpath(target)).relative_to(os.path.realpath(self.root))).as_posix()
         except (ValueError, OSError):
             return PurePosixPath(Path(target)).as_posix()
+
+    def cnc_root(self) -> Path | None:
+        """The `cnc-root` setting as a folder (relative to the configuration file's folder), or None."""
+        if self.settings.cnc_root is None:
+            return None
+        return Path(os.path.abspath(self.root / Path(self.settings.cnc_root).expanduser()))
 
     def ignored_for(self, target: Path) -> list[str]:
         """Codes ignored for one file by `per-file-ignores`."""
@@ -253,6 +261,7 @@ class Overrides:
     cycle_time_us: int | None = None
     repeatability_tolerance_um: float | None = None
     include: str | None = None
+    cnc_root: str | None = None  # a folder, already absolute (relative to the working directory when given)
 
     def apply(self, settings: Settings) -> Settings:
         changes: dict[str, Any] = {}
@@ -268,4 +277,6 @@ class Overrides:
                 changes[name] = value
         if self.include is not None:
             changes["include"] = [self.include]
+        if self.cnc_root is not None:
+            changes["cnc_root"] = self.cnc_root
         return replace(settings, **changes)
