@@ -66,7 +66,8 @@ def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path, ke
     selection = Selection(settings.select, list(settings.extend_select),
                           [*settings.ignore, *config.ignored_for(target)])
     options = Options(settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um)
-    return FileSettings(selection, options, dict(settings.severity), keep_source, settings.fail_on)
+    return FileSettings(selection, options, dict(settings.severity), keep_source, settings.fail_on,
+                        machine_in_file=False)
 
 
 @dataclass
@@ -165,11 +166,14 @@ class Linter:
             include = self.request.overrides.apply(config.settings).include
             for name in sorted(files):
                 path = Path(root) / name
-                if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
+                xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
+                if not xml and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
                     continue
                 if config.excluded(path):
                     continue
                 problem = not_a_list_file(path)
+                if xml and problem is None and scope.contains(path) and not self._axis_xml(path, found):
+                    continue
                 if problem is None and not scope.contains(path):
                     found.notes.append(f"{path}: skipped, it links to {real_path(path)}, outside the paths given")
                 elif problem is not None and problem.startswith(SKIPPED_KINDS):
@@ -180,6 +184,21 @@ class Linter:
                     lists.append(path)
         return lists
 
+    @staticmethod
+    def _axis_xml(path: Path, found: Discovery) -> bool:
+        """Whether an XML file found in a folder may hold axis lists; the others get a note."""
+        from .xmlinput import may_hold_axis_list, root_element
+
+        try:
+            data = read_list(path)
+        except OSError as exc:
+            found.errors.append(f"cannot read {path}: {reason(exc)}")
+            return False
+        if may_hold_axis_list(data):
+            return True
+        found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
+        return False
+
     def _machine_level(self, targets: list[Target], results: list[FileResult]) -> list[FileResult]:
         """Run the machine-level rules per machine; returns results for start-up lists with findings."""
         from .rules import registry
@@ -188,8 +207,9 @@ class Linter:
         groups: dict[str, list[tuple[str, dict]]] = {}
         settings = {}
         for target, result in zip(targets, results):
-            if target.machine and result.summary is not None and not result.error:
-                groups.setdefault(target.machine, []).append((result.name, result.summary))
+            if target.machine and not result.error and (result.summary is not None or result.summaries):
+                for summary in [result.summary] if result.summary is not None else result.summaries:
+                    groups.setdefault(target.machine, []).append((result.name, summary))
                 settings[result.name] = self.settings_for(target)
         extra: dict[str, FileResult] = {}
         for key, members in groups.items():
@@ -248,6 +268,7 @@ class Linter:
         else:
             disk = list(_track(map(_lint_one, work), progress, len(work)))
         results: list[FileResult] = []
+        linted: list[Target] = []  # the targets of `results`, in the same order
         from_disk = iter(disk)
         for target in targets:
             if target.path is None:
@@ -255,11 +276,15 @@ class Linter:
                 result = _process(data, target.name, self.settings_for(target), mode, None, None)
             else:
                 result = next(from_disk)
+            if result.note:
+                found.notes.append(result.note)
+                continue
             if result.error:
                 errors.append(result.error)
             result.fail_on = self.settings_for(target).fail_on
             results.append(result)
-        results.extend(self._machine_level(targets, results))
+            linted.append(target)
+        results.extend(self._machine_level(linted, results))
         return LintOutcome(results, errors, found.notes)
 
 

@@ -306,7 +306,8 @@ def fmt(
     changed = written = 0
     for target in targets:
         if is_xml(target.name):
-            errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            if target.name in paths:  # XML found in a folder is simply not fmt's business
+                errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
             continue
         try:
             data = sys.stdin.buffer.read() if target.path is None else read_list(target.path)
