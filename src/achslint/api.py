@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
@@ -12,7 +12,7 @@ from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .files import (ChangedOnDisk, Refused, Scope, is_folder, not_a_list_file, read_list, real_path, reason,
                     write_atomically)
-from .machine import is_startup_list, read_startup
+from .machine import is_default_list, is_startup_list, read_startup
 from .linter import NOT_A_LIST, FileResult, FileSettings, Selection, check_bytes, lint_bytes, looks_like_a_list
 from .syntax import parse_bytes, split_lines
 from .xmlinput import is_xml, single_list
@@ -77,6 +77,9 @@ class Discovery:
     targets: list[Target] = field(default_factory=list)
     errors: list[str] = field(default_factory=list)  # exit code 2: something named or found could not be read
     notes: list[str] = field(default_factory=list)  # skipped on purpose; the run goes on
+    # Lists of the same machine as a named list, read from disk only for the machine-level rules
+    # (LIS501-LIS503): pre-commit passes the changed lists alone, their neighbours still count.
+    context: list[Target] = field(default_factory=list)
     _seen: set = field(default_factory=set)
 
     def add(self, target: Target) -> None:
@@ -109,6 +112,7 @@ class Linter:
         always linted. Each file is taken once, however often it is reached."""
         found = Discovery()
         self.startups = []
+        named: dict[str, Path] = {}  # folders of the lists named one by one
         scope = Scope.of(self.request.paths)
         for raw in self.request.paths:
             if raw == "-":
@@ -128,7 +132,28 @@ class Linter:
                 self._startup_targets(path, scope, found)
             else:
                 found.add(Target(raw, path, self.config_for(path), machine=str(path.parent)))
+                named.setdefault(str(path.parent), path.parent)
+        for key, folder in named.items():
+            self._siblings(key, folder, found)
         return found
+
+    def _siblings(self, key: str, folder: Path, found: Discovery) -> None:
+        """The other lists in the folder of a named list, as context for the machine-level rules.
+
+        Only when a machine-level rule is selected; links that lead out of the folder are not followed,
+        and nothing about these files is reported (their own problems belong to their own run).
+        """
+        from .rules import registry
+
+        settings = self.settings_for(Target(key, folder / "x", self.config_for(folder / "x")))
+        if not any(rule.check_machine and settings.selection.enabled(code) for code, rule in registry().items()):
+            return
+        quiet = Discovery()
+        for file in self._walk(folder, Scope.of([folder]), quiet, recursive=False):
+            before = len(found.targets)
+            found.add(Target(str(file), file, self.config_for(file), machine=key))
+            if len(found.targets) > before:
+                found.context.append(found.targets.pop())
 
     def _startup_targets(self, path: Path, scope: Scope, found: Discovery) -> None:
         config = self.config_for(path)
@@ -151,7 +176,7 @@ class Linter:
                 found.add(Target(_shown(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
                                  defaults=defaults))
 
-    def _walk(self, folder: Path, scope: Scope, found: Discovery) -> list[Path]:
+    def _walk(self, folder: Path, scope: Scope, found: Discovery, recursive: bool = True) -> list[Path]:
         """The lists in a folder tree. A folder that cannot be read, or a list that cannot (a broken link, a
         loop), is an error: those could be lists nobody checked. FIFOs, devices and links that lead
         outside the paths given are skipped with a note: they are not lists of this project."""
@@ -161,7 +186,7 @@ class Linter:
             found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
 
         for root, dirs, files in os.walk(folder, onerror=unreadable):
-            dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+            dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
             config = self.config_for(Path(root) / "x")
             include = self.request.overrides.apply(config.settings).include
             for name in sorted(files):
@@ -199,14 +224,23 @@ class Linter:
         found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
         return False
 
-    def _machine_level(self, targets: list[Target], results: list[FileResult]) -> list[FileResult]:
-        """Run the machine-level rules per machine; returns results for start-up lists with findings."""
+    def _machine_level(self, targets: list[Target], results: list[FileResult],
+                       context: list[tuple[Target, FileResult]] = ()) -> list[FileResult]:
+        """Run the machine-level rules per machine; returns results for start-up lists with findings.
+
+        `context` lists (the neighbours of named lists) take part but get no findings; they come first,
+        so a repeated axis number is reported on the named list that repeats it.
+        """
         from .rules import registry
 
         by_name = {result.name: result for result in results}
+        hidden = {result.name for _, result in context}
         groups: dict[str, list[tuple[str, dict]]] = {}
         settings = {}
-        for target, result in zip(targets, results):
+        pairs = [*context, *zip(targets, results)]
+        for target, result in pairs:
+            if target.path is not None and is_default_list(target.path):
+                continue  # loaded underneath the axes, not an axis of its own
             if target.machine and not result.error and (result.summary is not None or result.summaries):
                 for summary in [result.summary] if result.summary is not None else result.summaries:
                     groups.setdefault(target.machine, []).append((result.name, summary))
@@ -218,6 +252,8 @@ class Linter:
                 if rule.check_machine is None:
                     continue
                 for d in rule.check_machine(members, startups):
+                    if d.path in hidden:
+                        continue
                     owner = by_name.get(d.path)
                     chosen = settings.get(d.path) or self.settings_for(Target(d.path, Path(d.path), self.config_for(Path(d.path))))
                     if not chosen.selection.enabled(code):
@@ -284,8 +320,19 @@ class Linter:
             result.fail_on = self.settings_for(target).fail_on
             results.append(result)
             linted.append(target)
-        results.extend(self._machine_level(linted, results))
+        results.extend(self._machine_level(linted, results, self._context(found.context)))
         return LintOutcome(results, errors, found.notes)
+
+    def _context(self, context: list[Target]) -> list[tuple[Target, FileResult]]:
+        """Lint the neighbours of named lists for their machine summaries only (never fixed, never shown)."""
+        machine_rules = Selection(["LIS5"])
+        pairs = []
+        for target in context:
+            settings = replace(self.settings_for(target), selection=machine_rules, keep_source=False)
+            result = _lint_one((target.name, str(target.path), settings, (False, False, False), None))
+            if not result.error and not result.note:
+                pairs.append((target, result))
+        return pairs
 
 
 def _shown(path: Path) -> str:
