@@ -143,6 +143,7 @@ def lint(
     statistics: bool = typer.Option(False, "--statistics", help="Print the number of diagnostics per rule code."),
     debug: bool = typer.Option(False, "--debug", help="Show a traceback on internal errors."),
     allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
+    docs_url: Optional[str] = typer.Option(None, "--docs-url", metavar="URL", help="Address of the rule documentation page for links in json and sarif output (default: `docs-url` from the configuration, else the project's docs site)."),
     cnc_root: Optional[str] = typer.Option(None, "--cnc-root", metavar="DIR", help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist)."),
 ) -> None:
     """Lint axis parameter lists."""
@@ -183,7 +184,8 @@ def lint(
     if not quiet:
         from .reporters import get
 
-        get(fmt)(outcome.results, report_stream, color=_use_color(color, report_stream), sources=outcome.sources)
+        get(fmt)(outcome.results, report_stream, color=_use_color(color, report_stream), sources=outcome.sources,
+                 docs_url=_docs_url(docs_url, config))
         if statistics:
             # Text formats take the counts below the findings; a machine format's output stays one document.
             _print_statistics(outcome.results, sys.stdout if fmt in TEXT_FORMATS else sys.stderr)
@@ -193,6 +195,20 @@ def lint(
 
 
 TEXT_FORMATS = ("full", "concise")
+
+
+def _docs_url(given: Optional[str], config_file: Optional[str]) -> Optional[str]:
+    """--docs-url, else `docs-url` of the configuration for the working directory (a run-wide setting)."""
+    if given is not None:
+        if not given.startswith(("http://", "https://")):
+            _fail(f"--docs-url {given}: give an absolute http(s) address")
+        return given
+    from .config import ConfigError, discover, load_file
+
+    try:
+        return (load_file(Path(config_file)) if config_file else discover(Path.cwd())).settings.docs_url
+    except ConfigError as exc:
+        _fail(str(exc))
 
 
 def _nothing_found(paths: List[str]) -> str:
@@ -579,14 +595,25 @@ def config_command(
     typer.echo(json.dumps(resolved.settings.as_file_keys(), indent=2, ensure_ascii=False))
 
 
+class SchemaOutput(str, Enum):
+    model = "model"
+    lint = "lint"
+
+
 @app.command()
-def schema() -> None:
-    """Print the JSON Schema of the axis parameter model."""
+def schema(
+    output: SchemaOutput = typer.Option(SchemaOutput.model, "--output", help="model: the typed axis parameter model; lint: the output of `lint --format json`."),
+) -> None:
+    """Print a JSON Schema: of the axis parameter model, or of the lint JSON output."""
     import json
 
-    from .model import json_schema
+    if output == SchemaOutput.lint:
+        from .reporters.json_format import SCHEMA as document
+    else:
+        from .model import json_schema
 
-    typer.echo(json.dumps(json_schema(), indent=2, ensure_ascii=False))
+        document = json_schema()
+    typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
 
 
 def main(argv: Optional[List[str]] = None) -> int:

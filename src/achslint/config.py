@@ -63,6 +63,7 @@ class Settings:
     repeatability_tolerance_um: float = 20.0
     scenario: dict[str, Any] = field(default_factory=dict)  # scenario defaults for dry-run
     cnc_root: str | None = None  # the CNC working directory start-up entries are resolved against
+    docs_url: str | None = None  # where rule documentation links point (json url, SARIF helpUri)
 
     def as_file_keys(self) -> dict[str, Any]:
         """The settings as a configuration file spells them."""
@@ -95,6 +96,7 @@ def _file_model():
                                                   alias="repeatability-tolerance-um", ge=0)
         scenario: dict[str, Any] = Field(default_factory=dict)
         cnc_root: str | None = Field(None, alias="cnc-root", min_length=1)
+        docs_url: str | None = Field(None, alias="docs-url", pattern=r"^https?://\S+$")
 
         @field_validator("select", "extend_select", "ignore")
         @classmethod
