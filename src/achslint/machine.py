@@ -125,7 +125,7 @@ def read_startup(path: Path, scope: Scope | None = None, cnc_root: Path | None =
     given = cnc_root is not None
     if cnc_root is None:
         cnc_root = find_cnc_root(path, [line.value for line in lines])
-        root_origin = "the nearest folder above the start-up list where its entries exist"
+        root_origin = "found from the entries; --cnc-root sets it"
     root = Path(os.path.abspath(cnc_root))
     startup = Startup(path, root=root, root_origin=root_origin)
     for line in lines:

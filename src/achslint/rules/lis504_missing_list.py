@@ -54,7 +54,7 @@ def check_machine(members, startups):
                 yield Diagnostic(
                     str(startup.path), entry.line, entry.column, entry.line, entry.column + len(entry.raw), CODE,
                     Severity.ERROR,
-                    f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for {entry.looked} "
-                    f"(CNC root {startup.root}: {startup.root_origin}); the CNC aborts the start-up when a list "
-                    "is missing (set --cnc-root or `cnc-root` if the CNC runs in another folder)",
+                    f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
+                    f"(the CNC root {startup.root_origin}); the CNC aborts the start-up when a list "
+                    "is missing",
                 )
