@@ -32,6 +32,8 @@ class LintRequest:
     unsafe_fixes: bool = False
     show_diff: bool = False  # with fix: report the changes instead of writing them
     keep_source: bool = True  # keep line texts for code frames (the full and gitlab formats need them)
+    force_exclude: bool = False  # exclude patterns apply to named files too
+    respect_gitignore: bool = True  # files git ignores are not searched in folders
 
 
 @dataclass
@@ -126,6 +128,8 @@ class Linter:
                     found.add(Target(str(file), file, self.config_for(file), machine=str(file.parent)))
                 continue
             problem = not_a_list_file(path)
+            if problem is None and self.request.force_exclude and self._excluded(self.config_for(path), path):
+                continue
             if problem is not None:
                 found.errors.append(f"{raw}: {problem}")
             elif is_startup_list(path):
@@ -194,7 +198,7 @@ class Linter:
                 xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
                 if not xml and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
                     continue
-                if config.excluded(path):
+                if self._excluded(config, path):
                     continue
                 problem = not_a_list_file(path)
                 if xml and problem is None and scope.contains(path) and not self._axis_xml(path, found):
@@ -207,7 +211,11 @@ class Linter:
                     found.errors.append(f"cannot read {path}: {problem}")
                 else:
                     lists.append(path)
-        return lists
+        return _not_ignored_by_git(folder, lists) if self.request.respect_gitignore else lists
+
+    def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
+        patterns = self.request.overrides.apply(config.settings).exclude
+        return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
 
     @staticmethod
     def _axis_xml(path: Path, found: Discovery) -> bool:
@@ -333,6 +341,25 @@ class Linter:
             if not result.error and not result.note:
                 pairs.append((target, result))
         return pairs
+
+
+def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
+    """`files` without those git ignores (.gitignore, .git/info/exclude); all of them outside a git work tree
+    or without git."""
+    import subprocess
+
+    if not files:
+        return files
+    try:
+        answer = subprocess.run(["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
+                                input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
+                                capture_output=True, timeout=60)
+    except (OSError, subprocess.SubprocessError):
+        return files
+    if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
+        return files
+    ignored = {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
+    return [f for f in files if os.path.abspath(f) not in ignored]
 
 
 def _shown(path: Path) -> str:

@@ -262,7 +262,8 @@ class Overrides:
     unknown_parameters: str | None = None
     cycle_time_us: int | None = None
     repeatability_tolerance_um: float | None = None
-    include: str | None = None
+    include: list[str] | None = None
+    extend_exclude: list[str] | None = None
     cnc_root: str | None = None  # a folder, already absolute (relative to the working directory when given)
 
     def apply(self, settings: Settings) -> Settings:
@@ -278,7 +279,9 @@ class Overrides:
             if value is not None:
                 changes[name] = value
         if self.include is not None:
-            changes["include"] = [self.include]
+            changes["include"] = list(self.include)
+        if self.extend_exclude:
+            changes["exclude"] = [*settings.exclude, *self.extend_exclude]
         if self.cnc_root is not None:
             changes["cnc_root"] = self.cnc_root
         return replace(settings, **changes)
