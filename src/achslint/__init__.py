@@ -12,6 +12,8 @@ first use:
 
 from __future__ import annotations
 
+import sys
+import types
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -67,21 +69,7 @@ def explain(source: str | PathLike[str] | bytes, *, gear: int = 0) -> dict:
     """The homing explanation of a list, as `achslint explain FILE --format json` prints it."""
     from .api import explain as _explain
 
-    _keep_public_explain()
     return _explain(source, gear=gear)
-
-
-def _keep_public_explain() -> None:
-    """Importing the submodule `achslint.explain` the first time makes `achslint.explain` that module;
-    put this function back, so the library's `achslint.explain(...)` stays callable."""
-    import importlib
-    import sys
-
-    importlib.import_module(f"{__name__}.explain")  # loads the submodule now (once), then the function returns
-    setattr(sys.modules[__name__], "explain", _explain_function)
-
-
-_explain_function = explain
 
 
 def dry_run(source: str | PathLike[str] | bytes, scenario: dict | None = None, *, gear: int = 0) -> Any:
@@ -96,3 +84,17 @@ def format_text(text: str) -> str:
     from .api import format_text as _format_text
 
     return _format_text(text)
+
+
+class _Package(types.ModuleType):
+    """The package module: loading the submodule `achslint.explain` must not replace the function
+    `achslint.explain` (Python sets a package attribute for each submodule it loads). The submodule stays
+    available as usual (`from achslint.explain import explain_list`)."""
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name == "explain" and isinstance(value, types.ModuleType):
+            return
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package

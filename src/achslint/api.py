@@ -465,7 +465,7 @@ def _as_bytes(source) -> tuple[bytes, str]:
     path = Path(source)
     if not path.is_file():
         raise FileNotFoundError(2, "no such axis list", str(path))
-    return read_one_list(path, str(path)) if is_xml(path.name) else read_list(path), str(path)
+    return read_list(path), str(path)
 
 
 def lint(source, *, select=None, ignore=None, name=None) -> list[Diagnostic]:

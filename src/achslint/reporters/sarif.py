@@ -17,12 +17,12 @@ LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "
 def artifact_uri(path: str) -> str:
     """A relative path stays relative (resolved against the checkout by viewers); absolute ones become file URIs."""
     if path.startswith("<"):
-        return quote(PurePosixPath(path.strip("<>")).as_posix(), safe="/")
+        return quote(PurePosixPath(path.strip("<>")).as_posix(), safe="/", errors="surrogateescape")
     candidate = Path(path)
     if candidate.is_absolute():
         return candidate.as_uri()
     # Percent-encoded, so that blanks or control characters in a name still make a valid URI reference.
-    return quote(PurePosixPath(*candidate.parts).as_posix(), safe="/", errors="backslashreplace")
+    return quote(PurePosixPath(*candidate.parts).as_posix(), safe="/", errors="surrogateescape")
 
 
 def _region(line: int, column: int, end_line: int, end_column: int) -> dict:
