@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
-from functools import lru_cache
+from functools import cache
 
 import pytest
 
@@ -17,7 +17,7 @@ jsonschema = pytest.importorskip("jsonschema")
 EVERYTHING = ("lint", str(FIXTURES / "rules"), str(FIXTURES / "machines"), "--include", "*.lis", "--exit-zero")
 
 
-@lru_cache(maxsize=None)
+@cache
 def output(cli, fmt: str, *extra: str) -> str:
     result = cli(*EVERYTHING, "--format", fmt, *extra)
     assert result.returncode == 0, result.stderr.decode()

@@ -353,7 +353,7 @@ def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
     try:
         answer = subprocess.run(["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
                                 input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
-                                capture_output=True, timeout=60)
+                                capture_output=True, timeout=60, check=False)
     except (OSError, subprocess.SubprocessError):
         return files
     if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
