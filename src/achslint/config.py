@@ -153,9 +153,6 @@ class ResolvedConfig:
                 codes.extend(ignored)
         return codes
 
-    def excluded(self, target: Path) -> bool:
-        return any(matches_glob(self.relative(target), pattern) for pattern in self.settings.exclude)
-
 
 def matches_glob(relative: str, pattern: str) -> bool:
     """Glob match on the path relative to the config folder; a pattern without `/` also matches any file name."""
