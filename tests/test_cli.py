@@ -133,5 +133,5 @@ def test_cycle_time_and_tolerance_options_drive_lis403(cli):
     bad = str(FIXTURES / "rules" / "LIS403" / "bad.lis")  # vb_reflow 100000 µm/s
     run = lambda *extra: cli("lint", bad, "--format", "concise", "--select", "LIS403", *extra).stdout.decode()  # noqa: E731
     assert ": LIS403 [warning]" in run()
-    assert run("--repeatability-tolerance-um", "150") == ""
+    assert run("--repeatability-tolerance-um", "150") == "All checks passed!\n"
     assert "about 200 µm" in run("--repeatability-tolerance-um", "150", "--cycle-time-us", "2000")

@@ -9,7 +9,7 @@ from achslint.linter import FileSettings, Selection
 
 from .conftest import FIXTURES
 
-SAFE = ["LIS002", "LIS004", "LIS006", "LIS101", "LIS102", "LIS203"]
+SAFE = ["LIS002", "LIS004", "LIS006", "LIS102", "LIS203"]  # LIS101's fixture fixes change behaviour: unsafe
 
 
 @pytest.mark.parametrize("code", SAFE)
@@ -26,7 +26,11 @@ def test_safe_fix_removes_the_finding_and_is_stable(code):
 
 def test_fixes_change_only_what_they_claim():
     data = b"kopf.achs_nr 1\nkenngr.ref_ricth 1 ( keep this comment\nkenngr.homing_type DRIVE_CONROLLED\nEnd\n"
-    outcome = fix_bytes(data, "x.lis")
+    outcome = fix_bytes(data, "x.lis")  # the typos change what the CNC does (tests/test_fix_safety.py): unsafe
+    assert outcome.data == (b"kopf.achs_nr 1\nkenngr.ref_ricth 1 ( keep this comment\n"
+                            b"kenngr.homing.homing_type DRIVE_CONROLLED\nEnde\n")
+    assert outcome.fixed == 2  # old name, end marker
+    outcome = fix_bytes(data, "x.lis", unsafe=True)
     assert outcome.data == (b"kopf.achs_nr 1\nkenngr.ref_richt 1 ( keep this comment\n"
                             b"kenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n")
     assert outcome.fixed == 4  # typo, old name, symbol typo, end marker
@@ -67,4 +71,6 @@ def test_cli_fix_diff_and_stdin(cli, tmp_path):
     assert cli("lint", "--fix", str(path)).stderr.startswith(b"fixed 0 diagnostics")
     piped = cli("lint", "--fix", "-", stdin=b"End\n")
     assert piped.stdout == b"Ende\n"
-    assert cli("lint", "--diff", str(path)).returncode == 2  # --diff needs --fix
+    path.write_bytes(original)
+    alone = cli("lint", "--diff", str(path))  # as in ruff, --diff alone shows what --fix would change
+    assert b"+Ende" in alone.stdout and path.read_bytes() == original

@@ -59,7 +59,7 @@ def test_the_parser_counts_lines_only_at_cr_and_lf():
 
 def test_the_fixer_edits_names_and_keeps_other_spaces_around_them():
     data = "kenngr.ref_ricth 1 (\xa0note\x0c \nkenngr.homing_type\tTORQ (\x85\nEnde\n".encode("latin-1")
-    fixed = fix_bytes(data, "a.lis").data
+    fixed = fix_bytes(data, "a.lis", unsafe=True).data  # ref_richt 1 changes behaviour: an unsafe fix
     assert fixed == "kenngr.ref_richt 1 (\xa0note\x0c \nkenngr.homing.homing_type\tTORQ (\x85\nEnde\n".encode("latin-1")
 
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
@@ -12,7 +12,7 @@ from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .files import (ChangedOnDisk, Refused, Scope, is_folder, not_a_list_file, read_list, real_path, reason,
                     write_atomically)
-from .machine import is_startup_list, read_startup
+from .machine import is_default_list, is_startup_list, read_startup
 from .linter import NOT_A_LIST, FileResult, FileSettings, Selection, check_bytes, lint_bytes, looks_like_a_list
 from .syntax import parse_bytes, split_lines
 from .xmlinput import is_xml, single_list
@@ -32,14 +32,20 @@ class LintRequest:
     unsafe_fixes: bool = False
     show_diff: bool = False  # with fix: report the changes instead of writing them
     keep_source: bool = True  # keep line texts for code frames (the full and gitlab formats need them)
+    force_exclude: bool = False  # exclude patterns apply to named files too
+    respect_gitignore: bool = True  # files git ignores are not searched in folders
 
 
 @dataclass
 class LintOutcome:
     results: list[FileResult]
     errors: list[str]
-    fail_on: str = "error"
     notes: list[str] = field(default_factory=list)  # files skipped on purpose (FIFOs, links leading outside)
+
+    @property
+    def failing(self) -> bool:
+        """Whether some file has a finding at or above the fail-on of the configuration nearest to it."""
+        return any(result.failing for result in self.results)
 
     @property
     def sources(self) -> dict[str, list[str]]:
@@ -62,7 +68,8 @@ def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path, ke
     selection = Selection(settings.select, list(settings.extend_select),
                           [*settings.ignore, *config.ignored_for(target)])
     options = Options(settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um)
-    return FileSettings(selection, options, dict(settings.severity), keep_source)
+    return FileSettings(selection, options, dict(settings.severity), keep_source=keep_source,
+                        fail_on=settings.fail_on, machine_in_file=False)
 
 
 @dataclass
@@ -72,6 +79,9 @@ class Discovery:
     targets: list[Target] = field(default_factory=list)
     errors: list[str] = field(default_factory=list)  # exit code 2: something named or found could not be read
     notes: list[str] = field(default_factory=list)  # skipped on purpose; the run goes on
+    # Lists of the same machine as a named list, read from disk only for the machine-level rules
+    # (LIS501-LIS503): pre-commit passes the changed lists alone, their neighbours still count.
+    context: list[Target] = field(default_factory=list)
     _seen: set = field(default_factory=set)
 
     def add(self, target: Target) -> None:
@@ -104,6 +114,7 @@ class Linter:
         always linted. Each file is taken once, however often it is reached."""
         found = Discovery()
         self.startups = []
+        named: dict[str, Path] = {}  # folders of the lists named one by one
         scope = Scope.of(self.request.paths)
         for raw in self.request.paths:
             if raw == "-":
@@ -117,17 +128,45 @@ class Linter:
                     found.add(Target(str(file), file, self.config_for(file), machine=str(file.parent)))
                 continue
             problem = not_a_list_file(path)
+            if problem is None and self.request.force_exclude and self._excluded(self.config_for(path), path):
+                continue
             if problem is not None:
                 found.errors.append(f"{raw}: {problem}")
             elif is_startup_list(path):
                 self._startup_targets(path, scope, found)
             else:
                 found.add(Target(raw, path, self.config_for(path), machine=str(path.parent)))
+                named.setdefault(str(path.parent), path.parent)
+        for key, folder in named.items():
+            self._siblings(key, folder, found)
         return found
 
+    def _siblings(self, key: str, folder: Path, found: Discovery) -> None:
+        """The other lists in the folder of a named list, as context for the machine-level rules.
+
+        Only when a machine-level rule is selected; links that lead out of the folder are not followed,
+        and nothing about these files is reported (their own problems belong to their own run).
+        """
+        from .rules import registry
+
+        settings = self.settings_for(Target(key, folder / "x", self.config_for(folder / "x")))
+        if not any(rule.check_machine and settings.selection.enabled(code) for code, rule in registry().items()):
+            return
+        quiet = Discovery()
+        for file in self._walk(folder, Scope.of([folder]), quiet, recursive=False):
+            before = len(found.targets)
+            found.add(Target(str(file), file, self.config_for(file), machine=key))
+            if len(found.targets) > before:
+                found.context.append(found.targets.pop())
+
     def _startup_targets(self, path: Path, scope: Scope, found: Discovery) -> None:
+        config = self.config_for(path)
+        if self.request.overrides.cnc_root is not None:
+            root, origin = Path(self.request.overrides.cnc_root), "given by --cnc-root"
+        else:
+            root, origin = config.cnc_root(), f"`cnc-root` in {config.path}"
         try:
-            startup = read_startup(path, scope)
+            startup = read_startup(path, scope, root, origin)
         except OSError as exc:
             found.errors.append(f"cannot read {path}: {reason(exc)}")
             return
@@ -138,10 +177,10 @@ class Linter:
         defaults = startup.default.path if startup.default else None
         for entry in startup.axes:
             if entry.path is not None:
-                found.add(Target(str(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
+                found.add(Target(_shown(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
                                  defaults=defaults))
 
-    def _walk(self, folder: Path, scope: Scope, found: Discovery) -> list[Path]:
+    def _walk(self, folder: Path, scope: Scope, found: Discovery, recursive: bool = True) -> list[Path]:
         """The lists in a folder tree. A folder that cannot be read, or a list that cannot (a broken link, a
         loop), is an error: those could be lists nobody checked. FIFOs, devices and links that lead
         outside the paths given are skipped with a note: they are not lists of this project."""
@@ -151,16 +190,19 @@ class Linter:
             found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
 
         for root, dirs, files in os.walk(folder, onerror=unreadable):
-            dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+            dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
             config = self.config_for(Path(root) / "x")
             include = self.request.overrides.apply(config.settings).include
             for name in sorted(files):
                 path = Path(root) / name
-                if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
+                xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
+                if not xml and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
                     continue
-                if config.excluded(path):
+                if self._excluded(config, path):
                     continue
                 problem = not_a_list_file(path)
+                if xml and problem is None and scope.contains(path) and not self._axis_xml(path, found):
+                    continue
                 if problem is None and not scope.contains(path):
                     found.notes.append(f"{path}: skipped, it links to {real_path(path)}, outside the paths given")
                 elif problem is not None and problem.startswith(SKIPPED_KINDS):
@@ -169,18 +211,47 @@ class Linter:
                     found.errors.append(f"cannot read {path}: {problem}")
                 else:
                     lists.append(path)
-        return lists
+        return _not_ignored_by_git(folder, lists) if self.request.respect_gitignore else lists
 
-    def _machine_level(self, targets: list[Target], results: list[FileResult]) -> list[FileResult]:
-        """Run the machine-level rules per machine; returns results for start-up lists with findings."""
+    def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
+        patterns = self.request.overrides.apply(config.settings).exclude
+        return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
+
+    @staticmethod
+    def _axis_xml(path: Path, found: Discovery) -> bool:
+        """Whether an XML file found in a folder may hold axis lists; the others get a note."""
+        from .xmlinput import may_hold_axis_list, root_element
+
+        try:
+            data = read_list(path)
+        except OSError as exc:
+            found.errors.append(f"cannot read {path}: {reason(exc)}")
+            return False
+        if may_hold_axis_list(data):
+            return True
+        found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
+        return False
+
+    def _machine_level(self, targets: list[Target], results: list[FileResult],
+                       context: list[tuple[Target, FileResult]] = ()) -> list[FileResult]:
+        """Run the machine-level rules per machine; returns results for start-up lists with findings.
+
+        `context` lists (the neighbours of named lists) take part but get no findings; they come first,
+        so a repeated axis number is reported on the named list that repeats it.
+        """
         from .rules import registry
 
         by_name = {result.name: result for result in results}
+        hidden = {result.name for _, result in context}
         groups: dict[str, list[tuple[str, dict]]] = {}
         settings = {}
-        for target, result in zip(targets, results):
-            if target.machine and result.summary is not None and not result.error:
-                groups.setdefault(target.machine, []).append((result.name, result.summary))
+        pairs = [*context, *zip(targets, results)]
+        for target, result in pairs:
+            if target.path is not None and is_default_list(target.path):
+                continue  # loaded underneath the axes, not an axis of its own
+            if target.machine and not result.error and (result.summary is not None or result.summaries):
+                for summary in [result.summary] if result.summary is not None else result.summaries:
+                    groups.setdefault(target.machine, []).append((result.name, summary))
                 settings[result.name] = self.settings_for(target)
         extra: dict[str, FileResult] = {}
         for key, members in groups.items():
@@ -189,6 +260,8 @@ class Linter:
                 if rule.check_machine is None:
                     continue
                 for d in rule.check_machine(members, startups):
+                    if d.path in hidden:
+                        continue
                     owner = by_name.get(d.path)
                     chosen = settings.get(d.path) or self.settings_for(Target(d.path, Path(d.path), self.config_for(Path(d.path))))
                     if not chosen.selection.enabled(code):
@@ -197,13 +270,14 @@ class Linter:
                     if override:
                         d.severity = Severity(override)
                     if owner is None:
-                        owner = extra.setdefault(d.path, FileResult(d.path, []))
+                        owner = extra.setdefault(d.path, FileResult(d.path, [], fail_on=chosen.fail_on))
                     owner.diagnostics.append(d)
                     owner.diagnostics.sort(key=Diagnostic.sort_key)
         for startup in self.startups:  # start-up lists without axis lists still get LIS504
             if str(startup.path) not in groups:
+                chosen = self.settings_for(Target(str(startup.path), startup.path, self.config_for(startup.path)))
                 for d in registry()["LIS504"].check_machine([], [startup]):
-                    extra.setdefault(d.path, FileResult(d.path, [])).diagnostics.append(d)
+                    extra.setdefault(d.path, FileResult(d.path, [], fail_on=chosen.fail_on)).diagnostics.append(d)
         for result in list(by_name.values()) + list(extra.values()):
             if self.request.keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
                 try:
@@ -238,6 +312,7 @@ class Linter:
         else:
             disk = list(_track(map(_lint_one, work), progress, len(work)))
         results: list[FileResult] = []
+        linted: list[Target] = []  # the targets of `results`, in the same order
         from_disk = iter(disk)
         for target in targets:
             if target.path is None:
@@ -245,13 +320,54 @@ class Linter:
                 result = _process(data, target.name, self.settings_for(target), mode, None, None)
             else:
                 result = next(from_disk)
+            if result.note:
+                found.notes.append(result.note)
+                continue
             if result.error:
                 errors.append(result.error)
+            result.fail_on = self.settings_for(target).fail_on
             results.append(result)
-        results.extend(self._machine_level(targets, results))
-        run_config = self.fixed_config or discover(Path.cwd())
-        fail_on = self.request.overrides.fail_on or run_config.settings.fail_on
-        return LintOutcome(results, errors, fail_on, found.notes)
+            linted.append(target)
+        results.extend(self._machine_level(linted, results, self._context(found.context)))
+        return LintOutcome(results, errors, found.notes)
+
+    def _context(self, context: list[Target]) -> list[tuple[Target, FileResult]]:
+        """Lint the neighbours of named lists for their machine summaries only (never fixed, never shown)."""
+        machine_rules = Selection(["LIS5"])
+        pairs = []
+        for target in context:
+            settings = replace(self.settings_for(target), selection=machine_rules, keep_source=False)
+            result = _lint_one((target.name, str(target.path), settings, (False, False, False), None))
+            if not result.error and not result.note:
+                pairs.append((target, result))
+        return pairs
+
+
+def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
+    """`files` without those git ignores (.gitignore, .git/info/exclude); all of them outside a git work tree
+    or without git."""
+    import subprocess
+
+    if not files:
+        return files
+    try:
+        answer = subprocess.run(["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
+                                input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
+                                capture_output=True, timeout=60, check=False)
+    except (OSError, subprocess.SubprocessError):
+        return files
+    if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
+        return files
+    ignored = {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
+    return [f for f in files if os.path.abspath(f) not in ignored]
+
+
+def _shown(path: Path) -> str:
+    """A path as reports show it: relative to the working directory when it lies below it."""
+    try:
+        return str(path.relative_to(Path.cwd()))
+    except ValueError:
+        return str(path)
 
 
 # Files found in a folder that are skipped with a note rather than reported as unreadable.
@@ -336,32 +452,50 @@ def run_lint(request: LintRequest, stdin=None, progress=None) -> LintOutcome:
 
 
 def _as_bytes(source) -> tuple[bytes, str]:
+    """The bytes and display name of a list given as a path (str or Path) or as bytes.
+
+    A string is a path (`FileNotFoundError` when there is no such file), never list text: use `lint_text`
+    and `loads` for text. Only a string with a line break, which cannot be a file name, is still read as
+    list text, for callers written before `lint_text` existed.
+    """
     if isinstance(source, (bytes, bytearray)):
         return bytes(source), "<bytes>"
-    if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and Path(source).is_file()):
-        path = Path(source)
-        return path.read_bytes(), str(path)
-    return str(source).encode("utf-8"), "<string>"
+    if isinstance(source, str) and "\n" in source:
+        return source.encode("utf-8"), "<string>"
+    path = Path(source)
+    if not path.is_file():
+        raise FileNotFoundError(2, "no such axis list", str(path))
+    return read_list(path), str(path)
 
 
-def lint(source, *, select=None, ignore=None, name=None):
-    """Diagnostics for one list (path, bytes or text), with the built-in defaults and no config files."""
+def lint(source, *, select=None, ignore=None, name=None) -> list[Diagnostic]:
+    """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files."""
     data, default_name = _as_bytes(source)
     settings = FileSettings(Selection(list(select) if select else None, [], list(ignore or [])))
     return lint_bytes(data, name or default_name, settings)
 
 
+def lint_text(text: str, *, filename: str = "<string>", select=None, ignore=None) -> list[Diagnostic]:
+    """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
+    settings = FileSettings(Selection(list(select) if select else None, [], list(ignore or [])))
+    return lint_bytes(text.encode("utf-8"), filename, settings)
+
+
 def load(source, *, defaults=None, strict: bool = False):
-    """The typed model of a list (path, bytes or text) on top of an optional default list.
+    """The typed model of a list (a path or bytes) on top of an optional default list.
 
     Lenient by default: the findings of `lint` are kept on the model (`model.findings`). With
-    `strict=True` every error-level finding is raised as one pydantic `ValidationError`.
+    `strict=True` every error-level finding is raised as one pydantic `ValidationError`. A missing path
+    raises `FileNotFoundError`.
     """
     from .model import build_model, rule_errors
 
     data, name = _as_bytes(source)
     default_data = _as_bytes(defaults) if defaults is not None else None
-    model = build_model(data, name, default_data)
+    return _finish(build_model(data, name, default_data), data, name, default_data, strict, rule_errors)
+
+
+def _finish(model, data: bytes, name: str, default_data, strict: bool, rule_errors):
     settings = FileSettings(keep_source=False)
     findings = check_bytes(data, name, settings, default_data[0] if default_data else None).diagnostics
     model._findings = findings
@@ -371,4 +505,48 @@ def load(source, *, defaults=None, strict: bool = False):
     return model
 
 
-__all__ = ["ConfigError", "LintRequest", "LintOutcome", "Linter", "run_lint", "lint", "load"]
+def loads(text: str, *, defaults: str | None = None, strict: bool = False, filename: str = "<string>"):
+    """The typed model of a list's text (see `load`)."""
+    from .model import build_model, rule_errors
+
+    data = text.encode("utf-8")
+    default_data = (defaults.encode("utf-8"), "<defaults>") if defaults is not None else None
+    return _finish(build_model(data, filename, default_data), data, filename, default_data, strict, rule_errors)
+
+
+def dumps(model) -> str:
+    """A list in the canonical layout from a model (for lists generated by configuration tools):
+    `loads(dumps(model))` gives an equal model."""
+    from .fmt import format_text
+    from .model import dumps as model_dumps
+
+    return format_text(model_dumps(model))
+
+
+def explain(source, *, gear: int = 0, defaults=None) -> dict:
+    """What `achslint explain FILE --format json` prints: strategy, phases, corrections, homing parameters."""
+    from .explain import explain_list
+
+    data, name = _as_bytes(source)
+    return explain_list(data, name, gear, _as_bytes(defaults)[0] if defaults is not None else None)
+
+
+def dry_run(source, scenario: dict | None = None, *, gear: int = 0):
+    """Simulate the homing of a list (path or bytes); `scenario` as in a scenario file (mm / degrees,
+    seconds). Returns the run: `.trace` holds the phases, events and the outcome."""
+    from .dryrun import dry_run as simulate
+    from .scenario import parse_input
+
+    data, name = _as_bytes(source)
+    return simulate(data, name, parse_input(dict(scenario or {}), "scenario"), gear=gear)
+
+
+def format_text(text: str) -> str:
+    """The text of a list as `achslint fmt` writes it (whitespace only)."""
+    from .fmt import format_text as formatted
+
+    return formatted(text)
+
+
+__all__ = ["ConfigError", "LintRequest", "LintOutcome", "Linter", "run_lint", "lint", "lint_text", "load", "loads",
+           "dumps", "explain", "dry_run", "format_text"]

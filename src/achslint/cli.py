@@ -19,7 +19,7 @@ from . import __version__
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
 app = typer.Typer(
-    add_completion=False,
+    add_completion=True,
     no_args_is_help=True,
     help="Lint, explain and check TwinCAT 3 CNC / ISG CNC axis parameter lists (achsmds*.lis).",
     context_settings={"help_option_names": ["-h", "--help"]},
@@ -72,17 +72,22 @@ def _fail(message: str) -> None:
     raise typer.Exit(EXIT_ERROR)
 
 
-def _codes(values: Optional[List[str]]) -> list[str]:
-    codes: list[str] = []
-    for value in values or []:
-        for part in value.split(","):
-            code = part.strip().upper()
-            if not code:
-                continue
-            if not (code == "ALL" or (code.startswith("LIS") and code[3:].isdigit())):
-                raise UsageError(f"{part.strip()!r} is not a rule code or prefix (such as LIS2 or LIS202)")
-            codes.append(code)
-    return codes
+def _codes(values: Optional[List[str]], option: str) -> list[str]:
+    from .config import parse_codes
+
+    try:
+        return parse_codes(values or [])
+    except ValueError as exc:
+        raise UsageError(f"{option}: {exc}") from None
+
+
+def _folder(text: str, option: str) -> str:
+    """An existing folder given on the command line, made absolute."""
+    from .files import is_folder
+
+    if not is_folder(Path(text)):
+        raise UsageError(f"{option} {text}: not a folder")
+    return os.path.abspath(text)
 
 
 def _use_color(choice: Color, stream) -> bool:
@@ -116,27 +121,36 @@ def _default_format(stream) -> str:
 
 @app.command()
 def lint(
-    paths: List[str] = typer.Argument(..., help="Files, directories (searched recursively) or - for standard input."),
+    paths: List[str] = typer.Argument(..., metavar="PATH...", help="Files, directories (searched recursively) or - for standard input."),
     output_format: Optional[OutputFormat] = typer.Option(None, "--format", "--output-format", help="Output format (default: github under GitHub Actions, full on a terminal, concise otherwise)."),
-    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
-    select: Optional[List[str]] = typer.Option(None, "--select", help="Only these rule codes or prefixes (comma-separated, e.g. LIS1,LIS202)."),
-    extend_select: Optional[List[str]] = typer.Option(None, "--extend-select", help="Add rule codes or prefixes to the selection."),
-    ignore: Optional[List[str]] = typer.Option(None, "--ignore", help="Skip these rule codes or prefixes."),
+    config: Optional[str] = typer.Option(None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."),
+    select: Optional[List[str]] = typer.Option(None, "--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated, e.g. LIS1,LIS202)."),
+    extend_select: Optional[List[str]] = typer.Option(None, "--extend-select", metavar="CODES", help="Add rule codes or prefixes to the selection."),
+    ignore: Optional[List[str]] = typer.Option(None, "--ignore", metavar="CODES", help="Skip these rule codes or prefixes."),
     fail_on: Optional[FailOn] = typer.Option(None, "--fail-on", help="Lowest severity that makes the exit code 1 (default: error)."),
     exit_zero: bool = typer.Option(False, "--exit-zero", help="Exit 0 even when diagnostics are found."),
     fix: bool = typer.Option(False, "--fix", help="Apply safe fixes (End -> Ende, BOM, old names, unambiguous typos)."),
     unsafe_fixes: bool = typer.Option(False, "--unsafe-fixes", help="With --fix, also apply unsafe fixes."),
-    show_diff: bool = typer.Option(False, "--diff", help="With --fix, print the changes as a diff instead of writing them."),
+    show_diff: bool = typer.Option(False, "--diff", help="Print the changes --fix would make as a diff; writes nothing."),
     unknown_parameters: Optional[UnknownParameters] = typer.Option(None, "--unknown-parameters", help="How to report unknown parameter names (default: warn)."),
-    include: Optional[str] = typer.Option(None, "--include", help="File name pattern used when searching directories (default: achsmds*.lis)."),
-    cycle_time_us: Optional[int] = typer.Option(None, "--cycle-time-us", min=1, help="CNC cycle time in µs (for LIS403; default 1000)."),
-    repeatability_tolerance_um: Optional[float] = typer.Option(None, "--repeatability-tolerance-um", min=0.0, help="Required homing repeatability in µm (for LIS403; default 20)."),
-    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name to report (and to find the configuration) for input read from -."),
-    jobs: Optional[int] = typer.Option(None, "--jobs", "-j", min=1, help="Worker processes (default: all cores)."),
+    include: Optional[List[str]] = typer.Option(None, "--include", metavar="PATTERN", help="File name patterns searched in folders, repeated or comma-separated (default: achsmds*.lis; axis XML is found by content)."),
+    extend_exclude: Optional[List[str]] = typer.Option(None, "--extend-exclude", metavar="PATTERN", help="Paths to leave out, in addition to `exclude` from the configuration."),
+    force_exclude: bool = typer.Option(False, "--force-exclude", help="Apply the exclude patterns to files named on the command line too (for pre-commit)."),
+    respect_gitignore: bool = typer.Option(True, "--respect-gitignore/--no-respect-gitignore", help="Leave out files git ignores when searching folders."),
+    cycle_time_ms: Optional[float] = typer.Option(None, "--cycle-time-ms", metavar="MS", min=0.001, help="CNC cycle time in ms, as in dry-run (for LIS403; default 1)."),
+    cycle_time_us: Optional[int] = typer.Option(None, "--cycle-time-us", min=1, hidden=True, help="The cycle time in µs (old spelling of --cycle-time-ms)."),
+    repeatability_tolerance_um: Optional[float] = typer.Option(None, "--repeatability-tolerance-um", metavar="UM", min=0.0, help="Required homing repeatability in µm (for LIS403; default 20)."),
+    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", metavar="NAME", help="Name to report (and to find the configuration) for input read from -."),
+    jobs: Optional[int] = typer.Option(None, "--jobs", "-j", metavar="N", min=1, help="Worker processes (default: all cores)."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the full output (honours NO_COLOR and FORCE_COLOR)."),
-    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing; only the exit code tells the result."),
-    statistics: bool = typer.Option(False, "--statistics", help="Print the number of diagnostics per rule code."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print the diagnostics only: no summary, notes or progress."),
+    silent: bool = typer.Option(False, "--silent", "-s", help="Print nothing but errors; only the exit code tells the result."),
+    statistics: bool = typer.Option(False, "--statistics", help="Print only the number of diagnostics per rule code."),
+    output_file: Optional[str] = typer.Option(None, "--output-file", "-o", metavar="FILE", help="Write the report to FILE (UTF-8) instead of standard output."),
     debug: bool = typer.Option(False, "--debug", help="Show a traceback on internal errors."),
+    allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
+    docs_url: Optional[str] = typer.Option(None, "--docs-url", metavar="URL", help="Address of the rule documentation page for links in json and sarif output (default: `docs-url` from the configuration, else the project's docs site)."),
+    cnc_root: Optional[str] = typer.Option(None, "--cnc-root", metavar="DIR", help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist)."),
 ) -> None:
     """Lint axis parameter lists."""
     from .api import LintRequest, run_lint
@@ -144,49 +158,128 @@ def lint(
 
     try:
         overrides = Overrides(
-            select=_codes(select) or None,
-            extend_select=_codes(extend_select),
-            ignore=_codes(ignore),
+            select=_codes(select, "--select") or None,
+            extend_select=_codes(extend_select, "--extend-select"),
+            ignore=_codes(ignore, "--ignore"),
             fail_on=fail_on.value if fail_on else None,
             unknown_parameters=unknown_parameters.value if unknown_parameters else None,
-            cycle_time_us=cycle_time_us,
+            cycle_time_us=round(cycle_time_ms * 1000) if cycle_time_ms is not None else cycle_time_us,
             repeatability_tolerance_um=repeatability_tolerance_um,
-            include=include,
+            include=_patterns(include),
+            extend_exclude=_patterns(extend_exclude),
+            cnc_root=_folder(cnc_root, "--cnc-root") if cnc_root is not None else None,
         )
     except UsageError as exc:
         _fail(str(exc))
-    if (unsafe_fixes or show_diff) and not fix:
-        _fail("--unsafe-fixes and --diff go with --fix")
+    fix = fix or show_diff  # as in ruff: --diff shows what --fix would do
+    if unsafe_fixes and not fix:
+        _fail("--unsafe-fixes goes with --fix or --diff")
     fmt = output_format.value if output_format else _default_format(sys.stdout)
     request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs,
                           fix=fix, unsafe_fixes=unsafe_fixes, show_diff=show_diff,
-                          keep_source=fmt in ("full", "gitlab"))
+                          keep_source=fmt in ("full", "gitlab"), force_exclude=force_exclude,
+                          respect_gitignore=respect_gitignore)
+    quiet = quiet or silent
     try:
         with _progress(quiet) as progress:
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
     except ConfigError as exc:
         _fail(str(exc))
     _tell(outcome.errors, outcome.notes, quiet)
+    if not outcome.results and not outcome.errors and not allow_empty:
+        _fail(_nothing_found(paths))
     report_stream = sys.stdout
     if fix:
         report_stream = _report_fixes(outcome.results, show_diff, quiet)
-    if not quiet:
-        from .reporters import get
+    if not silent:
+        with _destination(output_file, report_stream) as stream:
+            if statistics and fmt in TEXT_FORMATS:
+                _print_statistics(outcome.results, stream)
+            else:
+                from .reporters import get
 
-        get(fmt)(outcome.results, report_stream, color=_use_color(color, report_stream), sources=outcome.sources)
-        if statistics:
-            # Text formats take the counts below the findings; a machine format's output stays one document.
-            _print_statistics(outcome.results, sys.stdout if fmt in TEXT_FORMATS else sys.stderr)
+                get(fmt)(outcome.results, stream, color=_use_color(color, stream), sources=outcome.sources,
+                         docs_url=_docs_url(docs_url, config))
+                if fmt in TEXT_FORMATS and not quiet:
+                    _summary(outcome.results, stream, fix)
+                if statistics:  # a machine format's output stays one document; the counts go to stderr
+                    _print_statistics(outcome.results, sys.stderr)
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
-    from .diagnostics import Severity
-
-    threshold = Severity(outcome.fail_on).rank
-    failing = any(d.severity.rank >= threshold for r in outcome.results for d in r.diagnostics)
-    raise typer.Exit(EXIT_FINDINGS if failing and not exit_zero else EXIT_OK)
+    raise typer.Exit(EXIT_FINDINGS if outcome.failing and not exit_zero else EXIT_OK)
 
 
 TEXT_FORMATS = ("full", "concise")
+
+
+def _patterns(values: Optional[List[str]]) -> Optional[list[str]]:
+    """Repeated and comma-separated patterns as one list (None when the option was not given)."""
+    if not values:
+        return None
+    return [part.strip() for value in values for part in value.split(",") if part.strip()]
+
+
+class _destination:
+    """The report stream: --output-file opens a UTF-8 file (never the console's code page), else `stream`."""
+
+    def __init__(self, path: Optional[str], stream):
+        self.path, self.stream, self.file = path, stream, None
+
+    def __enter__(self):
+        if self.path is None:
+            return self.stream
+        try:
+            self.file = open(self.path, "w", encoding="utf-8", newline="\n")
+        except OSError as exc:
+            from .files import reason
+
+            _fail(f"cannot write {self.path}: {reason(exc)}")
+        return self.file
+
+    def __exit__(self, *exc):
+        if self.file is not None:
+            self.file.close()
+        return False
+
+
+def _summary(results, stream, fixing: bool) -> None:
+    """ruff's closing lines: "All checks passed!", or how many findings a fix would remove."""
+    if not any(r.diagnostics for r in results):
+        if not any(r.error for r in results):
+            stream.write("All checks passed!\n")
+        return
+    if fixing:
+        return
+    safe = sum(1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability == "safe")
+    unsafe = sum(1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability != "safe")
+    if safe or unsafe:
+        more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""
+        if safe:
+            stream.write(f"{safe} fixable with --fix{more}\n")
+        else:
+            stream.write(f"{unsafe} fixable with --fix --unsafe-fixes\n")
+
+
+def _docs_url(given: Optional[str], config_file: Optional[str]) -> Optional[str]:
+    """--docs-url, else `docs-url` of the configuration for the working directory (a run-wide setting)."""
+    if given is not None:
+        if not given.startswith(("http://", "https://")):
+            _fail(f"--docs-url {given}: give an absolute http(s) address")
+        return given
+    from .config import ConfigError, discover, load_file
+
+    try:
+        return (load_file(Path(config_file)) if config_file else discover(Path.cwd())).settings.docs_url
+    except ConfigError as exc:
+        _fail(str(exc))
+
+
+def _nothing_found(paths: List[str]) -> str:
+    """Why a run that checked nothing fails (a CI job pointed at the wrong folder must not pass)."""
+    shown = ", ".join(paths)
+    return (f"no axis list found in {shown} (folders are searched for the `include` patterns, achsmds*.lis by "
+            "default, and for XML exports holding <AchsMds> or <AX_MDS>); check the path or --include, "
+            "or pass --allow-empty when an empty run is fine")
 
 
 def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
@@ -271,6 +364,7 @@ def fmt(
     config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
     stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name used for input read from -."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors."),
+    allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
     from .api import Linter, LintRequest, write_error
@@ -285,10 +379,14 @@ def fmt(
     except ConfigError as exc:
         _fail(str(exc))
     targets, errors = found.targets, found.errors
+    if not targets and not errors and not allow_empty:
+        _tell([], found.notes, quiet)
+        _fail(_nothing_found(paths))
     changed = written = 0
     for target in targets:
         if is_xml(target.name):
-            errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            if target.name in paths:  # XML found in a folder is simply not fmt's business
+                errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
             continue
         try:
             data = sys.stdin.buffer.read() if target.path is None else read_list(target.path)
@@ -556,6 +654,11 @@ def config_command(
     typer.echo(json.dumps(resolved.settings.as_file_keys(), indent=2, ensure_ascii=False))
 
 
+class SchemaOutput(str, Enum):
+    model = "model"
+    lint = "lint"
+
+
 @app.command()
 def server() -> None:
     """Run the language server for editors on standard input/output (needs `pip install 'achslint[lsp]'`)."""
@@ -569,13 +672,19 @@ def server() -> None:
 
 
 @app.command()
-def schema() -> None:
-    """Print the JSON Schema of the axis parameter model."""
+def schema(
+    output: SchemaOutput = typer.Option(SchemaOutput.model, "--output", help="model: the typed axis parameter model; lint: the output of `lint --format json`."),
+) -> None:
+    """Print a JSON Schema: of the axis parameter model, or of the lint JSON output."""
     import json
 
-    from .model import json_schema
+    if output == SchemaOutput.lint:
+        from .reporters.json_format import SCHEMA as document
+    else:
+        from .model import json_schema
 
-    typer.echo(json.dumps(json_schema(), indent=2, ensure_ascii=False))
+        document = json_schema()
+    typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
 
 
 def main(argv: Optional[List[str]] = None) -> int:

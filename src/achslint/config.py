@@ -16,7 +16,7 @@ from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import Any, Literal
 
-from .tomlfile import read_toml, tomllib
+from .tomlfile import read_toml
 
 CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
 
@@ -25,14 +25,25 @@ class ConfigError(Exception):
     """A configuration file that cannot be used (exit code 2)."""
 
 
-def _codes(values: list[str]) -> list[str]:
+def parse_codes(values: list[str]) -> list[str]:
+    """Rule codes and prefixes (each value may hold several, comma-separated), upper-cased.
+
+    Raises `ValueError` for one that picks no rule (`LIS9999`, `LIS6`), naming the closest codes: a
+    selection that checks nothing must never pass silently.
+    """
+    from .rules import selector_problem
+
     cleaned = []
     for value in values:
-        code = value.strip().upper()
-        if not code or not (code == "ALL" or (code.startswith("LIS") and code[3:].isdigit())):
-            raise ValueError(f"{value!r} is not a rule code or prefix (such as LIS2 or LIS202)")
-        cleaned.append(code)
+        for part in str(value).split(","):
+            if not part.strip():
+                continue
+            problem = selector_problem(part)
+            if problem is not None:
+                raise ValueError(problem)
+            cleaned.append(part.strip().upper())
     return cleaned
+
 
 
 @dataclass(frozen=True)
@@ -51,6 +62,8 @@ class Settings:
     cycle_time_us: int = 1000
     repeatability_tolerance_um: float = 20.0
     scenario: dict[str, Any] = field(default_factory=dict)  # scenario defaults for dry-run
+    cnc_root: str | None = None  # the CNC working directory start-up entries are resolved against
+    docs_url: str | None = None  # where rule documentation links point (json url, SARIF helpUri)
 
     def as_file_keys(self) -> dict[str, Any]:
         """The settings as a configuration file spells them."""
@@ -82,21 +95,29 @@ def _file_model():
         repeatability_tolerance_um: float = Field(default.repeatability_tolerance_um,
                                                   alias="repeatability-tolerance-um", ge=0)
         scenario: dict[str, Any] = Field(default_factory=dict)
+        cnc_root: str | None = Field(None, alias="cnc-root", min_length=1)
+        docs_url: str | None = Field(None, alias="docs-url", pattern=r"^https?://\S+$")
 
         @field_validator("select", "extend_select", "ignore")
         @classmethod
         def _check_codes(cls, value):
-            return None if value is None else _codes(value)
+            return None if value is None else parse_codes(value)
 
         @field_validator("per_file_ignores")
         @classmethod
         def _check_per_file(cls, value):
-            return {pattern: _codes(codes) for pattern, codes in value.items()}
+            return {pattern: parse_codes(codes) for pattern, codes in value.items()}
 
         @field_validator("severity")
         @classmethod
         def _check_severity_codes(cls, value):
-            return {code: level for code, level in zip(_codes(list(value)), value.values())}
+            from .rules import known_codes
+
+            codes = parse_codes(list(value))
+            partial = [code for code in codes if code not in known_codes()]
+            if partial:  # an override is looked up by the full code, so a prefix would change nothing
+                raise ValueError(f"severity overrides take full rule codes, not the prefix {partial[0]!r}")
+            return dict(zip(codes, value.values()))
 
     return SettingsFile
 
@@ -118,6 +139,12 @@ class ResolvedConfig:
         except (ValueError, OSError):
             return PurePosixPath(Path(target)).as_posix()
 
+    def cnc_root(self) -> Path | None:
+        """The `cnc-root` setting as a folder (relative to the configuration file's folder), or None."""
+        if self.settings.cnc_root is None:
+            return None
+        return Path(os.path.abspath(self.root / Path(self.settings.cnc_root).expanduser()))
+
     def ignored_for(self, target: Path) -> list[str]:
         """Codes ignored for one file by `per-file-ignores`."""
         codes: list[str] = []
@@ -125,9 +152,6 @@ class ResolvedConfig:
             if matches_glob(self.relative(target), pattern):
                 codes.extend(ignored)
         return codes
-
-    def excluded(self, target: Path) -> bool:
-        return any(matches_glob(self.relative(target), pattern) for pattern in self.settings.exclude)
 
 
 def matches_glob(relative: str, pattern: str) -> bool:
@@ -171,11 +195,18 @@ def load_file(path: Path) -> ResolvedConfig:
 
 
 def _has_table(pyproject: Path) -> bool:
-    """Whether a pyproject.toml has a `[tool.achslint]` table (another project's `tool = 5` is not ours)."""
+    """Whether a pyproject.toml has a `[tool.achslint]` table (another project's `tool = 5` is not ours).
+
+    A pyproject.toml that is not valid TOML is a configuration error: it may hold our table, and using
+    the defaults instead would pass silently what the project meant to fail.
+    """
     try:
-        tool = tomllib.loads(pyproject.read_text(encoding="utf-8")).get("tool", {})
-    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
-        return False
+        data = read_toml(pyproject, "configuration", ConfigError)
+    except ConfigError as exc:
+        if str(exc).startswith("cannot read"):
+            return False
+        raise
+    tool = data.get("tool", {})
     return isinstance(tool, dict) and "achslint" in tool
 
 
@@ -228,7 +259,9 @@ class Overrides:
     unknown_parameters: str | None = None
     cycle_time_us: int | None = None
     repeatability_tolerance_um: float | None = None
-    include: str | None = None
+    include: list[str] | None = None
+    extend_exclude: list[str] | None = None
+    cnc_root: str | None = None  # a folder, already absolute (relative to the working directory when given)
 
     def apply(self, settings: Settings) -> Settings:
         changes: dict[str, Any] = {}
@@ -243,5 +276,9 @@ class Overrides:
             if value is not None:
                 changes[name] = value
         if self.include is not None:
-            changes["include"] = [self.include]
+            changes["include"] = list(self.include)
+        if self.extend_exclude:
+            changes["exclude"] = [*settings.exclude, *self.extend_exclude]
+        if self.cnc_root is not None:
+            changes["cnc_root"] = self.cnc_root
         return replace(settings, **changes)

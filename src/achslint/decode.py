@@ -39,14 +39,17 @@ def decode(data: bytes) -> SourceText:
     """Decode list bytes: UTF-8 (with or without BOM), else cp1252, else Latin-1.
 
     Latin-1 maps every byte, so any byte string decodes; only UTF-16/32 files
-    are refused, because reading them byte-wise would turn every line into
-    noise instead of a useful diagnostic.
+    and binary files (a NUL byte, which no text list holds) are refused, because
+    reading them byte-wise would turn every line into noise (hundreds of syntax
+    errors for a program file) instead of one useful message.
     """
     for bom, name in _WIDE_BOMS.items():
         if data.startswith(bom):
             raise UnreadableInput(
                 f"the file is {name} encoded; the CNC reads ASCII/Latin-1 lists, save it as ANSI/Latin-1"
             )
+    if b"\x00" in data:
+        raise UnreadableInput("a binary file (it holds NUL bytes), not an axis list; nothing of it is shown")
     bom = data.startswith(UTF8_BOM)
     body = data[len(UTF8_BOM):] if bom else data
     for codec in ("utf-8", "cp1252", "latin-1"):

@@ -5,8 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import Enum
 
-# Rule documentation lives in the repository (generated from the rule modules).
-DOCS_URL = "docs/rules.md#{anchor}"
+# Where the rule documentation (docs/rules.md, generated from the rule modules) is published; one anchor
+# per rule. `docs-url` in the configuration or --docs-url replaces it (an internal mirror, a fork).
+DOCS_URL = "https://achslint.readthedocs.io/en/latest/rules.html"
 
 
 class Severity(str, Enum):
@@ -94,5 +95,6 @@ def clip_quotes(message: str) -> str:
     return "".join(out)
 
 
-def rule_url(code: str) -> str:
-    return DOCS_URL.format(anchor=code.lower())
+def rule_url(code: str, base: str | None = None) -> str:
+    """The absolute address of a rule's documentation: the docs page and the rule's anchor."""
+    return f"{(base or DOCS_URL).split('#', 1)[0]}#{code.lower()}"

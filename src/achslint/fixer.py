@@ -6,11 +6,19 @@ the removal of a UTF-8 byte-order mark. Only diagnostics that survived the
 Safe fixes are applied by default, unsafe ones only when asked. Fixing repeats
 (lint, fix, lint again) until nothing fixable is left, so a second run finds
 nothing to do; overlapping edits wait for the next round.
+
+A fix a rule calls safe is applied as safe only when it keeps what the machine
+does (ruff's meaning of safe): after it, the resolved axis (after the CNC's
+corrections) is the same except for the parameter of the corrected finding, and
+no finding appears that was not there before. A symbol typo fixed into a homing
+type the drive does not support, or a misspelt name fixed into a parameter that
+then takes effect with another value, fails that test and becomes unsafe.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections import Counter
+from dataclasses import dataclass, replace
 
 from .decode import SourceText, decode
 from .linter import FileResult, FileSettings, check_bytes
@@ -55,14 +63,54 @@ def apply_edits(source: SourceText, fixes) -> tuple[SourceText, int]:
     return SourceText(text, source.encoding, bom), applied
 
 
+def behaviour(data: bytes, name: str) -> dict[str, str]:
+    """What the CNC ends up with: every parameter the list sets, with the value used after corrections."""
+    from .resolved import resolve_bytes
+
+    axis = resolve_bytes(data, name)
+    return {path: repr(axis.get(path)) for path in axis.set_paths()}
+
+
+def keeps_behaviour(data: bytes, name: str, settings, diagnostic, before) -> bool:
+    """Whether `diagnostic`'s fix changes nothing but the corrected finding (see the module docstring)."""
+    source, applied = apply_edits(decode(data), [diagnostic.fix])
+    if not applied:
+        return False
+    new_data = source.encode()
+    after = check_bytes(new_data, name, settings)
+    if after.error:
+        return False
+    old = Counter((d.code, d.parameter) for d in before.diagnostics)
+    old[(diagnostic.code, diagnostic.parameter)] -= 1
+    new = Counter((d.code, d.parameter) for d in after.diagnostics)
+    if new - old:
+        return False  # a finding that was not there before
+    from .resolved import resolve_bytes
+
+    was, now = resolve_bytes(data, name), resolve_bytes(new_data, name)
+    paths = set(was.set_paths()) | set(now.set_paths())
+    changed = {path for path in paths if repr(was.get(path)) != repr(now.get(path))}
+    return changed <= {diagnostic.parameter}
+
+
+def _demoted(result: FileResult, unsafe: set[int]) -> None:
+    """Mark the fixes that failed the behaviour test as unsafe in what is reported."""
+    for index in unsafe:
+        d = result.diagnostics[index]
+        d.fix = replace(d.fix, applicability="unsafe", description=d.fix.description + " (changes what the CNC does)")
+
+
 def fix_bytes(data: bytes, name: str, settings: FileSettings | None = None, *, unsafe: bool = False) -> FixOutcome:
     """Fix what can be fixed; the result holds the diagnostics that remain."""
-    allowed = {"safe", "unsafe"} if unsafe else {"safe"}
     fixed = 0
     result = check_bytes(data, name, settings)
     for _ in range(MAX_ROUNDS):
         if result.error:
             break
+        risky = {i for i, d in enumerate(result.diagnostics) if d.fix is not None and d.fix.applicability == "safe"
+                 and not d.fix.remove_bom and not keeps_behaviour(data, name, settings, d, result)}
+        _demoted(result, risky)
+        allowed = {"safe", "unsafe"} if unsafe else {"safe"}
         fixes = [d.fix for d in result.diagnostics if d.fix is not None and d.fix.applicability in allowed]
         if not fixes:
             break
@@ -73,4 +121,7 @@ def fix_bytes(data: bytes, name: str, settings: FileSettings | None = None, *, u
         fixed += applied
         data = new_data
         result = check_bytes(data, name, settings)
+    if not result.error:
+        _demoted(result, {i for i, d in enumerate(result.diagnostics) if d.fix is not None
+                          and d.fix.applicability == "safe" and not keeps_behaviour(data, name, settings, d, result)})
     return FixOutcome(data, fixed, result)

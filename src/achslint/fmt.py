@@ -83,6 +83,11 @@ def format_file(file: syntax.ListFile) -> str:
     return "".join(out)
 
 
+def format_text(text: str, name: str = "<string>") -> str:
+    """The formatted version of a list's text."""
+    return format_file(syntax.parse_text(text, name))
+
+
 def format_bytes(data: bytes, name: str = "<bytes>") -> tuple[bytes, bool]:
     """(formatted bytes, changed). Raises `decode.UnreadableInput` for UTF-16/32 input."""
     source = decode(data)

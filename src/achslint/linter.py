@@ -42,6 +42,8 @@ class FileSettings:
     severity: dict[str, str] = field(default_factory=dict)  # code -> severity override
     keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
     keep_context: bool = False  # keep the rules' Context on the result (the language server reuses it)
+    fail_on: str = "error"  # lowest severity that fails the run (from the configuration nearest the file)
+    machine_in_file: bool = True  # check the lists of one XML file as a machine (off: the caller groups files)
 
 
 @dataclass
@@ -55,6 +57,15 @@ class FileResult:
     fixed_data: bytes | None = None  # the fixed content (standard input only)
     summary: dict | None = None  # what the machine-level rules need (machine.summary)
     context: Context | None = None  # with FileSettings.keep_context: the parsed, resolved list
+    summaries: list[dict] = field(default_factory=list)  # the same, one per list, for an XML file
+    note: str | None = None  # skipped on purpose (XML without an axis list): said once, not an error
+    fail_on: str = "error"  # lowest severity that fails the run for this file (its configuration's fail-on)
+
+    @property
+    def failing(self) -> bool:
+        """Whether a finding reaches this file's fail-on severity."""
+        threshold = Severity(self.fail_on).rank
+        return any(d.severity.rank >= threshold for d in self.diagnostics)
 
 
 def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None) -> FileResult:
@@ -140,10 +151,13 @@ def _mapped_summary(summary: dict, embedded) -> dict:
 def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
     from .syntax import parse_text, split_lines
-    from .xmlinput import extract, source_text
+    from .xmlinput import NoAxisList, extract, root_element, source_text
 
     try:
         lists = extract(data, name)
+    except NoAxisList:
+        return FileResult(name, [], note=f"{name}: skipped, an XML file without an axis list "
+                                         f"(<{root_element(data)}>: no <AchsMds> or <AX_MDS> in it)")
     except UnreadableInput as exc:
         return FileResult(name, [], str(exc))
     diagnostics: list[Diagnostic] = []
@@ -160,20 +174,20 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
                                       column=embedded.position(r.line, r.column)[1]) for r in d.related)
             d.fix = None  # edits refer to the embedded text; XML files are not rewritten
             diagnostics.append(d)
-    if len(members) > 1:  # a TwinCAT project: its axes form one machine
+    if len(members) > 1 and settings.machine_in_file:  # a TwinCAT project: its axes form one machine
         for code, rule in registry().items():
             if rule.check_machine is not None and settings.selection.enabled(code):
                 diagnostics.extend(rule.check_machine(members, []))
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
-    return FileResult(name, diagnostics, None, lines)
+    return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])
 
 
 def lint_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
     """Diagnostics for the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
     result = check_bytes(data, name, settings)
-    if result.error:
-        raise UnreadableInput(result.error)
+    if result.error or result.note:
+        raise UnreadableInput(result.error or result.note)
     return result.diagnostics
 
 

@@ -11,6 +11,7 @@ compare the summaries.
 from __future__ import annotations
 
 import fnmatch
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -30,6 +31,7 @@ class StartupEntry:
     column: int
     path: Path | None  # resolved file, None when it does not exist or is not read
     refused: str | None = None  # why an existing file is not read (outside the machine's folder, a FIFO, ...)
+    looked: Path | None = None  # where the file was looked for
 
 
 @dataclass
@@ -37,49 +39,98 @@ class Startup:
     path: Path
     default: StartupEntry | None = None
     axes: list[StartupEntry] = field(default_factory=list)
+    root: Path | None = None  # the CNC working directory the entries are resolved against
+    root_origin: str = ""  # how the root was chosen, in words (for LIS504)
 
 
 def is_startup_list(path: Path) -> bool:
     return any(fnmatch.fnmatch(path.name.lower(), pattern) for pattern in STARTUP_NAMES)
 
 
+def is_default_list(path: Path) -> bool:
+    """A default axis list (`default_mds.lis`): loaded underneath the axes, not an axis of its own."""
+    return fnmatch.fnmatch(path.name.lower(), "default*mds*.lis")
+
+
 _MISSING = ("no such file or directory", "a part of the path is not a folder", "a name too long for the file system",
             "a symbolic link to a file that does not exist")
 
 
-def _resolve(raw: str, startup: Path, scope: Scope | None) -> tuple[Path | None, str | None]:
-    """(file, None) for an entry achslint reads, (None, why) for one it refuses, (None, None) when it is missing.
+def _entry_path(raw: str) -> Path:
+    """An entry as a path: quotes dropped, Windows separators read as folder separators."""
+    text = raw.strip().strip('"')
+    if os.sep == "/":
+        text = text.replace("\\", "/")
+    return Path(text)
 
-    Relative entries are taken from the start-up list's folder; lists kept as `./listen/x.lis` next to a
-    start-up list inside `listen/` (the SDK layout) are found from the parent folder too. Either way the
-    file must lie in the start-up list's folder or below it, or under a path the user gave: a start-up
-    list cannot make achslint read (and show) `/proc/self/environ` or `../../secret.lis`.
+
+def _exists(target: Path) -> bool:
+    return not_a_list_file(target) not in _MISSING
+
+
+def find_cnc_root(startup: Path, entries: list[str]) -> Path:
+    """The CNC working directory the start-up list's relative entries are written against.
+
+    The CNC resolves `./listen/achsmds1.lis` against its own working directory, not against the start-up
+    list's folder (the SDK keeps `hochlauf.lis` itself in `listen/`). Without a `cnc-root`, the root is the
+    nearest folder, from the start-up list's own folder upwards, where every relative entry exists; if
+    there is none, the one where most of them exist (the start-up list's folder when none exists anywhere).
     """
-    candidate = Path(raw.strip('"'))
-    bases = (Path(),) if candidate.is_absolute() else (startup.parent, startup.parent.parent)
-    for base in bases:
-        target = base / candidate
-        problem = not_a_list_file(target)
-        if problem in _MISSING:
-            continue
-        if problem is not None:
-            return None, f"it is {problem}" if problem.startswith("a ") else problem
-        if not inside(target, startup.parent) and not (scope and scope.contains(target)):
-            return None, f"it lies outside the start-up list's folder {startup.parent}"
-        return target, None
-    return None, None
+    folder = Path(os.path.abspath(startup)).parent
+    relative = [path for path in map(_entry_path, entries) if not path.is_absolute()]
+    best, best_count = folder, 0
+    if not relative:
+        return folder
+    for candidate in (folder, *folder.parents):
+        count = sum(_exists(candidate / path) for path in relative)
+        if count == len(relative):
+            return candidate
+        if count > best_count:
+            best, best_count = candidate, count
+    return best
 
 
-def read_startup(path: Path, scope: Scope | None = None) -> Startup:
-    """The entries of a start-up list. Raises `OSError` / `decode.UnreadableInput` when it cannot be read."""
+def _resolve(raw: str, startup: Path, root: Path, root_given: bool,
+             scope: Scope | None) -> tuple[Path | None, str | None, Path]:
+    """(file, None, looked) for an entry achslint reads, (None, why, looked) for one it refuses, and
+    (None, None, looked) when it is missing.
+
+    The file must lie in the start-up list's folder or below it, under a `cnc-root` the user set, or under a
+    path the user gave: a start-up list cannot make achslint read (and show) `/proc/self/environ` or
+    `../../secret.lis`.
+    """
+    target = Path(os.path.normpath(root / _entry_path(raw)))
+    problem = not_a_list_file(target)
+    if problem in _MISSING:
+        return None, None, target
+    if problem is not None:
+        return None, f"it is {problem}" if problem.startswith("a ") else problem, target
+    allowed = inside(target, startup.parent) or (root_given and inside(target, root)) or (scope and scope.contains(target))
+    if not allowed:
+        return None, (f"it lies outside the start-up list's folder {startup.parent}"
+                      + ("" if root_given else " and no --cnc-root / `cnc-root` was set")), target
+    return target, None, target
+
+
+def read_startup(path: Path, scope: Scope | None = None, cnc_root: Path | None = None,
+                 root_origin: str = "") -> Startup:
+    """The entries of a start-up list, resolved against `cnc_root` (found from the entries when None).
+
+    Raises `OSError` / `decode.UnreadableInput` when the start-up list cannot be read.
+    """
     from .syntax import parse_bytes
 
-    startup = Startup(path)
-    for line in parse_bytes(read_list(path), str(path)).assignments():
-        if not line.path_ok or line.value is None or not _ENTRY.fullmatch(line.path):
-            continue
-        found, refused = _resolve(line.value, path, scope)
-        entry = StartupEntry(line.path, line.value, line.number, line.value_column, found, refused)
+    lines = [line for line in parse_bytes(read_list(path), str(path)).assignments()
+             if line.path_ok and line.value is not None and _ENTRY.fullmatch(line.path)]
+    given = cnc_root is not None
+    if cnc_root is None:
+        cnc_root = find_cnc_root(path, [line.value for line in lines])
+        root_origin = "found from the entries; --cnc-root sets it"
+    root = Path(os.path.abspath(cnc_root))
+    startup = Startup(path, root=root, root_origin=root_origin)
+    for line in lines:
+        found, refused, looked = _resolve(line.value, path, root, given, scope)
+        entry = StartupEntry(line.path, line.value, line.number, line.value_column, found, refused, looked)
         if entry.key == "default_achs_mds":
             startup.default = entry
         else:

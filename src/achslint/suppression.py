@@ -17,7 +17,10 @@ from dataclasses import dataclass, field
 
 from . import syntax
 
-_CODES = r"(?P<codes>[A-Za-z]+[0-9]+(?:\s*,\s*[A-Za-z]+[0-9]+)*)"
+# A code is letters and a digit, then letters or digits: `LIS3O2` (a letter O) is read whole and reported
+# as an unknown code (LIS009), not as `LIS3` followed by text.
+_CODE = r"[A-Za-z]+[0-9][A-Za-z0-9]*"
+_CODES = rf"(?P<codes>{_CODE}(?:\s*,\s*{_CODE})*)"
 LINE_NOQA = re.compile(rf"(?<![\w:])noqa(?::\s*{_CODES})?", re.IGNORECASE)
 FILE_NOQA = re.compile(rf"^#\s*achslint:\s*noqa(?::\s*{_CODES})?\s*$", re.IGNORECASE)
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 try:
@@ -11,10 +12,28 @@ except ModuleNotFoundError:  # Python 3.10
 
 
 def read_toml(path: Path, what: str, error: type[Exception]) -> dict:
-    """The parsed file; any problem becomes `error` with a one-line message naming the file."""
+    """The parsed file; any problem becomes `error` with a one-line message naming the file (and, for
+    broken TOML, the line and column as `file:line:col:`, which editors and terminals can jump to)."""
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as exc:
         raise error(f"cannot read {what} {path}: {exc.strerror or exc}") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise error(f"{what} {path} is not valid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise error(f"{path}: {what} is not UTF-8 text (byte {exc.start + 1}); save it as UTF-8") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise error(toml_error(path, what, exc)) from None
+
+
+def toml_error(path: Path, what: str, exc: Exception) -> str:
+    """`file:line:col: <what> is not valid TOML: <reason>` from a TOMLDecodeError."""
+    text = str(exc)
+    line, column = getattr(exc, "lineno", None), getattr(exc, "colno", None)
+    where = re.search(r"\(at line (\d+), column (\d+)\)", text)
+    if where:
+        line, column = line or int(where.group(1)), column or int(where.group(2))
+        text = text[: where.start()].rstrip()
+    elif line is None and "end of document" in text:
+        line, column = path.read_text(encoding="utf-8").count("\n") + 1, 1
+    position = f":{line}:{column}" if line else ""
+    text = getattr(exc, "msg", None) or text
+    return f"{path}{position}: {what} is not valid TOML: {text}; fix the file"

@@ -76,8 +76,31 @@ class EmbeddedList:
         return xml_line + breaks, len(between) - between.rindex("\n")
 
 
+class NoAxisList(UnreadableInput):
+    """Well-formed XML that holds no axis list (a channel list, zero offsets, tools, ...)."""
+
+
 def is_xml(name: str) -> bool:
     return name.lower().endswith(XML_SUFFIXES)
+
+
+_MARKERS = tuple(marker.encode(encoding) for marker in ("<AchsMds", "<AX_MDS", ":AchsMds", ":AX_MDS")
+                 for encoding in ("ascii", "utf-16-le", "utf-16-be"))
+
+
+def may_hold_axis_list(data: bytes) -> bool:
+    """Whether an XML file can hold an axis list at all: it names `<AchsMds>` or `<AX_MDS>` somewhere.
+
+    Folder discovery goes by content, not by file name: TwinCAT names its exports after the axis
+    (`Axis_X.xti`), and the same folder holds channel lists and zero-offset tables.
+    """
+    return any(marker in data for marker in _MARKERS)
+
+
+def root_element(data: bytes) -> str:
+    """The name of the document element (for the note about a skipped XML file), or "?"."""
+    match = re.search(r"<(?![?!])([A-Za-z_][\w.:-]*)", source_text(data))
+    return match.group(1) if match else "?"
 
 
 def source_text(data: bytes) -> str:
@@ -235,7 +258,7 @@ def extract(data: bytes, name: str) -> list[EmbeddedList]:
             embedded.text = "\n".join(lines) + "\n"
             found.append(embedded)
     if not found:
-        raise UnreadableInput(f"{name} contains no axis list (no <AchsMds> element and no <AX_MDS> list)")
+        raise NoAxisList(f"{name} contains no axis list (no <AchsMds> element and no <AX_MDS> list)")
     return found
 
 

@@ -298,7 +298,8 @@ class Session:
         """The lists of the document's folder that `achslint lint FOLDER` would take (include/exclude)."""
         folder = path.parent
         config = self._config(path)
-        include = self.settings.overrides.apply(config.settings).include
+        applied = self.settings.overrides.apply(config.settings)
+        include, exclude = applied.include, applied.exclude
         targets = []
         try:
             names = sorted(os.listdir(folder))
@@ -308,7 +309,8 @@ class Session:
             candidate = folder / name
             if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
                 continue
-            if config.excluded(candidate) or (not_a_list_file(candidate) is not None and self.by_path(candidate) is None):
+            if any(matches_glob(config.relative(candidate), pattern) for pattern in exclude) or (
+                    not_a_list_file(candidate) is not None and self.by_path(candidate) is None):
                 continue
             targets.append(Target(str(candidate), candidate, self._config(candidate), machine=str(folder)))
         if not any(_real(t.path) == _real(path) for t in targets):

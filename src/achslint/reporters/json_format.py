@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from dataclasses import asdict
 
-from ..diagnostics import Diagnostic
+from ..diagnostics import Diagnostic, rule_url
 from . import write_json
 
 
-def diagnostic_dict(d: Diagnostic) -> dict:
+def diagnostic_dict(d: Diagnostic, docs_url: str | None = None) -> dict:
     fix = None
     if d.fix is not None:
         fix = {
@@ -33,18 +33,18 @@ def diagnostic_dict(d: Diagnostic) -> dict:
             for r in d.related
         ],
         "fix": fix,
-        "url": d.url,
+        "url": rule_url(d.code, docs_url),
     }
 
 
-def document(results) -> dict:
+def document(results, docs_url: str | None = None) -> dict:
     diagnostics = [d for result in results for d in result.diagnostics]
     counts = {"error": 0, "warning": 0, "info": 0}
     for d in diagnostics:
         counts[d.severity.value] += 1
     return {
         "version": 1,
-        "diagnostics": [diagnostic_dict(d) for d in diagnostics],
+        "diagnostics": [diagnostic_dict(d, docs_url) for d in diagnostics],
         "summary": {
             "files": len(results),
             "errors": counts["error"],
@@ -55,5 +55,71 @@ def document(results) -> dict:
     }
 
 
-def report(results, stream, **_options) -> None:
-    write_json(document(results), stream)
+def report(results, stream, docs_url: str | None = None, **_options) -> None:
+    write_json(document(results, docs_url), stream)
+
+
+_POSITION = {"type": "integer", "minimum": 1}
+_TEXT_OR_NULL = {"type": ["string", "null"]}
+
+# The JSON Schema of this format (`achslint schema --output lint`). Version 1 only ever gains keys.
+SCHEMA = {
+    "$schema": "https://json-schema.org/draft/2020-12/schema",
+    "$id": "https://achslint.readthedocs.io/en/latest/schemas/lint-v1.json",
+    "title": "achslint lint --format json (version 1)",
+    "type": "object",
+    "required": ["version", "diagnostics", "summary"],
+    "properties": {
+        "version": {"const": 1},
+        "diagnostics": {"type": "array", "items": {"$ref": "#/$defs/diagnostic"}},
+        "summary": {
+            "type": "object",
+            "required": ["files", "errors", "warnings", "infos", "unreadable"],
+            "properties": {
+                "files": {"type": "integer", "minimum": 0},
+                "errors": {"type": "integer", "minimum": 0},
+                "warnings": {"type": "integer", "minimum": 0},
+                "infos": {"type": "integer", "minimum": 0},
+                "unreadable": {"type": "array", "items": {"type": "string"}},
+            },
+        },
+    },
+    "$defs": {
+        "diagnostic": {
+            "type": "object",
+            "required": ["path", "line", "column", "end_line", "end_column", "code", "severity", "message",
+                         "parameter", "p_axis", "related", "fix", "url"],
+            "properties": {
+                "path": {"type": "string"},
+                "line": _POSITION, "column": _POSITION, "end_line": _POSITION, "end_column": _POSITION,
+                "code": {"type": "string", "pattern": "^LIS[0-9]{3}$"},
+                "severity": {"enum": ["error", "warning", "info"]},
+                "message": {"type": "string", "minLength": 1},
+                "parameter": _TEXT_OR_NULL,
+                "p_axis": {"type": ["string", "null"], "pattern": "^P-AXIS-[0-9]{5}$"},
+                "related": {"type": "array", "items": {
+                    "type": "object",
+                    "required": ["path", "line", "column", "parameter", "message"],
+                    "properties": {"path": {"type": "string"}, "line": _POSITION, "column": _POSITION,
+                                   "parameter": _TEXT_OR_NULL, "message": {"type": "string"}},
+                }},
+                "fix": {"oneOf": [{"type": "null"}, {
+                    "type": "object",
+                    "required": ["applicability", "description", "remove_bom", "edits"],
+                    "properties": {
+                        "applicability": {"enum": ["safe", "unsafe"]},
+                        "description": {"type": "string"},
+                        "remove_bom": {"type": "boolean"},
+                        "edits": {"type": "array", "items": {
+                            "type": "object",
+                            "required": ["line", "column", "end_line", "end_column", "content"],
+                            "properties": {"line": _POSITION, "column": _POSITION, "end_line": _POSITION,
+                                           "end_column": _POSITION, "content": {"type": "string"}},
+                        }},
+                    },
+                }]},
+                "url": {"type": "string", "format": "uri"},
+            },
+        },
+    },
+}

@@ -1,9 +1,15 @@
-"""JUnit XML: one test suite per file, one failing test case per diagnostic (Jenkins, GitLab, Azure)."""
+"""JUnit XML: one test suite per file, one test case per diagnostic (Jenkins, GitLab, Azure).
+
+A diagnostic fails its test case only at or above the file's `fail-on` severity, the same rule as the
+exit code: advice below it is kept as the test case's `system-out`, so a run that exits 0 is not marked
+unstable by Jenkins.
+"""
 
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from ..diagnostics import Severity
 from ..display import printable
 
 
@@ -24,13 +30,18 @@ def document(results) -> ET.Element:
             cases, failed = 1, 0
         else:
             failed = 0
+            threshold = Severity(result.fail_on).rank
             for d in result.diagnostics:
                 case = ET.SubElement(suite, "testcase", classname=name, name=f"{d.code} line {d.line}:{d.column}")
                 message = printable(d.message)
-                failure = ET.SubElement(case, "failure", message=message, type=f"{d.code} ({d.severity.value})")
-                failure.text = f"{printable(d.path)}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {message}"
+                text = f"{printable(d.path)}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {message}"
+                if d.severity.rank >= threshold:
+                    failure = ET.SubElement(case, "failure", message=message, type=f"{d.code} ({d.severity.value})")
+                    failure.text = text
+                    failed += 1
+                else:
+                    ET.SubElement(case, "system-out").text = text
                 cases += 1
-                failed += 1
         suite.set("tests", str(cases))
         suite.set("failures", str(failed if not result.error else 0))
         suite.set("errors", "1" if result.error else "0")

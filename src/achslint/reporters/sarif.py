@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import hashlib
 from pathlib import Path, PurePosixPath
+from urllib.parse import quote
 
 from .. import __version__
 from ..diagnostics import Severity, rule_url
@@ -15,16 +17,25 @@ LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "
 def artifact_uri(path: str) -> str:
     """A relative path stays relative (resolved against the checkout by viewers); absolute ones become file URIs."""
     if path.startswith("<"):
-        return PurePosixPath(path.strip("<>")).as_posix()
+        return quote(PurePosixPath(path.strip("<>")).as_posix(), safe="/", errors="surrogateescape")
     candidate = Path(path)
-    return candidate.as_uri() if candidate.is_absolute() else PurePosixPath(*candidate.parts).as_posix()
+    if candidate.is_absolute():
+        return candidate.as_uri()
+    # Percent-encoded, so that blanks or control characters in a name still make a valid URI reference.
+    return quote(PurePosixPath(*candidate.parts).as_posix(), safe="/", errors="surrogateescape")
 
 
 def _region(line: int, column: int, end_line: int, end_column: int) -> dict:
     return {"startLine": line, "startColumn": column, "endLine": end_line, "endColumn": max(end_column, column)}
 
 
-def _rules() -> list[dict]:
+def _fingerprint(d) -> str:
+    """Stable across runs and line shifts: the rule, the file and what the finding is about."""
+    subject = d.parameter or d.message
+    return hashlib.sha256(f"{d.code}\0{d.path}\0{subject}".encode("utf-8", "backslashreplace")).hexdigest()[:32]
+
+
+def _rules(docs_url: str | None) -> list[dict]:
     from ..docs import rule_text
     from ..rules import registry
 
@@ -36,15 +47,15 @@ def _rules() -> list[dict]:
             "shortDescription": {"text": rule.summary},
             "fullDescription": {"text": rule.section("What") or rule.summary},
             "help": {"text": rule_text(rule), "markdown": rule_text(rule)},
-            "helpUri": rule_url(rule.code),
+            "helpUri": rule_url(rule.code, docs_url),
             "defaultConfiguration": {"level": LEVELS[rule.severity]},
             "properties": {"fix": rule.fix},
         })
     return rules
 
 
-def document(results) -> dict:
-    rules = _rules()
+def document(results, docs_url: str | None = None) -> dict:
+    rules = _rules(docs_url)
     index = {rule["id"]: position for position, rule in enumerate(rules)}
     sarif_results = []
     for result in results:
@@ -61,6 +72,7 @@ def document(results) -> dict:
                     },
                     **({"logicalLocations": [{"name": d.parameter, "kind": "variable"}]} if d.parameter else {}),
                 }],
+                "partialFingerprints": {"achslint/v1": _fingerprint(d)},
             }
             if d.related:
                 entry["relatedLocations"] = [
@@ -88,7 +100,7 @@ def document(results) -> dict:
             "tool": {"driver": {
                 "name": "achslint",
                 "version": __version__,
-                "informationUri": "https://pypi.org/project/achslint/",
+                "informationUri": rule_url("index", docs_url).split("#", 1)[0],
                 "rules": rules,
             }},
             "invocations": [invocation],
@@ -97,5 +109,5 @@ def document(results) -> dict:
     }
 
 
-def report(results, stream, **_options) -> None:
-    write_json(document(results), stream)
+def report(results, stream, docs_url: str | None = None, **_options) -> None:
+    write_json(document(results, docs_url), stream)

@@ -124,6 +124,39 @@ def registry() -> dict[str, Rule]:
     return rules
 
 
+def known_codes() -> tuple[str, ...]:
+    """Every rule code, from the module names (no rule module is imported)."""
+    return tuple(name[:6].upper() for name in RULE_MODULES)
+
+
+def selector_problem(selector: str) -> str | None:
+    """Why a rule code or prefix picks no rule (with the closest codes), or None when it picks some."""
+    code = selector.strip().upper()
+    if _picks_some(code):
+        return None
+    return f"{selector.strip()!r} is not a rule code or a prefix of one; {_closest(code)}"
+
+
+def _picks_some(code: str) -> bool:
+    return code == "ALL" or bool(re.fullmatch(r"LIS[0-9]*", code)) and any(c.startswith(code) for c in known_codes())
+
+
+def _closest(code: str) -> str:
+    """A did-you-mean hint: a letter typed for a digit first (`LIS3O2`), then the families or similar codes."""
+    import difflib
+
+    known = known_codes()
+    if code.startswith("LIS"):
+        digits = "LIS" + code[3:].translate(str.maketrans("OQDILZSB", "00011258"))
+        if digits != code and _picks_some(digits):
+            return f"did you mean {digits}?"
+        if re.fullmatch(r"LIS[0-9]{0,2}", code):
+            families = sorted({c[:4] for c in known})
+            return f"the rule families are {', '.join(families)}"
+    close = difflib.get_close_matches(code, known, n=3, cutoff=0.6)
+    return f"did you mean {' or '.join(close)}?" if close else "`achslint rules` lists the codes"
+
+
 def matches(code: str, selectors: Iterable[str]) -> bool:
     """True when a code is picked by any selector: "ALL", a full code or a prefix (LIS1, LIS20)."""
     return any(s == "ALL" or code.startswith(s.upper()) for s in selectors)

@@ -4,7 +4,8 @@ What
 A `noqa` suppression that suppresses nothing: an end-of-line `# noqa: CODE`
 on a line without such a diagnostic, or a file-level `# achslint: noqa: CODE`
 in a file without one. Codes of rules that are not selected in this run are
-not counted as unused.
+not counted as unused. A code that is no rule code at all (`LIS3O2` with a
+letter O, `LIS9999`) is reported as unknown, with the closest codes.
 
 Why
 ---
@@ -40,12 +41,21 @@ SUMMARY = "Suppression comment that suppresses nothing"
 
 def check_after(ctx, directives, enabled):
     """Runs after the other rules and the suppressions, with every `noqa` directive of the file."""
+    from . import known_codes, selector_problem
+
+    known = known_codes()
     for directive in directives:
         if directive.codes is None:
             if not directive.used:
                 yield _report(ctx, directive, "this `noqa` suppresses no diagnostic; remove it")
             continue
-        unused = [code for code in directive.codes if code not in directive.used and enabled(code)]
+        for code in directive.codes:
+            if code not in known:
+                problem = selector_problem(code)
+                # The did-you-mean part; a prefix (`LIS3`) picks rules elsewhere but is no code for noqa.
+                hint = problem.split("; ", 1)[1] if problem else "noqa takes full codes such as LIS302"
+                yield _report(ctx, directive, f"`noqa` names the unknown code `{code}`, which suppresses nothing; {hint}")
+        unused = [code for code in directive.codes if code in known and code not in directive.used and enabled(code)]
         if unused:
             where = "in this file" if directive.file_level else "on this line"
             yield _report(ctx, directive, f"`noqa` for {', '.join(unused)} suppresses nothing {where}; remove "

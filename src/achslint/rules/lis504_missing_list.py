@@ -2,9 +2,12 @@
 What
 ----
 A start-up list entry (`achs_mds[i]` or `default_achs_mds`) that names an axis
-list which does not exist. Relative names are looked up next to the start-up
-list and one folder above it (the SDK keeps `./listen/…` names in a start-up
-list inside `listen/`).
+list which does not exist. Relative names are resolved the way the CNC resolves
+them: against its working directory, the CNC root. Set it with `--cnc-root DIR`
+or `cnc-root` in the configuration; otherwise it is the nearest folder, from the
+start-up list's folder upwards, where the entries exist (the SDK keeps
+`./listen/…` names in a start-up list that itself lies in `listen/`). The
+message names the file looked for and the root.
 
 Why
 ---
@@ -64,12 +67,13 @@ def check_machine(members, startups):
                     str(startup.path), entry.line, entry.column, entry.line, entry.column + len(entry.raw), CODE,
                     Severity.WARNING,
                     f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {entry.refused}; "
-                    "name the list (or its folder) on the command line to check it",
+                    "set --cnc-root or name the list (or its folder) on the command line to check it",
                 )
             elif entry.path is None:
                 yield Diagnostic(
                     str(startup.path), entry.line, entry.column, entry.line, entry.column + len(entry.raw), CODE,
                     Severity.ERROR,
-                    f"`{entry.key}` names `{entry.raw}`, which does not exist (looked next to the start-up list and "
-                    "one folder up); the CNC aborts the start-up when a list is missing",
+                    f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
+                    f"(the CNC root {startup.root_origin}); the CNC aborts the start-up when a list "
+                    "is missing",
                 )

@@ -1,0 +1,125 @@
+"""pre-commit: the hook sees whole machines, follows the repository's configuration, and works for real."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from .conftest import ROOT
+from .test_strictness import run_in
+
+HOOKS = ROOT / ".pre-commit-hooks.yaml"
+
+
+def axis(number: int) -> str:
+    return f"kopf.achs_nr                 {number}\nkopf.log_achs_name           AX{number}\nkenngr.antr_typ              4\nEnde\n"
+
+
+def machine(folder: Path) -> Path:
+    """Eight lists; the eighth reuses logical axis number 1 (LIS501, a warning)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for number in range(1, 9):
+        (folder / f"achsmds{number}.lis").write_text(axis(1 if number == 8 else number))
+    (folder / ".achslint.toml").write_text('fail-on = "warning"\n')  # the repository's own strictness
+    return folder
+
+
+def lis501(result) -> list[str]:
+    return [Path(d["path"]).name for d in json.loads(result.stdout)["diagnostics"] if d["code"] == "LIS501"]
+
+
+def test_hook_definition_fits_whole_machines():
+    text = HOOKS.read_text()
+    assert text.count("require_serial: true") == 2
+    assert "--fail-on" not in text  # the repository's configuration decides
+    patterns = re.findall(r"files: '(.*)'", text)
+    lint_pattern = re.compile(patterns[0])
+    for name in ("listen/achsmds1.lis", "listen/default_mds.lis", "listen/hochlauf.lis", "Axes/Axis_X.xti",
+                 "Project.tsproj", "Update/ax_mds_1.xml", "ACHSMDS2.LIS"):
+        assert lint_pattern.search(name), name
+    assert not lint_pattern.search("README.md")
+
+
+def test_a_list_passed_alone_is_checked_against_its_neighbours(tmp_path):
+    folder = machine(tmp_path / "m")
+    alone = run_in(folder, "lint", "achsmds8.lis", "--format", "json")
+    assert alone.returncode == 1 and lis501(alone) == ["achsmds8.lis"]
+    other = run_in(folder, "lint", "achsmds3.lis", "--format", "json")
+    assert other.returncode == 0 and json.loads(other.stdout)["diagnostics"] == []  # only passed files reported
+    first = run_in(folder, "lint", "achsmds1.lis", "--format", "json")
+    assert lis501(first) == ["achsmds1.lis"]  # reported on the passed list, with the neighbour related
+    assert json.loads(first.stdout)["diagnostics"][0]["related"][0]["path"].endswith("achsmds8.lis")
+
+
+def test_default_lists_are_not_axes_of_the_machine(tmp_path):
+    folder = machine(tmp_path / "m")
+    (folder / "achsmds8.lis").unlink()
+    (folder / "default_mds.lis").write_text(axis(1))
+    result = run_in(folder, "lint", "default_mds.lis", "achsmds1.lis", "--format", "json")
+    assert lis501(result) == []
+
+
+def _pre_commit() -> list[str]:
+    try:
+        import pre_commit  # noqa: F401
+    except ImportError:
+        pytest.skip("pre-commit is not installed (pip install -e '.[test]' brings it from the package index)")
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed; pre-commit needs it")
+    return [sys.executable, "-m", "pre_commit"]
+
+
+def _git(cwd: Path, *args: str) -> None:
+    subprocess.run(["git", *args], cwd=cwd, check=True, capture_output=True)
+
+
+@pytest.fixture(scope="module")
+def hook_repo(tmp_path_factory) -> Path:
+    """This checkout as it is now (committed or not), as a git repository pre-commit can install from."""
+    listed = subprocess.run(["git", "ls-files", "-co", "--exclude-standard"], cwd=ROOT, capture_output=True, text=True,
+                            check=False)
+    if listed.returncode != 0:
+        pytest.skip("the tests do not run from a git checkout of achslint")
+    repo = tmp_path_factory.mktemp("hook-repo")
+    for name in listed.stdout.splitlines():
+        source = ROOT / name
+        if source.is_file():
+            (repo / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(source, repo / name)
+    _git(repo, "init", "-q")
+    _git(repo, "add", "-A")
+    _git(repo, "-c", "user.name=t", "-c", "user.email=t@example.invalid", "commit", "-qm", "snapshot")
+    return repo
+
+
+def test_pre_commit_try_repo_reports_the_repeated_axis_number(tmp_path, hook_repo):
+    """The case from the issue: 8 lists, one reusing axis 1. The hook fails as a direct run does, with all
+    files and with only the changed list passed."""
+    command = _pre_commit()
+    project = tmp_path / "project"
+    machine(project / "listen")
+    _git(project, "init", "-q")
+    _git(project, "add", "-A")
+    env = {**os.environ, "PRE_COMMIT_HOME": str(hook_repo.parent / "pre-commit-home"), "NO_COLOR": "1"}
+    env.pop("PYTHONPATH", None)
+
+    def hook(*args: str) -> subprocess.CompletedProcess:
+        return subprocess.run([*command, "try-repo", str(hook_repo), "achslint", *args], cwd=project, env=env,
+                              capture_output=True, text=True, timeout=600, check=False)
+
+    every = hook("--all-files")
+    if every.returncode == 3:  # pre-commit's "unexpected error": here, pip could not reach the package index
+        pytest.skip(f"pre-commit could not install the hook environment: {every.stdout[-300:]}")
+    assert every.returncode == 1, every.stdout
+    assert "listen/achsmds8.lis" in every.stdout and "LIS501" in every.stdout
+    changed = hook("--files", "listen/achsmds8.lis")
+    assert changed.returncode == 1 and "LIS501" in changed.stdout
+    unrelated = hook("--files", "listen/achsmds3.lis")
+    assert unrelated.returncode == 0, unrelated.stdout

@@ -1,0 +1,80 @@
+"""Start-up lists as the CNC reads them: entries resolved against the CNC's working directory."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from .conftest import FIXTURES
+from .test_strictness import run_in
+
+SDK = FIXTURES / "machines" / "sdk"  # listen/hochlauf.lis names ./listen/achsmds1.lis, as in the vendor SDK
+
+
+def linted(result, cwd: Path) -> tuple[set[str], list[str]]:
+    """(the axis lists linted, the LIS504 messages) of a JSON run."""
+    document = json.loads(result.stdout)
+    names = {Path(d["path"]).name for d in document["diagnostics"]}
+    lis504 = [d["message"] for d in document["diagnostics"] if d["code"] == "LIS504"]
+    return names, lis504
+
+
+@pytest.fixture
+def machine(tmp_path) -> Path:
+    copy = tmp_path / "machine"
+    shutil.copytree(SDK, copy)
+    (tmp_path / "elsewhere").mkdir()
+    return copy
+
+
+@pytest.mark.parametrize("where,argument", [
+    ("listen", "hochlauf.lis"),             # the start-up list's own folder: the reported bug
+    (".", "listen/hochlauf.lis"),           # its parent, the CNC's working directory
+    ("../elsewhere", None),                 # anywhere else, by absolute path
+])
+def test_entries_resolve_from_any_working_directory(machine, where, argument):
+    cwd = (machine / where).resolve()
+    target = argument or str(machine / "listen" / "hochlauf.lis")
+    result = run_in(cwd, "lint", target, "--format", "json")
+    assert result.returncode == 0, result.stderr.decode()
+    names, lis504 = linted(result, cwd)
+    assert lis504 == []
+    assert {"achsmds2.lis", "achsmds3.lis"} <= names  # their info findings show they were linted
+
+
+def test_a_missing_entry_says_where_it_looked(machine):
+    (machine / "listen" / "achsmds3.lis").unlink()
+    result = run_in(machine / "listen", "lint", "hochlauf.lis", "--format", "json")
+    assert result.returncode == 1
+    _, lis504 = linted(result, machine)
+    assert len(lis504) == 1
+    assert f"looked for `{(machine / 'listen' / 'achsmds3.lis').resolve()}" in lis504[0].replace(str(machine), str(machine.resolve()))
+    assert "CNC root" in lis504[0]
+
+
+def test_cnc_root_option_and_setting(machine, tmp_path):
+    wrong = tmp_path / "elsewhere"
+    result = run_in(machine, "lint", "listen/hochlauf.lis", "--format", "json", "--cnc-root", str(wrong))
+    _, lis504 = linted(result, machine)
+    assert len(lis504) == 4 and all(f"looked for `{wrong}/listen/" in m and "given by --cnc-root" in m for m in lis504)
+    (machine / "listen" / ".achslint.toml").write_text('cnc-root = ".."\n')  # relative to the config file
+    result = run_in(tmp_path / "elsewhere", "lint", str(machine / "listen" / "hochlauf.lis"), "--format", "json")
+    assert linted(result, machine)[1] == []
+    assert run_in(machine, "lint", "listen/hochlauf.lis", "--cnc-root", "nowhere").returncode == 2
+
+
+def test_cnc_root_extends_where_entries_may_be_read(tmp_path):
+    """A start-up list kept apart from the lists: read only once the CNC root is named."""
+    shutil.copytree(SDK / "listen", tmp_path / "listen")
+    config = tmp_path / "config"
+    config.mkdir()
+    (tmp_path / "listen" / "hochlauf.lis").rename(config / "hochlauf.lis")
+    result = run_in(tmp_path, "lint", "config/hochlauf.lis", "--format", "json")
+    _, lis504 = linted(result, tmp_path)
+    assert len(lis504) == 4 and all("outside the start-up list's folder" in m for m in lis504)
+    result = run_in(tmp_path, "lint", "config/hochlauf.lis", "--format", "json", "--cnc-root", ".")
+    names, lis504 = linted(result, tmp_path)
+    assert lis504 == [] and "achsmds3.lis" in names
