@@ -31,13 +31,7 @@ selection = _snapshots().selection
 
 def machine_findings(folder, select):
     """Lint a machine folder (through its start-up list when it has one), as the CLI does."""
-    from achslint.api import LintRequest, run_lint
-    from achslint.config import Overrides
-
-    startup = sorted(folder.glob("hochlauf*.lis"))
-    target = str(startup[0]) if startup else str(folder)
-    outcome = run_lint(LintRequest([target], Overrides(select=select), jobs=1))
-    return sorted((Path(d.path).name, d.line, d.code) for r in outcome.results for d in r.diagnostics)
+    return sorted((Path(d.path).name, d.line, d.code) for d in _snapshots().lint_fixture(folder, select))
 
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])

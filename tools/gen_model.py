@@ -14,7 +14,6 @@ see every field. Runtime behaviour (cross-rule validation, sources, corrections)
 from __future__ import annotations
 
 import argparse
-import keyword
 import re
 import sys
 from dataclasses import dataclass, field
@@ -24,6 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
 from achslint.catalogue import BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue  # noqa: E402
+from achslint.model import field_name  # noqa: E402  (the runtime model resolves paths by the same names)
 
 OUTPUT = ROOT / "src" / "achslint" / "model_generated.py"
 
@@ -35,14 +35,6 @@ class Node:
     children: dict[str, Node] = field(default_factory=dict)
     bounds: tuple[int, int] | None = None
     parameter: Parameter | None = None
-
-
-def field_name(name: str) -> str:
-    """The Python name of a list member (the list's own name stays the alias)."""
-    if "." in name:
-        return name.replace(".", "_")
-    reserved = keyword.iskeyword(name) or name.startswith("model_")
-    return name + "_" if reserved else name
 
 
 def class_name(path: list[str]) -> str:

@@ -38,18 +38,23 @@ def selection(rule_dir: Path) -> list[str]:
     return [rule_dir.name, *(extra.read_text().split() if extra.exists() else [])]
 
 
-def findings(rule_dir: Path) -> list:
-    """The diagnostics of the rule on its bad fixture, linted as the CLI lints it (start-up list first)."""
+def lint_fixture(path: Path, select: list[str] | None) -> list:
+    """Every diagnostic of a fixture, linted as the CLI lints it: a machine folder through its start-up list
+    when it has one."""
     from achslint.api import LintRequest, run_lint
     from achslint.config import Overrides
 
-    bad = fixture(rule_dir, "bad")
-    target = bad
-    if bad.is_dir():
-        startup = sorted(bad.glob("hochlauf*.lis"))
-        target = startup[0] if startup else bad
-    outcome = run_lint(LintRequest([str(target)], Overrides(select=selection(rule_dir)), jobs=1))
-    found = [d for result in outcome.results for d in result.diagnostics if d.code == rule_dir.name]
+    target = path
+    if path.is_dir():
+        startup = sorted(path.glob("hochlauf*.lis"))
+        target = startup[0] if startup else path
+    outcome = run_lint(LintRequest([str(target)], Overrides(select=select), jobs=1))
+    return [d for result in outcome.results for d in result.diagnostics]
+
+
+def findings(rule_dir: Path) -> list:
+    """The diagnostics of the rule on its bad fixture."""
+    found = [d for d in lint_fixture(fixture(rule_dir, "bad"), selection(rule_dir)) if d.code == rule_dir.name]
     return sorted(found, key=lambda d: (d.path, d.line, d.column, d.message))
 
 

@@ -37,8 +37,9 @@ from .model_base import DEFAULT, AxisBase, Source
 __all__ = ["DEFAULT", "AxisBase", "Source", "axis_model", "build_model", "dumps", "json_schema", "rule_errors"]
 
 
-def _field_name(name: str) -> str:
-    """The Python name of a list member (the generator's rule: keywords and `model_*` get a trailing "_")."""
+def field_name(name: str) -> str:
+    """The Python name of a list member: keywords and `model_*` get a trailing "_", dotted rests are joined
+    with "_". tools/gen_model.py names the generated fields with this same function."""
     if "." in name:
         return name.replace(".", "_")
     return name + "_" if keyword.iskeyword(name) or name.startswith("model_") else name
@@ -89,10 +90,10 @@ def _materialise(model: type[BaseModel], data: dict) -> dict:
     """Turn {index: ...} maps into full lists, filling untouched elements with defaults."""
     result: dict = {}
     for key, value in data.items():
-        info = model.model_fields.get(_field_name(key))
+        info = model.model_fields.get(field_name(key))
         if info is None:
             continue
-        field_key = _field_name(key)
+        field_key = field_name(key)
         if isinstance(value, dict) and all(isinstance(k, int) for k in value):
             default_list = info.default_factory()
             inner = _list_item_model(info.annotation)

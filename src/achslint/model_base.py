@@ -67,11 +67,11 @@ class AxisBase(BaseModel):
 
     def get(self, path: str) -> Any:
         """The effective value of a canonical path, e.g. `getriebe[0].vb_reflow`."""
-        from .model import _field_name, _parts
+        from .model import _parts, field_name
 
         value: Any = self
         for name, index in _parts(path):
-            value = getattr(value, _field_name(name))
+            value = getattr(value, field_name(name))
             if index:
                 value = value[int(index)]
         return value

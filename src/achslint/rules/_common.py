@@ -6,11 +6,13 @@ from ..catalogue import BOOL, INTEGER, REAL, SYMBOL
 from ..diagnostics import Edit, Fix
 
 
-def value_facts(ctx, code: str, kinds: tuple[type, ...], message, replacement=None, applicability: str = "safe"):
+def value_facts(ctx, code: str, kinds: tuple[type, ...], message, replacement=None, applicability: str = "safe",
+                to_line_end: bool = False):
     """Report every fact of the given kinds that the conversion stage recorded for a value.
 
     `message(fact, setting)` words the finding; `replacement(fact)`, when given and not None, is a value
-    written in place of the old one as a fix of the given applicability.
+    written in place of the old one as a fix of the given applicability. With `to_line_end` the finding
+    reaches from the fact's start to the end of the line.
     """
     for setting in ctx.settings:
         for fact in setting.problems:
@@ -18,6 +20,8 @@ def value_facts(ctx, code: str, kinds: tuple[type, ...], message, replacement=No
                 continue
             line = setting.line
             start, end = ctx.problem_span(line, fact.span)
+            if to_line_end:
+                end = line.end_column
             new = replacement(fact) if replacement is not None else None
             fix = None
             if new is not None and line.value is not None:

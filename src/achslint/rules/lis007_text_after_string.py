@@ -33,6 +33,7 @@ documented inconsistency E.49.
 from __future__ import annotations
 
 from ..facts import CommentReadAsValue, TextAfterString
+from ._common import value_facts
 
 CODE = "LIS007"
 NAME = "text-after-string"
@@ -54,10 +55,4 @@ def message(fact, setting) -> str:
 
 
 def check(ctx):
-    for setting in ctx.settings:
-        for fact in setting.problems:
-            if isinstance(fact, FACTS):
-                line = setting.line
-                start, _end = ctx.problem_span(line, fact.span)
-                yield ctx.report(CODE, line, message(fact, setting), column=start, end_column=line.end_column,
-                                 setting=setting)
+    yield from value_facts(ctx, CODE, FACTS, message, to_line_end=True)
