@@ -22,7 +22,7 @@ def _value(parameter) -> str:
     if kind == INTEGER:
         if isinstance(default, int):
             return str(default)
-        return str(parameter.symbol_codes and next(iter(parameter.symbol_codes.values())) or 0)
+        return str((parameter.symbol_codes and next(iter(parameter.symbol_codes.values()))) or 0)
     return "0"
 
 
@@ -46,14 +46,19 @@ def axis_list(lines: int, seed: int = 1) -> str:
     rng = random.Random(seed)
     paths = all_paths()
     rng.shuffle(paths)
-    out = ["# generated benchmark list", "kopf.achs_nr                                          1        ( P-AXIS-00016"]
+    out = [
+        "# generated benchmark list",
+        "kopf.achs_nr                                          1        ( P-AXIS-00016",
+    ]
     position = 0
     while len(out) < lines:
         path, parameter = paths[position % len(paths)]
         position += 1
         if parameter.id == "P-AXIS-00016":
             continue
-        out.append(f"{path:<46}{_value(parameter):>16}        ( {parameter.id} : {_ascii(parameter.summary[:40])}")
+        out.append(
+            f"{path:<46}{_value(parameter):>16}        ( {parameter.id} : {_ascii(parameter.summary[:40])}"
+        )
     out.append("Ende")
     return "\r\n".join(out) + "\r\n"
 

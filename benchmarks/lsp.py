@@ -96,9 +96,13 @@ def in_process(runs: int) -> bool:
     bare = bare_parse_ms(document.text, max(5, runs // 4))
     ok_edit = edit <= BUDGET_DIAGNOSTICS_MS
     print(f"language server, a {len(lines) - 1:,}-line list ({len(found)} findings)")
-    print(f"  diagnostics after a one-character edit   {edit:7.1f} ms median "
-          f"(budget <= {BUDGET_DIAGNOSTICS_MS} ms)  -> {verdict(ok_edit)}")
-    print(f"  Lark bare parse of the whole text         {bare:7.1f} ms  (edit / bare parse = {edit / bare:.2f})")
+    print(
+        f"  diagnostics after a one-character edit   {edit:7.1f} ms median "
+        f"(budget <= {BUDGET_DIAGNOSTICS_MS} ms)  -> {verdict(ok_edit)}"
+    )
+    print(
+        f"  Lark bare parse of the whole text         {bare:7.1f} ms  (edit / bare parse = {edit / bare:.2f})"
+    )
 
     snapshot = session.snapshot(document.uri)
     symbol_line = next(i for i, line in enumerate(lines) if line.startswith("kenngr.homing.homing_type"))
@@ -111,8 +115,12 @@ def in_process(runs: int) -> bool:
         assert text_ and "In this list" in text_, text_
         return sent(lsp.Hover(lsp.MarkupContent(lsp.MarkupKind.Markdown, text_ or "")))
 
-    typing = Document(document.uri + "-typing", None, "\n".join(
-        "getriebe[0].vb_re" if i == path_line else line for i, line in enumerate(lines)), 1)
+    typing = Document(
+        document.uri + "-typing",
+        None,
+        "\n".join("getriebe[0].vb_re" if i == path_line else line for i, line in enumerate(lines)),
+        1,
+    )
     session.open(typing)
     typing_snapshot = session.snapshot(typing.uri)
 
@@ -122,7 +130,9 @@ def in_process(runs: int) -> bool:
         return sent(answer)
 
     def complete_path():  # the line's path cut after `vb_re`, as if being typed
-        return completed(path_line, len("getriebe[0].vb_re") + 1, "getriebe[0].vb_reflow", typing, typing_snapshot)
+        return completed(
+            path_line, len("getriebe[0].vb_re") + 1, "getriebe[0].vb_reflow", typing, typing_snapshot
+        )
 
     def complete_top():
         return completed(path_line, 1, "kenngr.homing.homing_type")
@@ -131,10 +141,12 @@ def in_process(runs: int) -> bool:
         return completed(symbol_line, len("kenngr.homing.homing_type") + 26, "CNC_CONTROLLED")
 
     ok = ok_edit
-    for label, call in (("hover on a parameter (card, value, effect)", hover),
-                        ("completion of getriebe[0].vb_re", complete_path),
-                        ("completion at a line start (all paths)", complete_top),
-                        ("completion of a symbol value", complete_symbol)):
+    for label, call in (
+        ("hover on a parameter (card, value, effect)", hover),
+        ("completion of getriebe[0].vb_re", complete_path),
+        ("completion at a line start (all paths)", complete_top),
+        ("completion of a symbol value", complete_symbol),
+    ):
         call()
         samples = []
         for _ in range(runs):
@@ -143,7 +155,9 @@ def in_process(runs: int) -> bool:
             samples.append(time.perf_counter() - start)
         took = median_ms(samples)
         ok = ok and took <= BUDGET_ANSWER_MS
-        print(f"  {label:<44} {took:6.2f} ms (budget <= {BUDGET_ANSWER_MS} ms)  -> {verdict(took <= BUDGET_ANSWER_MS)}")
+        print(
+            f"  {label:<44} {took:6.2f} ms (budget <= {BUDGET_ANSWER_MS} ms)  -> {verdict(took <= BUDGET_ANSWER_MS)}"
+        )
     return ok
 
 
@@ -151,8 +165,9 @@ class Client:
     """A minimal LSP client over a server process's stdio."""
 
     def __init__(self, command: list[str]):
-        self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                        stderr=subprocess.DEVNULL)
+        self.process = subprocess.Popen(
+            command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL
+        )
         self.published: dict[str, tuple[float, int | None]] = {}
         self.responses: dict[int, dict] = {}
         self.lock = threading.Condition()
@@ -210,15 +225,22 @@ class Client:
             self.request("shutdown", None)
             self.send({"method": "exit"})
             self.process.wait(timeout=10)
-        except Exception:  # noqa: BLE001 - the measurement is done
+        except Exception:
             self.process.kill()
 
 
 def server_process(lists: int, runs: int) -> bool:
     folder = Path(tempfile.mkdtemp(prefix="achslint-lsp-memory-"))
     client = Client([sys.executable, "-m", "achslint", "server"])
-    client.request("initialize", {"processId": os.getpid(), "rootUri": folder.as_uri(), "capabilities": {},
-                                  "initializationOptions": {"debounceMs": 0}})
+    client.request(
+        "initialize",
+        {
+            "processId": os.getpid(),
+            "rootUri": folder.as_uri(),
+            "capabilities": {},
+            "initializationOptions": {"debounceMs": 0},
+        },
+    )
     client.send({"method": "initialized", "params": {}})
     uris = []
     for number in range(lists):
@@ -228,8 +250,19 @@ def server_process(lists: int, runs: int) -> bool:
         text = axis_list(250, seed=number + 1)
         path.write_text(text, encoding="utf-8")
         uris.append(path.as_uri())
-        client.send({"method": "textDocument/didOpen", "params": {"textDocument": {
-            "uri": path.as_uri(), "languageId": "achsmds", "version": 1, "text": text}}})
+        client.send(
+            {
+                "method": "textDocument/didOpen",
+                "params": {
+                    "textDocument": {
+                        "uri": path.as_uri(),
+                        "languageId": "achsmds",
+                        "version": 1,
+                        "text": text,
+                    }
+                },
+            }
+        )
     started = time.perf_counter()
     client.wait(lambda: all(uri in client.published for uri in uris))
     opened = time.perf_counter() - started
@@ -245,8 +278,12 @@ def server_process(lists: int, runs: int) -> bool:
     text = axis_list(2000)
     big.write_text(text, encoding="utf-8")
     uri = big.as_uri()
-    client.send({"method": "textDocument/didOpen", "params": {"textDocument": {
-        "uri": uri, "languageId": "achsmds", "version": 1, "text": text}}})
+    client.send(
+        {
+            "method": "textDocument/didOpen",
+            "params": {"textDocument": {"uri": uri, "languageId": "achsmds", "version": 1, "text": text}},
+        }
+    )
     client.wait(lambda: uri in client.published)
     lines = text.splitlines()
     target = next(i for i, line in enumerate(lines) if line.split()[1:2] and line.split()[1].isdigit())
@@ -255,14 +292,29 @@ def server_process(lists: int, runs: int) -> bool:
     for run in range(runs):
         version = run + 2
         sent = time.perf_counter()
-        client.send({"method": "textDocument/didChange", "params": {
-            "textDocument": {"uri": uri, "version": version},
-            "contentChanges": [{"range": {"start": {"line": target, "character": column},
-                                          "end": {"line": target, "character": column + 1}}, "text": str(run % 10)}]}})
+        client.send(
+            {
+                "method": "textDocument/didChange",
+                "params": {
+                    "textDocument": {"uri": uri, "version": version},
+                    "contentChanges": [
+                        {
+                            "range": {
+                                "start": {"line": target, "character": column},
+                                "end": {"line": target, "character": column + 1},
+                            },
+                            "text": str(run % 10),
+                        }
+                    ],
+                },
+            }
+        )
         client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
         samples.append(client.published[uri][0] - sent)
-    print(f"  end to end (stdio, 2,000-line list, debounce 0): change -> diagnostics  {median_ms(samples):6.1f} ms median "
-          "(information)")
+    print(
+        f"  end to end (stdio, 2,000-line list, debounce 0): change -> diagnostics  {median_ms(samples):6.1f} ms median "
+        "(information)"
+    )
     client.close()
     return ok
 

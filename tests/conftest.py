@@ -28,7 +28,9 @@ def run_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> 
     return subprocess.CompletedProcess(["achslint", *args], code, out, err)
 
 
-def run_real_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> subprocess.CompletedProcess:
+def run_real_cli(
+    *args: str, stdin: bytes | None = None, env: dict | None = None
+) -> subprocess.CompletedProcess:
     """Run the real entry point (`python -m achslint`) in a subprocess: for the smoke tests of the entry
     point itself (exit codes, stdin, signals, parallel runs)."""
     full_env = {**os.environ, "NO_COLOR": "1", **(env or {})}

@@ -36,7 +36,9 @@ def test_loads_dumps_round_trip():
 
 def test_explain_dry_run_and_format_text():
     report = achslint.explain(LIST)
-    assert report["strategy"]["id"] and achslint.explain(LIST) == report  # still the function after the first call
+    assert (
+        report["strategy"]["id"] and achslint.explain(LIST) == report
+    )  # still the function after the first call
     run = achslint.dry_run(LIST, {"start_position": 50.0})
     assert run.trace.outcome in ("homed", "failed", "skipped") or run.trace.outcome
     assert achslint.format_text("kopf.achs_nr 1   \nEnde\n") == "kopf.achs_nr  1\nEnde\n"

@@ -10,16 +10,63 @@ from achslint.catalogue import BOOL, INTEGER, REAL, SYMBOL, catalogue
 # default is a "not set" marker (0 or -1). Documented inconsistencies C.24/C.25
 # and the parameter pages.
 SENTINEL_DEFAULTS = {
-    "P-AXIS-00003", "P-AXIS-00013", "P-AXIS-00019", "P-AXIS-00040", "P-AXIS-00043", "P-AXIS-00045",
-    "P-AXIS-00046", "P-AXIS-00053", "P-AXIS-00070", "P-AXIS-00072", "P-AXIS-00075", "P-AXIS-00100",
-    "P-AXIS-00101", "P-AXIS-00130", "P-AXIS-00243", "P-AXIS-00275", "P-AXIS-00280", "P-AXIS-00281",
-    "P-AXIS-00282", "P-AXIS-00283", "P-AXIS-00284", "P-AXIS-00295", "P-AXIS-00296", "P-AXIS-00301",
-    "P-AXIS-00311", "P-AXIS-00314", "P-AXIS-00316", "P-AXIS-00317", "P-AXIS-00332", "P-AXIS-00333",
-    "P-AXIS-00334", "P-AXIS-00335", "P-AXIS-00355", "P-AXIS-00371", "P-AXIS-00383", "P-AXIS-00387",
-    "P-AXIS-00390", "P-AXIS-00420", "P-AXIS-00425", "P-AXIS-00432", "P-AXIS-00433", "P-AXIS-00434",
-    "P-AXIS-00435", "P-AXIS-00438", "P-AXIS-00450", "P-AXIS-00451", "P-AXIS-00484", "P-AXIS-00495",
-    "P-AXIS-00541", "P-AXIS-00750", "P-AXIS-00751", "P-AXIS-00752", "P-AXIS-00756", "P-AXIS-00770",
-    "P-AXIS-00771", "P-AXIS-00775", "P-AXIS-00850",
+    "P-AXIS-00003",
+    "P-AXIS-00013",
+    "P-AXIS-00019",
+    "P-AXIS-00040",
+    "P-AXIS-00043",
+    "P-AXIS-00045",
+    "P-AXIS-00046",
+    "P-AXIS-00053",
+    "P-AXIS-00070",
+    "P-AXIS-00072",
+    "P-AXIS-00075",
+    "P-AXIS-00100",
+    "P-AXIS-00101",
+    "P-AXIS-00130",
+    "P-AXIS-00243",
+    "P-AXIS-00275",
+    "P-AXIS-00280",
+    "P-AXIS-00281",
+    "P-AXIS-00282",
+    "P-AXIS-00283",
+    "P-AXIS-00284",
+    "P-AXIS-00295",
+    "P-AXIS-00296",
+    "P-AXIS-00301",
+    "P-AXIS-00311",
+    "P-AXIS-00314",
+    "P-AXIS-00316",
+    "P-AXIS-00317",
+    "P-AXIS-00332",
+    "P-AXIS-00333",
+    "P-AXIS-00334",
+    "P-AXIS-00335",
+    "P-AXIS-00355",
+    "P-AXIS-00371",
+    "P-AXIS-00383",
+    "P-AXIS-00387",
+    "P-AXIS-00390",
+    "P-AXIS-00420",
+    "P-AXIS-00425",
+    "P-AXIS-00432",
+    "P-AXIS-00433",
+    "P-AXIS-00434",
+    "P-AXIS-00435",
+    "P-AXIS-00438",
+    "P-AXIS-00450",
+    "P-AXIS-00451",
+    "P-AXIS-00484",
+    "P-AXIS-00495",
+    "P-AXIS-00541",
+    "P-AXIS-00750",
+    "P-AXIS-00751",
+    "P-AXIS-00752",
+    "P-AXIS-00756",
+    "P-AXIS-00770",
+    "P-AXIS-00771",
+    "P-AXIS-00775",
+    "P-AXIS-00850",
 }
 
 
@@ -37,12 +84,38 @@ def test_all_787_parameters_with_unique_ids_and_paths():
 
 # The homing parameters of the TF5200 homing manual (§4.1 overview) carry our own descriptions.
 HOMING_IDS = [
-    "P-AXIS-00014", "P-AXIS-00015", "P-AXIS-00036", "P-AXIS-00038", "P-AXIS-00064", "P-AXIS-00074",
-    "P-AXIS-00084", "P-AXIS-00152", "P-AXIS-00156", "P-AXIS-00157", "P-AXIS-00158", "P-AXIS-00161",
-    "P-AXIS-00218", "P-AXIS-00219", "P-AXIS-00285", "P-AXIS-00299", "P-AXIS-00321", "P-AXIS-00333",
-    "P-AXIS-00344", "P-AXIS-00345", "P-AXIS-00346", "P-AXIS-00348", "P-AXIS-00349", "P-AXIS-00354",
-    "P-AXIS-00355", "P-AXIS-00386", "P-AXIS-00387", "P-AXIS-00388", "P-AXIS-00412", "P-AXIS-00425",
-    "P-AXIS-00426", "P-AXIS-00494",
+    "P-AXIS-00014",
+    "P-AXIS-00015",
+    "P-AXIS-00036",
+    "P-AXIS-00038",
+    "P-AXIS-00064",
+    "P-AXIS-00074",
+    "P-AXIS-00084",
+    "P-AXIS-00152",
+    "P-AXIS-00156",
+    "P-AXIS-00157",
+    "P-AXIS-00158",
+    "P-AXIS-00161",
+    "P-AXIS-00218",
+    "P-AXIS-00219",
+    "P-AXIS-00285",
+    "P-AXIS-00299",
+    "P-AXIS-00321",
+    "P-AXIS-00333",
+    "P-AXIS-00344",
+    "P-AXIS-00345",
+    "P-AXIS-00346",
+    "P-AXIS-00348",
+    "P-AXIS-00349",
+    "P-AXIS-00354",
+    "P-AXIS-00355",
+    "P-AXIS-00386",
+    "P-AXIS-00387",
+    "P-AXIS-00388",
+    "P-AXIS-00412",
+    "P-AXIS-00425",
+    "P-AXIS-00426",
+    "P-AXIS-00494",
 ]
 
 
@@ -74,7 +147,9 @@ def test_ranges_parse_and_defaults_lie_inside_them():
             low = p.min if isinstance(p.min, (int, float)) else None
             high = p.max if isinstance(p.max, (int, float)) else None
             strict_low = p.min_strict and low == 0
-            if (low is not None and (default < low or (strict_low and default == low))) or (high is not None and default > high):
+            if (low is not None and (default < low or (strict_low and default == low))) or (
+                high is not None and default > high
+            ):
                 outside.add(p.id)
         if p.allowed and isinstance(default, int) and default not in p.allowed:
             outside.add(p.id)
@@ -84,8 +159,16 @@ def test_ranges_parse_and_defaults_lie_inside_them():
 def test_symbols_and_kinds():
     cat = catalogue()
     homing = cat.by_id["P-AXIS-00299"]
-    assert homing.kind == SYMBOL and "DRIVE_CONTROLLED" in homing.symbols and "DRIVE_CONROLLED" not in homing.symbols
-    assert cat.by_id["P-AXIS-00018"].symbol_codes == {"ACHSTYP_TRANSLATOR": 1, "ACHSTYP_ROTATOR": 2, "ACHSTYP_SPINDEL": 4}
+    assert (
+        homing.kind == SYMBOL
+        and "DRIVE_CONTROLLED" in homing.symbols
+        and "DRIVE_CONROLLED" not in homing.symbols
+    )
+    assert cat.by_id["P-AXIS-00018"].symbol_codes == {
+        "ACHSTYP_TRANSLATOR": 1,
+        "ACHSTYP_ROTATOR": 2,
+        "ACHSTYP_SPINDEL": 4,
+    }
     assert cat.by_id["P-AXIS-00014"].kind == BOOL
     assert cat.by_id["P-AXIS-00219"].unit("R") == "0.001deg/s"
     assert cat.by_id["P-AXIS-00218"].index_bounds == ((0, 5),)
@@ -134,20 +217,37 @@ def test_overrides_can_add_a_parameter_the_table_lacks(tmp_path):
     build_catalogue, _ = _tools()
     overrides = build_catalogue.OVERRIDES.read_text(encoding="utf-8") + (
         '\n[add."P-AXIS-09999"]\npath = "kenngr.made_up_limit"\ntype = "UNS16"\nrange = "0 ≤ made_up_limit ≤ 500"\n'
-        'unit_T = "mm"\ndefault = "7"\ndrive_types = "1 4"\ntitle = "A limit for the test"\n')
+        'unit_T = "mm"\ndefault = "7"\ndrive_types = "1 4"\ntitle = "A limit for the test"\n'
+    )
     path = tmp_path / "overrides.toml"
     path.write_text(overrides, encoding="utf-8")
-    entry = [e for e in build_catalogue.build(build_catalogue.read_table(build_catalogue.TABLE),
-                                              build_catalogue.tomllib.loads(overrides))["parameters"]
-             if e["id"] == "P-AXIS-09999"]
-    assert entry == [{"id": "P-AXIS-09999", "path": "kenngr.made_up_limit", "type": "UNS16", "min": 0, "max": 500,
-                      "range_text": "0 ≤ made_up_limit ≤ 500", "default": 7,
-                      "units": {"T": "mm", "R": None, "S": None}, "drive_types": [1, 4],
-                      "title": "A limit for the test"}]
+    entry = [
+        e
+        for e in build_catalogue.build(
+            build_catalogue.read_table(build_catalogue.TABLE), build_catalogue.tomllib.loads(overrides)
+        )["parameters"]
+        if e["id"] == "P-AXIS-09999"
+    ]
+    assert entry == [
+        {
+            "id": "P-AXIS-09999",
+            "path": "kenngr.made_up_limit",
+            "type": "UNS16",
+            "min": 0,
+            "max": 500,
+            "range_text": "0 ≤ made_up_limit ≤ 500",
+            "default": 7,
+            "units": {"T": "mm", "R": None, "S": None},
+            "drive_types": [1, 4],
+            "title": "A limit for the test",
+        }
+    ]
     # Adding a parameter the table already has is a mistake the tool names.
     with pytest.raises(SystemExit, match="already a row"):
-        build_catalogue.build(build_catalogue.read_table(build_catalogue.TABLE),
-                              build_catalogue.tomllib.loads(overrides.replace("P-AXIS-09999", "P-AXIS-00001")))
+        build_catalogue.build(
+            build_catalogue.read_table(build_catalogue.TABLE),
+            build_catalogue.tomllib.loads(overrides.replace("P-AXIS-09999", "P-AXIS-00001")),
+        )
 
 
 def test_every_parameter_is_a_field_of_the_typed_model():

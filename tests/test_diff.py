@@ -5,8 +5,10 @@ from __future__ import annotations
 import json
 
 A = b"kopf.achs_nr 1\nkenngr.homing_type CNC_CONTROLLED\ngetriebe[0].vb_reflow 20000 ( slow\nkenngr.achs_mode 0x1\nEnde\n"
-B = (b"# the same axis, reformatted, one speed changed\nkopf.achs_nr      1\nkenngr.homing.homing_type   CNC_CONTROLLED\n"
-     b"getriebe[0].vb_reflow   15000\nkenngr.achs_mode 1\ngetriebe[0].vb_refmax 83333\nEnde\n")
+B = (
+    b"# the same axis, reformatted, one speed changed\nkopf.achs_nr      1\nkenngr.homing.homing_type   CNC_CONTROLLED\n"
+    b"getriebe[0].vb_reflow   15000\nkenngr.achs_mode 1\ngetriebe[0].vb_refmax 83333\nEnde\n"
+)
 
 
 def test_only_effective_differences(cli, tmp_path):

@@ -20,21 +20,37 @@ def test_default_scenario_is_printed_as_assumed(cli):
 
 def test_scenario_file_and_options(cli, tmp_path):
     scenario = tmp_path / "scenario.toml"
-    scenario.write_text("start_position = 50.0\ncam = [-300.0, -250.0]\nzero_pulse_period = 4.0\n"
-                        "zero_pulse_phase = -251.0\nhardware_latch = true\nlimit_switches = [-400.0, 400.0]\n")
+    scenario.write_text(
+        "start_position = 50.0\ncam = [-300.0, -250.0]\nzero_pulse_period = 4.0\n"
+        "zero_pulse_phase = -251.0\nhardware_latch = true\nlimit_switches = [-400.0, 400.0]\n"
+    )
     document = json.loads(cli("dry-run", X_AXIS, "--scenario", str(scenario), "--format", "json").stdout)
     assert document["outcome"] == "homed"
     assert document["reference"]["position"] == -251.0
-    assert document["scenario"]["assumed"] == ["fixed_stop", "cam_jitter", "cycle_time_ms"] or \
-        set(document["scenario"]["assumed"]) == {"fixed_stop", "cam_jitter", "cycle_time_ms"}
-    moved = json.loads(cli("dry-run", X_AXIS, "--scenario", str(scenario), "--format", "json",
-                           "--zero-pulse-phase", "-253.0").stdout)
+    assert document["scenario"]["assumed"] == ["fixed_stop", "cam_jitter", "cycle_time_ms"] or set(
+        document["scenario"]["assumed"]
+    ) == {"fixed_stop", "cam_jitter", "cycle_time_ms"}
+    moved = json.loads(
+        cli(
+            "dry-run", X_AXIS, "--scenario", str(scenario), "--format", "json", "--zero-pulse-phase", "-253.0"
+        ).stdout
+    )
     assert moved["reference"]["position"] == -253.0
 
 
 def test_missed_cam_is_exit_1_with_reason(cli):
-    result = cli("dry-run", X_AXIS, "--start", "-150", "--cam", "-120,-100", "--limit-switches", "-200,200",
-                 "--format", "json")
+    result = cli(
+        "dry-run",
+        X_AXIS,
+        "--start",
+        "-150",
+        "--cam",
+        "-120,-100",
+        "--limit-switches",
+        "-200,200",
+        "--format",
+        "json",
+    )
     document = json.loads(result.stdout)
     assert result.returncode == 1
     assert document["outcome"] == "failed" and "limit switch" in document["failure"]
@@ -51,7 +67,9 @@ def test_bad_scenario_is_exit_2(cli, tmp_path):
 
 
 def test_sweep_in_json(cli):
-    document = json.loads(cli("dry-run", X_AXIS, "--sweep", "200", "--cam-jitter", "0.01", "--format", "json").stdout)
+    document = json.loads(
+        cli("dry-run", X_AXIS, "--sweep", "200", "--cam-jitter", "0.01", "--format", "json").stdout
+    )
     assert document["sweep"]["runs"] == 200
     assert sum(document["sweep"]["outcomes"].values()) == 200
 

@@ -42,14 +42,23 @@ def approx(value, expected, tolerance=1e-9):
 
 # A spindle homing positive at vb_reflow 36 °/s with its default ramps min(360, 720) = 360 °/s²:
 # t_acc = 0.1 s, d_acc = 1.8°. One zero pulse per revolution, at 300° (= -60°), latched.
-SPINDLE = ("kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\n"
-           "kenngr.ref_richt 1\ngetriebe[0].vb_reflow 36000\ngetriebe[0].a_ref 5000\n"
-           "getriebe[0].lslope_profil.a_grenz_stufe_1 360\ngetriebe[0].lslope_profil.a_grenz_stufe_2 720\n")
-SPINDLE_SCENE = {"cam": (-100.0, -80.0), "zero_pulse_period": 360.0, "zero_pulse_phase": 300.0, "hardware_latch": True}
+SPINDLE = (
+    "kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\n"
+    "kenngr.ref_richt 1\ngetriebe[0].vb_reflow 36000\ngetriebe[0].a_ref 5000\n"
+    "getriebe[0].lslope_profil.a_grenz_stufe_1 360\ngetriebe[0].lslope_profil.a_grenz_stufe_2 720\n"
+)
+SPINDLE_SCENE = {
+    "cam": (-100.0, -80.0),
+    "zero_pulse_period": 360.0,
+    "zero_pulse_phase": 300.0,
+    "hardware_latch": True,
+}
 
 
 def spindle(extra: str = "", **scene):
-    return dry_run((SPINDLE + extra + "Ende\n").encode(), "s.lis", ScenarioInput(**{**SPINDLE_SCENE, **scene})).trace
+    return dry_run(
+        (SPINDLE + extra + "Ende\n").encode(), "s.lis", ScenarioInput(**{**SPINDLE_SCENE, **scene})
+    ).trace
 
 
 def test_spindle_with_the_cam_behind_it_turns_round_to_it():
@@ -91,11 +100,15 @@ def test_flying_homing_with_a_shifted_activation_takes_the_pulse_after_the_shift
     assert approx(trace.phases[-1].end_position, 660.0)
     assert approx(trace.reference["position"], 300.0)
     # zero_pulse_search_max_dist counts from the activation point: 660 - 310.008 = 349.992° of search.
-    bounded = spindle("kenngr.shift_offset_zero_pulse_activation 300000\nlr_hw[0].zero_pulse_search_max_dist 3500000\n",
-                      start_position=0.0)
+    bounded = spindle(
+        "kenngr.shift_offset_zero_pulse_activation 300000\nlr_hw[0].zero_pulse_search_max_dist 3500000\n",
+        start_position=0.0,
+    )
     assert bounded.outcome == "homed"  # 349.992 <= 350
-    short = spindle("kenngr.shift_offset_zero_pulse_activation 300000\nlr_hw[0].zero_pulse_search_max_dist 3400000\n",
-                    start_position=0.0)
+    short = spindle(
+        "kenngr.shift_offset_zero_pulse_activation 300000\nlr_hw[0].zero_pulse_search_max_dist 3400000\n",
+        start_position=0.0,
+    )
     assert short.outcome == "failed" and "zero_pulse_search_max_dist" in short.failure
 
 
@@ -106,13 +119,20 @@ def test_spindle_against_its_preferred_direction_is_refused_like_lint():
 
 
 # A modulo rotary axis (achs_typ 2, MODULO 0x4): 100 °/s to the cam, 10 °/s to the reference, a_ref 500 °/s².
-ROTARY = ("kenngr.antr_typ 1\nkenngr.achs_typ 2\nkenngr.achs_mode 0x4\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
-          "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n")
+ROTARY = (
+    "kenngr.antr_typ 1\nkenngr.achs_typ 2\nkenngr.achs_mode 0x4\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
+    "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
+)
 
 
 def rotary(extra: str = "", **scene):
-    base = {"start_position": 0.0, "cam": (-345.0, -325.0), "zero_pulse_period": 5.0, "zero_pulse_phase": -327.5,
-                "hardware_latch": True}
+    base = {
+        "start_position": 0.0,
+        "cam": (-345.0, -325.0),
+        "zero_pulse_period": 5.0,
+        "zero_pulse_phase": -327.5,
+        "hardware_latch": True,
+    }
     return dry_run((ROTARY + extra + "Ende\n").encode(), "r.lis", ScenarioInput(**{**base, **scene})).trace
 
 
@@ -144,10 +164,19 @@ def test_rotary_modulo_axis_reaches_a_cam_behind_it_without_limit_switches():
 
 # --- the CNC's corrections are what the simulation uses, and they show ---------------------------
 
-AXIS = ("kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
-        "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n")
-SCENE = {"start_position": 0.0, "cam": (-120.0, -100.0), "zero_pulse_period": 5.0, "zero_pulse_phase": -102.5,
-             "hardware_latch": True, "cycle_time_ms": 1.0, "limit_switches": (-1010.0, 1010.0)}
+AXIS = (
+    "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
+    "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
+)
+SCENE = {
+    "start_position": 0.0,
+    "cam": (-120.0, -100.0),
+    "zero_pulse_period": 5.0,
+    "zero_pulse_phase": -102.5,
+    "hardware_latch": True,
+    "cycle_time_ms": 1.0,
+    "limit_switches": (-1010.0, 1010.0),
+}
 
 
 def linear(extra: str = "", **scene):
@@ -183,7 +212,9 @@ def test_speed_cap_is_simulated_and_reported():
     # reached at 0.1 + 97.5/50 = 2.05 s.
     assert approx(trace.phases[0].velocity, 50.0)
     assert approx(trace.events[0].time, 2.05)
-    assert {"P-ERR-110421", "P-ERR-110422"} - codes(trace) == {"P-ERR-110422"}  # vb_reflow 10 is below the cap
+    assert {"P-ERR-110421", "P-ERR-110422"} - codes(trace) == {
+        "P-ERR-110422"
+    }  # vb_reflow 10 is below the cap
 
 
 def test_homing_type_fallback_is_simulated_and_reported():
@@ -201,6 +232,7 @@ def test_no_reference_signal_fails_with_the_reason():
 
 # --- distances as the manual defines them ----------------------------------------------------------
 
+
 def test_zero_pulse_search_counts_from_the_activation_point():
     # Cam edge at -100, shift 3 mm: armed at -103; the pulses are at -102.5 - 5k, so the next one is -107.5,
     # 4.5 mm after the activation (7.5 mm after the cam edge).
@@ -213,35 +245,53 @@ def test_zero_pulse_search_counts_from_the_activation_point():
 
 # --- accelerations per strategy --------------------------------------------------------------------
 
+
 def test_acceleration_source_per_strategy():
     assert "a_ref" in linear().acceleration_source and linear().acceleration == 500
-    torq = dry_run(b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\ngetriebe[0].a_ref 900\n"
-                   b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
-                   b"kenngr.homing.torq_max_distance 2000000\nEnde\n", "t.lis",
-                   ScenarioInput(start_position=0.0, fixed_stop=-20.0)).trace
+    torq = dry_run(
+        b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\ngetriebe[0].a_ref 900\n"
+        b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+        b"kenngr.homing.torq_max_distance 2000000\nEnde\n",
+        "t.lis",
+        ScenarioInput(start_position=0.0, fixed_stop=-20.0),
+    ).trace
     assert torq.acceleration == 50 and "torq_move_acceleration" in torq.acceleration_source
     drive = b"kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n"
     without = dry_run(drive, "d.lis").trace
     assert without.acceleration is None and "drive" in without.acceleration_source
-    document = trace_json(dry_run(drive, "d.lis", ScenarioInput(drive={"method": "immediate", "acceleration": 250.0})))
+    document = trace_json(
+        dry_run(drive, "d.lis", ScenarioInput(drive={"method": "immediate", "acceleration": 250.0}))
+    )
     assert document["axis"]["acceleration"] == 250.0 and "drive" in document["axis"]["acceleration_source"]
 
 
 # --- scenarios refused -----------------------------------------------------------------------------
 
-@pytest.mark.parametrize("data,needle", [
-    ({"start_position": math.inf}, "finite"),
-    ({"cam": [math.nan, -250.0]}, "finite"),
-    ({"limit_switches": [-math.inf, math.inf]}, "finite"),
-    ({"fixed_stop": math.nan}, "finite"),
-    ({"cycle_time_ms": math.inf}, "finite"),
-    ({"cycle_time_ms": 200.0}, "cycle_time_ms"),
-    ({"start_position": 1e308}, "start_position"),
-    ({"zero_pulse_period": 1e-300}, "zero_pulse_period"),
-    ({"zero_pulse_period": 2.0, "cam_jitter": 2.0}, "cam_jitter"),
-    ({"drive": {"method": "standard", "first_search": {"signed_max_distance": 5.0, "bogus": 1},
-                "second_search": {"signed_max_distance": 1.0}}}, "signed_max_distance"),
-])
+
+@pytest.mark.parametrize(
+    "data,needle",
+    [
+        ({"start_position": math.inf}, "finite"),
+        ({"cam": [math.nan, -250.0]}, "finite"),
+        ({"limit_switches": [-math.inf, math.inf]}, "finite"),
+        ({"fixed_stop": math.nan}, "finite"),
+        ({"cycle_time_ms": math.inf}, "finite"),
+        ({"cycle_time_ms": 200.0}, "cycle_time_ms"),
+        ({"start_position": 1e308}, "start_position"),
+        ({"zero_pulse_period": 1e-300}, "zero_pulse_period"),
+        ({"zero_pulse_period": 2.0, "cam_jitter": 2.0}, "cam_jitter"),
+        (
+            {
+                "drive": {
+                    "method": "standard",
+                    "first_search": {"signed_max_distance": 5.0, "bogus": 1},
+                    "second_search": {"signed_max_distance": 1.0},
+                }
+            },
+            "signed_max_distance",
+        ),
+    ],
+)
 def test_unusable_scenarios_are_refused(data, needle):
     with pytest.raises(ScenarioError) as caught:
         parse_input(data, "s.toml")
@@ -250,8 +300,15 @@ def test_unusable_scenarios_are_refused(data, needle):
 
 def test_nested_unknown_key_lists_its_own_level():
     with pytest.raises(ScenarioError) as caught:
-        parse_input({"drive": {"method": "standard", "first_search": {"signed_max_distance": 5.0, "bogus": 1},
-                               "second_search": {"signed_max_distance": 1.0}}})
+        parse_input(
+            {
+                "drive": {
+                    "method": "standard",
+                    "first_search": {"signed_max_distance": 5.0, "bogus": 1},
+                    "second_search": {"signed_max_distance": 1.0},
+                }
+            }
+        )
     message = str(caught.value)
     assert "unknown key `drive.first_search.bogus`" in message
     assert "trigger" in message and "start_position" not in message
@@ -270,7 +327,7 @@ def test_drive_table_on_a_cnc_controlled_axis_is_an_error():
 
 
 def test_torq_on_a_lightbus_drive_is_refused_with_the_lint_text():
-    with pytest.raises(DryRunRefused, match="LIS306.*P-ERR-110371"):
+    with pytest.raises(DryRunRefused, match=r"LIS306.*P-ERR-110371"):
         dry_run(b"kenngr.antr_typ 5\nkenngr.homing.homing_type TORQ\nEnde\n", "t.lis")
 
 
@@ -291,18 +348,22 @@ def test_cli_refusals_are_one_line_exit_2(tmp_path):
     torq = write(tmp_path, "torq.lis", "kenngr.antr_typ 5\nkenngr.homing.homing_type TORQ\nEnde\n")
     code, out, err = run_main("dry-run", str(torq))
     assert code == 2 and "LIS306" in err and err.count("\n") == 1 and not out
-    scene = write(tmp_path, "s.toml", "start_position = inf\n[drive]\nmethod = \"immediate\"\n")
+    scene = write(tmp_path, "s.toml", 'start_position = inf\n[drive]\nmethod = "immediate"\n')
     code, _, err = run_main("dry-run", str(X_AXIS), "--scenario", str(scene))
     assert code == 2 and "start_position" in err and "internal error" not in err and err.count("\n") == 1
-    drive = write(tmp_path, "d.toml", "[drive]\nmethod = \"immediate\"\n")
+    drive = write(tmp_path, "d.toml", '[drive]\nmethod = "immediate"\n')
     code, _, err = run_main("dry-run", str(X_AXIS), "--scenario", str(drive))
     assert code == 2 and "[drive] table" in err
 
 
 def test_config_scenario_table_and_cycle_time_are_used(tmp_path):
     listing = write(tmp_path, "achsmds1.lis", X_AXIS.read_bytes().decode("latin-1"))
-    write(tmp_path, "achslint.toml", "cycle-time-us = 2000\n[scenario]\nstart_position = 50.0\n"
-                                     "cam = [-300.0, -250.0]\nzero_pulse_period = 4.0\nzero_pulse_phase = -251.0\n")
+    write(
+        tmp_path,
+        "achslint.toml",
+        "cycle-time-us = 2000\n[scenario]\nstart_position = 50.0\n"
+        "cam = [-300.0, -250.0]\nzero_pulse_period = 4.0\nzero_pulse_phase = -251.0\n",
+    )
     code, out, _ = run_main("dry-run", str(listing), "--format", "json")
     document = json.loads(out)
     assert code == 0 and document["scenario"]["cycle_time_ms"] == 2.0
@@ -320,6 +381,7 @@ def test_config_scenario_table_and_cycle_time_are_used(tmp_path):
 
 # --- sweeps ----------------------------------------------------------------------------------------
 
+
 def test_sweep_counts_outcomes_with_reasons_and_notes_assumed_geometry():
     simulator = prepare((AXIS + "Ende\n").encode(), "axis.lis", ScenarioInput(**SCENE))
     summary = sweep(simulator, 200, seed=5)
@@ -335,8 +397,22 @@ def test_sweep_counts_outcomes_with_reasons_and_notes_assumed_geometry():
 
 
 def test_sweep_failures_exit_1_unless_allowed():
-    args = ("dry-run", str(X_AXIS), "--sweep", "100", "--cam", "-120,-100", "--limit-switches", "-200,200",
-            "--zero-pulse-period", "5", "--zero-pulse-phase", "-102.5", "--format", "json")
+    args = (
+        "dry-run",
+        str(X_AXIS),
+        "--sweep",
+        "100",
+        "--cam",
+        "-120,-100",
+        "--limit-switches",
+        "-200,200",
+        "--zero-pulse-period",
+        "5",
+        "--zero-pulse-phase",
+        "-102.5",
+        "--format",
+        "json",
+    )
     code, out, _ = run_main(*args)
     document = json.loads(out, parse_constant=_refuse)
     assert document["outcome"] == "homed" and document["sweep"]["outcomes"]["failed"] > 0 and code == 1
@@ -352,6 +428,7 @@ def test_spindle_sweep_covers_one_revolution_and_always_homes():
 
 # --- text output -----------------------------------------------------------------------------------
 
+
 def _text(run, width=80) -> str:
     from rich.console import Console
 
@@ -360,18 +437,29 @@ def _text(run, width=80) -> str:
     return console.export_text()
 
 
-@pytest.mark.parametrize("body", [
-    (AXIS + "getriebe[0].vb_not_referenced 50000\nEnde\n").encode(),
-    X_AXIS.read_bytes(),
-    (SPINDLE + "Ende\n").encode(),
-    b"kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n",
-])
+@pytest.mark.parametrize(
+    "body",
+    [
+        (AXIS + "getriebe[0].vb_not_referenced 50000\nEnde\n").encode(),
+        X_AXIS.read_bytes(),
+        (SPINDLE + "Ende\n").encode(),
+        b"kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n",
+    ],
+)
 def test_text_fits_80_columns_without_truncating_or_none(body):
-    run = dry_run(body, "axis.lis", ScenarioInput(start_position=-37.123456, limit_switches=(-1234.5678, 1234.5678))
-                  if b"achs_typ 4" not in body else ScenarioInput(start_position=-37.123456))
+    run = dry_run(
+        body,
+        "axis.lis",
+        ScenarioInput(start_position=-37.123456, limit_switches=(-1234.5678, 1234.5678))
+        if b"achs_typ 4" not in body
+        else ScenarioInput(start_position=-37.123456),
+    )
     text = _text(run)
-    table_lines = [line for line in text.splitlines() if not line.startswith(("Scenario", "Assumed", "Homing acc",
-                                                                              "CNC correction", "note", "LIS"))]
+    table_lines = [
+        line
+        for line in text.splitlines()
+        if not line.startswith(("Scenario", "Assumed", "Homing acc", "CNC correction", "note", "LIS"))
+    ]
     assert all(len(line) <= 80 for line in table_lines), max(table_lines, key=len)
     assert "…" not in text and "None" not in text
     for phase in run.trace.phases:
@@ -379,6 +467,7 @@ def test_text_fits_80_columns_without_truncating_or_none(body):
 
 
 # --- arbitrary numbers in every scenario field -----------------------------------------------------
+
 
 def _refuse(constant):
     raise ValueError(f"non-standard JSON constant {constant}")
@@ -389,14 +478,21 @@ NUMBERS = st.one_of(
     st.sampled_from([0.0, -0.0, 1e-300, 5e-324, 1e308, -1e308, 1e6, 1e9 + 1, 0.04, 100.0, 1.0, -250.0]),
     st.floats(-1000, 1000),
 )
-FIELDS = ["start_position", "zero_pulse_period", "zero_pulse_phase", "cycle_time_ms", "fixed_stop", "cam_jitter"]
+FIELDS = [
+    "start_position",
+    "zero_pulse_period",
+    "zero_pulse_phase",
+    "cycle_time_ms",
+    "fixed_stop",
+    "cam_jitter",
+]
 PAIRS = ["cam", "limit_switches"]
 DRIVE_NUMBERS = ["velocity", "acceleration", "reference_position", "home_position", "relocate_distance"]
 LISTS = {
     "linear": X_AXIS.read_bytes(),
     "spindle": (SPINDLE + "Ende\n").encode(),
     "torq": b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\ngetriebe[0].homing.torq_move_velocity 5000\n"
-            b"getriebe[0].homing.torq_move_acceleration 50\nkenngr.homing.torq_max_distance 2000000\nEnde\n",
+    b"getriebe[0].homing.torq_move_acceleration 50\nkenngr.homing.torq_max_distance 2000000\nEnde\n",
     "drive": b"kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n",
 }
 
@@ -417,15 +513,32 @@ def test_any_numbers_give_exit_0_1_2_and_strict_json(axis, scalars, pairs, drive
     lines = [f"{key} = {_toml(value)}" for key, value in scalars.items()]
     lines += [f"{key} = [{_toml(a)}, {_toml(b)}]" for key, (a, b) in pairs.items()]
     if drive is not None:
-        lines += ["[drive]", 'method = "standard"', *(f"{key} = {_toml(v)}" for key, v in drive.items()),
-                  "[drive.first_search]", 'trigger = "cam"', "signed_max_distance = 80.0",
-                  "[drive.second_search]", 'trigger = "zero_pulse"', "signed_max_distance = -10.0"]
+        lines += [
+            "[drive]",
+            'method = "standard"',
+            *(f"{key} = {_toml(v)}" for key, v in drive.items()),
+            "[drive.first_search]",
+            'trigger = "cam"',
+            "signed_max_distance = 80.0",
+            "[drive.second_search]",
+            'trigger = "zero_pulse"',
+            "signed_max_distance = -10.0",
+        ]
     with tempfile.TemporaryDirectory() as folder:
         listing = Path(folder) / "achsmds1.lis"
         listing.write_bytes(LISTS[axis])
         scene = write(Path(folder), "s.toml", "\n".join(lines) + "\n")
-        code, out, err = run_main("dry-run", str(listing), "--scenario", str(scene), "--format", "json",
-                                  "--sweep", str(sweep_runs), "--allow-failures")
+        code, out, err = run_main(
+            "dry-run",
+            str(listing),
+            "--scenario",
+            str(scene),
+            "--format",
+            "json",
+            "--sweep",
+            str(sweep_runs),
+            "--allow-failures",
+        )
     assert code in (0, 1, 2), err
     assert "internal error" not in err and "Traceback" not in err
     if code == 2:
@@ -437,13 +550,16 @@ def test_any_numbers_give_exit_0_1_2_and_strict_json(axis, scalars, pairs, drive
 
 # --- the plot ----------------------------------------------------------------------------------------
 
+
 def test_plot_png_has_size_and_is_not_blank(tmp_path):
     matplotlib = pytest.importorskip("matplotlib")
     matplotlib.use("Agg")
     import matplotlib.image
 
     target = tmp_path / "homing.png"
-    code, _, err = run_main("dry-run", str(X_AXIS), "--start", "50", "--cam", "-300,-250", "--plot", str(target))
+    code, _, err = run_main(
+        "dry-run", str(X_AXIS), "--start", "50", "--cam", "-300,-250", "--plot", str(target)
+    )
     assert code == 0 and f"wrote {target}" in err
     pixels = matplotlib.image.imread(str(target))
     assert pixels.shape[0] == 750 and pixels.shape[1] == 1200  # 12 × 7.5 in at 100 dpi
@@ -458,8 +574,10 @@ def test_plot_series_reference_limits_and_failure():
     pytest.importorskip("matplotlib")
     from achslint.plot import build_figure
 
-    trace = linear("getriebe[0].pos_refpkt -9500000\nkenngr.swe_neg -10000000\nkenngr.swe_pos 10000000\n",
-                   zero_pulse_phase=-102.3)
+    trace = linear(
+        "getriebe[0].pos_refpkt -9500000\nkenngr.swe_neg -10000000\nkenngr.swe_pos 10000000\n",
+        zero_pulse_phase=-102.3,
+    )
     figure = build_figure(trace)
     top = figure.axes[0]
     by_gid = {line.get_gid(): line for line in top.get_lines() if line.get_gid()}
@@ -467,8 +585,13 @@ def test_plot_series_reference_limits_and_failure():
     assert approx(by_gid["reference"].get_ydata()[0], -102.3)
     assert approx(by_gid["final"].get_ydata()[0], trace.phases[-1].end_position)
     # Limit switches ±1010 as lines; the software limits ±1000 (homed frame) lie at value - (−950 − (−102.3)).
-    assert sorted(line.get_ydata()[0] for line in top.get_lines() if line.get_gid() == "limit switch") == [-1010, 1010]
-    soft = sorted(line.get_ydata()[0] for line in top.get_lines() if line.get_gid() == "software limit (after homing)")
+    assert sorted(line.get_ydata()[0] for line in top.get_lines() if line.get_gid() == "limit switch") == [
+        -1010,
+        1010,
+    ]
+    soft = sorted(
+        line.get_ydata()[0] for line in top.get_lines() if line.get_gid() == "software limit (after homing)"
+    )
     assert approx(soft[0], -1000 + 950 - 102.3, 1e-6) and approx(soft[1], 1000 + 950 - 102.3, 1e-6)
     labels = [text.get_text() for text in top.get_legend().get_texts()]
     assert any("−102.3 mm → −950 mm" in label for label in labels)

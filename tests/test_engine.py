@@ -16,8 +16,15 @@ AXIS = (
     "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
     "getriebe[0].pos_refpkt -9500000\n"
 )
-SCENE = dict(start_position=0.0, cam=(-120.0, -100.0), zero_pulse_period=5.0, zero_pulse_phase=-102.5,
-             hardware_latch=True, cycle_time_ms=1.0, limit_switches=(-1010.0, 1010.0))
+SCENE = dict(
+    start_position=0.0,
+    cam=(-120.0, -100.0),
+    zero_pulse_period=5.0,
+    zero_pulse_phase=-102.5,
+    hardware_latch=True,
+    cycle_time_ms=1.0,
+    limit_switches=(-1010.0, 1010.0),
+)
 
 
 def run(extra: str = "", **scene):
@@ -109,14 +116,19 @@ def test_missed_cam_fails_cleanly_at_the_limit_switch():
 
 
 def test_zero_pulse_search_is_bounded():
-    trace = run("lr_hw[0].zero_pulse_search_max_dist 10000\n", zero_pulse_phase=-104.0, zero_pulse_period=50.0)
+    trace = run(
+        "lr_hw[0].zero_pulse_search_max_dist 10000\n", zero_pulse_phase=-104.0, zero_pulse_period=50.0
+    )
     # The pulse lies 4 mm behind the cam edge but only 1 mm of search is allowed.
     assert trace.outcome == "failed" and "maximum search distance" in trace.phases[-1].ended_by
 
 
 def test_simulated_drive():
-    trace = dry_run(b"kenngr.antr_typ 4\nkenngr.ref_richt 1\nantr.simu.rpf_weg_bis_nip 200\n"
-                    b"getriebe[0].vb_reflow 2000\ngetriebe[0].a_ref 100\nEnde\n", "sim.lis").trace
+    trace = dry_run(
+        b"kenngr.antr_typ 4\nkenngr.ref_richt 1\nantr.simu.rpf_weg_bis_nip 200\n"
+        b"getriebe[0].vb_reflow 2000\ngetriebe[0].a_ref 100\nEnde\n",
+        "sim.lis",
+    ).trace
     # 200 × 0.1 µm = 0.02 mm at 2 mm/s (t_acc 0.02 s, d_acc 0.02 mm): reached at exactly the end of the ramp.
     assert trace.strategy.id == "simulation"
     assert approx(trace.reference["position"], 0.02)
@@ -124,10 +136,12 @@ def test_simulated_drive():
 
 
 def test_fixed_stop_by_hand():
-    text = (b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
-            b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
-            b"kenngr.homing.torq_max_distance 2000000\nkenngr.homing.torq_detect_time 25000\n"
-            b"kenngr.homing.torq_retraction_distance 50000\nkenngr.homing.torq_homing_position 100000\nEnde\n")
+    text = (
+        b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+        b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+        b"kenngr.homing.torq_max_distance 2000000\nkenngr.homing.torq_detect_time 25000\n"
+        b"kenngr.homing.torq_retraction_distance 50000\nkenngr.homing.torq_homing_position 100000\nEnde\n"
+    )
     trace = dry_run(text, "torq.lis", ScenarioInput(start_position=0.0, fixed_stop=20.0)).trace
     # 5 mm/s at 50 mm/s²: t_acc 0.1 s, d_acc 0.25 mm; stop at 20 mm after 0.1 + 19.75/5 = 4.05 s;
     # detected 25 ms later; value 10 mm; retract 5 mm (5 mm/s, 0.1 s ramps): final 10 - 5 = 5 mm.
@@ -156,9 +170,13 @@ def test_lis405_zero_pulse_close_to_the_cam_edge():
 
 
 def test_sweep_reports_one_revolution_jumps():
-    simulator = prepare((AXIS + "Ende\n").encode(), "axis.lis",
-                        ScenarioInput(**{**SCENE, "zero_pulse_phase": -100.005, "cam_jitter": 0.02,
-                                         "limit_switches": (-1010.0, 1010.0)}))
+    simulator = prepare(
+        (AXIS + "Ende\n").encode(),
+        "axis.lis",
+        ScenarioInput(
+            **{**SCENE, "zero_pulse_phase": -100.005, "cam_jitter": 0.02, "limit_switches": (-1010.0, 1010.0)}
+        ),
+    )
     summary = sweep(simulator, 300, seed=3)
     assert summary["runs"] == 300
     assert summary["distinct_pulses"] == 2 and summary["one_revolution_jumps"] > 0
@@ -169,14 +187,35 @@ def test_sweep_reports_one_revolution_jumps():
 
 def test_json_has_the_stable_keys():
     document = trace_json(dry_run((AXIS + "Ende\n").encode(), "axis.lis", ScenarioInput(**SCENE)))
-    assert {"version", "axis", "strategy", "scenario", "phases", "events", "reference", "final_position",
-            "total_time", "total_distance", "outcome", "warnings"} <= set(document)
-    assert set(document["phases"][0]) == {"name", "direction", "velocity", "start_position", "end_position",
-                                           "start_time", "end_time", "ended_by"}
+    assert {
+        "version",
+        "axis",
+        "strategy",
+        "scenario",
+        "phases",
+        "events",
+        "reference",
+        "final_position",
+        "total_time",
+        "total_distance",
+        "outcome",
+        "warnings",
+    } <= set(document)
+    assert set(document["phases"][0]) == {
+        "name",
+        "direction",
+        "velocity",
+        "start_position",
+        "end_position",
+        "start_time",
+        "end_time",
+        "ended_by",
+    }
     assert document["outcome"] == "homed"
 
 
 # --- properties of every trace ---------------------------------------------------------------
+
 
 @settings(max_examples=150, deadline=None)
 @given(
@@ -191,20 +230,28 @@ def test_json_has_the_stable_keys():
     phase=st.floats(-50, 50),
 )
 def test_trace_properties(start, ref_richt, without_pulse, one_phase, fast, slow, accel, latch, phase):
-    axis = (f"kenngr.antr_typ 1\nkenngr.ref_richt {ref_richt}\nkenngr.homing_without_zero_pulse {without_pulse}\n"
-            f"kenngr.ref_ohne_rev {one_phase}\ngetriebe[0].vb_refmax {fast}\ngetriebe[0].vb_reflow {slow}\n"
-            f"getriebe[0].a_ref {accel}\nEnde\n").encode()
-    scenario = ScenarioInput(start_position=start, cam=(-20.0, 20.0), zero_pulse_period=3.0, zero_pulse_phase=phase,
-                             hardware_latch=latch, limit_switches=(-500.0, 500.0))
+    axis = (
+        f"kenngr.antr_typ 1\nkenngr.ref_richt {ref_richt}\nkenngr.homing_without_zero_pulse {without_pulse}\n"
+        f"kenngr.ref_ohne_rev {one_phase}\ngetriebe[0].vb_refmax {fast}\ngetriebe[0].vb_reflow {slow}\n"
+        f"getriebe[0].a_ref {accel}\nEnde\n"
+    ).encode()
+    scenario = ScenarioInput(
+        start_position=start,
+        cam=(-20.0, 20.0),
+        zero_pulse_period=3.0,
+        zero_pulse_phase=phase,
+        hardware_latch=latch,
+        limit_switches=(-500.0, 500.0),
+    )
     run = dry_run(axis, "p.lis", scenario)
     trace = run.trace
     # Phases are contiguous in time and position.
-    for before, after in zip(trace.phases, trace.phases[1:]):
+    for before, after in zip(trace.phases, trace.phases[1:], strict=False):
         assert math.isclose(before.end_time, after.start_time, abs_tol=1e-9)
         assert math.isclose(before.end_position, after.start_position, abs_tol=1e-9)
     # Segments are contiguous and each phase ends at rest.
     for phase_record in trace.phases:
-        for first, second in zip(phase_record.segments, phase_record.segments[1:]):
+        for first, second in zip(phase_record.segments, phase_record.segments[1:], strict=False):
             assert math.isclose(first.position(first.t1), second.x0, abs_tol=1e-6)
         last = phase_record.segments[-1]
         assert math.isclose(last.velocity(last.t1), 0.0, abs_tol=1e-9)
@@ -220,7 +267,9 @@ def test_trace_properties(start, ref_richt, without_pulse, one_phase, fast, slow
         speed = trace.reference["speed"]
         assert speed <= reference_speed * 1e-3 + 1e-12
         braking = speed * speed / (2 * accel)
-        assert math.isclose(abs(trace.final_position - trace.reference["value"]), braking, rel_tol=1e-6, abs_tol=1e-9)
+        assert math.isclose(
+            abs(trace.final_position - trace.reference["value"]), braking, rel_tol=1e-6, abs_tol=1e-9
+        )
     else:
         assert trace.failure
 
@@ -231,14 +280,24 @@ SERCOS_DRIVE = b"kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\n
 
 
 def drive_run(start: float, drive: dict, cam=(40.0, 50.0)):
-    scenario = ScenarioInput(start_position=start, cam=cam, zero_pulse_period=5.0, zero_pulse_phase=1.0,
-                             limit_switches=(-100.0, 100.0), drive=drive)
+    scenario = ScenarioInput(
+        start_position=start,
+        cam=cam,
+        zero_pulse_period=5.0,
+        zero_pulse_phase=1.0,
+        limit_switches=(-100.0, 100.0),
+        drive=drive,
+    )
     return dry_run(SERCOS_DRIVE, "drive.lis", scenario).trace
 
 
 STANDARD = {
-    "method": "standard", "velocity": 20.0, "acceleration": 200.0, "reference_position": 0.0,
-    "home_position": 10.0, "relocate_distance": -2.0,
+    "method": "standard",
+    "velocity": 20.0,
+    "acceleration": 200.0,
+    "reference_position": 0.0,
+    "home_position": 10.0,
+    "relocate_distance": -2.0,
     "first_search": {"trigger": "cam", "signed_max_distance": 80.0},
     "second_search": {"trigger": "zero_pulse", "signed_max_distance": -10.0},
 }
@@ -250,7 +309,12 @@ def test_drive_standard_method_by_hand():
     # stops at 41. Relocate -2 mm -> 39 (triangular, 0.2 s). Second search - (sign of SignedMaxDistance,
     # pulses are no "active" state) to the pulse at 36: t = 0.1 + 2/20 = 0.2 s -> 2.55 s; stops at 35.
     # The reference 0 is set at 36, so the axis stands at -1 and moves to the home position 10 (11 mm).
-    assert [p.name for p in trace.phases] == ["first search", "relocate", "second search", "move to home position"]
+    assert [p.name for p in trace.phases] == [
+        "first search",
+        "relocate",
+        "second search",
+        "move to home position",
+    ]
     assert [p.direction for p in trace.phases] == ["positive", "negative", "negative", "positive"]
     assert approx(trace.events[0].time, 2.05) and approx(trace.events[0].position, 40.0)
     assert approx(trace.reference["position"], 36.0) and approx(trace.reference["value"], 0.0)
@@ -278,17 +342,26 @@ def test_drive_immediate_at_position_and_absolute_encoder():
     assert not drive_run(3.0, {"method": "immediate"}).phases
 
 
-@pytest.mark.parametrize("mode,extra,expected", [
-    ("plc-cam", {}, 50.0),                                  # the falling edge itself (sampled)
-    ("hardware-sync", {}, 51.0),                            # next zero pulse after the edge (pulses at 1 + 5k)
-    ("software-sync", {"reference_mask_period": 4.0}, 53.0),  # next mask overflow (1 + 4k) after 50
-    ("hardware-latch-pos", {"latch_position": 52.5}, 52.5),
-])
+@pytest.mark.parametrize(
+    "mode,extra,expected",
+    [
+        ("plc-cam", {}, 50.0),  # the falling edge itself (sampled)
+        ("hardware-sync", {}, 51.0),  # next zero pulse after the edge (pulses at 1 + 5k)
+        ("software-sync", {"reference_mask_period": 4.0}, 53.0),  # next mask overflow (1 + 4k) after 50
+        ("hardware-latch-pos", {"latch_position": 52.5}, 52.5),
+    ],
+)
 def test_nc_reference_modes(mode, extra, expected):
     # Cam [40, 50]; the NC searches the cam negative by default, so starting at 80 it reaches 50 first,
     # stops on the cam, then moves positive off the falling edge at 50 and on to the mode's event.
-    drive = {"method": "nc", "velocity": 20.0, "acceleration": 200.0, "reference_mode": mode,
-             "reference_position": 0.0, **extra}
+    drive = {
+        "method": "nc",
+        "velocity": 20.0,
+        "acceleration": 200.0,
+        "reference_mode": mode,
+        "reference_position": 0.0,
+        **extra,
+    }
     trace = drive_run(80.0, drive)
     assert trace.outcome == "homed", trace.failure
     assert [p.direction for p in trace.phases] == ["negative", "positive"]
@@ -302,18 +375,27 @@ def test_encoder_overflow_by_hand():
     # scenario's pulse position -102.5. Armed at the cam edge -100, moving negative: the next overflow is at
     # -102.5 + floor(2.5 / 0.1024) × 0.1024 = -102.5 + 24 × 0.1024 = -100.0424 (computed, not sampled).
     # Lightbus: encoder-overflow homing is not available on the conventional drive of the base list (P-ERR-110416).
-    trace = run("kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\n",
-                hardware_latch=False)
+    trace = run(
+        "kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\n",
+        hardware_latch=False,
+    )
     assert trace.reference["kind"] == "encoder overflow"
     assert approx(trace.reference["position"], -100.0424)
 
 
 def test_spindle_flying_homing_in_degrees():
-    spindle = (b"kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.achs_mode 0x4\nkenngr.ref_ohne_rev 1\n"
-               b"kenngr.ref_ohne_nocken 1\nkenngr.ref_richt 1\ngetriebe[0].vb_reflow 36000\n"
-               b"getriebe[0].lslope_profil.a_grenz_stufe_1 360\ngetriebe[0].lslope_profil.a_grenz_stufe_2 720\nEnde\n")
-    trace = dry_run(spindle, "s.lis", ScenarioInput(start_position=0.0, zero_pulse_period=360.0,
-                                                     zero_pulse_phase=90.0, hardware_latch=True)).trace
+    spindle = (
+        b"kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.achs_mode 0x4\nkenngr.ref_ohne_rev 1\n"
+        b"kenngr.ref_ohne_nocken 1\nkenngr.ref_richt 1\ngetriebe[0].vb_reflow 36000\n"
+        b"getriebe[0].lslope_profil.a_grenz_stufe_1 360\ngetriebe[0].lslope_profil.a_grenz_stufe_2 720\nEnde\n"
+    )
+    trace = dry_run(
+        spindle,
+        "s.lis",
+        ScenarioInput(
+            start_position=0.0, zero_pulse_period=360.0, zero_pulse_phase=90.0, hardware_latch=True
+        ),
+    ).trace
     # A spindle accelerates with its default ramps, min(a_grenz_stufe_1, a_grenz_stufe_2), not a_ref (§2.3.2.1).
     # 36 °/s at 360 °/s²: ramp 0.1 s over 1.8°; the pulse at 90° is reached at 0.1 + 88.2/36 = 2.55 s.
     # Flying homing does not stop (§2.3.2.1): the trace ends there, turning at 36 °/s, with the value pos_refpkt 0.

@@ -41,7 +41,9 @@ def test_parallel_run_in_a_real_process_equals_serial():
     assert json.loads(serial.stdout) == json.loads(parallel.stdout)
 
 
-@pytest.mark.skipif(shutil.which("achslint") is None, reason="the console script is not on PATH (package not installed)")
+@pytest.mark.skipif(
+    shutil.which("achslint") is None, reason="the console script is not on PATH (package not installed)"
+)
 def test_console_script_is_the_same_program():
     script = shutil.which("achslint")
     assert script is not None

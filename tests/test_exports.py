@@ -31,8 +31,11 @@ def export(folder: Path) -> Path:
 
 
 def codes(result) -> list[tuple[str, str]]:
-    return sorted((Path(d["path"]).name, d["code"]) for d in json.loads(result.stdout)["diagnostics"]
-                  if d["code"].startswith("LIS5"))
+    return sorted(
+        (Path(d["path"]).name, d["code"])
+        for d in json.loads(result.stdout)["diagnostics"]
+        if d["code"].startswith("LIS5")
+    )
 
 
 def test_export_folder_is_found_by_content_and_is_one_machine(cli, tmp_path):
@@ -48,8 +51,14 @@ def test_export_folder_is_found_by_content_and_is_one_machine(cli, tmp_path):
 
 def test_non_axis_xml_named_with_axis_xml_is_skipped_not_an_abort(cli, tmp_path):
     folder = export(tmp_path / "Export")
-    result = cli("lint", str(folder / "Axis_X.xti"), str(folder / "Channel_1.xti"), str(folder / "ZeroOffsets.xml"),
-                 "--format", "json")
+    result = cli(
+        "lint",
+        str(folder / "Axis_X.xti"),
+        str(folder / "Channel_1.xti"),
+        str(folder / "ZeroOffsets.xml"),
+        "--format",
+        "json",
+    )
     assert result.returncode == 0, result.stderr.decode()
     assert json.loads(result.stdout)["summary"]["files"] == 1
     assert result.stderr.decode().count("skipped") == 2

@@ -25,14 +25,22 @@ def test_safe_fix_removes_the_finding_and_is_stable(code):
 
 
 def test_fixes_change_only_what_they_claim():
-    data = b"kopf.achs_nr 1\nkenngr.ref_ricth 1 ( keep this comment\nkenngr.homing_type DRIVE_CONROLLED\nEnd\n"
-    outcome = fix_bytes(data, "x.lis")  # the typos change what the CNC does (tests/test_fix_safety.py): unsafe
-    assert outcome.data == (b"kopf.achs_nr 1\nkenngr.ref_ricth 1 ( keep this comment\n"
-                            b"kenngr.homing.homing_type DRIVE_CONROLLED\nEnde\n")
+    data = (
+        b"kopf.achs_nr 1\nkenngr.ref_ricth 1 ( keep this comment\nkenngr.homing_type DRIVE_CONROLLED\nEnd\n"
+    )
+    outcome = fix_bytes(
+        data, "x.lis"
+    )  # the typos change what the CNC does (tests/test_fix_safety.py): unsafe
+    assert outcome.data == (
+        b"kopf.achs_nr 1\nkenngr.ref_ricth 1 ( keep this comment\n"
+        b"kenngr.homing.homing_type DRIVE_CONROLLED\nEnde\n"
+    )
     assert outcome.fixed == 2  # old name, end marker
     outcome = fix_bytes(data, "x.lis", unsafe=True)
-    assert outcome.data == (b"kopf.achs_nr 1\nkenngr.ref_richt 1 ( keep this comment\n"
-                            b"kenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n")
+    assert outcome.data == (
+        b"kopf.achs_nr 1\nkenngr.ref_richt 1 ( keep this comment\n"
+        b"kenngr.homing.homing_type DRIVE_CONTROLLED\nEnde\n"
+    )
     assert outcome.fixed == 4  # typo, old name, symbol typo, end marker
 
 

@@ -28,7 +28,10 @@ def test_symbol_typo_into_a_homing_type_the_drive_cannot_run_is_unsafe():
 
 def test_symbol_typo_into_a_supported_value_stays_safe():
     data = b"kenngr.antr_typ 1\nkenngr.homing.homing_type CNC_CONROLLED\nEnde\n"
-    assert fix_bytes(data, "x.lis").data == b"kenngr.antr_typ 1\nkenngr.homing.homing_type CNC_CONTROLLED\nEnde\n"
+    assert (
+        fix_bytes(data, "x.lis").data
+        == b"kenngr.antr_typ 1\nkenngr.homing.homing_type CNC_CONTROLLED\nEnde\n"
+    )
 
 
 def test_a_name_fix_that_switches_on_an_ignored_parameter_is_unsafe():
@@ -54,7 +57,8 @@ def test_safe_fixes_over_every_fixture_keep_behaviour_and_add_no_finding(path):
     after = check_bytes(outcome.data, path.name)
     assert after.error is None
     new = Counter((d.code, d.parameter) for d in after.diagnostics) - Counter(
-        (d.code, d.parameter) for d in before.diagnostics)
+        (d.code, d.parameter) for d in before.diagnostics
+    )
     assert not new, new
     fixed_parameters = {d.parameter for d in before.diagnostics if d.fix is not None}
     was, now = behaviour(data, path.name), behaviour(outcome.data, path.name)

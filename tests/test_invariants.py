@@ -25,8 +25,10 @@ NO_EFFECT = {"LIS105", "LIS401"}
 CHOICES = [
     ("kenngr.antr_typ", ["1", "2", "4", "5", "6", "8"]),
     ("kenngr.achs_typ", ["1", "2", "4"]),
-    ("kenngr.homing.homing_type", ["CNC_CONTROLLED", "DRIVE_CONTROLLED", "TORQ", "NONE", "DISABLED",
-                                   "IGNORE_ABS_POS", "DRIVE_DEFAULT"]),
+    (
+        "kenngr.homing.homing_type",
+        ["CNC_CONTROLLED", "DRIVE_CONTROLLED", "TORQ", "NONE", "DISABLED", "IGNORE_ABS_POS", "DRIVE_DEFAULT"],
+    ),
     ("kenngr.abs_pos_gueltig", ["0", "1"]),
     ("kenngr.ref_ohne_nocken", ["0", "1"]),
     ("kenngr.ref_ohne_rev", ["0", "1"]),
@@ -66,7 +68,8 @@ CHOICES = [
 
 AXIS_LISTS = st.lists(
     st.sampled_from(range(len(CHOICES))).flatmap(
-        lambda i: st.sampled_from(CHOICES[i][1]).map(lambda value, i=i: f"{CHOICES[i][0]} {value}")),
+        lambda i: st.sampled_from(CHOICES[i][1]).map(lambda value, i=i: f"{CHOICES[i][0]} {value}")
+    ),
     max_size=25,
 ).map(lambda lines: ("\n".join(lines) + "\nEnde\n").encode())
 
@@ -124,16 +127,21 @@ def test_generated_lists_never_contradict_themselves(data):
 def test_generated_lists_reach_every_strategy():
     """The generator above is able to reach every registered strategy (one hand-picked list each)."""
     picks = {
-        "disabled": "kenngr.homing.homing_type DISABLED", "ignore_abs_pos": "kenngr.homing.homing_type IGNORE_ABS_POS",
-        "gantry_slave": "kenngr.gantry_ax_nr 1\nkenngr.gantry_slave_no_homing 1", "absolute": "kenngr.abs_pos_gueltig 1",
-        "drive_controlled": "kenngr.antr_typ 2", "fixed_stop": "kenngr.homing.homing_type TORQ",
-        "none": "kenngr.homing.homing_type NONE", "simulation": "kenngr.antr_typ 4",
+        "disabled": "kenngr.homing.homing_type DISABLED",
+        "ignore_abs_pos": "kenngr.homing.homing_type IGNORE_ABS_POS",
+        "gantry_slave": "kenngr.gantry_ax_nr 1\nkenngr.gantry_slave_no_homing 1",
+        "absolute": "kenngr.abs_pos_gueltig 1",
+        "drive_controlled": "kenngr.antr_typ 2",
+        "fixed_stop": "kenngr.homing.homing_type TORQ",
+        "none": "kenngr.homing.homing_type NONE",
+        "simulation": "kenngr.antr_typ 4",
         "spindle_flying_cam": "kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1",
         "spindle_flying_zero_pulse": "kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 1",
         "zero_pulse_only": "kenngr.antr_typ 1\nkenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1",
         "one_phase_cam_zero_pulse": "kenngr.antr_typ 1\nkenngr.ref_ohne_rev 1",
         "one_phase_cam": "kenngr.antr_typ 1\nkenngr.ref_ohne_rev 1\nkenngr.homing_without_zero_pulse 1",
-        "cam_zero_pulse": "kenngr.antr_typ 1", "cam_only": "kenngr.antr_typ 1\nkenngr.homing_without_zero_pulse 1",
+        "cam_zero_pulse": "kenngr.antr_typ 1",
+        "cam_only": "kenngr.antr_typ 1\nkenngr.homing_without_zero_pulse 1",
     }
     assert sorted(picks) == sorted(d.id for d in strategies()) and len(picks) == len(STRATEGY_MODULES)
     for strategy_id, body in picks.items():

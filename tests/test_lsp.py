@@ -26,12 +26,16 @@ pytestmark = pytest.mark.asyncio(loop_scope="module")
 WORK = Path(os.environ.get("ACHSLINT_LSP_TEST_DIR", "")) if os.environ.get("ACHSLINT_LSP_TEST_DIR") else None
 
 
-@pytest_lsp.fixture(scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "achslint", "server"]))
+@pytest_lsp.fixture(
+    scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "achslint", "server"])
+)
 async def client(lsp_client: LanguageClient):
-    await lsp_client.initialize_session(lsp.InitializeParams(
-        capabilities=client_capabilities("visual-studio-code"),
-        initialization_options={"debounceMs": 20, "inlayHints": True},
-    ))
+    await lsp_client.initialize_session(
+        lsp.InitializeParams(
+            capabilities=client_capabilities("visual-studio-code"),
+            initialization_options={"debounceMs": 20, "inlayHints": True},
+        )
+    )
     yield
     await lsp_client.shutdown_session()
 
@@ -42,6 +46,7 @@ def folder(tmp_path_factory) -> Path:
 
 
 # -- helpers ------------------------------------------------------------------------------------------
+
 
 def open_doc(client: LanguageClient, path: Path, text: str | None = None, language: str = "achsmds") -> str:
     uri = path.resolve().as_uri()
@@ -74,8 +79,12 @@ def codes(found) -> list[str]:
 
 def change(client: LanguageClient, uri: str, version: int, text: str) -> None:
     client.diagnostics.pop(uri, None)
-    client.text_document_did_change(lsp.DidChangeTextDocumentParams(
-        lsp.VersionedTextDocumentIdentifier(version=version, uri=uri), [lsp.TextDocumentContentChangeWholeDocument(text)]))
+    client.text_document_did_change(
+        lsp.DidChangeTextDocumentParams(
+            lsp.VersionedTextDocumentIdentifier(version=version, uri=uri),
+            [lsp.TextDocumentContentChangeWholeDocument(text)],
+        )
+    )
 
 
 def offset(text: str, position: lsp.Position) -> int:
@@ -91,8 +100,9 @@ def apply_edits(text: str, edits: list[lsp.TextEdit]) -> str:
 
 
 async def hover_at(client, uri, line, character) -> str:
-    found = await client.text_document_hover_async(lsp.HoverParams(lsp.TextDocumentIdentifier(uri),
-                                                                   lsp.Position(line, character)))
+    found = await client.text_document_hover_async(
+        lsp.HoverParams(lsp.TextDocumentIdentifier(uri), lsp.Position(line, character))
+    )
     return found.contents.value if found is not None else ""
 
 
@@ -104,6 +114,7 @@ def position_of(text: str, needle: str, shift: int = 0) -> lsp.Position:
 
 # -- diagnostics ------------------------------------------------------------------------------------------
 
+
 async def test_diagnostics_are_those_of_lint_with_rule_links(client: LanguageClient, folder: Path):
     path = folder / "lint" / "achsmds1.lis"
     path.parent.mkdir()
@@ -111,8 +122,9 @@ async def test_diagnostics_are_those_of_lint_with_rule_links(client: LanguageCli
     uri = open_doc(client, path)
     found = await diagnostics_when(client, uri)
     expected = lint(path)
-    assert [(d.range.start.line + 1, d.range.start.character + 1, d.code, d.message) for d in found] == \
-        [(d.line, d.column, d.code, d.message) for d in expected]
+    assert [(d.range.start.line + 1, d.range.start.character + 1, d.code, d.message) for d in found] == [
+        (d.line, d.column, d.code, d.message) for d in expected
+    ]
     duplicate = next(d for d in found if d.code == "LIS005")
     assert duplicate.severity == lsp.DiagnosticSeverity.Warning and duplicate.source == "achslint"
     assert duplicate.code_description.href.endswith("#lis005")
@@ -131,8 +143,9 @@ async def test_edit_and_quick_fix_make_the_diagnostic_disappear(client: Language
     uri = open_doc(client, path, text)
     found = await diagnostics_when(client, uri, lambda f: "LIS203" in codes(f))
     wrong = next(d for d in found if d.code == "LIS203")
-    actions = await client.text_document_code_action_async(lsp.CodeActionParams(
-        lsp.TextDocumentIdentifier(uri), wrong.range, lsp.CodeActionContext([wrong])))
+    actions = await client.text_document_code_action_async(
+        lsp.CodeActionParams(lsp.TextDocumentIdentifier(uri), wrong.range, lsp.CodeActionContext([wrong]))
+    )
     fix = next(a for a in actions if a.is_preferred)
     assert "DRIVE_CONTROLLED" in fix.title and fix.kind == lsp.CodeActionKind.QuickFix
     assert any("noqa" in a.title for a in actions)
@@ -151,16 +164,24 @@ async def test_edit_and_quick_fix_make_the_diagnostic_disappear(client: Language
 async def test_incremental_edits_are_applied_at_the_right_place(client: LanguageClient, folder: Path):
     path = folder / "incremental" / "achsmds1.lis"
     path.parent.mkdir()
-    text = "kopf.achs_nr  1\n\x0ckenngr.achs_typ  1\nkenngr.ref_richt  1\nEnde\n"  # a form feed is no line break
+    text = (
+        "kopf.achs_nr  1\n\x0ckenngr.achs_typ  1\nkenngr.ref_richt  1\nEnde\n"  # a form feed is no line break
+    )
     uri = open_doc(client, path, text)
     await diagnostics_when(client, uri)
     client.diagnostics.pop(uri, None)
-    client.text_document_did_change(lsp.DidChangeTextDocumentParams(
-        lsp.VersionedTextDocumentIdentifier(version=2, uri=uri),
-        [lsp.TextDocumentContentChangePartial(lsp.Range(lsp.Position(2, 18), lsp.Position(2, 19)), "7")]))
+    client.text_document_did_change(
+        lsp.DidChangeTextDocumentParams(
+            lsp.VersionedTextDocumentIdentifier(version=2, uri=uri),
+            [lsp.TextDocumentContentChangePartial(lsp.Range(lsp.Position(2, 18), lsp.Position(2, 19)), "7")],
+        )
+    )
     found = await diagnostics_when(client, uri)
     # ref_richt 7 is not a boolean: the edit landed on line 3, after the line with the form feed
-    assert [(d.code, d.range.start.line, d.range.start.character) for d in found] == [("LIS001", 1, 0), ("LIS201", 2, 18)]
+    assert [(d.code, d.range.start.line, d.range.start.character) for d in found] == [
+        ("LIS001", 1, 0),
+        ("LIS201", 2, 18),
+    ]
     close_doc(client, uri)
 
 
@@ -171,8 +192,9 @@ async def test_noqa_and_fix_all_actions(client: LanguageClient, folder: Path):
     uri = open_doc(client, path, text)
     found = await diagnostics_when(client, uri, lambda f: {"LIS004", "LIS102"} <= set(codes(f)))
     old = next(d for d in found if d.code == "LIS102")
-    actions = await client.text_document_code_action_async(lsp.CodeActionParams(
-        lsp.TextDocumentIdentifier(uri), old.range, lsp.CodeActionContext([old])))
+    actions = await client.text_document_code_action_async(
+        lsp.CodeActionParams(lsp.TextDocumentIdentifier(uri), old.range, lsp.CodeActionContext([old]))
+    )
     noqa = next(a for a in actions if "noqa" in a.title)
     suppressed = apply_edits(text, noqa.edit.changes[uri])
     assert "noqa: LIS102" in suppressed
@@ -180,8 +202,11 @@ async def test_noqa_and_fix_all_actions(client: LanguageClient, folder: Path):
     after = await diagnostics_when(client, uri)
     assert "LIS102" not in codes(after) and "LIS004" in codes(after)
     whole = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 0))
-    fix_all = await client.text_document_code_action_async(lsp.CodeActionParams(
-        lsp.TextDocumentIdentifier(uri), whole, lsp.CodeActionContext([], only=["source.fixAll.achslint"])))
+    fix_all = await client.text_document_code_action_async(
+        lsp.CodeActionParams(
+            lsp.TextDocumentIdentifier(uri), whole, lsp.CodeActionContext([], only=["source.fixAll.achslint"])
+        )
+    )
     assert [a.kind for a in fix_all] == ["source.fixAll.achslint"]
     fixed = apply_edits(suppressed, fix_all[0].edit.changes[uri])
     assert fixed.splitlines()[-1] == "Ende"
@@ -207,13 +232,17 @@ async def test_machine_rule_uses_open_buffers_and_files(client: LanguageClient, 
     machine.mkdir()
     one = "kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n"
     (machine / "achsmds1.lis").write_text(one, encoding="latin-1")
-    (machine / "achsmds2.lis").write_text("kopf.achs_nr  2\nkopf.log_achs_name  Y\nEnde\n", encoding="latin-1")
+    (machine / "achsmds2.lis").write_text(
+        "kopf.achs_nr  2\nkopf.log_achs_name  Y\nEnde\n", encoding="latin-1"
+    )
     uri = open_doc(client, machine / "achsmds2.lis", "kopf.achs_nr  1\nkopf.log_achs_name  Y\nEnde\n")
     found = await diagnostics_when(client, uri, lambda f: "LIS501" in codes(f))
     duplicate = next(d for d in found if d.code == "LIS501")
     assert duplicate.range.start.line == 0
     assert duplicate.related_information[0].location.uri == (machine / "achsmds1.lis").resolve().as_uri()
-    change(client, uri, 2, "kopf.achs_nr  3\nkopf.log_achs_name  Y\nEnde\n")  # the buffer, not the file, counts
+    change(
+        client, uri, 2, "kopf.achs_nr  3\nkopf.log_achs_name  Y\nEnde\n"
+    )  # the buffer, not the file, counts
     assert "LIS501" not in codes(await diagnostics_when(client, uri))
     # both open: editing the first list updates the findings shown for the second
     first = open_doc(client, machine / "achsmds1.lis", one.replace("achs_nr  1", "achs_nr  3"))
@@ -224,6 +253,7 @@ async def test_machine_rule_uses_open_buffers_and_files(client: LanguageClient, 
 
 
 # -- hover, completion ---------------------------------------------------------------------------------------
+
 
 async def test_hover_parameter_with_effect(client: LanguageClient, folder: Path):
     path = folder / "hover" / "achsmds1.lis"
@@ -243,9 +273,13 @@ async def test_hover_parameter_with_effect(client: LanguageClient, folder: Path)
     assert "getriebe[0].dynamik.vb_max" in await hover_at(client, uri, reference.line, reference.character)
     end = position_of(text, "\nEnde", 2)
     assert "end marker" in await hover_at(client, uri, end.line, end.character)
-    definition = await client.text_document_definition_async(lsp.DefinitionParams(
-        lsp.TextDocumentIdentifier(uri), reference))
-    assert definition[0].uri == uri and definition[0].range.start.line == position_of(text, "getriebe[0].dynamik.vb_max").line
+    definition = await client.text_document_definition_async(
+        lsp.DefinitionParams(lsp.TextDocumentIdentifier(uri), reference)
+    )
+    assert (
+        definition[0].uri == uri
+        and definition[0].range.start.line == position_of(text, "getriebe[0].dynamik.vb_max").line
+    )
     close_doc(client, uri)
 
 
@@ -253,8 +287,10 @@ async def test_hover_parameter_without_effect_and_noqa_code(client: LanguageClie
     path = folder / "hover2" / "achsmds1.lis"
     path.parent.mkdir()
     text = (FIXTURES / "rules" / "LIS401" / "bad.lis").read_text(encoding="latin-1")
-    text = text.replace("kenngr.fast_from_cam                            0",
-                        "kenngr.fast_from_cam                            0  # noqa: LIS401")
+    text = text.replace(
+        "kenngr.fast_from_cam                            0",
+        "kenngr.fast_from_cam                            0  # noqa: LIS401",
+    )
     uri = open_doc(client, path, text)
     where = position_of(text, "getriebe[0].vb_refmax", 2)
     card = await hover_at(client, uri, where.line, where.character)
@@ -271,22 +307,30 @@ async def test_completion_paths_symbols_references_and_codes(client: LanguageCli
     uri = open_doc(client, path, text)
 
     async def items(line, character):
-        found = await client.text_document_completion_async(lsp.CompletionParams(
-            lsp.TextDocumentIdentifier(uri), lsp.Position(line, character)))
+        found = await client.text_document_completion_async(
+            lsp.CompletionParams(lsp.TextDocumentIdentifier(uri), lsp.Position(line, character))
+        )
         return found.items if isinstance(found, lsp.CompletionList) else found
 
     paths = await items(2, len("getriebe[2].vb_re"))
     labels = {i.label for i in paths}
     assert "getriebe[2].vb_reflow" in labels and "getriebe[2].vb_refmax" in labels
     assert all(label.startswith("getriebe[2].") for label in labels)
-    resolved = await client.completion_item_resolve_async(next(i for i in paths if i.label == "getriebe[2].vb_reflow"))
+    resolved = await client.completion_item_resolve_async(
+        next(i for i in paths if i.label == "getriebe[2].vb_reflow")
+    )
     assert "P-AXIS-00218" in resolved.documentation.value
     top = {i.label for i in await items(2, 0)}
     assert "kenngr.homing.homing_type" in top
     assert not any(label.startswith("antr.sercos.") for label in top)  # a conventional drive: no SERCOS group
     symbols = {i.label for i in await items(3, len("kenngr.homing.homing_type  C"))}
     assert {"CNC_CONTROLLED", "DRIVE_CONTROLLED", "TORQ"} <= symbols
-    change(client, uri, 2, text.replace("vb_re\n", "vb_reflow  P-AXIS-002\n").replace("  C\n", "  TORQ  ( noqa: LIS3\n"))
+    change(
+        client,
+        uri,
+        2,
+        text.replace("vb_re\n", "vb_reflow  P-AXIS-002\n").replace("  C\n", "  TORQ  ( noqa: LIS3\n"),
+    )
     await diagnostics_when(client, uri)
     references = {i.label for i in await items(2, len("getriebe[2].vb_reflow  P-AXIS-002"))}
     assert "P-AXIS-00219.0" in references
@@ -297,18 +341,25 @@ async def test_completion_paths_symbols_references_and_codes(client: LanguageCli
 
 # -- formatting, outline, definitions, inlay hints ---------------------------------------------------------
 
+
 async def test_formatting_gives_fmt_output(client: LanguageClient, folder: Path):
     path = folder / "fmt" / "achsmds1.lis"
     path.parent.mkdir()
     data = (FIXTURES / "lsp" / "unaligned.lis").read_bytes()
     text = data.decode("latin-1")
     uri = open_doc(client, path, text)
-    edits = await client.text_document_formatting_async(lsp.DocumentFormattingParams(
-        lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True)))
+    edits = await client.text_document_formatting_async(
+        lsp.DocumentFormattingParams(lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True))
+    )
     assert edits
     assert apply_edits(text, edits) == format_bytes(data)[0].decode("latin-1")
-    ranged = await client.text_document_range_formatting_async(lsp.DocumentRangeFormattingParams(
-        lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(1, 0), lsp.Position(1, 5)), lsp.FormattingOptions(4, True)))
+    ranged = await client.text_document_range_formatting_async(
+        lsp.DocumentRangeFormattingParams(
+            lsp.TextDocumentIdentifier(uri),
+            lsp.Range(lsp.Position(1, 0), lsp.Position(1, 5)),
+            lsp.FormattingOptions(4, True),
+        )
+    )
     assert [e.range.start.line for e in ranged] == [1]
     close_doc(client, uri)
 
@@ -318,13 +369,18 @@ async def test_document_symbols_are_grouped(client: LanguageClient, folder: Path
     path.parent.mkdir()
     shutil.copy(FIXTURES / "lists" / "achsmds1.lis", path)
     uri = open_doc(client, path)
-    symbols = await client.text_document_document_symbol_async(lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri)))
+    symbols = await client.text_document_document_symbol_async(
+        lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri))
+    )
     names = [s.name for s in symbols]
     assert names[:3] == ["kopf", "kenngr", "lr_hw[0]"] and "getriebe[0]" in names and names[-1] == "Ende"
     gear = next(s for s in symbols if s.name == "getriebe[0]")
     assert "vb_reflow" in [c.name for c in gear.children]
-    hints = await client.text_document_inlay_hint_async(lsp.InlayHintParams(
-        lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(0, 0), lsp.Position(40, 0))))
+    hints = await client.text_document_inlay_hint_async(
+        lsp.InlayHintParams(
+            lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(0, 0), lsp.Position(40, 0))
+        )
+    )
     assert any(h.label == " = 100 mm/s = 6 m/min" for h in hints)
     close_doc(client, uri)
 
@@ -339,12 +395,15 @@ async def test_definition_from_a_startup_list_opens_the_named_list(client: Langu
     found = await diagnostics_when(client, uri, lambda f: "LIS504" in codes(f))  # achsmds2.lis is missing
     assert [d.range.start.line for d in found if d.code == "LIS504"] == [3]
     where = position_of(text, "./achsmds1.lis", 3)
-    target = await client.text_document_definition_async(lsp.DefinitionParams(lsp.TextDocumentIdentifier(uri), where))
+    target = await client.text_document_definition_async(
+        lsp.DefinitionParams(lsp.TextDocumentIdentifier(uri), where)
+    )
     assert target[0].uri == (machine / "achsmds1.lis").resolve().as_uri()
     close_doc(client, uri)
 
 
 # -- XML, robustness ------------------------------------------------------------------------------------------
+
 
 async def test_twincat_xml_diagnostics_and_hover_at_xml_positions(client: LanguageClient, folder: Path):
     path = folder / "xml" / "Axis_X.xti"
@@ -367,7 +426,11 @@ async def test_twincat_xml_diagnostics_and_hover_at_xml_positions(client: Langua
 async def test_random_bytes_give_diagnostics_never_a_crash(client: LanguageClient, folder: Path):
     generator = random.Random(15)
     samples = [bytes(generator.randrange(256) for _ in range(2000)).decode("latin-1") for _ in range(3)]
-    samples += ["\x00\ufeff" * 50 + "Ende\r\r\n\u2028x", "getriebe[" * 500 + "\n" * 3, "\ufeffkopf.achs_nr 1\nEnd"]
+    samples += [
+        "\x00\ufeff" * 50 + "Ende\r\r\n\u2028x",
+        "getriebe[" * 500 + "\n" * 3,
+        "\ufeffkopf.achs_nr 1\nEnd",
+    ]
     (folder / "random").mkdir()
     for number, text in enumerate(samples):
         uri = open_doc(client, folder / "random" / f"achsmds{number}.lis", text)
@@ -375,13 +438,22 @@ async def test_random_bytes_give_diagnostics_never_a_crash(client: LanguageClien
         assert found, f"sample {number}"
         for line in (0, 1, 5):
             await hover_at(client, uri, line, 3)
-            await client.text_document_completion_async(lsp.CompletionParams(
-                lsp.TextDocumentIdentifier(uri), lsp.Position(line, 3)))
-        await client.text_document_formatting_async(lsp.DocumentFormattingParams(
-            lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True)))
-        await client.text_document_document_symbol_async(lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri)))
-        await client.text_document_code_action_async(lsp.CodeActionParams(
-            lsp.TextDocumentIdentifier(uri), lsp.Range(lsp.Position(0, 0), lsp.Position(3, 0)), lsp.CodeActionContext([])))
+            await client.text_document_completion_async(
+                lsp.CompletionParams(lsp.TextDocumentIdentifier(uri), lsp.Position(line, 3))
+            )
+        await client.text_document_formatting_async(
+            lsp.DocumentFormattingParams(lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True))
+        )
+        await client.text_document_document_symbol_async(
+            lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri))
+        )
+        await client.text_document_code_action_async(
+            lsp.CodeActionParams(
+                lsp.TextDocumentIdentifier(uri),
+                lsp.Range(lsp.Position(0, 0), lsp.Position(3, 0)),
+                lsp.CodeActionContext([]),
+            )
+        )
         close_doc(client, uri)
     # still alive and still right
     uri = open_doc(client, folder / "random" / "achsmds_ok.lis", "kopf.achs_nr  1\nEnd\n")

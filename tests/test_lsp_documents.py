@@ -11,15 +11,53 @@ from hypothesis import strategies as st
 from achslint.lsp.documents import Document, LineCache
 from achslint.syntax import parse_text
 
-PIECES = st.sampled_from(["kopf.achs_nr", " ", "\t", "1", "0x1F", "\"a b\"", "( c", "# d", "Ende", "End",
-                          "getriebe[0].vb_reflow", "P-AXIS-00212.0", "\n", "\r\n", "\r", "\x0c", "\u2028", "µ",
-                          "\U0001f600", "[", "\ufeff", ""])
+PIECES = st.sampled_from(
+    [
+        "kopf.achs_nr",
+        " ",
+        "\t",
+        "1",
+        "0x1F",
+        '"a b"',
+        "( c",
+        "# d",
+        "Ende",
+        "End",
+        "getriebe[0].vb_reflow",
+        "P-AXIS-00212.0",
+        "\n",
+        "\r\n",
+        "\r",
+        "\x0c",
+        "\u2028",
+        "µ",
+        "\U0001f600",
+        "[",
+        "\ufeff",
+        "",
+    ]
+)
 TEXTS = st.lists(PIECES, max_size=40).map("".join)
 
 
 def fields(file):
-    return [(line.kind, line.indent, line.path, line.path_ok, line.sep, line.value, line.value_kind, line.sep2,
-             line.rest, line.comment, line.newline, line.number) for line in file.lines], file.end_index
+    return [
+        (
+            line.kind,
+            line.indent,
+            line.path,
+            line.path_ok,
+            line.sep,
+            line.value,
+            line.value_kind,
+            line.sep2,
+            line.rest,
+            line.comment,
+            line.newline,
+            line.number,
+        )
+        for line in file.lines
+    ], file.end_index
 
 
 @settings(max_examples=150, deadline=None)
@@ -47,12 +85,23 @@ def test_positions_count_utf16_units_and_only_real_line_breaks():
 
 def test_byte_order_mark_kept_by_the_editor_shifts_only_the_first_line():
     document = Document("file:///a.lis", None, "\ufeffkopf.achs_nr 1\nEnde\n")
-    assert document.body.startswith("kopf") and document.to_lsp(1, 1) == (0, 1) and document.to_lsp(2, 1) == (1, 0)
+    assert (
+        document.body.startswith("kopf")
+        and document.to_lsp(1, 1) == (0, 1)
+        and document.to_lsp(2, 1) == (1, 0)
+    )
 
 
 def test_server_without_the_extra_names_it_and_exits_2():
-    blocked = ("import sys; sys.modules['pygls'] = None; sys.modules['pygls.lsp.server'] = None; "
-               "from achslint.cli import main; raise SystemExit(main(['server']))")
-    done = subprocess.run([sys.executable, "-c", blocked], check=False, capture_output=True, text=True, timeout=60)
+    blocked = (
+        "import sys; sys.modules['pygls'] = None; sys.modules['pygls.lsp.server'] = None; "
+        "from achslint.cli import main; raise SystemExit(main(['server']))"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", blocked], check=False, capture_output=True, text=True, timeout=60
+    )
     assert done.returncode == 2
-    assert done.stderr.strip() == "achslint: the language server needs the `lsp` extra: pip install 'achslint[lsp]'"
+    assert (
+        done.stderr.strip()
+        == "achslint: the language server needs the `lsp` extra: pip install 'achslint[lsp]'"
+    )

@@ -13,16 +13,22 @@ def write(path: Path, text: str) -> Path:
 
 
 def findings(result) -> list[tuple[str, int, str]]:
-    return sorted((Path(d["path"]).name, d["line"], d["code"]) for d in json.loads(result.stdout)["diagnostics"])
+    return sorted(
+        (Path(d["path"]).name, d["line"], d["code"]) for d in json.loads(result.stdout)["diagnostics"]
+    )
 
 
 def test_default_list_is_applied_under_each_axis_list(cli, tmp_path):
     # vb_refmax comes from the default list only; with it, the axis list's vb_reflow is too fast (LIS302).
     write(tmp_path / "listen" / "default_mds.lis", "getriebe[0].vb_refmax 20000\nEnde\n")
-    write(tmp_path / "listen" / "achsmds1.lis", "kopf.achs_nr 1\nkenngr.antr_typ 1\ngetriebe[0].a_ref 500\n"
-                                                "getriebe[0].vb_reflow 50000\nEnde\n")
-    startup = write(tmp_path / "listen" / "hochlauf.lis",
-                    "default_achs_mds ./listen/default_mds.lis\nachs_mds[0] ./listen/achsmds1.lis\nEnde\n")
+    write(
+        tmp_path / "listen" / "achsmds1.lis",
+        "kopf.achs_nr 1\nkenngr.antr_typ 1\ngetriebe[0].a_ref 500\ngetriebe[0].vb_reflow 50000\nEnde\n",
+    )
+    startup = write(
+        tmp_path / "listen" / "hochlauf.lis",
+        "default_achs_mds ./listen/default_mds.lis\nachs_mds[0] ./listen/achsmds1.lis\nEnde\n",
+    )
     alone = cli("lint", str(tmp_path / "listen" / "achsmds1.lis"), "--format", "json", "--select", "LIS302")
     assert findings(alone) == []  # without the default list: vb_refmax default 83333 > 50000
     machine = cli("lint", str(startup), "--format", "json", "--select", "LIS302")
@@ -30,11 +36,17 @@ def test_default_list_is_applied_under_each_axis_list(cli, tmp_path):
 
 
 def test_gantry_retraction_against_resettable_distance(cli, tmp_path):
-    write(tmp_path / "achsmds1.lis", "kopf.achs_nr 1\nkopf.log_achs_name X1\nkenngr.antr_typ 2\n"
-                                     "kenngr.homing.homing_type TORQ\nkenngr.homing.torq_retraction_distance 500\n"
-                                     "kenngr.homing.torq_detect_time 25000\nkenngr.homing.torq_max_distance 100000\nEnde\n")
-    write(tmp_path / "achsmds2.lis", "kopf.achs_nr 2\nkopf.log_achs_name X2\nkenngr.antr_typ 2\n"
-                                     "kenngr.gantry_ax_nr 1\nkenngr.gantry_max_diff_resetable 1000\nEnde\n")
+    write(
+        tmp_path / "achsmds1.lis",
+        "kopf.achs_nr 1\nkopf.log_achs_name X1\nkenngr.antr_typ 2\n"
+        "kenngr.homing.homing_type TORQ\nkenngr.homing.torq_retraction_distance 500\n"
+        "kenngr.homing.torq_detect_time 25000\nkenngr.homing.torq_max_distance 100000\nEnde\n",
+    )
+    write(
+        tmp_path / "achsmds2.lis",
+        "kopf.achs_nr 2\nkopf.log_achs_name X2\nkenngr.antr_typ 2\n"
+        "kenngr.gantry_ax_nr 1\nkenngr.gantry_max_diff_resetable 1000\nEnde\n",
+    )
     result = cli("lint", str(tmp_path), "--format", "json", "--select", "LIS316")
     assert findings(result) == [("achsmds2.lis", 4, "LIS316")]
     assert result.returncode == 1
@@ -49,7 +61,9 @@ def test_machines_are_per_folder(cli, tmp_path):
     assert findings(cli("lint", str(tmp_path), "--format", "json", "--select", "LIS50")) == []
     write(tmp_path / "machine_a" / "achsmds2.lis", body)
     assert findings(cli("lint", str(tmp_path), "--format", "json", "--select", "LIS50")) == [
-        ("achsmds2.lis", 1, "LIS501"), ("achsmds2.lis", 2, "LIS502")]
+        ("achsmds2.lis", 1, "LIS501"),
+        ("achsmds2.lis", 2, "LIS502"),
+    ]
 
 
 def test_start_up_list_with_missing_lists_only(cli, tmp_path):

@@ -8,8 +8,15 @@ from hypothesis import strategies as st
 
 from achslint.catalogue import catalogue
 from achslint.linter import check_bytes
-from achslint.numbers import (NumberProblem, Reference, as_float, parse_hex, parse_int, parse_real,
-                              parse_reference)
+from achslint.numbers import (
+    NumberProblem,
+    Reference,
+    as_float,
+    parse_hex,
+    parse_int,
+    parse_real,
+    parse_reference,
+)
 from achslint.units import describe, to_human
 
 
@@ -62,15 +69,18 @@ def test_unit_formatting_takes_any_value():
     assert to_human(1e300, "um/s").startswith("1e+297 mm/s")
 
 
-@pytest.mark.parametrize(("line", "code", "words"), [
-    # Why 6: each of these ended the run with an internal error.
-    (b"kenngr.swe_pos 1e400", "LIS202", "range of a 64-bit real"),
-    (b"kenngr.swe_pos " + b"9" * 320, "LIS202", "range of a 64-bit real"),
-    (b"kopf.achs_nr 0x" + b"F" * 300, "LIS202", "300 digits"),
-    (b"kenngr.swe_pos 0x" + b"F" * 300, "LIS202", "300 digits"),
-    (b"kenngr.swe_pos P-AXIS-" + b"1" * 5000, "LIS205", "5,000 digits"),
-    (b"kopf.achs_nr " + b"7" * 5000, "LIS202", "5,000 digits"),
-])
+@pytest.mark.parametrize(
+    ("line", "code", "words"),
+    [
+        # Why 6: each of these ended the run with an internal error.
+        (b"kenngr.swe_pos 1e400", "LIS202", "range of a 64-bit real"),
+        (b"kenngr.swe_pos " + b"9" * 320, "LIS202", "range of a 64-bit real"),
+        (b"kopf.achs_nr 0x" + b"F" * 300, "LIS202", "300 digits"),
+        (b"kenngr.swe_pos 0x" + b"F" * 300, "LIS202", "300 digits"),
+        (b"kenngr.swe_pos P-AXIS-" + b"1" * 5000, "LIS205", "5,000 digits"),
+        (b"kopf.achs_nr " + b"7" * 5000, "LIS202", "5,000 digits"),
+    ],
+)
 def test_huge_numbers_in_a_list_are_findings(line, code, words):
     result = check_bytes(line + b"\nEnde\n", "achsmds1.lis")
     assert result.error is None

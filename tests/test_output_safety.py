@@ -20,9 +20,32 @@ RAW_CONTROL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\
 
 # Names and messages with escape sequences, line breaks, bidi overrides and the undecodable
 # bytes of a non-UTF-8 file name (kept by Python as lone surrogates).
-HOSTILE = st.lists(st.one_of(st.sampled_from(["\x1b[31m", "\x1b]0;x\x07", "\r", "\n", "\x00", "\x85", "\u202e",
-                                              "\udcff", "\udc80", "%", ",", ":", "<", "&", '"', "µ"]),
-                             st.characters(codec="utf-8")), max_size=12).map("".join)
+HOSTILE = st.lists(
+    st.one_of(
+        st.sampled_from(
+            [
+                "\x1b[31m",
+                "\x1b]0;x\x07",
+                "\r",
+                "\n",
+                "\x00",
+                "\x85",
+                "\u202e",
+                "\udcff",
+                "\udc80",
+                "%",
+                ",",
+                ":",
+                "<",
+                "&",
+                '"',
+                "µ",
+            ]
+        ),
+        st.characters(codec="utf-8"),
+    ),
+    max_size=12,
+).map("".join)
 
 
 def render(fmt: str, results, sources=None) -> str:
@@ -45,8 +68,19 @@ def assert_valid(fmt: str, out: str) -> None:
 @given(path=HOSTILE, message=HOSTILE, source=HOSTILE, error=HOSTILE)
 def test_every_format_is_valid_for_any_name_and_message(path, message, source, error):
     name = path or "x"
-    d = Diagnostic(name, 1, 2, 1, 4, "LIS101", Severity.WARNING, message, parameter=message or None,
-                   related=(Related(name, 1, 1, message, message),), fix=Fix("safe", message))
+    d = Diagnostic(
+        name,
+        1,
+        2,
+        1,
+        4,
+        "LIS101",
+        Severity.WARNING,
+        message,
+        parameter=message or None,
+        related=(Related(name, 1, 1, message, message),),
+        fix=Fix("safe", message),
+    )
     results = [FileResult(name, [d], source_lines=[source]), FileResult(name + "2", [], error=error or "e")]
     for fmt in REPORTERS:
         assert_valid(fmt, render(fmt, results, {name: [source]}))

@@ -28,8 +28,20 @@ SAMPLE = (
 def test_kinds_values_and_columns():
     file = parse_text(SAMPLE)
     kinds = [line.kind for line in file.lines]
-    assert kinds == ["comment", "assignment", "blank", "comment", "assignment", "assignment", "assignment",
-                     "assignment", "assignment", "assignment", "end", "blank"]
+    assert kinds == [
+        "comment",
+        "assignment",
+        "blank",
+        "comment",
+        "assignment",
+        "assignment",
+        "assignment",
+        "assignment",
+        "assignment",
+        "assignment",
+        "end",
+        "blank",
+    ]
     achs_nr = file.lines[1]
     assert (achs_nr.path, achs_nr.value, achs_nr.value_kind) == ("kopf.achs_nr", "1", syntax.INT)
     assert achs_nr.value_column == 31
@@ -76,7 +88,7 @@ def test_value_lookalikes_are_words():
 def test_encodings_and_bom():
     latin = "kopf.log_achs_name X ( µm\n".encode("latin-1")
     assert decode(latin).encoding == "cp1252"
-    assert decode("a 1 ( µm\n".encode("utf-8")).encoding == "utf-8"
+    assert decode("a 1 ( µm\n".encode()).encoding == "utf-8"
     with_bom = b"\xef\xbb\xbfa 1\n"
     source = decode(with_bom)
     assert source.bom and source.text == "a 1\n" and source.encode() == with_bom
@@ -85,7 +97,11 @@ def test_encodings_and_bom():
 
 
 def test_split_path_and_pattern():
-    assert syntax.split_path("antr.function[2].wr_ident[1]") == [("antr", ()), ("function", (2,)), ("wr_ident", (1,))]
+    assert syntax.split_path("antr.function[2].wr_ident[1]") == [
+        ("antr", ()),
+        ("function", (2,)),
+        ("wr_ident", (1,)),
+    ]
     assert syntax.path_pattern("getriebe[3].achs_position[2]") == ("getriebe[i].achs_position[i]", (3, 2))
 
 
@@ -101,7 +117,9 @@ def _probe(cache_home):
     import sys
 
     env = {**os.environ, "XDG_CACHE_HOME": str(cache_home)}
-    return subprocess.run([sys.executable, "-c", GRAMMAR_PROBE], capture_output=True, text=True, env=env, timeout=60)
+    return subprocess.run(
+        [sys.executable, "-c", GRAMMAR_PROBE], capture_output=True, text=True, env=env, timeout=60
+    )
 
 
 def test_grammar_cache_is_private_and_a_damaged_cache_is_harmless(tmp_path):

@@ -41,8 +41,15 @@ def test_hook_definition_fits_whole_machines():
     assert "--fail-on" not in text  # the repository's configuration decides
     patterns = re.findall(r"files: '(.*)'", text)
     lint_pattern = re.compile(patterns[0])
-    for name in ("listen/achsmds1.lis", "listen/default_mds.lis", "listen/hochlauf.lis", "Axes/Axis_X.xti",
-                 "Project.tsproj", "Update/ax_mds_1.xml", "ACHSMDS2.LIS"):
+    for name in (
+        "listen/achsmds1.lis",
+        "listen/default_mds.lis",
+        "listen/hochlauf.lis",
+        "Axes/Axis_X.xti",
+        "Project.tsproj",
+        "Update/ax_mds_1.xml",
+        "ACHSMDS2.LIS",
+    ):
         assert lint_pattern.search(name), name
     assert not lint_pattern.search("README.md")
 
@@ -52,7 +59,9 @@ def test_a_list_passed_alone_is_checked_against_its_neighbours(tmp_path):
     alone = run_in(folder, "lint", "achsmds8.lis", "--format", "json")
     assert alone.returncode == 1 and lis501(alone) == ["achsmds8.lis"]
     other = run_in(folder, "lint", "achsmds3.lis", "--format", "json")
-    assert other.returncode == 0 and json.loads(other.stdout)["diagnostics"] == []  # only passed files reported
+    assert (
+        other.returncode == 0 and json.loads(other.stdout)["diagnostics"] == []
+    )  # only passed files reported
     first = run_in(folder, "lint", "achsmds1.lis", "--format", "json")
     assert lis501(first) == ["achsmds1.lis"]  # reported on the passed list, with the neighbour related
     assert json.loads(first.stdout)["diagnostics"][0]["related"][0]["path"].endswith("achsmds8.lis")
@@ -83,8 +92,13 @@ def _git(cwd: Path, *args: str) -> None:
 @pytest.fixture(scope="module")
 def hook_repo(tmp_path_factory) -> Path:
     """This checkout as it is now (committed or not), as a git repository pre-commit can install from."""
-    listed = subprocess.run(["git", "ls-files", "-co", "--exclude-standard"], cwd=ROOT, capture_output=True, text=True,
-                            check=False)
+    listed = subprocess.run(
+        ["git", "ls-files", "-co", "--exclude-standard"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     if listed.returncode != 0:
         pytest.skip("the tests do not run from a git checkout of achslint")
     repo = tmp_path_factory.mktemp("hook-repo")
@@ -111,8 +125,15 @@ def test_pre_commit_try_repo_reports_the_repeated_axis_number(tmp_path, hook_rep
     env.pop("PYTHONPATH", None)
 
     def hook(*args: str) -> subprocess.CompletedProcess:
-        return subprocess.run([*command, "try-repo", str(hook_repo), "achslint", *args], cwd=project, env=env,
-                              capture_output=True, text=True, timeout=600, check=False)
+        return subprocess.run(
+            [*command, "try-repo", str(hook_repo), "achslint", *args],
+            cwd=project,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=600,
+            check=False,
+        )
 
     every = hook("--all-files")
     if every.returncode == 3:  # pre-commit's "unexpected error": here, pip could not reach the package index

@@ -12,8 +12,8 @@ import achslint
 from achslint.decode import UnreadableInput, decode
 from achslint.dryrun import dry_run, trace_json
 from achslint.explain import explain_list
-from achslint.listdiff import diff_lists
 from achslint.linter import check_bytes
+from achslint.listdiff import diff_lists
 from achslint.reporters import REPORTERS, get
 from achslint.scenario import ScenarioError
 from achslint.syntax import parse_bytes
@@ -21,16 +21,57 @@ from achslint.syntax import parse_bytes
 from .conftest import run_cli
 
 # Pieces real lists are made of, so that generated input reaches deep into the rules.
-PIECES = st.sampled_from([
-    "kopf.achs_nr", "kenngr.homing.homing_type", "kenngr.homing_type", "getriebe[0].vb_reflow", "getriebe[9].x",
-    "getriebe[i].vb_refmax", "kenngr.achs_mode", "antr_simu.rpf_weg_bis_nip", "kenngr.achs_typ", "kenngr.antr_typ",
-    "antr.fixed_stop.drive_ident[0].rd_ident", "kopf.log_achs_name", "Ende", "End", "#", "(", "/*", " ", "\t",
-    "\n", "\r\n", "\r", "0x400001", "-2025000", "1.5E-3", "P-AXIS-00212.0", "P-AXIS-00218.0", "\"", "\"a (b)\"",
-    "DRIVE_CONROLLED", "TORQ", "µm", "\xef\xbb\xbf", "]", "[", ".", "1", "2", "40", "\x00", "é",
-])
+PIECES = st.sampled_from(
+    [
+        "kopf.achs_nr",
+        "kenngr.homing.homing_type",
+        "kenngr.homing_type",
+        "getriebe[0].vb_reflow",
+        "getriebe[9].x",
+        "getriebe[i].vb_refmax",
+        "kenngr.achs_mode",
+        "antr_simu.rpf_weg_bis_nip",
+        "kenngr.achs_typ",
+        "kenngr.antr_typ",
+        "antr.fixed_stop.drive_ident[0].rd_ident",
+        "kopf.log_achs_name",
+        "Ende",
+        "End",
+        "#",
+        "(",
+        "/*",
+        " ",
+        "\t",
+        "\n",
+        "\r\n",
+        "\r",
+        "0x400001",
+        "-2025000",
+        "1.5E-3",
+        "P-AXIS-00212.0",
+        "P-AXIS-00218.0",
+        '"',
+        '"a (b)"',
+        "DRIVE_CONROLLED",
+        "TORQ",
+        "µm",
+        "\xef\xbb\xbf",
+        "]",
+        "[",
+        ".",
+        "1",
+        "2",
+        "40",
+        "\x00",
+        "é",
+    ]
+)
 LISTISH = st.lists(PIECES, max_size=60).map("".join)
-RAW = st.one_of(st.binary(max_size=400), LISTISH.map(lambda s: s.encode("latin-1", "replace")),
-                LISTISH.map(lambda s: s.encode("utf-8")))
+RAW = st.one_of(
+    st.binary(max_size=400),
+    LISTISH.map(lambda s: s.encode("latin-1", "replace")),
+    LISTISH.map(lambda s: s.encode("utf-8")),
+)
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -101,15 +142,38 @@ def test_any_bytes_explain_diff_and_dry_run_without_exception(data, other):
     json.dumps(trace_json(run))
 
 
-XML_PIECES = st.sampled_from([
-    "<?xml version=\"1.0\"?>", "<TcSmProject>", "</TcSmProject>", "<AchsMds>", "</AchsMds>", "<![CDATA[",
-    "]]>", "<AX_MDS>", "</AX_MDS>", "<Axis Name=\"X\">", "</Axis>", "kopf.achs_nr 1\n", "Ende\n",
-    "<!DOCTYPE x [<!ENTITY a \"b\">]>", "&a;", "&amp;", "<", ">", "\"", "\n", "é", "\x00",
-])
+XML_PIECES = st.sampled_from(
+    [
+        '<?xml version="1.0"?>',
+        "<TcSmProject>",
+        "</TcSmProject>",
+        "<AchsMds>",
+        "</AchsMds>",
+        "<![CDATA[",
+        "]]>",
+        "<AX_MDS>",
+        "</AX_MDS>",
+        '<Axis Name="X">',
+        "</Axis>",
+        "kopf.achs_nr 1\n",
+        "Ende\n",
+        '<!DOCTYPE x [<!ENTITY a "b">]>',
+        "&a;",
+        "&amp;",
+        "<",
+        ">",
+        '"',
+        "\n",
+        "é",
+        "\x00",
+    ]
+)
 
 
 @settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.one_of(st.binary(max_size=300), st.lists(XML_PIECES, max_size=40).map(lambda p: "".join(p).encode())))
+@given(
+    st.one_of(st.binary(max_size=300), st.lists(XML_PIECES, max_size=40).map(lambda p: "".join(p).encode()))
+)
 def test_any_bytes_named_xml_give_diagnostics_or_an_error(data):
     result = check_bytes(data, "fuzz.xml")
     assert result.error is None or "fuzz.xml" in result.error  # the error names the file

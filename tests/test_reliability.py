@@ -74,7 +74,9 @@ def test_1_a_link_in_a_folder_leading_outside_is_neither_read_nor_written(run, t
     folder.mkdir()
     (folder / "achsmds1.lis").symlink_to(outside)
     code, _, err = run("fmt", folder)
-    assert code == 2 and "outside the paths given" in err and "no axis list found" in err  # nothing was checked
+    assert (
+        code == 2 and "outside the paths given" in err and "no axis list found" in err
+    )  # nothing was checked
     code, _, err = run("fmt", folder, "--allow-empty")
     assert code == 0 and "outside the paths given" in err
     assert outside.read_bytes() == MESSY
@@ -128,7 +130,7 @@ def test_1_a_read_only_list_is_refused_not_replaced(run, tmp_path):
 def test_1_fix_writes_and_counts(run, tmp_path):
     path = tmp_path / "achsmds1.lis"
     path.write_bytes(b"kenngr.homing_type CNC_CONTROLLED\nEnd\n")
-    code, _, err = run("lint", "--fix", path)
+    _code, _, err = run("lint", "--fix", path)
     assert "fixed 2 diagnostics" in err
     assert path.read_bytes() == b"kenngr.homing.homing_type CNC_CONTROLLED\nEnde\n"
 
@@ -140,7 +142,7 @@ def test_1_a_list_the_user_may_not_write_is_refused(run, tmp_path):
     os.chmod(tmp_path, 0o555)  # not even a temporary file next to it
     os.chmod(path, 0o644)
     try:
-        code, _, err = run("fmt", path)
+        code, _, _err = run("fmt", path)
     finally:
         os.chmod(tmp_path, 0o755)
     assert code == 0 and path.read_bytes() == TIDY  # the file itself may be written: in place
@@ -167,16 +169,18 @@ def escape_attempts(tmp_path):
     machine.mkdir(parents=True)
     (machine / "achsmds1.lis").write_bytes(MESSY)
     startup = machine / "hochlauf.lis"
-    startup.write_text(f"achs_mds[0] ./achsmds1.lis\nachs_mds[1] /proc/self/environ\nachs_mds[2] {passwd}\n"
-                       "achs_mds[3] ../../outside/secret.lis\nEnde\n")
+    startup.write_text(
+        f"achs_mds[0] ./achsmds1.lis\nachs_mds[1] /proc/self/environ\nachs_mds[2] {passwd}\n"
+        "achs_mds[3] ../../outside/secret.lis\nEnde\n"
+    )
     return startup, [secret, passwd]
 
 
 @pytest.mark.parametrize("fmt", ["full", "concise", "github", "json", "gitlab", "junit", "sarif"])
 def test_2_nothing_outside_the_project_is_read_or_printed(run, escape_attempts, monkeypatch, fmt):
-    startup, outside = escape_attempts
+    startup, _outside = escape_attempts
     monkeypatch.setenv("ACHSLINT_TEST_SECRET", SECRET)
-    code, out, err = run("lint", startup, "--format", fmt)
+    _code, out, err = run("lint", startup, "--format", fmt)
     assert SECRET not in out + err
     assert out.count("LIS504") >= 3 or fmt in ("json", "gitlab", "junit", "sarif")
     assert "Traceback" not in err
@@ -185,7 +189,7 @@ def test_2_nothing_outside_the_project_is_read_or_printed(run, escape_attempts, 
 def test_2_start_up_escapes_are_reported_and_nothing_outside_is_written(run, escape_attempts):
     startup, outside = escape_attempts
     before = [path.read_bytes() for path in outside]
-    code, out, _ = run("lint", startup, "--format", "json", "--select", "LIS504")
+    _code, out, _ = run("lint", startup, "--format", "json", "--select", "LIS504")
     refused = [d for d in json.loads(out)["diagnostics"]]
     assert [d["line"] for d in refused] == [2, 3, 4]
     assert all("does not read" in d["message"] for d in refused)
@@ -197,7 +201,7 @@ def test_2_start_up_escapes_are_reported_and_nothing_outside_is_written(run, esc
 
 def test_2_a_path_the_user_gives_is_read_through_the_start_up_list(run, escape_attempts):
     startup, (secret, _) = escape_attempts
-    code, out, _ = run("lint", startup, secret.parent, "--format", "json", "--select", "LIS004")
+    _code, out, _ = run("lint", startup, secret.parent, "--format", "json", "--select", "LIS004")
     assert any(Path(d["path"]).resolve() == secret for d in json.loads(out)["diagnostics"])
 
 
@@ -239,7 +243,9 @@ def test_5_a_signal_during_a_write_leaves_no_temporary_file(tmp_path, monkeypatc
     assert [p.name for p in tmp_path.iterdir()] == ["achsmds1.lis"] and path.read_bytes() == MESSY
 
 
-@pytest.mark.parametrize(("signum", "words"), [(signal.SIGINT, "interrupted"), (signal.SIGTERM, "terminated")])
+@pytest.mark.parametrize(
+    ("signum", "words"), [(signal.SIGINT, "interrupted"), (signal.SIGTERM, "terminated")]
+)
 def test_5_a_signal_ends_the_command_line_with_one_line(run, tmp_path, monkeypatch, signum, words):
     (tmp_path / "achsmds1.lis").write_bytes(MESSY)
 
@@ -267,7 +273,9 @@ def test_7_names_too_long_for_the_file_system(run, tmp_path):
     long = tmp_path / ("x" * 300 + ".lis")
     code, _, err = run("lint", long)
     assert code == 2 and "too long" in one_line(err)
-    code, out, err = run("lint", "-", "--stdin-filename", "y" * 300 + ".lis", stdin=b"kopf.achs_nr 1\nEnde\n")
+    code, _out, err = run(
+        "lint", "-", "--stdin-filename", "y" * 300 + ".lis", stdin=b"kopf.achs_nr 1\nEnde\n"
+    )
     assert code == 0, err
     code, _, err = run("explain", "z" * 300)
     assert code == 2 and "neither a file nor a known parameter" in one_line(err)
@@ -390,7 +398,7 @@ def test_9_the_same_file_given_twice_is_linted_once(run, tmp_path):
     path = tmp_path / "achsmds1.lis"
     path.write_bytes(b"kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n")
     for args in ((path, path), (tmp_path, path), (path, tmp_path / "." / "achsmds1.lis")):
-        code, out, err = run("lint", *args, "--format", "json")
+        _code, out, _err = run("lint", *args, "--format", "json")
         document = json.loads(out)
         assert document["summary"]["files"] == 1 and not document["diagnostics"], args
 
@@ -398,15 +406,17 @@ def test_9_the_same_file_given_twice_is_linted_once(run, tmp_path):
 def test_9_fix_on_many_files_with_jobs_reports_no_spurious_change(run, tmp_path):
     for number in range(12):
         (tmp_path / f"achsmds{number}.lis").write_bytes(b"kenngr.homing_type CNC_CONTROLLED\nEnd\n")
-    code, _, err = run("lint", "--fix", "--jobs", "4", tmp_path, *sorted(tmp_path.iterdir()))
+    _code, _, err = run("lint", "--fix", "--jobs", "4", tmp_path, *sorted(tmp_path.iterdir()))
     assert "changed while" not in err and "fixed 24 diagnostics" in err
 
 
 # -- 10. explain, dry-run and diff read XML through the one parser ----------------------------------------
 
 
-BOMB = (b'<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>'
-        b"<TreeItem><AchsMds>&b;</AchsMds></TreeItem>")
+BOMB = (
+    b'<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>'
+    b"<TreeItem><AchsMds>&b;</AchsMds></TreeItem>"
+)
 UPDATE = b"<TreeItem><IsgAxisDef><AchsMds><![CDATA[kopf.achs_nr 1\nkenngr.ref_richt 1\nEnde\n]]></AchsMds></IsgAxisDef></TreeItem>"
 
 
@@ -415,7 +425,7 @@ def test_10_explain_dry_run_and_diff_refuse_an_entity_bomb(run, tmp_path):
     bomb.write_bytes(BOMB)
     update.write_bytes(UPDATE)
     for args in (("explain", bomb), ("dry-run", bomb), ("diff", update, bomb)):
-        code, out, err = run(*args)
+        code, _out, err = run(*args)
         assert code == 2 and "refusing to read" in one_line(err), args
 
 
@@ -447,8 +457,9 @@ def test_12_the_closest_name_is_searched_once_per_distinct_name(monkeypatch):
 
 @pytest.mark.parametrize("fmt", ["json", "sarif", "gitlab", "junit"])
 def test_13_statistics_never_spoil_a_machine_format(run, fmt):
-    code, out, err = run("lint", Path(__file__).parents[1] / "fixtures" / "multi_rule.lis", "--format", fmt,
-                         "--statistics")
+    _code, out, err = run(
+        "lint", Path(__file__).parents[1] / "fixtures" / "multi_rule.lis", "--format", fmt, "--statistics"
+    )
     if fmt == "junit":
         ET.fromstring(out)
     else:
@@ -457,7 +468,12 @@ def test_13_statistics_never_spoil_a_machine_format(run, fmt):
 
 
 def test_13_usage_errors_are_one_line_with_a_hint(run):
-    for args in (("lint", "--bogus", "x"), ("lint", "x", "--format", "nope"), ("nope",), ("lint", "--jobs", "0", "x")):
+    for args in (
+        ("lint", "--bogus", "x"),
+        ("lint", "x", "--format", "nope"),
+        ("nope",),
+        ("lint", "--jobs", "0", "x"),
+    ):
         code, _, err = run(*args)
         line = one_line(err)
         assert code == 2 and line.startswith("achslint: error: ") and "--help`)" in line, args

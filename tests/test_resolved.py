@@ -22,36 +22,61 @@ def corrections(text: str) -> dict:
     return {c.parameter: (c.written, c.used, c.error) for c in resolved(text).corrections}
 
 
-@pytest.mark.parametrize("text,expected", [
-    # P-AXIS-00299: drive-controlled homing on a simulated drive -> the drive's default (P-ERR-110384).
-    ("kenngr.antr_typ 4\nkenngr.homing.homing_type DRIVE_CONTROLLED",
-     {"kenngr.homing.homing_type": ("DRIVE_CONTROLLED", "CNC_CONTROLLED", "P-ERR-110384")}),
-    # P-AXIS-00268 caps both homing speeds and the fixed-stop speed (P-ERR-110421/110422/110413).
-    ("kenngr.antr_typ 1\ngetriebe[1].vb_not_referenced 10000\ngetriebe[1].vb_refmax 50000\n"
-     "getriebe[1].vb_reflow 20000\ngetriebe[1].homing.torq_move_velocity 30000",
-     {"getriebe[1].vb_refmax": (50000, 10000, "P-ERR-110421"), "getriebe[1].vb_reflow": (20000, 10000, "P-ERR-110422"),
-      "getriebe[1].homing.torq_move_velocity": (30000, 10000, "P-ERR-110413")}),
-    # P-AXIS-00354: 2^10 increments of 0.1 µm = 1024; an offset of 5000 is beyond one revolution (P-ERR-70310).
-    ("kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\nantr.encoder_overflow_offset 5000",
-     {"antr.encoder_overflow_offset": (5000, 0, "P-ERR-70310")}),
-    # P-AXIS-00294 on a terminal drive is switched off (P-ERR-110416); the offset is then not looked at.
-    ("kenngr.antr_typ 6\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\nantr.encoder_overflow_offset 5000",
-     {"kenngr.homing_overflow_evaluation": (True, False, "P-ERR-110416")}),
-    # P-AXIS-00386 on a spindle (P-ERR-110522); P-AXIS-00388 on a CANopen drive (P-ERR-110516).
-    ("kenngr.antr_typ 2\nkenngr.achs_typ 4\nantr.sercos.drive_supports_cnc_homing 1",
-     {"antr.sercos.drive_supports_cnc_homing": (True, False, "P-ERR-110522")}),
-    ("kenngr.antr_typ 8\nantr.cnc_homing_encoder 2", {"antr.cnc_homing_encoder": (2, 0, "P-ERR-110516")}),
-    # P-AXIS-00387 outside 1..16 while the latch is on (P-ERR-110514).
-    ("kenngr.antr_typ 2\nantr.sercos.drive_supports_cnc_homing 1\nantr.sercos.cnc_homing_rt_bit_layout 0",
-     {"antr.sercos.cnc_homing_rt_bit_layout": (0, 1, "P-ERR-110514")}),
-    # P-AXIS-00412 on a linear axis (P-ERR-110545); reference monitoring on CANopen (P-ERR-110548).
-    ("kenngr.antr_typ 1\nkenngr.homing_max_movement_dist 3600000",
-     {"kenngr.homing_max_movement_dist": (3600000, 0, "P-ERR-110545")}),
-    ("kenngr.antr_typ 8\nantr.reference_check.element_name S-0-0135\nantr.reference_check.bit_nr 6",
-     {"antr.reference_check.element_name": ("S-0-0135", "", "P-ERR-110548")}),
-    # Nothing to correct.
-    ("kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\ngetriebe[0].vb_not_referenced 0", {}),
-])
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        # P-AXIS-00299: drive-controlled homing on a simulated drive -> the drive's default (P-ERR-110384).
+        (
+            "kenngr.antr_typ 4\nkenngr.homing.homing_type DRIVE_CONTROLLED",
+            {"kenngr.homing.homing_type": ("DRIVE_CONTROLLED", "CNC_CONTROLLED", "P-ERR-110384")},
+        ),
+        # P-AXIS-00268 caps both homing speeds and the fixed-stop speed (P-ERR-110421/110422/110413).
+        (
+            "kenngr.antr_typ 1\ngetriebe[1].vb_not_referenced 10000\ngetriebe[1].vb_refmax 50000\n"
+            "getriebe[1].vb_reflow 20000\ngetriebe[1].homing.torq_move_velocity 30000",
+            {
+                "getriebe[1].vb_refmax": (50000, 10000, "P-ERR-110421"),
+                "getriebe[1].vb_reflow": (20000, 10000, "P-ERR-110422"),
+                "getriebe[1].homing.torq_move_velocity": (30000, 10000, "P-ERR-110413"),
+            },
+        ),
+        # P-AXIS-00354: 2^10 increments of 0.1 µm = 1024; an offset of 5000 is beyond one revolution (P-ERR-70310).
+        (
+            "kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\nantr.encoder_overflow_offset 5000",
+            {"antr.encoder_overflow_offset": (5000, 0, "P-ERR-70310")},
+        ),
+        # P-AXIS-00294 on a terminal drive is switched off (P-ERR-110416); the offset is then not looked at.
+        (
+            "kenngr.antr_typ 6\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 10\nantr.encoder_overflow_offset 5000",
+            {"kenngr.homing_overflow_evaluation": (True, False, "P-ERR-110416")},
+        ),
+        # P-AXIS-00386 on a spindle (P-ERR-110522); P-AXIS-00388 on a CANopen drive (P-ERR-110516).
+        (
+            "kenngr.antr_typ 2\nkenngr.achs_typ 4\nantr.sercos.drive_supports_cnc_homing 1",
+            {"antr.sercos.drive_supports_cnc_homing": (True, False, "P-ERR-110522")},
+        ),
+        ("kenngr.antr_typ 8\nantr.cnc_homing_encoder 2", {"antr.cnc_homing_encoder": (2, 0, "P-ERR-110516")}),
+        # P-AXIS-00387 outside 1..16 while the latch is on (P-ERR-110514).
+        (
+            "kenngr.antr_typ 2\nantr.sercos.drive_supports_cnc_homing 1\nantr.sercos.cnc_homing_rt_bit_layout 0",
+            {"antr.sercos.cnc_homing_rt_bit_layout": (0, 1, "P-ERR-110514")},
+        ),
+        # P-AXIS-00412 on a linear axis (P-ERR-110545); reference monitoring on CANopen (P-ERR-110548).
+        (
+            "kenngr.antr_typ 1\nkenngr.homing_max_movement_dist 3600000",
+            {"kenngr.homing_max_movement_dist": (3600000, 0, "P-ERR-110545")},
+        ),
+        (
+            "kenngr.antr_typ 8\nantr.reference_check.element_name S-0-0135\nantr.reference_check.bit_nr 6",
+            {"antr.reference_check.element_name": ("S-0-0135", "", "P-ERR-110548")},
+        ),
+        # Nothing to correct.
+        (
+            "kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\ngetriebe[0].vb_not_referenced 0",
+            {},
+        ),
+    ],
+)
 def test_load_time_corrections(text, expected):
     assert corrections(text) == expected
 
@@ -73,8 +98,10 @@ def test_corrected_value_is_what_every_command_uses():
 
 
 def test_capped_speeds_are_explained_and_simulated_at_the_cap():
-    text = (b"kenngr.antr_typ 1\ngetriebe[0].vb_not_referenced 10000\ngetriebe[0].vb_refmax 50000\n"
-            b"getriebe[0].vb_reflow 5000\ngetriebe[0].a_ref 500\nEnde\n")
+    text = (
+        b"kenngr.antr_typ 1\ngetriebe[0].vb_not_referenced 10000\ngetriebe[0].vb_refmax 50000\n"
+        b"getriebe[0].vb_reflow 5000\ngetriebe[0].a_ref 500\nEnde\n"
+    )
     report = explain_list(text, "t.lis")
     assert report["phases"][0]["velocity"] == 10000  # phase 1 at the cap, not at vb_refmax 50000
     assert dry_run(text, "t.lis").trace.phases[0].velocity == pytest.approx(10.0)  # mm/s
@@ -89,8 +116,10 @@ def test_references_resolve_the_same_in_load_and_lint():
 
 def test_model_validate_enforces_the_cross_rules_with_every_violation():
     # No cam but with reversal (LIS301), and the reference position beyond the positive software limit (LIS313).
-    data = {"kenngr": {"antr_typ": 1, "ref_ohne_nocken": True, "ref_ohne_rev": False, "swe_pos": 1000000},
-            "getriebe": [{"pos_refpkt": 2000000}] + [{}] * 5}
+    data = {
+        "kenngr": {"antr_typ": 1, "ref_ohne_nocken": True, "ref_ohne_rev": False, "swe_pos": 1000000},
+        "getriebe": [{"pos_refpkt": 2000000}] + [{}] * 5,
+    }
     with pytest.raises(ValidationError) as caught:
         axis_model().model_validate(data)
     found = {(error["ctx"]["code"], error["loc"]) for error in caught.value.errors()}
@@ -115,13 +144,16 @@ def test_dumps_round_trips_through_load():
     assert again.model_dump() == model.model_dump()
 
 
-@pytest.mark.parametrize("name,strategy,errors", [
-    ("conventional_x.lis", "cam_zero_pulse", []),
-    ("simulation_x.lis", "simulation", []),
-    ("sercos_s0146.lis", "cam_zero_pulse", []),
-    # The manual's TORQ excerpt leaves out torq_move_velocity (P-AXIS-00333 needs at least 1).
-    ("torq_sercos.lis", "fixed_stop", ["LIS315"]),
-])
+@pytest.mark.parametrize(
+    "name,strategy,errors",
+    [
+        ("conventional_x.lis", "cam_zero_pulse", []),
+        ("simulation_x.lis", "simulation", []),
+        ("sercos_s0146.lis", "cam_zero_pulse", []),
+        # The manual's TORQ excerpt leaves out torq_move_velocity (P-AXIS-00333 needs at least 1).
+        ("torq_sercos.lis", "fixed_stop", ["LIS315"]),
+    ],
+)
 def test_manual_examples_name_the_strategy_the_cnc_runs(name, strategy, errors):
     path = FIXTURES / "manual" / name
     report = explain_list(path.read_bytes(), name)

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from achslint.api import LintRequest, Linter
+from achslint.api import Linter, LintRequest
 from achslint.files import ChangedOnDisk, write_atomically
 from achslint.linter import check_bytes
 
@@ -28,19 +28,26 @@ def codes(data: bytes) -> list[str]:
     return [d.code for d in result.diagnostics]
 
 
-@pytest.mark.parametrize(("label", "data", "expected"), [
-    ("comment", b"kopf.achs_nr 1 ( " + b"x" * MB + b"\nEnde\n", []),
-    ("string value", b'kopf.log_achs_name "' + b"x" * MB + b'"\nEnde\n', ["LIS206"]),
-    ("unknown path", b"a" * MB + b" 1\nEnde\n", ["LIS101"]),
-    ("dotted path", b"a." * (MB // 2) + b"b 1\nEnde\n", ["LIS101"]),
-    ("blanks", b"kopf.achs_nr" + b" " * MB + b"1\nEnde\n", []),
-    ("brackets", b"[" * MB + b"\nEnde\n", ["LIS001"]),
-    ("quotes", b'"' * MB + b"\nEnde\n", ["LIS001"]),
-    ("digits of an integer", b"kopf.achs_nr " + b"1" * MB + b"\nEnde\n", ["LIS202"]),
-    ("digits of an index", b"getriebe[" + b"1" * MB + b"].vb_reflow 1\nEnde\n", ["LIS104"]),
-    ("nested indices", b"getriebe" + b"[" * (MB // 2) + b"0" + b"]" * (MB // 2) + b".x 1\nEnde\n", ["LIS001"]),
-    ("repeated indices", b"getriebe" + b"[0]" * (MB // 3) + b".vb_reflow 1\nEnde\n", ["LIS101"]),
-])
+@pytest.mark.parametrize(
+    ("label", "data", "expected"),
+    [
+        ("comment", b"kopf.achs_nr 1 ( " + b"x" * MB + b"\nEnde\n", []),
+        ("string value", b'kopf.log_achs_name "' + b"x" * MB + b'"\nEnde\n', ["LIS206"]),
+        ("unknown path", b"a" * MB + b" 1\nEnde\n", ["LIS101"]),
+        ("dotted path", b"a." * (MB // 2) + b"b 1\nEnde\n", ["LIS101"]),
+        ("blanks", b"kopf.achs_nr" + b" " * MB + b"1\nEnde\n", []),
+        ("brackets", b"[" * MB + b"\nEnde\n", ["LIS001"]),
+        ("quotes", b'"' * MB + b"\nEnde\n", ["LIS001"]),
+        ("digits of an integer", b"kopf.achs_nr " + b"1" * MB + b"\nEnde\n", ["LIS202"]),
+        ("digits of an index", b"getriebe[" + b"1" * MB + b"].vb_reflow 1\nEnde\n", ["LIS104"]),
+        (
+            "nested indices",
+            b"getriebe" + b"[" * (MB // 2) + b"0" + b"]" * (MB // 2) + b".x 1\nEnde\n",
+            ["LIS001"],
+        ),
+        ("repeated indices", b"getriebe" + b"[0]" * (MB // 3) + b".vb_reflow 1\nEnde\n", ["LIS101"]),
+    ],
+)
 def test_a_one_megabyte_line_gets_a_short_precise_finding(label, data, expected):
     assert codes(data) == expected, label
 

@@ -42,7 +42,9 @@ def test_statistics_prints_only_the_table(cli):
 def test_clean_run_says_all_checks_passed_and_fixable_counts(cli):
     clean = cli("lint", str(LISTS), "--select", "LIS5", "--format", "concise")
     assert out(clean).strip() == "All checks passed!"
-    assert out(cli("lint", str(LISTS), "--select", "LIS5", "--format", "json")).startswith("{")  # not in machine formats
+    assert out(cli("lint", str(LISTS), "--select", "LIS5", "--format", "json")).startswith(
+        "{"
+    )  # not in machine formats
     fixable = out(cli("lint", str(LISTS), "--format", "concise"))
     assert fixable.rstrip().endswith("2 fixable with --fix")
 
@@ -55,8 +57,19 @@ def test_output_file_is_utf8(cli, tmp_path):
 
 
 def test_include_repeated_and_comma_separated(cli):
-    one = out(cli("lint", str(LISTS), "--include", "achsmds1*", "--include", "achsmds2*,achsmds4*", "--format", "concise",
-                  "--statistics"))
+    one = out(
+        cli(
+            "lint",
+            str(LISTS),
+            "--include",
+            "achsmds1*",
+            "--include",
+            "achsmds2*,achsmds4*",
+            "--format",
+            "concise",
+            "--statistics",
+        )
+    )
     every = out(cli("lint", str(LISTS), "--format", "concise", "--statistics"))
     assert one == every
 
@@ -66,7 +79,9 @@ def test_extend_exclude_and_force_exclude(cli, tmp_path):
         (tmp_path / name).write_bytes((LISTS / name).read_bytes())
     result = cli("lint", str(tmp_path), "--extend-exclude", "achsmds2*", "--format", "concise")
     assert "achsmds2" not in out(result)
-    named = cli("lint", str(tmp_path / "achsmds2.lis"), "--extend-exclude", "achsmds2*", "--format", "concise")
+    named = cli(
+        "lint", str(tmp_path / "achsmds2.lis"), "--extend-exclude", "achsmds2*", "--format", "concise"
+    )
     assert "achsmds2" in out(named)  # a named file is linted unless --force-exclude
     forced = cli("lint", str(tmp_path / "achsmds2.lis"), "--extend-exclude", "achsmds2*", "--force-exclude")
     assert forced.returncode == 2 and "no axis list found" in forced.stderr.decode()

@@ -55,7 +55,9 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     if not any(names):
         return [lint((prefix + block).encode("utf-8"), name="achsmds1.lis") for block in blocks]
     files = {name: block for name, block in zip(names, blocks, strict=True) if name}
-    assert len(files) == len(blocks), f"{rule.code} '{title}': name the file of every block (each once), or of none"
+    assert len(files) == len(blocks), (
+        f"{rule.code} '{title}': name the file of every block (each once), or of none"
+    )
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="latin-1" if name.endswith(".lis") else "utf-8")
     startup = sorted(tmp_path.glob("hochlauf*.lis"))
@@ -83,26 +85,38 @@ def dry_run_findings(rule: Rule, blocks: list[str], names: list[str | None]) -> 
 
     lists = [block for block, name in zip(blocks, names, strict=True) if name is None]
     scenarios = [block for block, name in zip(blocks, names, strict=True) if name == "scenario.toml"]
-    assert len(lists) == 1 and len(scenarios) == 1, f"{rule.code}: a dry-run rule shows one list and one scenario.toml"
-    trace = dry_run(lists[0].encode("latin-1"), "achsmds1.lis", parse_input(tomllib.loads(scenarios[0]))).trace
-    return [Diagnostic("achsmds1.lis", 1, 1, 1, 1, w["code"], rule.severity, w["message"]) for w in trace.warnings]
+    assert len(lists) == 1 and len(scenarios) == 1, (
+        f"{rule.code}: a dry-run rule shows one list and one scenario.toml"
+    )
+    trace = dry_run(
+        lists[0].encode("latin-1"), "achsmds1.lis", parse_input(tomllib.loads(scenarios[0]))
+    ).trace
+    return [
+        Diagnostic("achsmds1.lis", 1, 1, 1, 1, w["code"], rule.severity, w["message"]) for w in trace.warnings
+    ]
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
 def test_example_triggers_the_rule(rule, tmp_path):
     for number, found in enumerate(findings(rule, "Example", tmp_path), 1):
-        assert rule.code in {d.code for d in found}, f"{rule.code}: case {number} of its Example does not trigger it"
+        assert rule.code in {d.code for d in found}, (
+            f"{rule.code}: case {number} of its Example does not trigger it"
+        )
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
 def test_use_instead_does_not_trigger_the_rule(rule, tmp_path):
     for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
-        assert rule.code not in {d.code for d in found}, f"{rule.code}: case {number} of its Use instead triggers it"
+        assert rule.code not in {d.code for d in found}, (
+            f"{rule.code}: case {number} of its Use instead triggers it"
+        )
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
 def test_use_instead_is_a_correct_list(rule, tmp_path):
     """What the docs recommend draws no error or warning from any rule (snippets may leave out `Ende`)."""
     for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
-        serious = [f"{d.code} {d.message}" for d in found if d.severity is not Severity.INFO and d.code != "LIS002"]
+        serious = [
+            f"{d.code} {d.message}" for d in found if d.severity is not Severity.INFO and d.code != "LIS002"
+        ]
         assert serious == [], f"{rule.code}: case {number} of its Use instead"

@@ -40,13 +40,16 @@ def test_bad_fixture_matches_its_snapshot(rule_dir):
     fix as a diff — is exactly what `bad.snap` holds (`python tools/update_snapshots.py CODE` rewrites it)."""
     snapshots = _snapshots()
     if snapshots.is_dry_run_rule(rule_dir):
-        assert snapshots.dry_run_warnings(rule_dir), f"{rule_dir.name}: the dry-run of the bad fixture must report it"
+        assert snapshots.dry_run_warnings(rule_dir), (
+            f"{rule_dir.name}: the dry-run of the bad fixture must report it"
+        )
     else:
         assert snapshots.findings(rule_dir), f"{rule_dir.name}: the bad fixture must trigger the rule"
     snap = rule_dir / "bad.snap"
     assert snap.exists(), f"no {snap}: run python tools/update_snapshots.py {rule_dir.name}"
     assert snapshots.render(rule_dir) == snap.read_text(encoding="utf-8"), (
-        f"{rule_dir.name} changed: run python tools/update_snapshots.py {rule_dir.name} and review the diff")
+        f"{rule_dir.name} changed: run python tools/update_snapshots.py {rule_dir.name} and review the diff"
+    )
 
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=[p.name for p in RULE_DIRS])

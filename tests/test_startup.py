@@ -30,11 +30,14 @@ def machine(tmp_path) -> Path:
     return copy
 
 
-@pytest.mark.parametrize("where,argument", [
-    ("listen", "hochlauf.lis"),             # the start-up list's own folder: the reported bug
-    (".", "listen/hochlauf.lis"),           # its parent, the CNC's working directory
-    ("../elsewhere", None),                 # anywhere else, by absolute path
-])
+@pytest.mark.parametrize(
+    "where,argument",
+    [
+        ("listen", "hochlauf.lis"),  # the start-up list's own folder: the reported bug
+        (".", "listen/hochlauf.lis"),  # its parent, the CNC's working directory
+        ("../elsewhere", None),  # anywhere else, by absolute path
+    ],
+)
 def test_entries_resolve_from_any_working_directory(machine, where, argument):
     cwd = (machine / where).resolve()
     target = argument or str(machine / "listen" / "hochlauf.lis")
@@ -51,7 +54,9 @@ def test_a_missing_entry_says_where_it_looked(machine):
     assert result.returncode == 1
     _, lis504 = linted(result, machine)
     assert len(lis504) == 1
-    assert f"looked for `{(machine / 'listen' / 'achsmds3.lis').resolve()}" in lis504[0].replace(str(machine), str(machine.resolve()))
+    assert f"looked for `{(machine / 'listen' / 'achsmds3.lis').resolve()}" in lis504[0].replace(
+        str(machine), str(machine.resolve())
+    )
     assert "CNC root" in lis504[0]
 
 
@@ -59,9 +64,13 @@ def test_cnc_root_option_and_setting(machine, tmp_path):
     wrong = tmp_path / "elsewhere"
     result = run_in(machine, "lint", "listen/hochlauf.lis", "--format", "json", "--cnc-root", str(wrong))
     _, lis504 = linted(result, machine)
-    assert len(lis504) == 4 and all(f"looked for `{wrong}/listen/" in m and "given by --cnc-root" in m for m in lis504)
+    assert len(lis504) == 4 and all(
+        f"looked for `{wrong}/listen/" in m and "given by --cnc-root" in m for m in lis504
+    )
     (machine / "listen" / ".achslint.toml").write_text('cnc-root = ".."\n')  # relative to the config file
-    result = run_in(tmp_path / "elsewhere", "lint", str(machine / "listen" / "hochlauf.lis"), "--format", "json")
+    result = run_in(
+        tmp_path / "elsewhere", "lint", str(machine / "listen" / "hochlauf.lis"), "--format", "json"
+    )
     assert linted(result, machine)[1] == []
     assert run_in(machine, "lint", "listen/hochlauf.lis", "--cnc-root", "nowhere").returncode == 2
 

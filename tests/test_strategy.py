@@ -28,7 +28,11 @@ CASES = [
     ("kenngr.antr_typ 1\nkenngr.ref_ohne_rev 1\nkenngr.homing_without_zero_pulse 1", "one_phase_cam", "I"),
     ("kenngr.antr_typ 4", "simulation", None),
     ("kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1", "spindle_flying_cam", None),
-    ("kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 1", "spindle_flying_zero_pulse", None),
+    (
+        "kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 1",
+        "spindle_flying_zero_pulse",
+        None,
+    ),
     ("kenngr.antr_typ 2", "drive_controlled", None),  # SERCOS default homing type (P-AXIS-00299 table)
     ("kenngr.antr_typ 8", "cam_zero_pulse", "III"),  # CANopen default is CNC-controlled
     ("kenngr.antr_typ 2\nkenngr.homing_type CNC_CONTROLLED", "cam_zero_pulse", "III"),
@@ -55,22 +59,26 @@ def test_three_phase_sequence_directions_and_speeds():
     phases = classify(values).phases
     assert [(p.direction, p.velocity) for p in phases] == [
         (POSITIVE, 100000),  # phase 1 at vb_refmax in ref_richt
-        (NEGATIVE, 20000),   # phase 2 off the cam, slow because fast_from_cam = 0
-        (POSITIVE, 20000),   # phase 3 back at vb_reflow
+        (NEGATIVE, 20000),  # phase 2 off the cam, slow because fast_from_cam = 0
+        (POSITIVE, 20000),  # phase 3 back at vb_reflow
     ]
 
 
 def test_falling_edge_and_delayed_zero_pulse_variants():
-    strategy = classify(values_of(
-        "kenngr.antr_typ 1\nlr_hw[0].cam_level 0\nkenngr.ref_richt 0\nkenngr.shift_offset_zero_pulse_activation 5000"
-    ))
+    strategy = classify(
+        values_of(
+            "kenngr.antr_typ 1\nlr_hw[0].cam_level 0\nkenngr.ref_richt 0\nkenngr.shift_offset_zero_pulse_activation 5000"
+        )
+    )
     assert strategy.falling_edge
     assert any("falling edge" in v for v in strategy.variants)
     assert any("P-AXIS-00494" in v for v in strategy.variants)
 
 
 def test_encoder_overflow_is_type_iii_with_the_overflow_as_event():
-    strategy = classify(values_of("kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 20"))
+    strategy = classify(
+        values_of("kenngr.antr_typ 5\nkenngr.homing_overflow_evaluation 1\nantr.encoder_bit_range 20")
+    )
     assert strategy.id == "cam_zero_pulse"
     assert "encoder overflow" in strategy.phases[-1].ends_when
 
@@ -83,13 +91,13 @@ def test_reference_values_are_followed():
 # Effectiveness table of the manual (§3.5): X = effective, - = not effective.
 TABLE = {
     #                          I     II     III    IV
-    "kenngr.ref_ohne_rev":    (True, True, True, False),
-    "kenngr.ref_richt":       (True, True, True, False),
-    "kenngr.fast_from_cam":   (True, False, True, False),
+    "kenngr.ref_ohne_rev": (True, True, True, False),
+    "kenngr.ref_richt": (True, True, True, False),
+    "kenngr.fast_from_cam": (True, False, True, False),
     "getriebe[0].pos_refpkt": (True, True, True, False),
-    "getriebe[0].vb_reflow":  (True, True, True, False),
-    "getriebe[0].vb_refmax":  (True, False, True, False),
-    "lr_hw[0].cam_level":     (True, False, True, False),
+    "getriebe[0].vb_reflow": (True, True, True, False),
+    "getriebe[0].vb_refmax": (True, False, True, False),
+    "lr_hw[0].cam_level": (True, False, True, False),
 }
 TYPES = {
     "I": "kenngr.antr_typ 1\nkenngr.homing_without_zero_pulse 1",

@@ -21,13 +21,21 @@ INFO_ONLY = FIXTURES / "lists" / "achsmds4.lis"  # only LIS102 (info): an old pa
 def run_in(cwd: Path, *args: str) -> subprocess.CompletedProcess:
     """The real entry point started in another working directory (the package found through an absolute path)."""
     env = {**os.environ, "NO_COLOR": "1", "PYTHONPATH": str(ROOT / "src")}
-    return subprocess.run([sys.executable, "-m", "achslint", *args], cwd=cwd, capture_output=True, env=env, check=False,
-                          timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "achslint", *args],
+        cwd=cwd,
+        capture_output=True,
+        env=env,
+        check=False,
+        timeout=120,
+    )
 
 
 @pytest.mark.parametrize("option", ["--select", "--ignore", "--extend-select"])
-@pytest.mark.parametrize("code,hint", [("LIS9999", "did you mean"), ("LIS6", "rule families are LIS0"),
-                                       ("LIS3O2", "did you mean LIS302?")])
+@pytest.mark.parametrize(
+    "code,hint",
+    [("LIS9999", "did you mean"), ("LIS6", "rule families are LIS0"), ("LIS3O2", "did you mean LIS302?")],
+)
 def test_unknown_codes_on_the_command_line_are_usage_errors(cli, option, code, hint):
     result = cli("lint", str(INFO_ONLY), option, code)
     assert result.returncode == 2
@@ -40,12 +48,15 @@ def test_known_codes_and_prefixes_still_work(cli):
     assert cli("lint", str(INFO_ONLY), "--select", "lis1,LIS102", "--ignore", "LIS5").returncode == 0
 
 
-@pytest.mark.parametrize("text,key", [
-    ('select = ["LIS9999"]\n', "select"),
-    ('ignore = ["LIS6"]\n', "ignore"),
-    ('[per-file-ignores]\n"*.lis" = ["LIS77"]\n', "per-file-ignores"),
-    ('[severity]\nLIS4 = "error"\n', "severity"),
-])
+@pytest.mark.parametrize(
+    "text,key",
+    [
+        ('select = ["LIS9999"]\n', "select"),
+        ('ignore = ["LIS6"]\n', "ignore"),
+        ('[per-file-ignores]\n"*.lis" = ["LIS77"]\n', "per-file-ignores"),
+        ('[severity]\nLIS4 = "error"\n', "severity"),
+    ],
+)
 def test_unknown_codes_in_the_configuration_are_config_errors(cli, tmp_path, text, key):
     (tmp_path / ".achslint.toml").write_text(text)
     axis = tmp_path / "achsmds1.lis"
@@ -64,7 +75,11 @@ def test_unknown_code_in_noqa_is_reported_with_the_closest_code():
 
 
 def test_unknown_code_in_a_file_level_noqa_is_reported():
-    found = [d.message for d in lint_text("# achslint: noqa: LIS9999\nkenngr.antr_typ 1\nEnde\n") if d.code == "LIS009"]
+    found = [
+        d.message
+        for d in lint_text("# achslint: noqa: LIS9999\nkenngr.antr_typ 1\nEnde\n")
+        if d.code == "LIS009"
+    ]
     assert found and "unknown code `LIS9999`" in found[0]
 
 
@@ -83,11 +98,14 @@ def test_no_list_found_is_exit_2_unless_allowed(cli, tmp_path, make):
     assert cli("fmt", "--check", str(tmp_path), "--allow-empty").returncode == 0
 
 
-@pytest.mark.parametrize("text,where", [
-    ("[tool.achslint\nselect = 1\n", ":1:15:"),
-    ('[tool.achslint]\nselect = ["LIS1"\n', ":3:1:"),
-    ("[tool.black]\nline-length = \n", ":2:15:"),
-])
+@pytest.mark.parametrize(
+    "text,where",
+    [
+        ("[tool.achslint\nselect = 1\n", ":1:15:"),
+        ('[tool.achslint]\nselect = ["LIS1"\n', ":3:1:"),
+        ("[tool.black]\nline-length = \n", ":2:15:"),
+    ],
+)
 def test_broken_pyproject_is_exit_2_with_file_line_and_column(cli, tmp_path, text, where):
     (tmp_path / "pyproject.toml").write_text(text)
     axis = tmp_path / "achsmds1.lis"

@@ -19,7 +19,9 @@ def test_end_of_line_noqa_with_codes():
 def test_noqa_inside_a_paren_comment_and_several_codes():
     text = BASE + "getriebe[0].vb_reflow 100000   ( slow on purpose, noqa: LIS302, LIS403\n"
     found = lint((text + "Ende\n").encode("latin-1"))
-    assert [(d.line, d.code) for d in found] == [(4, "LIS009")]  # LIS302 suppressed; LIS403 had nothing to suppress
+    assert [(d.line, d.code) for d in found] == [
+        (4, "LIS009")
+    ]  # LIS302 suppressed; LIS403 had nothing to suppress
     assert "LIS403" in found[0].message and "LIS302" not in found[0].message
 
 

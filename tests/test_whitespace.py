@@ -38,8 +38,9 @@ def test_a_form_feed_after_a_number_stays_an_error():
     data = b"kopf.achs_nr 1\x0c\nEnde\n"
     formatted, _ = format_bytes(data)
     assert b"1\x0c\n" in formatted
-    assert [d.code for d in check_bytes(formatted, "a.lis").diagnostics] == \
-        [d.code for d in check_bytes(data, "a.lis").diagnostics]
+    assert [d.code for d in check_bytes(formatted, "a.lis").diagnostics] == [
+        d.code for d in check_bytes(data, "a.lis").diagnostics
+    ]
 
 
 def test_a_cr_line_followed_by_a_blank_only_lf_line_is_not_merged():
@@ -60,7 +61,9 @@ def test_the_parser_counts_lines_only_at_cr_and_lf():
 def test_the_fixer_edits_names_and_keeps_other_spaces_around_them():
     data = "kenngr.ref_ricth 1 (\xa0note\x0c \nkenngr.homing_type\tTORQ (\x85\nEnde\n".encode("latin-1")
     fixed = fix_bytes(data, "a.lis", unsafe=True).data  # ref_richt 1 changes behaviour: an unsafe fix
-    assert fixed == "kenngr.ref_richt 1 (\xa0note\x0c \nkenngr.homing.homing_type\tTORQ (\x85\nEnde\n".encode("latin-1")
+    assert fixed == "kenngr.ref_richt 1 (\xa0note\x0c \nkenngr.homing.homing_type\tTORQ (\x85\nEnde\n".encode(
+        "latin-1"
+    )
 
 
 def test_diff_marks_a_missing_final_line_break():
@@ -71,12 +74,28 @@ def test_diff_marks_a_missing_final_line_break():
 
 LINE_BREAKS = st.sampled_from(["\n", "\r\n", "\r"])
 SPACES = st.sampled_from([" ", "\t", *OTHER_SPACES])
-WORDS = st.sampled_from(["kopf.achs_nr", "kopf.log_achs_name", "getriebe[0].vb_reflow", "Ende", "1", "0x10", '"a b"',
-                         "X_Achse", "( note", "# c", "µ", "bad[x]", "é"])
+WORDS = st.sampled_from(
+    [
+        "kopf.achs_nr",
+        "kopf.log_achs_name",
+        "getriebe[0].vb_reflow",
+        "Ende",
+        "1",
+        "0x10",
+        '"a b"',
+        "X_Achse",
+        "( note",
+        "# c",
+        "µ",
+        "bad[x]",
+        "é",
+    ]
+)
 LINE = st.lists(st.one_of(WORDS, SPACES), max_size=8).map("".join)
 # Blank-only lines (blanks, tabs and the other spaces) between lines with any mix of breaks.
-TEXT = st.lists(st.tuples(st.one_of(LINE, st.lists(SPACES, max_size=3).map("".join)), LINE_BREAKS),
-                max_size=12).map(lambda rows: "".join(body + brk for body, brk in rows))
+TEXT = st.lists(
+    st.tuples(st.one_of(LINE, st.lists(SPACES, max_size=3).map("".join)), LINE_BREAKS), max_size=12
+).map(lambda rows: "".join(body + brk for body, brk in rows))
 
 
 @settings(max_examples=400, deadline=None)
@@ -87,13 +106,15 @@ def test_fmt_changes_blanks_and_tabs_only_and_keeps_every_line_break(text, encod
     assert format_bytes(formatted) == (formatted, False)  # idempotent
     before = split_lines(decode(data).text, keepends=True)
     after = split_lines(decode(formatted).text, keepends=True)
-    end = next((i for i, row in enumerate(before) if fields(row.rstrip("\r\n")) == ["Ende"] and row[:4] == "Ende"),
-               None)
+    end = next(
+        (i for i, row in enumerate(before) if fields(row.rstrip("\r\n")) == ["Ende"]),
+        None,
+    )
     # Lines are only ever dropped at the end, after `Ende`, and only when blank.
     assert len(after) <= len(before)
-    for dropped in before[len(after):]:
+    for dropped in before[len(after) :]:
         assert end is not None and not dropped.rstrip("\r\n").strip(" \t")
-    for old, new in zip(before, after):
+    for old, new in zip(before, after, strict=False):
         assert fields(old.rstrip("\r\n")) == fields(new.rstrip("\r\n"))
-        old_break, new_break = old[len(old.rstrip("\r\n")):], new[len(new.rstrip("\r\n")):]
+        old_break, new_break = old[len(old.rstrip("\r\n")) :], new[len(new.rstrip("\r\n")) :]
         assert new_break == old_break or (not old_break and new is after[-1])

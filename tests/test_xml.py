@@ -46,19 +46,19 @@ def found(data: bytes, name: str):
 def test_twincat_xml_positions_are_xml_lines():
     results = found(TWINCAT, "axis_x.xml")
     assert (7, 34, "LIS201") in results  # kenngr.ref_richt 2 on XML line 7
-    assert (9, 1, "LIS302") in results   # vb_reflow > vb_refmax on XML line 9
+    assert (9, 1, "LIS302") in results  # vb_reflow > vb_refmax on XML line 9
     assert not [r for r in results if r[2] == "LIS002"]  # the embedded list ends with Ende
 
 
 def test_first_list_line_columns_are_offset():
     data = b"<TreeItem><IsgAxisDef><AchsMds><![CDATA[kenngr.ref_richt 2\nEnde\n]]></AchsMds></IsgAxisDef></TreeItem>"
-    (line, column, code), = [r for r in found(data, "one.xti") if r[2] == "LIS201"]
+    ((line, column, _code),) = [r for r in found(data, "one.xti") if r[2] == "LIS201"]
     assert (line, column) == (1, data.index(b"kenngr") + 1 + len("kenngr.ref_richt "))
 
 
 def test_isg_xml_list_is_linted_by_the_same_rules():
     results = found(ISG, "ax_mds_1.xml")
-    assert (9, 9, "LIS202") in results   # encoder_bit_range 40
+    assert (9, 9, "LIS202") in results  # encoder_bit_range 40
     assert (10, 9, "LIS203") in results  # DRIVE_CONROLLED
     assert (11, 9, "LIS302") in results  # vb_reflow above vb_refmax, gear stage 0
     assert (13, 9, "LIS101") in results  # unknown id
@@ -67,8 +67,10 @@ def test_isg_xml_list_is_linted_by_the_same_rules():
 
 def test_entity_expansion_and_external_entities_are_refused(cli, tmp_path):
     bomb = tmp_path / "bomb.xml"
-    bomb.write_bytes(b'<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>'
-                     b"<TreeItem><AchsMds>&b;</AchsMds></TreeItem>")
+    bomb.write_bytes(
+        b'<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>'
+        b"<TreeItem><AchsMds>&b;</AchsMds></TreeItem>"
+    )
     result = cli("lint", str(bomb))
     assert result.returncode == 2
     assert b"refusing to read" in result.stderr and b"Traceback" not in result.stderr
@@ -107,8 +109,10 @@ def test_fix_and_fmt_never_rewrite_xml(cli, tmp_path):
 
 
 def test_twincat_project_axes_form_one_machine():
-    axis = (b"<IsgAxisDef><DriveType>1</DriveType><AchsMds><![CDATA[kopf.achs_nr 1\n"
-            b"kopf.log_achs_name AXIS_%d\nEnde\n]]></AchsMds></IsgAxisDef>\n")
+    axis = (
+        b"<IsgAxisDef><DriveType>1</DriveType><AchsMds><![CDATA[kopf.achs_nr 1\n"
+        b"kopf.log_achs_name AXIS_%d\nEnde\n]]></AchsMds></IsgAxisDef>\n"
+    )
     project = b"<TcSmProject>\n" + axis % 1 + axis % 2 + b"</TcSmProject>\n"
     results = found(project, "machine.tsproj")
     assert (6, 55, "LIS501") in results  # the second axis (its list starts on XML line 6) repeats number 1

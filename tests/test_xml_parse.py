@@ -11,9 +11,13 @@ from achslint.decode import UnreadableInput
 from achslint.linter import check_bytes
 from achslint.xmlinput import extract, single_list, source_text
 
-AXIS = "<IsgAxisDef><AchsMds><![CDATA[kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n]]></AchsMds></IsgAxisDef>\n"
-BILLION_LAUGHS = (b'<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>'
-                  b"<TreeItem><AchsMds>&b;</AchsMds></TreeItem>")
+AXIS = (
+    "<IsgAxisDef><AchsMds><![CDATA[kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n]]></AchsMds></IsgAxisDef>\n"
+)
+BILLION_LAUGHS = (
+    b'<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>'
+    b"<TreeItem><AchsMds>&b;</AchsMds></TreeItem>"
+)
 
 
 def codes(data: bytes, name: str = "axis.xml") -> list[tuple[int, int, str]]:
@@ -32,7 +36,7 @@ def test_two_cdata_sections_form_one_list_with_exact_positions():
     data = b"<AchsMds><![CDATA[kopf.achs_nr 1\nkenngr.ref_ri]]><![CDATA[chtx 2\nEnde\n]]></AchsMds>"
     [embedded] = extract(data, "a.xml")
     assert embedded.text == "kopf.achs_nr 1\nkenngr.ref_richtx 2\nEnde\n"
-    assert ("LIS001" not in {c[2] for c in codes(data)})
+    assert "LIS001" not in {c[2] for c in codes(data)}
     # `kenngr.ref_richtx` starts on XML line 2, column 1, and its value `2` in the second section.
     [(line, column, _)] = [c for c in codes(data) if c[2] == "LIS101"]
     assert (line, column) == (2, 1)
@@ -53,7 +57,9 @@ def test_character_references_are_unescaped():
 
 @pytest.mark.parametrize("encoding", ["utf-16", "utf-16-le", "utf-8-sig", "latin-1"])
 def test_any_encoding_expat_knows_is_read(encoding):
-    declared = "utf-16" if encoding.startswith("utf-16") else {"utf-8-sig": "utf-8"}.get(encoding, "iso-8859-1")
+    declared = (
+        "utf-16" if encoding.startswith("utf-16") else {"utf-8-sig": "utf-8"}.get(encoding, "iso-8859-1")
+    )
     text = f'<?xml version="1.0" encoding="{declared}"?>\n<AchsMds>kopf.log_achs_name "µ"\nkenngr.ref_richt 2\nEnde\n</AchsMds>\n'
     data = text.encode(encoding)
     if encoding == "utf-16-le":
@@ -73,7 +79,7 @@ def test_crlf_xml_keeps_xml_line_numbers():
 
 
 def test_isg_element_with_thousands_of_index_digits_is_a_finding():
-    data = b'<AX_MDS><P-AXIS-00152.' + b"1" * 5000 + b' Value="0"/></AX_MDS>'
+    data = b"<AX_MDS><P-AXIS-00152." + b"1" * 5000 + b' Value="0"/></AX_MDS>'
     assert {c[2] for c in codes(data)} <= {"LIS101", "LIS104"}
 
 

@@ -38,8 +38,25 @@ from achslint.catalogue import TYPE_LIMITS  # noqa: E402  (the one table of inte
 TABLE = ROOT / "tools" / "catalogue" / "params.tsv"
 OVERRIDES = ROOT / "tools" / "catalogue_overrides.toml"
 OUTPUT = ROOT / "src" / "achslint" / "data" / "catalogue.json"
-COLUMNS = ("id", "path", "alias", "alias_kind", "type", "range", "unit_T", "unit_R", "unit_S", "default",
-           "drive_types", "errors", "title", "array_bounds", "axis_types", "restart", "source")
+COLUMNS = (
+    "id",
+    "path",
+    "alias",
+    "alias_kind",
+    "type",
+    "range",
+    "unit_T",
+    "unit_R",
+    "unit_S",
+    "default",
+    "drive_types",
+    "errors",
+    "title",
+    "array_bounds",
+    "axis_types",
+    "restart",
+    "source",
+)
 
 # Drive-type names used in the table's drive_types column -> P-AXIS-00020 codes.
 DRIVE_CODES = {
@@ -59,9 +76,18 @@ DRIVE_CODES = {
 
 # Parameters the CNC only takes over at a restart (format facts §10 and notes).
 RESTART_IDS = {
-    "P-AXIS-00016", "P-AXIS-00018", "P-AXIS-00020", "P-AXIS-00036", "P-AXIS-00041",
-    "P-AXIS-00048", "P-AXIS-00136", "P-AXIS-00230", "P-AXIS-00233", "P-AXIS-00234",
-    "P-AXIS-00371", "P-AXIS-00426",
+    "P-AXIS-00016",
+    "P-AXIS-00018",
+    "P-AXIS-00020",
+    "P-AXIS-00036",
+    "P-AXIS-00041",
+    "P-AXIS-00048",
+    "P-AXIS-00136",
+    "P-AXIS-00230",
+    "P-AXIS-00233",
+    "P-AXIS-00234",
+    "P-AXIS-00371",
+    "P-AXIS-00426",
 }
 
 _NUMBER = r"[+-]?(?:0[xX][0-9A-Fa-f]+|\d+(?:\.\d*)?(?:[eE][+-]?\d+)?)"
@@ -157,13 +183,17 @@ def parse_range(raw: str, ptype: str) -> dict:
     if match and not re.search(r"[<≤]", match.group(4)):
         low, high = bound_value(match.group(1)), bound_value(match.group(4))
         if _usable(low) or _usable(high):
-            result.update(min=low, min_strict=match.group(2) == "<", max=high, max_strict=match.group(3) == "<")
+            result.update(
+                min=low, min_strict=match.group(2) == "<", max=high, max_strict=match.group(3) == "<"
+            )
             return result
     match = re.fullmatch(rf"(.+?)\s*(≥|>)\s*(?:{name})\s*(≥|>)\s*(.+?)", text)
     if match:
         result.update(
-            max=bound_value(match.group(1)), max_strict=match.group(2) == ">",
-            min=bound_value(match.group(4)), min_strict=match.group(3) == ">",
+            max=bound_value(match.group(1)),
+            max_strict=match.group(2) == ">",
+            min=bound_value(match.group(4)),
+            min_strict=match.group(3) == ">",
         )
         return result
     match = re.fullmatch(r"\[?\s*(\S+(?:\(\w+\))?)\s*\.\.\s*(.+?)\]?", text)
@@ -263,23 +293,29 @@ def import_table(gathered: Path) -> list[dict[str, str]]:
             alias = clean_path(row["aliases"]) if row["aliases"].strip() else ""
             codes = drive_codes(row["drive_types"]) or []
             restart = notes.get("restart") or row["p_axis_id"].strip() in RESTART_IDS
-            rows.append({
-                "id": row["p_axis_id"].strip(),
-                "path": path,
-                "alias": alias if alias != path else "",
-                "alias_kind": ("misspelling" if "spelling" in row["aliases"] else "old") if alias and alias != path else "",
-                "type": row["type"].strip(),
-                "range": row["range"].strip(),
-                **{f"unit_{axis}": unit_of(row[f"unit_{axis}"]) or "" for axis in "TRS"},
-                "default": row["default"].strip(),
-                "drive_types": " ".join(str(code) for code in codes),
-                "errors": " ".join(row["error_ids"].split()),
-                "title": notes.get("title", ""),
-                "array_bounds": " ".join(f"{name}={low}..{high}" for name, (low, high) in notes.get("array_bounds", {}).items()),
-                "axis_types": ",".join(notes.get("axis_types", [])),
-                "restart": "1" if restart else "",
-                "source": (row["source_url"].split() or [""])[0],
-            })
+            rows.append(
+                {
+                    "id": row["p_axis_id"].strip(),
+                    "path": path,
+                    "alias": alias if alias != path else "",
+                    "alias_kind": ("misspelling" if "spelling" in row["aliases"] else "old")
+                    if alias and alias != path
+                    else "",
+                    "type": row["type"].strip(),
+                    "range": row["range"].strip(),
+                    **{f"unit_{axis}": unit_of(row[f"unit_{axis}"]) or "" for axis in "TRS"},
+                    "default": row["default"].strip(),
+                    "drive_types": " ".join(str(code) for code in codes),
+                    "errors": " ".join(row["error_ids"].split()),
+                    "title": notes.get("title", ""),
+                    "array_bounds": " ".join(
+                        f"{name}={low}..{high}" for name, (low, high) in notes.get("array_bounds", {}).items()
+                    ),
+                    "axis_types": ",".join(notes.get("axis_types", [])),
+                    "restart": "1" if restart else "",
+                    "source": (row["source_url"].split() or [""])[0],
+                }
+            )
     return rows
 
 
@@ -321,8 +357,10 @@ def entry_of(row: dict[str, str], overrides: dict) -> dict:
     aliases.extend(extra.get("aliases", []))
     if aliases:
         entry["aliases"] = aliases
-    array_bounds = {name: [int(low), int(high)] for name, low, high in
-                    re.findall(r"(\w+)=(\d+)\.\.(\d+)", row["array_bounds"])}
+    array_bounds = {
+        name: [int(low), int(high)]
+        for name, low, high in re.findall(r"(\w+)=(\d+)\.\.(\d+)", row["array_bounds"])
+    }
     bounds = index_bounds(path, array_bounds, overrides.get("array_bounds", {}))
     if bounds:
         entry["index_bounds"] = bounds
@@ -369,7 +407,9 @@ def build(rows: list[dict[str, str]], overrides: dict) -> dict:
     added = []
     for pid, fields in overrides.get("add", {}).items():
         if pid in known:
-            raise SystemExit(f"{OVERRIDES.name}: [add.\"{pid}\"] is already a row of the table; use [parameter.\"{pid}\"]")
+            raise SystemExit(
+                f'{OVERRIDES.name}: [add."{pid}"] is already a row of the table; use [parameter."{pid}"]'
+            )
         added.append({column: str(fields.get(column, "")) for column in COLUMNS} | {"id": pid})
     return {
         "version": 1,
@@ -386,7 +426,10 @@ def dump(catalogue: dict) -> str:
     rows = [json.dumps(entry, ensure_ascii=False) for entry in catalogue["parameters"]]
     parts.append(",\n".join("  " + row for row in rows))
     parts.append(" ],")
-    rest = [f' "{key}": {json.dumps(catalogue[key], ensure_ascii=False)}' for key in ("misspellings", "bitfields", "drive_types")]
+    rest = [
+        f' "{key}": {json.dumps(catalogue[key], ensure_ascii=False)}'
+        for key in ("misspellings", "bitfields", "drive_types")
+    ]
     parts.append(",\n".join(rest))
     parts.append("}")
     return "\n".join(parts) + "\n"
@@ -399,9 +442,15 @@ def catalogue_text(table: Path = TABLE, overrides: Path = OVERRIDES) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--import-table", type=Path, metavar="GATHERED_TSV",
-                        help="rewrite tools/catalogue/params.tsv from a gathered parameter table first")
-    parser.add_argument("--check", action="store_true", help="change nothing; exit 1 if a generated file is stale")
+    parser.add_argument(
+        "--import-table",
+        type=Path,
+        metavar="GATHERED_TSV",
+        help="rewrite tools/catalogue/params.tsv from a gathered parameter table first",
+    )
+    parser.add_argument(
+        "--check", action="store_true", help="change nothing; exit 1 if a generated file is stale"
+    )
     parser.add_argument("--output", type=Path, default=OUTPUT)
     args = parser.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))

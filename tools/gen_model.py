@@ -38,7 +38,9 @@ class Node:
 
 
 def class_name(path: list[str]) -> str:
-    return "".join(part.capitalize() for part in re.split(r"[_\W]+", "_".join(path)) if part) or "AxisParameters"
+    return (
+        "".join(part.capitalize() for part in re.split(r"[_\W]+", "_".join(path)) if part) or "AxisParameters"
+    )
 
 
 def tree() -> tuple[Node, dict[str, tuple[str, str]]]:
@@ -116,26 +118,50 @@ def classes(node: Node, path: list[str], out: list[str]) -> str:
             text = repr(description(parameter))
             if child.bounds is not None:
                 size = child.bounds[1] + 1
-                lines.append(f"    {python_name}: List[{annotation}] = Field("
-                             + _arguments(default_factory=f"lambda: [{default!r}] * {size}", min_length=size,
-                                          max_length=size, description=text, **alias) + ")")
+                lines.append(
+                    f"    {python_name}: List[{annotation}] = Field("
+                    + _arguments(
+                        default_factory=f"lambda: [{default!r}] * {size}",
+                        min_length=size,
+                        max_length=size,
+                        description=text,
+                        **alias,
+                    )
+                    + ")"
+                )
             else:
-                lines.append(f"    {python_name}: {annotation} = Field("
-                             + _arguments(default=repr(default), description=text,
-                                          **{k: repr(v) for k, v in constraints.items()}, **alias) + ")")
+                lines.append(
+                    f"    {python_name}: {annotation} = Field("
+                    + _arguments(
+                        default=repr(default),
+                        description=text,
+                        **{k: repr(v) for k, v in constraints.items()},
+                        **alias,
+                    )
+                    + ")"
+                )
             continue
         sub = classes(child, [*path, name], out)
         if child.bounds is not None:
             size = child.bounds[1] + 1
-            lines.append(f"    {python_name}: List[{sub}] = Field("
-                         + _arguments(default_factory=f"lambda: [{sub}() for _ in range({size})]", min_length=size,
-                                      max_length=size, **alias) + ")")
+            lines.append(
+                f"    {python_name}: List[{sub}] = Field("
+                + _arguments(
+                    default_factory=f"lambda: [{sub}() for _ in range({size})]",
+                    min_length=size,
+                    max_length=size,
+                    **alias,
+                )
+                + ")"
+            )
         else:
-            lines.append(f"    {python_name}: {sub} = Field(" + _arguments(default_factory=sub, **alias) + ")")
+            lines.append(
+                f"    {python_name}: {sub} = Field(" + _arguments(default_factory=sub, **alias) + ")"
+            )
     own = class_name(path) if path else "AxisParameters"
     base = "AxisBase" if not path else "_Group"
     title = ".".join(path) or "the axis list"
-    out.append(f"class {own}({base}):\n    \"\"\"Parameters of {title}.\"\"\"\n\n" + "\n".join(lines) + "\n")
+    out.append(f'class {own}({base}):\n    """Parameters of {title}."""\n\n' + "\n".join(lines) + "\n")
     return own
 
 

@@ -54,7 +54,9 @@ def lint_fixture(path: Path, select: list[str] | None) -> list:
 
 def findings(rule_dir: Path) -> list:
     """The diagnostics of the rule on its bad fixture."""
-    found = [d for d in lint_fixture(fixture(rule_dir, "bad"), selection(rule_dir)) if d.code == rule_dir.name]
+    found = [
+        d for d in lint_fixture(fixture(rule_dir, "bad"), selection(rule_dir)) if d.code == rule_dir.name
+    ]
     return sorted(found, key=lambda d: (d.path, d.line, d.column, d.message))
 
 
@@ -84,7 +86,9 @@ def _fix_diff(diagnostic, base: Path) -> list[str]:
     if diagnostic.fix.remove_bom:
         return ["    (removes the byte-order mark)"]
     name = _where(diagnostic.path, base)
-    diff = difflib.unified_diff(source.text.splitlines(), fixed.text.splitlines(), name, name, n=0, lineterm="")
+    diff = difflib.unified_diff(
+        source.text.splitlines(), fixed.text.splitlines(), name, name, n=0, lineterm=""
+    )
     return ["    " + line for line in list(diff)[2:]]
 
 
@@ -108,21 +112,34 @@ def is_dry_run_rule(rule_dir: Path) -> bool:
 def render(rule_dir: Path) -> str:
     """The snapshot text of one rule."""
     if is_dry_run_rule(rule_dir):
-        lines = [f"# {rule_dir.name}: dry-run of bad.lis with bad.toml; regenerate with "
-                 f"python tools/update_snapshots.py {rule_dir.name}"]
-        return "\n".join(lines + [f"\ndry-run warning {rule_dir.name}\n  {m}" for m in dry_run_warnings(rule_dir)]) + "\n"
+        lines = [
+            f"# {rule_dir.name}: dry-run of bad.lis with bad.toml; regenerate with "
+            f"python tools/update_snapshots.py {rule_dir.name}"
+        ]
+        return (
+            "\n".join(
+                lines + [f"\ndry-run warning {rule_dir.name}\n  {m}" for m in dry_run_warnings(rule_dir)]
+            )
+            + "\n"
+        )
     base = rule_dir / "bad" if (rule_dir / "bad").is_dir() else rule_dir
-    out = [f"# {rule_dir.name} on its bad fixture; regenerate with python tools/update_snapshots.py {rule_dir.name}"]
+    out = [
+        f"# {rule_dir.name} on its bad fixture; regenerate with python tools/update_snapshots.py {rule_dir.name}"
+    ]
     for d in findings(rule_dir):
         out.append("")
-        out.append(f"{_where(d.path, base)}:{d.line}:{d.column}-{d.end_line}:{d.end_column} {d.code} {d.severity.value}")
+        out.append(
+            f"{_where(d.path, base)}:{d.line}:{d.column}-{d.end_line}:{d.end_column} {d.code} {d.severity.value}"
+        )
         out.append(f"  {_relative(d.message, base)}")
         if d.parameter:
             out.append(f"  parameter: {d.parameter}" + (f" ({d.p_axis})" if d.p_axis else ""))
         for related in d.related:
             text = f" — {related.message}" if related.message else ""
-            out.append(f"  related: {_where(related.path, base)}:{related.line}:{related.column}"
-                       f" {related.parameter or ''}{text}".rstrip())
+            out.append(
+                f"  related: {_where(related.path, base)}:{related.line}:{related.column}"
+                f" {related.parameter or ''}{text}".rstrip()
+            )
         if d.fix is not None:
             out.append(f"  fix ({d.fix.applicability}): {d.fix.description}")
             out.extend(_fix_diff(d, base))

@@ -23,11 +23,15 @@ if TYPE_CHECKING:
 
 __version__ = "0.1.0"
 
-__all__ = ["__version__", "load", "loads", "dumps", "lint", "lint_text", "explain", "dry_run", "format_text"]
+__all__ = ["__version__", "dry_run", "dumps", "explain", "format_text", "lint", "lint_text", "load", "loads"]
 
 
-def load(source: str | PathLike[str] | bytes, *, defaults: str | PathLike[str] | bytes | None = None,
-         strict: bool = False) -> Any:
+def load(
+    source: str | PathLike[str] | bytes,
+    *,
+    defaults: str | PathLike[str] | bytes | None = None,
+    strict: bool = False,
+) -> Any:
     """Parse a list (a path, or bytes) into a typed `AxisParameters` model (the resolved axis);
     `strict=True` raises a pydantic ValidationError listing every error-level finding."""
     from .api import load as _load
@@ -49,16 +53,22 @@ def dumps(model: Any) -> str:
     return _dumps(model)
 
 
-def lint(source: str | PathLike[str] | bytes, *, select: list[str] | None = None, ignore: list[str] | None = None,
-         name: str | None = None) -> list[Diagnostic]:
+def lint(
+    source: str | PathLike[str] | bytes,
+    *,
+    select: list[str] | None = None,
+    ignore: list[str] | None = None,
+    name: str | None = None,
+) -> list[Diagnostic]:
     """Lint a list (a path, or bytes) and return its diagnostics."""
     from .api import lint as _lint
 
     return _lint(source, select=select, ignore=ignore, name=name)
 
 
-def lint_text(text: str, *, filename: str = "<string>", select: list[str] | None = None,
-              ignore: list[str] | None = None) -> list[Diagnostic]:
+def lint_text(
+    text: str, *, filename: str = "<string>", select: list[str] | None = None, ignore: list[str] | None = None
+) -> list[Diagnostic]:
     """Lint the text of a list and return its diagnostics (reported under `filename`)."""
     from .api import lint_text as _lint_text
 

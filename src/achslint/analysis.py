@@ -87,7 +87,7 @@ class Setting:
 
     @property
     def spelling(self) -> str:
-        """"canonical" or the alias kind this assignment is written with."""
+        """ "canonical" or the alias kind this assignment is written with."""
         alias = self.resolution.alias if self.resolution else None
         return alias.kind if alias else "canonical"
 
@@ -141,13 +141,23 @@ def _check_indices(setting: Setting) -> None:
     line = setting.line
     arrays = _ARRAY_NAME.findall(parameter.path)
     written = list(_WRITTEN_INDEX.finditer(line.path))
-    for position, (index, (low, high)) in enumerate(zip(setting.resolution.indices, parameter.index_bounds)):
+    for position, (index, (low, high)) in enumerate(
+        zip(setting.resolution.indices, parameter.index_bounds, strict=False)
+    ):
         if low <= index <= high:
             continue
         start = line.path_column + written[position].start()
         text = written[position].group(0)
-        setting.add_problem(IndexOutOfBounds(arrays[position], None if index == syntax.HUGE else index, text[1:-1],
-                                             low, high, (start, start + len(text))))
+        setting.add_problem(
+            IndexOutOfBounds(
+                arrays[position],
+                None if index == syntax.HUGE else index,
+                text[1:-1],
+                low,
+                high,
+                (start, start + len(text)),
+            )
+        )
 
 
 def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
@@ -186,7 +196,7 @@ def _as_int(line: syntax.Line) -> int | NumberProblem | None:
 def comment_in_value_position(line: syntax.Line) -> bool:
     """True when the 'value' is really the start of a comment (`name   # text`)."""
     value = line.value or ""
-    return line.value_kind in (syntax.SYMBOL, syntax.BAD_STRING) and value.startswith(_COMMENT_STARTS + ("(",))
+    return line.value_kind in (syntax.SYMBOL, syntax.BAD_STRING) and value.startswith((*_COMMENT_STARTS, "("))
 
 
 def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
@@ -346,8 +356,14 @@ def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Referenc
     elif _category(target) != _category(parameter):
         problem = BadReference("kind", written, reference, target_path=target.path, target_type=target.type)
     elif parameter.unit(analysis.axis_type) != target.unit(analysis.axis_type):
-        problem = BadReference("unit", written, reference, target_path=target.path,
-                               own_unit=parameter.unit(analysis.axis_type), target_unit=target.unit(analysis.axis_type))
+        problem = BadReference(
+            "unit",
+            written,
+            reference,
+            target_path=target.path,
+            own_unit=parameter.unit(analysis.axis_type),
+            target_unit=target.unit(analysis.axis_type),
+        )
     elif reference.index is not None and target.index_bounds:
         low, high = target.index_bounds[0]
         if not low <= reference.index <= high:

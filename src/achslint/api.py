@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -10,10 +11,27 @@ from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file,
 from .context import Options
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
-from .files import (ChangedOnDisk, Refused, Scope, is_folder, not_a_list_file, read_list, real_path, reason,
-                    write_atomically)
+from .files import (
+    ChangedOnDisk,
+    Refused,
+    Scope,
+    is_folder,
+    not_a_list_file,
+    read_list,
+    real_path,
+    reason,
+    write_atomically,
+)
+from .linter import (
+    NOT_A_LIST,
+    FileResult,
+    FileSettings,
+    Selection,
+    check_bytes,
+    lint_bytes,
+    looks_like_a_list,
+)
 from .machine import is_default_list, is_startup_list, read_startup
-from .linter import NOT_A_LIST, FileResult, FileSettings, Selection, check_bytes, lint_bytes, looks_like_a_list
 from .syntax import parse_bytes, split_lines
 from .xmlinput import is_xml, single_list
 
@@ -63,13 +81,24 @@ class Target:
     defaults: Path | None = None  # default axis list loaded underneath (from a start-up list)
 
 
-def file_settings(config: ResolvedConfig, overrides: Overrides, target: Path, keep_source: bool = True) -> FileSettings:
+def file_settings(
+    config: ResolvedConfig, overrides: Overrides, target: Path, keep_source: bool = True
+) -> FileSettings:
     settings = overrides.apply(config.settings)
-    selection = Selection(settings.select, list(settings.extend_select),
-                          [*settings.ignore, *config.ignored_for(target)])
-    options = Options(settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um)
-    return FileSettings(selection, options, dict(settings.severity), keep_source=keep_source,
-                        fail_on=settings.fail_on, machine_in_file=False)
+    selection = Selection(
+        settings.select, list(settings.extend_select), [*settings.ignore, *config.ignored_for(target)]
+    )
+    options = Options(
+        settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um
+    )
+    return FileSettings(
+        selection,
+        options,
+        dict(settings.severity),
+        keep_source=keep_source,
+        fail_on=settings.fail_on,
+        machine_in_file=False,
+    )
 
 
 @dataclass
@@ -150,7 +179,9 @@ class Linter:
         from .rules import registry
 
         settings = self.settings_for(Target(key, folder / "x", self.config_for(folder / "x")))
-        if not any(rule.check_machine and settings.selection.enabled(code) for code, rule in registry().items()):
+        if not any(
+            rule.check_machine and settings.selection.enabled(code) for code, rule in registry().items()
+        ):
             return
         quiet = Discovery()
         for file in self._walk(folder, Scope.of([folder]), quiet, recursive=False):
@@ -177,8 +208,15 @@ class Linter:
         defaults = startup.default.path if startup.default else None
         for entry in startup.axes:
             if entry.path is not None:
-                found.add(Target(_shown(entry.path), entry.path, self.config_for(entry.path), machine=str(path),
-                                 defaults=defaults))
+                found.add(
+                    Target(
+                        _shown(entry.path),
+                        entry.path,
+                        self.config_for(entry.path),
+                        machine=str(path),
+                        defaults=defaults,
+                    )
+                )
 
     def _walk(self, folder: Path, scope: Scope, found: Discovery, recursive: bool = True) -> list[Path]:
         """The lists in a folder tree. A folder that cannot be read, or a list that cannot (a broken link, a
@@ -204,7 +242,9 @@ class Linter:
                 if xml and problem is None and scope.contains(path) and not self._axis_xml(path, found):
                     continue
                 if problem is None and not scope.contains(path):
-                    found.notes.append(f"{path}: skipped, it links to {real_path(path)}, outside the paths given")
+                    found.notes.append(
+                        f"{path}: skipped, it links to {real_path(path)}, outside the paths given"
+                    )
                 elif problem is not None and problem.startswith(SKIPPED_KINDS):
                     found.notes.append(f"{path}: skipped, it is {problem}")
                 elif problem is not None:
@@ -232,8 +272,9 @@ class Linter:
         found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
         return False
 
-    def _machine_level(self, targets: list[Target], results: list[FileResult],
-                       context: list[tuple[Target, FileResult]] = ()) -> list[FileResult]:
+    def _machine_level(
+        self, targets: list[Target], results: list[FileResult], context: list[tuple[Target, FileResult]] = ()
+    ) -> list[FileResult]:
         """Run the machine-level rules per machine; returns results for start-up lists with findings.
 
         `context` lists (the neighbours of named lists) take part but get no findings; they come first,
@@ -245,7 +286,7 @@ class Linter:
         hidden = {result.name for _, result in context}
         groups: dict[str, list[tuple[str, dict]]] = {}
         settings = {}
-        pairs = [*context, *zip(targets, results)]
+        pairs = [*context, *zip(targets, results, strict=False)]
         for target, result in pairs:
             if target.path is not None and is_default_list(target.path):
                 continue  # loaded underneath the axes, not an axis of its own
@@ -263,7 +304,9 @@ class Linter:
                     if d.path in hidden:
                         continue
                     owner = by_name.get(d.path)
-                    chosen = settings.get(d.path) or self.settings_for(Target(d.path, Path(d.path), self.config_for(Path(d.path))))
+                    chosen = settings.get(d.path) or self.settings_for(
+                        Target(d.path, Path(d.path), self.config_for(Path(d.path)))
+                    )
                     if not chosen.selection.enabled(code):
                         continue
                     override = chosen.severity.get(code)
@@ -275,28 +318,39 @@ class Linter:
                     owner.diagnostics.sort(key=Diagnostic.sort_key)
         for startup in self.startups:  # start-up lists without axis lists still get LIS504
             if str(startup.path) not in groups:
-                chosen = self.settings_for(Target(str(startup.path), startup.path, self.config_for(startup.path)))
+                chosen = self.settings_for(
+                    Target(str(startup.path), startup.path, self.config_for(startup.path))
+                )
                 for d in registry()["LIS504"].check_machine([], [startup]):
-                    extra.setdefault(d.path, FileResult(d.path, [], fail_on=chosen.fail_on)).diagnostics.append(d)
+                    extra.setdefault(
+                        d.path, FileResult(d.path, [], fail_on=chosen.fail_on)
+                    ).diagnostics.append(d)
         for result in list(by_name.values()) + list(extra.values()):
-            if self.request.keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
-                try:
+            if (
+                self.request.keep_source
+                and result.diagnostics
+                and not result.source_lines
+                and result.name != "<stdin>"
+            ):
+                with contextlib.suppress(OSError):
                     result.source_lines = split_lines(read_list(Path(result.name)).decode("latin-1"))
-                except OSError:
-                    pass
         return list(extra.values())
 
     def settings_for(self, target: Target) -> FileSettings:
-        return file_settings(target.config, self.request.overrides, target.path or Path(target.name),
-                             self.request.keep_source)
+        return file_settings(
+            target.config, self.request.overrides, target.path or Path(target.name), self.request.keep_source
+        )
 
     def run(self, stdin=None, progress=None) -> LintOutcome:
         found = self.discover()
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
         mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff)
-        work = [(t.name, str(t.path), self.settings_for(t), mode, str(t.defaults) if t.defaults else None)
-                for t in targets if t.path]
+        work = [
+            (t.name, str(t.path), self.settings_for(t), mode, str(t.defaults) if t.defaults else None)
+            for t in targets
+            if t.path
+        ]
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD:
             from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
 
@@ -304,8 +358,13 @@ class Linter:
 
             pool = ProcessPoolExecutor(max_workers=jobs, initializer=install)
             try:
-                disk = list(_track(pool.map(_lint_one, work, chunksize=max(1, len(work) // (jobs * 8))), progress,
-                                   len(work)))
+                disk = list(
+                    _track(
+                        pool.map(_lint_one, work, chunksize=max(1, len(work) // (jobs * 8))),
+                        progress,
+                        len(work),
+                    )
+                )
             finally:
                 # On an interrupt, drop the work not started yet instead of finishing it.
                 pool.shutdown(cancel_futures=True)
@@ -351,9 +410,13 @@ def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
     if not files:
         return files
     try:
-        answer = subprocess.run(["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
-                                input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
-                                capture_output=True, timeout=60, check=False)
+        answer = subprocess.run(
+            ["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
+            input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
+            capture_output=True,
+            timeout=60,
+            check=False,
+        )
     except (OSError, subprocess.SubprocessError):
         return files
     if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
@@ -371,7 +434,14 @@ def _shown(path: Path) -> str:
 
 
 # Files found in a folder that are skipped with a note rather than reported as unreadable.
-SKIPPED_KINDS = ("a FIFO", "a device", "a socket", "a folder", "not a regular file", "a file of the operating system")
+SKIPPED_KINDS = (
+    "a FIFO",
+    "a device",
+    "a socket",
+    "a folder",
+    "not a regular file",
+    "a file of the operating system",
+)
 
 
 def _lint_one(item) -> FileResult:
@@ -380,13 +450,17 @@ def _lint_one(item) -> FileResult:
         data = read_list(Path(path))
         default_data = read_list(Path(defaults)) if defaults else None
     except OSError as exc:
-        return FileResult(name, [], str(exc) if isinstance(exc, Refused) else
-                          f"cannot read {exc.filename or name}: {reason(exc)}")
+        return FileResult(
+            name,
+            [],
+            str(exc) if isinstance(exc, Refused) else f"cannot read {exc.filename or name}: {reason(exc)}",
+        )
     return _process(data, name, settings, mode, Path(path), default_data)
 
 
-def _process(data: bytes, name: str, settings: FileSettings, mode, path: Path | None,
-             defaults: bytes | None) -> FileResult:
+def _process(
+    data: bytes, name: str, settings: FileSettings, mode, path: Path | None, defaults: bytes | None
+) -> FileResult:
     """Lint one list; with --fix, fix it first (writing the file, or describing the change with --diff)."""
     fix, unsafe, show_diff = mode
     if not fix:
@@ -511,7 +585,9 @@ def loads(text: str, *, defaults: str | None = None, strict: bool = False, filen
 
     data = text.encode("utf-8")
     default_data = (defaults.encode("utf-8"), "<defaults>") if defaults is not None else None
-    return _finish(build_model(data, filename, default_data), data, filename, default_data, strict, rule_errors)
+    return _finish(
+        build_model(data, filename, default_data), data, filename, default_data, strict, rule_errors
+    )
 
 
 def dumps(model) -> str:
@@ -548,5 +624,18 @@ def format_text(text: str) -> str:
     return formatted(text)
 
 
-__all__ = ["ConfigError", "LintRequest", "LintOutcome", "Linter", "run_lint", "lint", "lint_text", "load", "loads",
-           "dumps", "explain", "dry_run", "format_text"]
+__all__ = [
+    "ConfigError",
+    "LintOutcome",
+    "LintRequest",
+    "Linter",
+    "dry_run",
+    "dumps",
+    "explain",
+    "format_text",
+    "lint",
+    "lint_text",
+    "load",
+    "loads",
+    "run_lint",
+]

@@ -175,8 +175,14 @@ class Resolution:
         set_field = object.__setattr__
         set_field(self, "canonical", sys.intern(fill_indices(self.parameter.path, self.indices)))
         set_field(self, "misspelt", self.alias is not None and self.alias.kind == "misspelling")
-        set_field(self, "in_bounds", all(low <= index <= high for index, (low, high)
-                                         in zip(self.indices, self.parameter.index_bounds)))
+        set_field(
+            self,
+            "in_bounds",
+            all(
+                low <= index <= high
+                for index, (low, high) in zip(self.indices, self.parameter.index_bounds, strict=False)
+            ),
+        )
 
 
 def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:
@@ -184,8 +190,8 @@ def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:
     if not indices:
         return pattern
     parts = pattern.split("[i]")
-    filled = [parts[0]] + [f"[{index}]{part}" for index, part in zip(indices, parts[1:])]
-    return "".join(filled) + "".join("[i]" + part for part in parts[len(indices) + 1:])
+    filled = [parts[0]] + [f"[{index}]{part}" for index, part in zip(indices, parts[1:], strict=False)]
+    return "".join(filled) + "".join("[i]" + part for part in parts[len(indices) + 1 :])
 
 
 class Catalogue:

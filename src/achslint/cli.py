@@ -6,11 +6,11 @@ that `--help` and `--version` stay fast.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
 from enum import Enum
 from pathlib import Path
-from typing import List, Optional
 
 import typer
 
@@ -57,6 +57,7 @@ class UnknownParameters(str, Enum):
 
 class UsageError(Exception):
     """A problem with what the user asked for: exit code 2 with a one-line message."""
+
     # (raised by our own option checks; click's usage errors are turned into the same one line in `main`)
 
 
@@ -72,7 +73,7 @@ def _fail(message: str) -> None:
     raise typer.Exit(EXIT_ERROR)
 
 
-def _codes(values: Optional[List[str]], option: str) -> list[str]:
+def _codes(values: list[str] | None, option: str) -> list[str]:
     from .config import parse_codes
 
     try:
@@ -108,7 +109,9 @@ def version_callback(value: bool) -> None:
 
 @app.callback()
 def main_callback(
-    version: bool = typer.Option(False, "--version", callback=version_callback, is_eager=True, help="Show the version and exit."),
+    version: bool = typer.Option(
+        False, "--version", callback=version_callback, is_eager=True, help="Show the version and exit."
+    ),
 ) -> None:
     """achslint: the linter for CNC axis parameter lists."""
 
@@ -121,36 +124,131 @@ def _default_format(stream) -> str:
 
 @app.command()
 def lint(
-    paths: List[str] = typer.Argument(..., metavar="PATH...", help="Files, directories (searched recursively) or - for standard input."),
-    output_format: Optional[OutputFormat] = typer.Option(None, "--format", "--output-format", help="Output format (default: github under GitHub Actions, full on a terminal, concise otherwise)."),
-    config: Optional[str] = typer.Option(None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."),
-    select: Optional[List[str]] = typer.Option(None, "--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated, e.g. LIS1,LIS202)."),
-    extend_select: Optional[List[str]] = typer.Option(None, "--extend-select", metavar="CODES", help="Add rule codes or prefixes to the selection."),
-    ignore: Optional[List[str]] = typer.Option(None, "--ignore", metavar="CODES", help="Skip these rule codes or prefixes."),
-    fail_on: Optional[FailOn] = typer.Option(None, "--fail-on", help="Lowest severity that makes the exit code 1 (default: error)."),
+    paths: list[str] = typer.Argument(
+        ..., metavar="PATH...", help="Files, directories (searched recursively) or - for standard input."
+    ),
+    output_format: OutputFormat | None = typer.Option(
+        None,
+        "--format",
+        "--output-format",
+        help="Output format (default: github under GitHub Actions, full on a terminal, concise otherwise).",
+    ),
+    config: str | None = typer.Option(
+        None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."
+    ),
+    select: list[str] | None = typer.Option(
+        None,
+        "--select",
+        metavar="CODES",
+        help="Only these rule codes or prefixes (comma-separated, e.g. LIS1,LIS202).",
+    ),
+    extend_select: list[str] | None = typer.Option(
+        None, "--extend-select", metavar="CODES", help="Add rule codes or prefixes to the selection."
+    ),
+    ignore: list[str] | None = typer.Option(
+        None, "--ignore", metavar="CODES", help="Skip these rule codes or prefixes."
+    ),
+    fail_on: FailOn | None = typer.Option(
+        None, "--fail-on", help="Lowest severity that makes the exit code 1 (default: error)."
+    ),
     exit_zero: bool = typer.Option(False, "--exit-zero", help="Exit 0 even when diagnostics are found."),
-    fix: bool = typer.Option(False, "--fix", help="Apply safe fixes (End -> Ende, BOM, old names, unambiguous typos)."),
+    fix: bool = typer.Option(
+        False, "--fix", help="Apply safe fixes (End -> Ende, BOM, old names, unambiguous typos)."
+    ),
     unsafe_fixes: bool = typer.Option(False, "--unsafe-fixes", help="With --fix, also apply unsafe fixes."),
-    show_diff: bool = typer.Option(False, "--diff", help="Print the changes --fix would make as a diff; writes nothing."),
-    unknown_parameters: Optional[UnknownParameters] = typer.Option(None, "--unknown-parameters", help="How to report unknown parameter names (default: warn)."),
-    include: Optional[List[str]] = typer.Option(None, "--include", metavar="PATTERN", help="File name patterns searched in folders, repeated or comma-separated (default: achsmds*.lis; axis XML is found by content)."),
-    extend_exclude: Optional[List[str]] = typer.Option(None, "--extend-exclude", metavar="PATTERN", help="Paths to leave out, in addition to `exclude` from the configuration."),
-    force_exclude: bool = typer.Option(False, "--force-exclude", help="Apply the exclude patterns to files named on the command line too (for pre-commit)."),
-    respect_gitignore: bool = typer.Option(True, "--respect-gitignore/--no-respect-gitignore", help="Leave out files git ignores when searching folders."),
-    cycle_time_ms: Optional[float] = typer.Option(None, "--cycle-time-ms", metavar="MS", min=0.001, help="CNC cycle time in ms, as in dry-run (for LIS403; default 1)."),
-    cycle_time_us: Optional[int] = typer.Option(None, "--cycle-time-us", min=1, hidden=True, help="The cycle time in µs (old spelling of --cycle-time-ms)."),
-    repeatability_tolerance_um: Optional[float] = typer.Option(None, "--repeatability-tolerance-um", metavar="UM", min=0.0, help="Required homing repeatability in µm (for LIS403; default 20)."),
-    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", metavar="NAME", help="Name to report (and to find the configuration) for input read from -."),
-    jobs: Optional[int] = typer.Option(None, "--jobs", "-j", metavar="N", min=1, help="Worker processes (default: all cores)."),
-    color: Color = typer.Option(Color.auto, "--color", help="Colour the full output (honours NO_COLOR and FORCE_COLOR)."),
-    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print the diagnostics only: no summary, notes or progress."),
-    silent: bool = typer.Option(False, "--silent", "-s", help="Print nothing but errors; only the exit code tells the result."),
-    statistics: bool = typer.Option(False, "--statistics", help="Print only the number of diagnostics per rule code."),
-    output_file: Optional[str] = typer.Option(None, "--output-file", "-o", metavar="FILE", help="Write the report to FILE (UTF-8) instead of standard output."),
+    show_diff: bool = typer.Option(
+        False, "--diff", help="Print the changes --fix would make as a diff; writes nothing."
+    ),
+    unknown_parameters: UnknownParameters | None = typer.Option(
+        None, "--unknown-parameters", help="How to report unknown parameter names (default: warn)."
+    ),
+    include: list[str] | None = typer.Option(
+        None,
+        "--include",
+        metavar="PATTERN",
+        help="File name patterns searched in folders, repeated or comma-separated (default: achsmds*.lis; axis XML is found by content).",
+    ),
+    extend_exclude: list[str] | None = typer.Option(
+        None,
+        "--extend-exclude",
+        metavar="PATTERN",
+        help="Paths to leave out, in addition to `exclude` from the configuration.",
+    ),
+    force_exclude: bool = typer.Option(
+        False,
+        "--force-exclude",
+        help="Apply the exclude patterns to files named on the command line too (for pre-commit).",
+    ),
+    respect_gitignore: bool = typer.Option(
+        True,
+        "--respect-gitignore/--no-respect-gitignore",
+        help="Leave out files git ignores when searching folders.",
+    ),
+    cycle_time_ms: float | None = typer.Option(
+        None,
+        "--cycle-time-ms",
+        metavar="MS",
+        min=0.001,
+        help="CNC cycle time in ms, as in dry-run (for LIS403; default 1).",
+    ),
+    cycle_time_us: int | None = typer.Option(
+        None,
+        "--cycle-time-us",
+        min=1,
+        hidden=True,
+        help="The cycle time in µs (old spelling of --cycle-time-ms).",
+    ),
+    repeatability_tolerance_um: float | None = typer.Option(
+        None,
+        "--repeatability-tolerance-um",
+        metavar="UM",
+        min=0.0,
+        help="Required homing repeatability in µm (for LIS403; default 20).",
+    ),
+    stdin_filename: str | None = typer.Option(
+        None,
+        "--stdin-filename",
+        metavar="NAME",
+        help="Name to report (and to find the configuration) for input read from -.",
+    ),
+    jobs: int | None = typer.Option(
+        None, "--jobs", "-j", metavar="N", min=1, help="Worker processes (default: all cores)."
+    ),
+    color: Color = typer.Option(
+        Color.auto, "--color", help="Colour the full output (honours NO_COLOR and FORCE_COLOR)."
+    ),
+    quiet: bool = typer.Option(
+        False, "--quiet", "-q", help="Print the diagnostics only: no summary, notes or progress."
+    ),
+    silent: bool = typer.Option(
+        False, "--silent", "-s", help="Print nothing but errors; only the exit code tells the result."
+    ),
+    statistics: bool = typer.Option(
+        False, "--statistics", help="Print only the number of diagnostics per rule code."
+    ),
+    output_file: str | None = typer.Option(
+        None,
+        "--output-file",
+        "-o",
+        metavar="FILE",
+        help="Write the report to FILE (UTF-8) instead of standard output.",
+    ),
     debug: bool = typer.Option(False, "--debug", help="Show a traceback on internal errors."),
-    allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
-    docs_url: Optional[str] = typer.Option(None, "--docs-url", metavar="URL", help="Address of the rule documentation page for links in json and sarif output (default: `docs-url` from the configuration, else the project's docs site)."),
-    cnc_root: Optional[str] = typer.Option(None, "--cnc-root", metavar="DIR", help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist)."),
+    allow_empty: bool = typer.Option(
+        False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."
+    ),
+    docs_url: str | None = typer.Option(
+        None,
+        "--docs-url",
+        metavar="URL",
+        help="Address of the rule documentation page for links in json and sarif output (default: `docs-url` from the configuration, else the project's docs site).",
+    ),
+    cnc_root: str | None = typer.Option(
+        None,
+        "--cnc-root",
+        metavar="DIR",
+        help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist).",
+    ),
 ) -> None:
     """Lint axis parameter lists."""
     from .api import LintRequest, run_lint
@@ -175,10 +273,19 @@ def lint(
     if unsafe_fixes and not fix:
         _fail("--unsafe-fixes goes with --fix or --diff")
     fmt = output_format.value if output_format else _default_format(sys.stdout)
-    request = LintRequest(paths=paths, overrides=overrides, config_file=config, stdin_filename=stdin_filename, jobs=jobs,
-                          fix=fix, unsafe_fixes=unsafe_fixes, show_diff=show_diff,
-                          keep_source=fmt in ("full", "gitlab"), force_exclude=force_exclude,
-                          respect_gitignore=respect_gitignore)
+    request = LintRequest(
+        paths=paths,
+        overrides=overrides,
+        config_file=config,
+        stdin_filename=stdin_filename,
+        jobs=jobs,
+        fix=fix,
+        unsafe_fixes=unsafe_fixes,
+        show_diff=show_diff,
+        keep_source=fmt in ("full", "gitlab"),
+        force_exclude=force_exclude,
+        respect_gitignore=respect_gitignore,
+    )
     quiet = quiet or silent
     try:
         with _progress(quiet) as progress:
@@ -198,8 +305,13 @@ def lint(
             else:
                 from .reporters import get
 
-                get(fmt)(outcome.results, stream, color=_use_color(color, stream), sources=outcome.sources,
-                         docs_url=_docs_url(docs_url, config))
+                get(fmt)(
+                    outcome.results,
+                    stream,
+                    color=_use_color(color, stream),
+                    sources=outcome.sources,
+                    docs_url=_docs_url(docs_url, config),
+                )
                 if fmt in TEXT_FORMATS and not quiet:
                     _summary(outcome.results, stream, fix)
                 if statistics:  # a machine format's output stays one document; the counts go to stderr
@@ -212,7 +324,7 @@ def lint(
 TEXT_FORMATS = ("full", "concise")
 
 
-def _patterns(values: Optional[List[str]]) -> Optional[list[str]]:
+def _patterns(values: list[str] | None) -> list[str] | None:
     """Repeated and comma-separated patterns as one list (None when the option was not given)."""
     if not values:
         return None
@@ -222,7 +334,7 @@ def _patterns(values: Optional[List[str]]) -> Optional[list[str]]:
 class _destination:
     """The report stream: --output-file opens a UTF-8 file (never the console's code page), else `stream`."""
 
-    def __init__(self, path: Optional[str], stream):
+    def __init__(self, path: str | None, stream):
         self.path, self.stream, self.file = path, stream, None
 
     def __enter__(self):
@@ -250,8 +362,12 @@ def _summary(results, stream, fixing: bool) -> None:
         return
     if fixing:
         return
-    safe = sum(1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability == "safe")
-    unsafe = sum(1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability != "safe")
+    safe = sum(
+        1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability == "safe"
+    )
+    unsafe = sum(
+        1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability != "safe"
+    )
     if safe or unsafe:
         more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""
         if safe:
@@ -260,7 +376,7 @@ def _summary(results, stream, fixing: bool) -> None:
             stream.write(f"{unsafe} fixable with --fix --unsafe-fixes\n")
 
 
-def _docs_url(given: Optional[str], config_file: Optional[str]) -> Optional[str]:
+def _docs_url(given: str | None, config_file: str | None) -> str | None:
     """--docs-url, else `docs-url` of the configuration for the working directory (a run-wide setting)."""
     if given is not None:
         if not given.startswith(("http://", "https://")):
@@ -274,12 +390,14 @@ def _docs_url(given: Optional[str], config_file: Optional[str]) -> Optional[str]
         _fail(str(exc))
 
 
-def _nothing_found(paths: List[str]) -> str:
+def _nothing_found(paths: list[str]) -> str:
     """Why a run that checked nothing fails (a CI job pointed at the wrong folder must not pass)."""
     shown = ", ".join(paths)
-    return (f"no axis list found in {shown} (folders are searched for the `include` patterns, achsmds*.lis by "
-            "default, and for XML exports holding <AchsMds> or <AX_MDS>); check the path or --include, "
-            "or pass --allow-empty when an empty run is fine")
+    return (
+        f"no axis list found in {shown} (folders are searched for the `include` patterns, achsmds*.lis by "
+        "default, and for XML exports holding <AchsMds> or <AX_MDS>); check the path or --include, "
+        "or pass --allow-empty when an empty run is fine"
+    )
 
 
 def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
@@ -328,9 +446,8 @@ class _progress:
             if total < self.MIN_FILES:
                 self.enabled = False
                 return
-            from rich.progress import Progress
-
             from rich.console import Console
+            from rich.progress import Progress
 
             self.bar = Progress(console=Console(stderr=True), transient=True)
             self.bar.start()
@@ -358,13 +475,25 @@ def _print_statistics(results, stream) -> None:
 
 @app.command()
 def fmt(
-    paths: List[str] = typer.Argument(..., help="Files, directories (searched recursively) or - (formatted to standard output)."),
-    check: bool = typer.Option(False, "--check", help="Change nothing; exit 1 when a file would be reformatted."),
-    diff: bool = typer.Option(False, "--diff", help="Print the changes as a unified diff instead of writing them."),
-    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
-    stdin_filename: Optional[str] = typer.Option(None, "--stdin-filename", help="Name used for input read from -."),
+    paths: list[str] = typer.Argument(
+        ..., help="Files, directories (searched recursively) or - (formatted to standard output)."
+    ),
+    check: bool = typer.Option(
+        False, "--check", help="Change nothing; exit 1 when a file would be reformatted."
+    ),
+    diff: bool = typer.Option(
+        False, "--diff", help="Print the changes as a unified diff instead of writing them."
+    ),
+    config: str | None = typer.Option(
+        None, "--config", help="Use this configuration file instead of searching for one."
+    ),
+    stdin_filename: str | None = typer.Option(
+        None, "--stdin-filename", help="Name used for input read from -."
+    ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors."),
-    allow_empty: bool = typer.Option(False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."),
+    allow_empty: bool = typer.Option(
+        False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."
+    ),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
     from .api import Linter, LintRequest, write_error
@@ -465,8 +594,13 @@ class ExplainFormat(str, Enum):
 
 @app.command()
 def explain(
-    target: str = typer.Argument(..., help="An axis list file, or a parameter: name, alias or id (vb_reflow, getriebe[0].vb_reflow, P-AXIS-00218)."),
-    output_format: ExplainFormat = typer.Option(ExplainFormat.text, "--format", "--output-format", help="text or json."),
+    target: str = typer.Argument(
+        ...,
+        help="An axis list file, or a parameter: name, alias or id (vb_reflow, getriebe[0].vb_reflow, P-AXIS-00218).",
+    ),
+    output_format: ExplainFormat = typer.Option(
+        ExplainFormat.text, "--format", "--output-format", help="text or json."
+    ),
     gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing speeds are shown."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
 ) -> None:
@@ -501,8 +635,12 @@ def explain(
 
 
 # Why an argument of explain names no file at all (then it is taken as a parameter name).
-NOT_A_FILE = ("no such file or directory", "a name too long for the file system", "a part of the path is not a folder",
-              "a name the file system cannot hold")
+NOT_A_FILE = (
+    "no such file or directory",
+    "a name too long for the file system",
+    "a part of the path is not a folder",
+    "a name the file system cannot hold",
+)
 
 
 def _one_list(path: Path, name: str) -> bytes:
@@ -526,11 +664,16 @@ def _console(color: bool):
     from rich.console import Console
 
     piped = not sys.stdout.isatty()
-    return Console(force_terminal=color, no_color=not color, highlight=False, soft_wrap=piped,
-                   width=160 if piped else None)
+    return Console(
+        force_terminal=color,
+        no_color=not color,
+        highlight=False,
+        soft_wrap=piped,
+        width=160 if piped else None,
+    )
 
 
-def _pair(text: Optional[str], name: str):
+def _pair(text: str | None, name: str):
     if text is None:
         return None
     try:
@@ -543,22 +686,52 @@ def _pair(text: Optional[str], name: str):
 @app.command("dry-run")
 def dry_run_command(
     file: str = typer.Argument(..., help="The axis list to simulate."),
-    scenario: Optional[str] = typer.Option(None, "--scenario", help="Scenario TOML (human units: mm or degrees, seconds)."),
-    output_format: ExplainFormat = typer.Option(ExplainFormat.text, "--format", "--output-format", help="text or json."),
+    scenario: str | None = typer.Option(
+        None, "--scenario", help="Scenario TOML (human units: mm or degrees, seconds)."
+    ),
+    output_format: ExplainFormat = typer.Option(
+        ExplainFormat.text, "--format", "--output-format", help="text or json."
+    ),
     gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing parameters are used."),
-    start: Optional[float] = typer.Option(None, "--start", help="Start position (overrides the scenario)."),
-    cam: Optional[str] = typer.Option(None, "--cam", help="Reference cam zone FROM,TO."),
-    zero_pulse_period: Optional[float] = typer.Option(None, "--zero-pulse-period", help="Travel per encoder revolution."),
-    zero_pulse_phase: Optional[float] = typer.Option(None, "--zero-pulse-phase", help="Position of one zero pulse."),
-    latch: Optional[bool] = typer.Option(None, "--latch/--no-latch", help="Whether a hardware latch captures the zero pulse."),
-    cycle_time_ms: Optional[float] = typer.Option(None, "--cycle-time-ms", help="CNC cycle time in ms (default: the configuration's cycle-time-us)."),
-    limit_switches: Optional[str] = typer.Option(None, "--limit-switches", help="Hardware limit switch positions NEG,POS."),
-    fixed_stop: Optional[float] = typer.Option(None, "--fixed-stop", help="Position of the mechanical stop (TORQ)."),
-    cam_jitter: Optional[float] = typer.Option(None, "--cam-jitter", help="Spread of the cam edge, for --sweep and LIS405."),
-    sweep_runs: int = typer.Option(0, "--sweep", min=0, max=1_000_000, help="Simulate N start positions and cam jitters and report the outcomes and the spread."),
+    start: float | None = typer.Option(None, "--start", help="Start position (overrides the scenario)."),
+    cam: str | None = typer.Option(None, "--cam", help="Reference cam zone FROM,TO."),
+    zero_pulse_period: float | None = typer.Option(
+        None, "--zero-pulse-period", help="Travel per encoder revolution."
+    ),
+    zero_pulse_phase: float | None = typer.Option(
+        None, "--zero-pulse-phase", help="Position of one zero pulse."
+    ),
+    latch: bool | None = typer.Option(
+        None, "--latch/--no-latch", help="Whether a hardware latch captures the zero pulse."
+    ),
+    cycle_time_ms: float | None = typer.Option(
+        None, "--cycle-time-ms", help="CNC cycle time in ms (default: the configuration's cycle-time-us)."
+    ),
+    limit_switches: str | None = typer.Option(
+        None, "--limit-switches", help="Hardware limit switch positions NEG,POS."
+    ),
+    fixed_stop: float | None = typer.Option(
+        None, "--fixed-stop", help="Position of the mechanical stop (TORQ)."
+    ),
+    cam_jitter: float | None = typer.Option(
+        None, "--cam-jitter", help="Spread of the cam edge, for --sweep and LIS405."
+    ),
+    sweep_runs: int = typer.Option(
+        0,
+        "--sweep",
+        min=0,
+        max=1_000_000,
+        help="Simulate N start positions and cam jitters and report the outcomes and the spread.",
+    ),
     allow_failures: bool = typer.Option(False, "--allow-failures", help="Exit 0 even when sweep runs fail."),
-    plot: Optional[str] = typer.Option(None, "--plot", help="Write position and velocity over time to a PNG or SVG file."),
-    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file (its scenario table and cycle-time-us) instead of searching for one."),
+    plot: str | None = typer.Option(
+        None, "--plot", help="Write position and velocity over time to a PNG or SVG file."
+    ),
+    config: str | None = typer.Option(
+        None,
+        "--config",
+        help="Use this configuration file (its scenario table and cycle-time-us) instead of searching for one.",
+    ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
@@ -571,12 +744,19 @@ def dry_run_command(
 
     try:
         options = {
-            "start_position": start, "cam": _pair(cam, "--cam"), "zero_pulse_period": zero_pulse_period,
-            "zero_pulse_phase": zero_pulse_phase, "hardware_latch": latch, "cycle_time_ms": cycle_time_ms,
-            "limit_switches": _pair(limit_switches, "--limit-switches"), "fixed_stop": fixed_stop, "cam_jitter": cam_jitter,
+            "start_position": start,
+            "cam": _pair(cam, "--cam"),
+            "zero_pulse_period": zero_pulse_period,
+            "zero_pulse_phase": zero_pulse_phase,
+            "hardware_latch": latch,
+            "cycle_time_ms": cycle_time_ms,
+            "limit_switches": _pair(limit_switches, "--limit-switches"),
+            "fixed_stop": fixed_stop,
+            "cam_jitter": cam_jitter,
         }
-        given, cycle_time_us = scenario_input(Path(file), Path(scenario) if scenario else None, options,
-                                              Path(config) if config else None)
+        given, cycle_time_us = scenario_input(
+            Path(file), Path(scenario) if scenario else None, options, Path(config) if config else None
+        )
     except (ScenarioError, UsageError, UnreadableInput) as exc:
         _fail(str(exc))
     except OSError as exc:
@@ -615,8 +795,12 @@ def dry_run_command(
 def diff_command(
     a: str = typer.Argument(..., help="First list."),
     b: str = typer.Argument(..., help="Second list."),
-    defaults: Optional[str] = typer.Option(None, "--defaults", help="Default axis list loaded under both lists."),
-    output_format: ExplainFormat = typer.Option(ExplainFormat.text, "--format", "--output-format", help="text or json."),
+    defaults: str | None = typer.Option(
+        None, "--defaults", help="Default axis list loaded under both lists."
+    ),
+    output_format: ExplainFormat = typer.Option(
+        ExplainFormat.text, "--format", "--output-format", help="text or json."
+    ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
 ) -> None:
     """Show how two lists differ in their effective values (after defaults), by parameter with units."""
@@ -637,7 +821,9 @@ def diff_command(
 def config_command(
     show: bool = typer.Option(False, "--show", help="Print the resolved settings."),
     path: str = typer.Argument(".", help="File or folder whose configuration is shown."),
-    config: Optional[str] = typer.Option(None, "--config", help="Use this configuration file instead of searching for one."),
+    config: str | None = typer.Option(
+        None, "--config", help="Use this configuration file instead of searching for one."
+    ),
 ) -> None:
     """Show the configuration that applies to a path."""
     import json
@@ -673,7 +859,11 @@ def server() -> None:
 
 @app.command()
 def schema(
-    output: SchemaOutput = typer.Option(SchemaOutput.model, "--output", help="model: the typed axis parameter model; lint: the output of `lint --format json`."),
+    output: SchemaOutput = typer.Option(
+        SchemaOutput.model,
+        "--output",
+        help="model: the typed axis parameter model; lint: the output of `lint --format json`.",
+    ),
 ) -> None:
     """Print a JSON Schema: of the axis parameter model, or of the lint JSON output."""
     import json
@@ -687,7 +877,7 @@ def schema(
     typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
 
 
-def main(argv: Optional[List[str]] = None) -> int:
+def main(argv: list[str] | None = None) -> int:
     """Entry point (console script, `python -m achslint`, and in-process tests): returns the exit code.
 
     Whatever happens, the user gets one line on stderr, never a traceback (unless --debug): usage errors
@@ -709,7 +899,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         return 130
     except typer.TyperException as exc:
         return _usage_error(exc)
-    except Exception as exc:  # noqa: BLE001 - the last line of defence
+    except Exception as exc:
         if "--debug" in args:
             raise
         _say(f"internal error: {type(exc).__name__}: {exc} (run with --debug for details)")
@@ -732,7 +922,5 @@ def _usage_error(exc) -> int:
 def _tolerant_streams() -> None:
     """Characters the terminal's encoding cannot show become escapes instead of ending the run."""
     for stream in (sys.stdout, sys.stderr):
-        try:
+        with contextlib.suppress(AttributeError, ValueError, OSError):
             stream.reconfigure(errors="backslashreplace")
-        except (AttributeError, ValueError, OSError):
-            pass

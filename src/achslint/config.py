@@ -45,7 +45,6 @@ def parse_codes(values: list[str]) -> list[str]:
     return cleaned
 
 
-
 @dataclass(frozen=True)
 class Settings:
     """The keys of an achslint configuration (see README, Configuration); file keys use dashes."""
@@ -89,11 +88,13 @@ def _file_model():
         fail_on: severity_name = Field(default.fail_on, alias="fail-on")
         include: list[str] = Field(default_factory=lambda: list(default.include))
         exclude: list[str] = Field(default_factory=list)
-        unknown_parameters: Literal["warn", "error", "ignore"] = Field(default.unknown_parameters,
-                                                                       alias="unknown-parameters")
+        unknown_parameters: Literal["warn", "error", "ignore"] = Field(
+            default.unknown_parameters, alias="unknown-parameters"
+        )
         cycle_time_us: int = Field(default.cycle_time_us, alias="cycle-time-us", gt=0)
-        repeatability_tolerance_um: float = Field(default.repeatability_tolerance_um,
-                                                  alias="repeatability-tolerance-um", ge=0)
+        repeatability_tolerance_um: float = Field(
+            default.repeatability_tolerance_um, alias="repeatability-tolerance-um", ge=0
+        )
         scenario: dict[str, Any] = Field(default_factory=dict)
         cnc_root: str | None = Field(None, alias="cnc-root", min_length=1)
         docs_url: str | None = Field(None, alias="docs-url", pattern=r"^https?://\S+$")
@@ -117,7 +118,7 @@ def _file_model():
             partial = [code for code in codes if code not in known_codes()]
             if partial:  # an override is looked up by the full code, so a prefix would change nothing
                 raise ValueError(f"severity overrides take full rule codes, not the prefix {partial[0]!r}")
-            return dict(zip(codes, value.values()))
+            return dict(zip(codes, value.values(), strict=False))
 
     return SettingsFile
 
@@ -135,7 +136,9 @@ class ResolvedConfig:
 
     def relative(self, target: Path) -> str:
         try:
-            return PurePosixPath(Path(os.path.realpath(target)).relative_to(os.path.realpath(self.root))).as_posix()
+            return PurePosixPath(
+                Path(os.path.realpath(target)).relative_to(os.path.realpath(self.root))
+            ).as_posix()
         except (ValueError, OSError):
             return PurePosixPath(Path(target)).as_posix()
 
@@ -160,7 +163,9 @@ def matches_glob(relative: str, pattern: str) -> bool:
         return True
     if "/" not in pattern:
         return fnmatch.fnmatch(relative.rsplit("/", 1)[-1], pattern)
-    return fnmatch.fnmatch(relative, pattern.lstrip("./")) or fnmatch.fnmatch(relative, pattern.rstrip("/") + "/*")
+    return fnmatch.fnmatch(relative, pattern.lstrip("./")) or fnmatch.fnmatch(
+        relative, pattern.rstrip("/") + "/*"
+    )
 
 
 def _format_error(path: Path, error, model) -> str:
@@ -184,8 +189,10 @@ def load_file(path: Path) -> ResolvedConfig:
         tool = data.get("tool", {})
         data = tool.get("achslint", {}) if isinstance(tool, dict) else {}
         if not isinstance(data, dict):
-            raise ConfigError(f"configuration error in {path}: `tool.achslint` must be a table ([tool.achslint]), "
-                              f"not {type(data).__name__}")
+            raise ConfigError(
+                f"configuration error in {path}: `tool.achslint` must be a table ([tool.achslint]), "
+                f"not {type(data).__name__}"
+            )
     model = _file_model()
     try:
         validated = model.model_validate(data)

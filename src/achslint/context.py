@@ -140,7 +140,9 @@ class Context:
         """A finding about a load-time correction: the message, then what the CNC does instead."""
         return self.cross(code, f"{message}: {correction.reason} ({correction.error})", paths)
 
-    def cross(self, code: str, message: str, paths: list[str], *, severity: Severity | None = None) -> Diagnostic:
+    def cross(
+        self, code: str, message: str, paths: list[str], *, severity: Severity | None = None
+    ) -> Diagnostic:
         """A diagnostic about several parameters: at the first one the list sets, the others related."""
         present = [s for s in (self.values.in_list(p) for p in paths) if s is not None]
         main = present[0] if present else None
@@ -152,8 +154,16 @@ class Context:
             if id(setting) not in seen:
                 seen.add(id(setting))
                 related.append(self.related(setting))
-        return self.report(code, line, message, column=column, end_column=max(end, column + 1),
-                           severity=severity, setting=main, related=related)
+        return self.report(
+            code,
+            line,
+            message,
+            column=column,
+            end_column=max(end, column + 1),
+            severity=severity,
+            setting=main,
+            related=related,
+        )
 
     def problem_span(self, line: syntax.Line, span) -> tuple[int, int]:
         if isinstance(span, tuple):

@@ -17,9 +17,16 @@ if TYPE_CHECKING:
     from .resolved import ResolvedAxis
 
 HOMING_TYPE = "kenngr.homing.homing_type"
-OVERFLOW, BITS, OFFSET = "kenngr.homing_overflow_evaluation", "antr.encoder_bit_range", "antr.encoder_overflow_offset"
-LATCH, LAYOUT, ENCODER = ("antr.sercos.drive_supports_cnc_homing", "antr.sercos.cnc_homing_rt_bit_layout",
-                          "antr.cnc_homing_encoder")
+OVERFLOW, BITS, OFFSET = (
+    "kenngr.homing_overflow_evaluation",
+    "antr.encoder_bit_range",
+    "antr.encoder_overflow_offset",
+)
+LATCH, LAYOUT, ENCODER = (
+    "antr.sercos.drive_supports_cnc_homing",
+    "antr.sercos.cnc_homing_rt_bit_layout",
+    "antr.cnc_homing_encoder",
+)
 MAX_DIST = "kenngr.homing_max_movement_dist"
 CHECK_NAME, CHECK_BIT = "antr.reference_check.element_name", "antr.reference_check.bit_nr"
 
@@ -30,9 +37,13 @@ def homing_type(axis: ResolvedAxis) -> None:
 
     if axis.written(HOMING_TYPE) == "DRIVE_CONTROLLED" and axis.drive_type in CNC_ONLY_DRIVES:
         fallback = default_homing_type(axis.drive_type)
-        axis.correct(HOMING_TYPE, fallback, "P-ERR-110384",
-                     f"drive-controlled homing is not available for kenngr.antr_typ {axis.drive_type} "
-                     f"({axis.drive_name()}); the CNC uses the drive type's default {fallback}")
+        axis.correct(
+            HOMING_TYPE,
+            fallback,
+            "P-ERR-110384",
+            f"drive-controlled homing is not available for kenngr.antr_typ {axis.drive_type} "
+            f"({axis.drive_name()}); the CNC uses the drive type's default {fallback}",
+        )
 
 
 def encoder_overflow(axis: ResolvedAxis) -> None:
@@ -43,17 +54,25 @@ def encoder_overflow(axis: ResolvedAxis) -> None:
     if not axis.written(OVERFLOW):
         return
     if axis.drive_type not in OVERFLOW_DRIVES:
-        axis.correct(OVERFLOW, False, "P-ERR-110416",
-                     f"encoder-overflow homing is not available for kenngr.antr_typ {axis.drive_type} "
-                     f"({axis.drive_name()}); only SERCOS, Lightbus and CANopen drives support it")
+        axis.correct(
+            OVERFLOW,
+            False,
+            "P-ERR-110416",
+            f"encoder-overflow homing is not available for kenngr.antr_typ {axis.drive_type} "
+            f"({axis.drive_name()}); only SERCOS, Lightbus and CANopen drives support it",
+        )
         return
     revolution = encoder_revolution(axis, 0)
     offset = axis.written(OFFSET)
     if revolution and abs(offset) >= revolution:
         unit = axis.parameter(OFFSET).unit(axis.axis_type)
-        axis.correct(OFFSET, 0, "P-ERR-70310",
-                     f"the offset is beyond one encoder revolution (2^{axis.get(BITS)} increments = "
-                     f"{describe(revolution, unit)} with getriebe[0].wegaufz/wegaufn); the CNC resets it to 0")
+        axis.correct(
+            OFFSET,
+            0,
+            "P-ERR-70310",
+            f"the offset is beyond one encoder revolution (2^{axis.get(BITS)} increments = "
+            f"{describe(revolution, unit)} with getriebe[0].wegaufz/wegaufn); the CNC resets it to 0",
+        )
 
 
 def encoder_revolution(axis: ResolvedAxis, gear: int) -> float | None:
@@ -66,8 +85,11 @@ def encoder_revolution(axis: ResolvedAxis, gear: int) -> float | None:
 
 
 # (member of getriebe[i], CNC message) for the speeds the limit for unreferenced axes caps.
-CAPPED_SPEEDS = (("vb_refmax", "P-ERR-110421"), ("vb_reflow", "P-ERR-110422"),
-                 ("homing.torq_move_velocity", "P-ERR-110413"))
+CAPPED_SPEEDS = (
+    ("vb_refmax", "P-ERR-110421"),
+    ("vb_reflow", "P-ERR-110422"),
+    ("homing.torq_move_velocity", "P-ERR-110413"),
+)
 
 
 def speed_caps(axis: ResolvedAxis) -> None:
@@ -81,9 +103,13 @@ def speed_caps(axis: ResolvedAxis) -> None:
         for member, error in CAPPED_SPEEDS:
             path = f"getriebe[{gear}].{member}"
             if axis.written(path) > cap:
-                axis.correct(path, cap, error,
-                             f"above the limit for unreferenced axes getriebe[{gear}].vb_not_referenced = "
-                             f"{describe(cap, unit)}; the CNC lowers it to that limit")
+                axis.correct(
+                    path,
+                    cap,
+                    error,
+                    f"above the limit for unreferenced axes getriebe[{gear}].vb_not_referenced = "
+                    f"{describe(cap, unit)}; the CNC lowers it to that limit",
+                )
 
 
 def sercos_latch(axis: ResolvedAxis) -> None:
@@ -92,27 +118,43 @@ def sercos_latch(axis: ResolvedAxis) -> None:
     from .resolved import SERCOS
 
     if axis.written(ENCODER) and axis.drive_type != SERCOS:
-        axis.correct(ENCODER, 0, "P-ERR-110516",
-                     f"the homing encoder can only be chosen for SERCOS drives; kenngr.antr_typ {axis.drive_type} "
-                     f"({axis.drive_name()}) gets 0")
+        axis.correct(
+            ENCODER,
+            0,
+            "P-ERR-110516",
+            f"the homing encoder can only be chosen for SERCOS drives; kenngr.antr_typ {axis.drive_type} "
+            f"({axis.drive_name()}) gets 0",
+        )
     if not axis.written(LATCH) or axis.drive_type != SERCOS:
         return
     if axis.axis_type == "S":
-        axis.correct(LATCH, False, "P-ERR-110522",
-                     "the drive's zero-pulse latch (S-0-146) is not available for spindles; the CNC switches it off")
+        axis.correct(
+            LATCH,
+            False,
+            "P-ERR-110522",
+            "the drive's zero-pulse latch (S-0-146) is not available for spindles; the CNC switches it off",
+        )
         return
     if not 1 <= axis.written(LAYOUT) <= 16:
-        axis.correct(LAYOUT, 1, "P-ERR-110514",
-                     "must be 1..16 while drive_supports_cnc_homing is 1; the CNC uses 1 (real-time bits 1 and 2 "
-                     "of the control and status word), which must match the drive's bit assignment")
+        axis.correct(
+            LAYOUT,
+            1,
+            "P-ERR-110514",
+            "must be 1..16 while drive_supports_cnc_homing is 1; the CNC uses 1 (real-time bits 1 and 2 "
+            "of the control and status word), which must match the drive's bit assignment",
+        )
 
 
 def path_monitoring(axis: ResolvedAxis) -> None:
     """P-AXIS-00412 other than 0 on a linear axis is set to 0 (P-ERR-110545)."""
     if axis.written(MAX_DIST) and axis.axis_type == "T":
-        axis.correct(MAX_DIST, 0, "P-ERR-110545",
-                     "homing path monitoring only works for rotary axes and spindles; on a linear axis the CNC "
-                     "sets it to 0")
+        axis.correct(
+            MAX_DIST,
+            0,
+            "P-ERR-110545",
+            "homing path monitoring only works for rotary axes and spindles; on a linear axis the CNC "
+            "sets it to 0",
+        )
 
 
 def reference_monitoring(axis: ResolvedAxis) -> None:
@@ -120,9 +162,13 @@ def reference_monitoring(axis: ResolvedAxis) -> None:
     from .resolved import SERCOS
 
     if axis.written(CHECK_NAME) and axis.drive_type != SERCOS:
-        axis.correct(CHECK_NAME, "", "P-ERR-110548",
-                     f"reference monitoring only works with SERCOS drives; with kenngr.antr_typ {axis.drive_type} "
-                     f"({axis.drive_name()}) the CNC switches it off")
+        axis.correct(
+            CHECK_NAME,
+            "",
+            "P-ERR-110548",
+            f"reference monitoring only works with SERCOS drives; with kenngr.antr_typ {axis.drive_type} "
+            f"({axis.drive_name()}) the CNC switches it off",
+        )
 
 
 # In the order the CNC's checks depend on each other (the overflow offset needs the overflow switch).

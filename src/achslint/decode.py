@@ -51,7 +51,7 @@ def decode(data: bytes) -> SourceText:
     if b"\x00" in data:
         raise UnreadableInput("a binary file (it holds NUL bytes), not an axis list; nothing of it is shown")
     bom = data.startswith(UTF8_BOM)
-    body = data[len(UTF8_BOM):] if bom else data
+    body = data[len(UTF8_BOM) :] if bom else data
     for codec in ("utf-8", "cp1252", "latin-1"):
         try:
             return SourceText(body.decode(codec), codec, bom)

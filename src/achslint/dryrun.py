@@ -42,7 +42,6 @@ from .scenario import ScenarioError, default_scenario, parse_input
 REFUSING_RULES = ("lis306_torq_drive_type", "lis319_spindle_homing_direction")
 
 
-
 class DryRunRefused(Exception):
     """The CNC would not run this homing (exit code 2, one line)."""
 
@@ -78,14 +77,22 @@ def scenario_input(file: Path, scenario: Path | None, options: dict, config: Pat
     return parse_input(merged, "scenario"), resolved.settings.cycle_time_us
 
 
-def prepare(data: bytes, name: str, given=None, *, gear: int = 0,
-            cycle_time_us: int = 1000, defaults: bytes | None = None) -> Simulator:
+def prepare(
+    data: bytes,
+    name: str,
+    given=None,
+    *,
+    gear: int = 0,
+    cycle_time_us: int = 1000,
+    defaults: bytes | None = None,
+) -> Simulator:
     values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
     if getattr(given, "drive", None) is not None and strategy.controlled_by != "drive":
         raise ScenarioError(
             f"scenario: the [drive] table describes drive-controlled homing, but {name} homes "
-            f"{strategy.title} (homing type {values.homing_type}): remove the [drive] table")
+            f"{strategy.title} (homing type {values.homing_type}): remove the [drive] table"
+        )
     return Simulator(values, strategy, default_scenario(strategy, given, cycle_time_us))
 
 
@@ -94,17 +101,29 @@ def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None
     from .context import Context
     from .syntax import parse_bytes
 
-    context = Context(name, parse_bytes(data, name),
-                      default_file=parse_bytes(defaults, "default list") if defaults is not None else None)
+    context = Context(
+        name,
+        parse_bytes(data, name),
+        default_file=parse_bytes(defaults, "default list") if defaults is not None else None,
+    )
     for module in REFUSING_RULES:
         rule = importlib.import_module(f"{__package__}.rules.{module}")
         for diagnostic in rule.check(context):
-            return f"{name}: dry-run refused, the CNC does not run this homing: {rule.CODE} {diagnostic.message}"
+            return (
+                f"{name}: dry-run refused, the CNC does not run this homing: {rule.CODE} {diagnostic.message}"
+            )
     return None
 
 
-def dry_run(data: bytes, name: str, given=None, *, gear: int = 0,
-            cycle_time_us: int = 1000, defaults: bytes | None = None) -> DryRun:
+def dry_run(
+    data: bytes,
+    name: str,
+    given=None,
+    *,
+    gear: int = 0,
+    cycle_time_us: int = 1000,
+    defaults: bytes | None = None,
+) -> DryRun:
     simulator = prepare(data, name, given, gear=gear, cycle_time_us=cycle_time_us, defaults=defaults)
     refused = refusal(data, name, defaults)
     if refused:
@@ -118,16 +137,23 @@ def dry_run(data: bytes, name: str, given=None, *, gear: int = 0,
 def annotate(simulator: Simulator, trace: Trace) -> None:
     """Warnings about what the simulation takes from the CNC's corrections and from stand-ins."""
     for correction in simulator.values.corrections:
-        trace.warn(correction.error, f"the CNC corrects {correction.parameter} {_plain(correction.written)} -> "
-                                     f"{_plain(correction.used)}: {correction.reason}; the dry-run uses the "
-                                     "corrected value")
+        trace.warn(
+            correction.error,
+            f"the CNC corrects {correction.parameter} {_plain(correction.written)} -> "
+            f"{_plain(correction.used)}: {correction.reason}; the dry-run uses the "
+            "corrected value",
+        )
     setup = simulator.strategy.setup
     if simulator.overflow and setup.overflow_period is None and simulator.strategy.moves:
         given = "zero_pulse_period" not in trace.scenario.assumed
-        trace.warn(None, (
-            "antr.encoder_bit_range is 0, so the distance between encoder overflows is unknown; the dry-run uses "
-            f"the scenario's zero_pulse_period ({trace.scenario.zero_pulse_period:g} {trace.unit}"
-            f"{'' if given else ', assumed'}) instead. Set encoder_bit_range to the encoder's bits per revolution"))
+        trace.warn(
+            None,
+            (
+                "antr.encoder_bit_range is 0, so the distance between encoder overflows is unknown; the dry-run uses "
+                f"the scenario's zero_pulse_period ({trace.scenario.zero_pulse_period:g} {trace.unit}"
+                f"{'' if given else ', assumed'}) instead. Set encoder_bit_range to the encoder's bits per revolution"
+            ),
+        )
 
 
 def _plain(value) -> str:
@@ -153,42 +179,61 @@ def trace_json(run: DryRun) -> dict:
     trace = run.trace
     values = run.values
     r = _round  # keep JSON free of float noise
-    return _finite({
-        "version": 1,
-        "units": {"position": trace.unit, "velocity": f"{trace.unit}/s", "time": "s",
-                  "acceleration": f"{trace.unit}/s^2"},
-        "axis": {
-            "name": values.get("kopf.log_achs_name"),
-            "axis_type": values.axis_type,
-            "drive_type": values.drive_type,
-            "homing_type": values.homing_type,
-            "acceleration": r(trace.acceleration),
-            "acceleration_source": trace.acceleration_source,
-        },
-        "strategy": {"id": trace.strategy.id, "description": trace.strategy.title},
-        "scenario": trace.scenario.as_dict(),
-        "phases": [
-            {"name": p.name, "direction": p.direction, "velocity": r(p.velocity),
-             "start_position": r(p.start_position), "end_position": r(p.end_position),
-             "start_time": r(p.start_time), "end_time": r(p.end_time), "ended_by": p.ended_by}
-            for p in trace.phases
-        ],
-        "events": [{"time": r(e.time), "position": r(e.position), "kind": e.kind} for e in trace.events],
-        "reference": None if trace.reference is None else {
-            "kind": trace.reference["kind"], "position": r(trace.reference["position"]),
-            "value": r(trace.reference["value"]), "speed": r(trace.reference["speed"])},
-        "final_position": r(trace.final_position),
-        "ends_moving": trace.ends_moving,
-        "total_time": r(trace.total_time),
-        "total_distance": r(trace.total_distance),
-        "outcome": trace.outcome,
-        "failure": trace.failure,
-        "warnings": trace.warnings,
-        "corrections": [c.as_dict() for c in values.corrections],
-    })
+    return _finite(
+        {
+            "version": 1,
+            "units": {
+                "position": trace.unit,
+                "velocity": f"{trace.unit}/s",
+                "time": "s",
+                "acceleration": f"{trace.unit}/s^2",
+            },
+            "axis": {
+                "name": values.get("kopf.log_achs_name"),
+                "axis_type": values.axis_type,
+                "drive_type": values.drive_type,
+                "homing_type": values.homing_type,
+                "acceleration": r(trace.acceleration),
+                "acceleration_source": trace.acceleration_source,
+            },
+            "strategy": {"id": trace.strategy.id, "description": trace.strategy.title},
+            "scenario": trace.scenario.as_dict(),
+            "phases": [
+                {
+                    "name": p.name,
+                    "direction": p.direction,
+                    "velocity": r(p.velocity),
+                    "start_position": r(p.start_position),
+                    "end_position": r(p.end_position),
+                    "start_time": r(p.start_time),
+                    "end_time": r(p.end_time),
+                    "ended_by": p.ended_by,
+                }
+                for p in trace.phases
+            ],
+            "events": [{"time": r(e.time), "position": r(e.position), "kind": e.kind} for e in trace.events],
+            "reference": None
+            if trace.reference is None
+            else {
+                "kind": trace.reference["kind"],
+                "position": r(trace.reference["position"]),
+                "value": r(trace.reference["value"]),
+                "speed": r(trace.reference["speed"]),
+            },
+            "final_position": r(trace.final_position),
+            "ends_moving": trace.ends_moving,
+            "total_time": r(trace.total_time),
+            "total_distance": r(trace.total_distance),
+            "outcome": trace.outcome,
+            "failure": trace.failure,
+            "warnings": trace.warnings,
+            "corrections": [c.as_dict() for c in values.corrections],
+        }
+    )
 
 
 # --- text ------------------------------------------------------------------------------------
+
 
 def _num(value: float, digits: int = 4, fixed: bool = False) -> str:
     """A number for the text output: `digits` decimals (trailing zeros dropped unless `fixed`, for columns)."""
@@ -203,19 +248,29 @@ def header_lines(run: DryRun) -> list[str]:
     unit = trace.unit
     scenario = trace.scenario
     cam = f"[{_num(scenario.cam[0])}, {_num(scenario.cam[1])}]" if scenario.cam else "none"
-    switches = (f"[{_num(scenario.limit_switches[0])}, {_num(scenario.limit_switches[1])}]"
-                if scenario.limit_switches else "none")
+    switches = (
+        f"[{_num(scenario.limit_switches[0])}, {_num(scenario.limit_switches[1])}]"
+        if scenario.limit_switches
+        else "none"
+    )
     lines = [
         f"Scenario: start {_num(scenario.start_position)} {unit}, cam {cam}, zero pulse every "
         f"{_num(scenario.zero_pulse_period)} {unit} (one at {_num(scenario.zero_pulse_phase)}), "
         f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {_num(scenario.cycle_time * 1000)} ms, "
         f"limit switches {switches}"
-        + (f", modulo [{_num(scenario.modulo[0])}, {_num(scenario.modulo[1])}) {unit}" if scenario.modulo else "")]
+        + (
+            f", modulo [{_num(scenario.modulo[0])}, {_num(scenario.modulo[1])}) {unit}"
+            if scenario.modulo
+            else ""
+        )
+    ]
     lines.append(f"Assumed (not given): {', '.join(scenario.assumed) or 'nothing'}")
     if trace.acceleration is None:
         lines.append(f"Homing acceleration: {trace.acceleration_source}")
     else:
-        lines.append(f"Homing acceleration {_num(trace.acceleration)} {unit}/s² from {trace.acceleration_source}")
+        lines.append(
+            f"Homing acceleration {_num(trace.acceleration)} {unit}/s² from {trace.acceleration_source}"
+        )
     return lines
 
 
@@ -230,9 +285,13 @@ def render(run: DryRun, console) -> None:
     for line in header_lines(run):
         console.print(Text(line))
     for correction in run.values.corrections:
-        console.print(Text(f"CNC correction {correction.error}: ", style="yellow")
-                      + Text(f"{correction.parameter} {_plain(correction.written)} -> {_plain(correction.used)}: "
-                             f"{correction.reason}"))
+        console.print(
+            Text(f"CNC correction {correction.error}: ", style="yellow")
+            + Text(
+                f"{correction.parameter} {_plain(correction.written)} -> {_plain(correction.used)}: "
+                f"{correction.reason}"
+            )
+        )
     if trace.phases:
         # Numbers never wrap or shrink; the phase name and what ended it wrap instead (fits 80 columns).
         table = Table(title="Phases", title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
@@ -242,10 +301,15 @@ def render(run: DryRun, console) -> None:
         for column in (f"{unit}/s", f"from {unit}", f"to {unit}", "t end s"):
             table.add_column(column, no_wrap=True, justify="right")
         for number, p in enumerate(trace.phases, 1):
-            table.add_row(str(number), Text(p.name) + Text(f"\n{p.ended_by}", style="dim"),
-                          {"positive": "+", "negative": "-"}.get(p.direction or "", ""), _num(p.velocity, 3),
-                          _num(p.start_position, fixed=True), _num(p.end_position, fixed=True),
-                          _num(p.end_time, fixed=True))
+            table.add_row(
+                str(number),
+                Text(p.name) + Text(f"\n{p.ended_by}", style="dim"),
+                {"positive": "+", "negative": "-"}.get(p.direction or "", ""),
+                _num(p.velocity, 3),
+                _num(p.start_position, fixed=True),
+                _num(p.end_position, fixed=True),
+                _num(p.end_time, fixed=True),
+            )
         console.print(table)
     if trace.events:
         events = Table(title="Events", title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
@@ -257,20 +321,37 @@ def render(run: DryRun, console) -> None:
         console.print(events)
     if trace.reference:
         ref = trace.reference
-        console.print(Text(f"Reference: {ref['kind']} at {_num(ref['position'])} {unit} (actual value before "
-                           f"homing) becomes {_num(ref['value'])} {unit}"))
+        console.print(
+            Text(
+                f"Reference: {ref['kind']} at {_num(ref['position'])} {unit} (actual value before "
+                f"homing) becomes {_num(ref['value'])} {unit}"
+            )
+        )
     if trace.final_position is not None:
-        where = ("the spindle turns on at " + _num(trace.reference["speed"], 3) + f" {unit}/s"
-                 if trace.ends_moving and trace.reference else "at standstill")
-        console.print(Text(f"Final position: {_num(trace.final_position)} {unit} (homed, {where}); total "
-                           f"{_num(trace.total_time, 3)} s, {_num(trace.total_distance, 3)} {unit} travelled"))
+        where = (
+            "the spindle turns on at " + _num(trace.reference["speed"], 3) + f" {unit}/s"
+            if trace.ends_moving and trace.reference
+            else "at standstill"
+        )
+        console.print(
+            Text(
+                f"Final position: {_num(trace.final_position)} {unit} (homed, {where}); total "
+                f"{_num(trace.total_time, 3)} s, {_num(trace.total_distance, 3)} {unit} travelled"
+            )
+        )
     style = {"homed": "green", "failed": "red"}.get(trace.outcome, "yellow")
-    console.print(Text(f"Outcome: {trace.outcome}", style=f"bold {style}") +
-                  Text(f" — {trace.failure}" if trace.failure else ""))
+    console.print(
+        Text(f"Outcome: {trace.outcome}", style=f"bold {style}")
+        + Text(f" — {trace.failure}" if trace.failure else "")
+    )
     for warning in trace.warnings:
         if warning["code"] and warning["code"].startswith("P-ERR"):
             continue  # shown above as a CNC correction
-        prefix = Text(f"{warning['code']}: ", style="yellow") if warning["code"] else Text("note: ", style="yellow")
+        prefix = (
+            Text(f"{warning['code']}: ", style="yellow")
+            if warning["code"]
+            else Text("note: ", style="yellow")
+        )
         console.print(prefix + Text(warning["message"]))
 
 
@@ -301,27 +382,42 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
         trace = simulator.run(start=start, cam_shift=shift)
         outcomes[trace.outcome] += 1
         if trace.outcome != "homed":
-            reason = trace.phases[-1].ended_by if trace.phases and trace.outcome == "failed" else trace.failure
+            reason = (
+                trace.phases[-1].ended_by if trace.phases and trace.outcome == "failed" else trace.failure
+            )
             reasons[(trace.outcome, reason or trace.outcome)] += 1
         elif trace.reference is not None:
             references.append(trace.reference["position"])
     period = scenario.zero_pulse_period
-    assumed = [name for name in GEOMETRY if name in scenario.assumed and not (
-        name == "limit_switches" and scenario.modulo is not None)]
+    assumed = [
+        name
+        for name in GEOMETRY
+        if name in scenario.assumed and not (name == "limit_switches" and scenario.modulo is not None)
+    ]
     summary = {
-        "runs": runs, "outcomes": dict(outcomes), "unit": simulator.unit, "start_range": [low, high],
-        "reasons": [{"outcome": outcome, "reason": reason, "count": count}
-                    for (outcome, reason), count in reasons.most_common()],
+        "runs": runs,
+        "outcomes": dict(outcomes),
+        "unit": simulator.unit,
+        "start_range": [low, high],
+        "reasons": [
+            {"outcome": outcome, "reason": reason, "count": count}
+            for (outcome, reason), count in reasons.most_common()
+        ],
         "assumed_geometry": assumed,
     }
     if references:
         spread = round(max(references) - min(references), 9)
         pulses = Counter(round((ref - scenario.zero_pulse_phase) / period) for ref in references)
         usual = pulses.most_common(1)[0][1]
-        summary.update({
-            "reference_min": round(min(references), 9), "reference_max": round(max(references), 9), "spread": spread,
-            "distinct_pulses": len(pulses), "one_revolution_jumps": len(references) - usual,
-        })
+        summary.update(
+            {
+                "reference_min": round(min(references), 9),
+                "reference_max": round(max(references), 9),
+                "spread": spread,
+                "distinct_pulses": len(pulses),
+                "one_revolution_jumps": len(references) - usual,
+            }
+        )
     return _finite(summary)
 
 
@@ -330,16 +426,22 @@ def sweep_words(summary: dict) -> str:
     unit = summary["unit"]
     lines = []
     if summary["assumed_geometry"]:
-        lines.append(f"NOTE: the sweep runs in an ASSUMED geometry ({', '.join(summary['assumed_geometry'])} not "
-                     "given): its failures and spread describe the default scenario, not your machine. Give the "
-                     "real geometry with --scenario or --cam/--zero-pulse-period/--zero-pulse-phase/--limit-switches.")
+        lines.append(
+            f"NOTE: the sweep runs in an ASSUMED geometry ({', '.join(summary['assumed_geometry'])} not "
+            "given): its failures and spread describe the default scenario, not your machine. Give the "
+            "real geometry with --scenario or --cam/--zero-pulse-period/--zero-pulse-phase/--limit-switches."
+        )
     low, high = summary["start_range"]
     outcomes = ", ".join(f"{name} ×{count}" for name, count in sorted(summary["outcomes"].items()))
-    lines.append(f"Sweep of {summary['runs']} runs (start between {_num(low)} and {_num(high)} {unit}): {outcomes}.")
+    lines.append(
+        f"Sweep of {summary['runs']} runs (start between {_num(low)} and {_num(high)} {unit}): {outcomes}."
+    )
     for item in summary["reasons"]:
         lines.append(f"  {item['outcome']}: {item['reason']} ×{item['count']}")
     if "spread" in summary:
-        lines.append(f"Reference between {_num(summary['reference_min'])} and {_num(summary['reference_max'])} "
-                     f"{unit} (spread {summary['spread']:.4g} {unit}); {summary['distinct_pulses']} distinct zero "
-                     f"pulse(s), {summary['one_revolution_jumps']} run(s) jumped by one or more encoder revolutions.")
+        lines.append(
+            f"Reference between {_num(summary['reference_min'])} and {_num(summary['reference_max'])} "
+            f"{unit} (spread {summary['spread']:.4g} {unit}); {summary['distinct_pulses']} distinct zero "
+            f"pulse(s), {summary['one_revolution_jumps']} run(s) jumped by one or more encoder revolutions."
+        )
     return "\n".join(lines)

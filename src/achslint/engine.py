@@ -102,7 +102,7 @@ class Trace:
 class _Ramp:
     """A move from rest at (t0, x0) in direction s with speed v and acceleration a, until it is stopped."""
 
-    __slots__ = ("t0", "x0", "s", "v", "a", "t_acc", "d_acc")
+    __slots__ = ("a", "d_acc", "s", "t0", "t_acc", "v", "x0")
 
     def __init__(self, t0: float, x0: float, s: int, v: float, a: float):
         self.t0, self.x0, self.s, self.v, self.a = t0, x0, s, v, a
@@ -274,9 +274,21 @@ class Simulator:
         detected = math.ceil(absolute / cycle - 1e-9) * cycle
         return max(detected - ramp.t0, t)
 
-    def _move(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float, distance: float,
-              latched: bool, ended_by: str, travelled: float, search_max: float = INF,
-              before_bound: float = 0.0) -> tuple[float, float, float | None]:
+    def _move(
+        self,
+        trace: Trace,
+        name: str,
+        x: float,
+        t: float,
+        s: int,
+        speed: float,
+        distance: float,
+        latched: bool,
+        ended_by: str,
+        travelled: float,
+        search_max: float = INF,
+        before_bound: float = 0.0,
+    ) -> tuple[float, float, float | None]:
         """Move until an event `distance` ahead (detected at a cycle unless latched), then brake.
 
         Returns (end position, end time, detection position or None when a bound stopped the move).
@@ -294,8 +306,19 @@ class Simulator:
         trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, ended_by, segments))
         return x_end, t_end, x_detect
 
-    def _edge_move(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float, distance: float,
-                   ended_by: str, event: str, travelled: float) -> tuple[float, float, bool]:
+    def _edge_move(
+        self,
+        trace: Trace,
+        name: str,
+        x: float,
+        t: float,
+        s: int,
+        speed: float,
+        distance: float,
+        ended_by: str,
+        event: str,
+        travelled: float,
+    ) -> tuple[float, float, bool]:
         """A sampled move to a cam edge that records the edge as an event; False when a bound stopped it."""
         x_end, t_end, x_edge = self._move(trace, name, x, t, s, speed, distance, False, ended_by, travelled)
         if x_edge is None:
@@ -303,7 +326,9 @@ class Simulator:
         trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_edge, event))
         return x_end, t_end, True
 
-    def _reference(self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float) -> None:
+    def _reference(
+        self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float
+    ) -> None:
         trace.events.append(Event(time, position, kind))
         speed = abs(trace.phases[-1].segments[-1].v0)  # the braking segment starts at the event
         trace.reference = {"kind": kind, "position": self.wrap(position), "value": value, "speed": speed}
@@ -325,17 +350,24 @@ class Simulator:
         unit = self.unit
         value, final = trace.reference["value"], trace.final_position
         if not low <= value <= high:
-            trace.warn("LIS317", f"the reference value {value:g} {unit} lies outside the software limits "
-                                 f"[{low:g}, {high:g}] {unit}")
+            trace.warn(
+                "LIS317",
+                f"the reference value {value:g} {unit} lies outside the software limits "
+                f"[{low:g}, {high:g}] {unit}",
+            )
         elif not low <= final <= high:
-            what = ("after retracting from the stop" if self.strategy.id == "fixed_stop"
-                    else "after braking")
-            trace.warn("LIS317", f"{what} the axis stands at {final:.6g} {unit}, outside the software limits "
-                                 f"[{low:g}, {high:g}] {unit}: move the reference position inside by at least "
-                                 f"{abs(final - value):.4g} {unit}")
+            what = "after retracting from the stop" if self.strategy.id == "fixed_stop" else "after braking"
+            trace.warn(
+                "LIS317",
+                f"{what} the axis stands at {final:.6g} {unit}, outside the software limits "
+                f"[{low:g}, {high:g}] {unit}: move the reference position inside by at least "
+                f"{abs(final - value):.4g} {unit}",
+            )
 
     # -- the sequences the strategies choose from ---------------------------------------------
-    def stand_still(self, trace: Trace, outcome: str, failure: str | None = None, note: str | None = None) -> Trace:
+    def stand_still(
+        self, trace: Trace, outcome: str, failure: str | None = None, note: str | None = None
+    ) -> Trace:
         """No homing move: the axis needs none, is skipped, or cannot be homed."""
         trace.outcome, trace.failure = outcome, failure
         if note:
@@ -352,14 +384,20 @@ class Simulator:
     def drive_sequence(self, trace: Trace, x: float, cam_shift: float) -> Trace:
         """Drive-controlled homing: simulated when the scenario describes the drive's method."""
         if self.scenario.drive is None:
-            return self.stand_still(trace, "skipped", note="drive-controlled homing: the drive runs its own sequence; "
-                                    "describe its method in the scenario's [drive] table to simulate it")
+            return self.stand_still(
+                trace,
+                "skipped",
+                note="drive-controlled homing: the drive runs its own sequence; "
+                "describe its method in the scenario's [drive] table to simulate it",
+            )
         return self._drive(trace, x, self.scenario.drive, cam_shift)
 
     def cam_sequence(self, trace: Trace, x: float, cam_shift: float) -> Trace:
         """The CNC-controlled sequences with a reference cam (one or three phases)."""
         if self.scenario.cam is None:
-            return self.stand_still(trace, "failed", "the strategy needs a reference cam but the scenario has none")
+            return self.stand_still(
+                trace, "failed", "the strategy needs a reference cam but the scenario has none"
+            )
         lo, hi = self.scenario.cam
         return self._with_cam(trace, x, lo + cam_shift, hi + cam_shift)
 
@@ -379,13 +417,32 @@ class Simulator:
             phase += setup.overflow_offset
         return period, phase
 
-    def _reference_search(self, trace: Trace, name: str, x: float, t: float, s: int, speed: float,
-                          cam_distance: float, travelled: float) -> Trace:
+    def _reference_search(
+        self,
+        trace: Trace,
+        name: str,
+        x: float,
+        t: float,
+        s: int,
+        speed: float,
+        cam_distance: float,
+        travelled: float,
+    ) -> Trace:
         """Move to the cam (or start the search on it) and reference on the cam edge or the next zero pulse."""
         scenario = self.scenario
         if not self.strategy.with_zero_pulse:
-            x_end, t_end, x_cam = self._move(trace, name, x, t, s, speed, cam_distance, False,
-                                             "the cam edge was detected (sampled each cycle)", travelled)
+            x_end, _t_end, x_cam = self._move(
+                trace,
+                name,
+                x,
+                t,
+                s,
+                speed,
+                cam_distance,
+                False,
+                "the cam edge was detected (sampled each cycle)",
+                travelled,
+            )
             if x_cam is not None:
                 t_cam = trace.phases[-1].segments[-1].t0
                 trace.events.append(Event(t_cam, x_cam, "cam edge detected"))
@@ -408,12 +465,30 @@ class Simulator:
         # the manual does not say; this is the reading under which the shift cannot make a pulse unreachable.
         before = abs(activation - x) if self.zero_search_max > 0 else 0.0
         search_max = self.zero_search_max if self.zero_search_max > 0 else INF
-        x_end, t_end, x_ref = self._move(trace, name, x, t, s, speed, pulse_distance, latched,
-                                         f"the {event} was detected" + ("" if latched else " (sampled each cycle)"),
-                                         travelled, search_max, before)
+        x_end, _t_end, x_ref = self._move(
+            trace,
+            name,
+            x,
+            t,
+            s,
+            speed,
+            pulse_distance,
+            latched,
+            f"the {event} was detected" + ("" if latched else " (sampled each cycle)"),
+            travelled,
+            search_max,
+            before,
+        )
         if cam_distance <= abs(x_end - x) or x_ref is not None:
-            trace.events.append(Event(t + t_cam, x_cam, "cam edge detected, zero-pulse logic armed"
-                                      if not self.shift else f"cam edge detected, zero-pulse logic armed {self.shift:g} {self.unit} later"))
+            trace.events.append(
+                Event(
+                    t + t_cam,
+                    x_cam,
+                    "cam edge detected, zero-pulse logic armed"
+                    if not self.shift
+                    else f"cam edge detected, zero-pulse logic armed {self.shift:g} {self.unit} later",
+                )
+            )
         if x_ref is not None:
             t_ref = trace.phases[-1].segments[-1].t0
             self._reference(trace, event, x_ref, t_ref, self.refpkt, x_end)
@@ -447,40 +522,81 @@ class Simulator:
         if active(x):
             trace.events.append(Event(0.0, x, "on the cam at the start: phase 1 skipped"))
         else:
-            x_end, t, reached = self._edge_move(trace, "to the reference cam", x, t, s, fast, entry(x, s),
-                                                "the cam was reached (sampled each cycle)", "cam reached", travelled)
+            x_end, t, reached = self._edge_move(
+                trace,
+                "to the reference cam",
+                x,
+                t,
+                s,
+                fast,
+                entry(x, s),
+                "the cam was reached (sampled each cycle)",
+                "cam reached",
+                travelled,
+            )
             if not reached:
                 return trace
             travelled += abs(x_end - x)
             x = x_end
             if not active(x):
                 trace.outcome = "failed"
-                trace.failure = (f"the axis braked through the cam (braking distance "
-                                 f"{fast * fast / (2 * self.acceleration):.4g} {self.unit} is longer than the cam)")
+                trace.failure = (
+                    f"the axis braked through the cam (braking distance "
+                    f"{fast * fast / (2 * self.acceleration):.4g} {self.unit} is longer than the cam)"
+                )
                 return trace
         speed = fast if self.fast_from_cam else slow
-        x_end, t, left = self._edge_move(trace, "off the reference cam", x, t, -s, speed, exit_(x, -s),
-                                         "the cam was left (sampled each cycle)", "cam left", travelled)
+        x_end, t, left = self._edge_move(
+            trace,
+            "off the reference cam",
+            x,
+            t,
+            -s,
+            speed,
+            exit_(x, -s),
+            "the cam was left (sampled each cycle)",
+            "cam left",
+            travelled,
+        )
         if not left:
             return trace
         travelled += abs(x_end - x)
         x = x_end
-        return self._reference_search(trace, "onto the cam and reference", x, t, s, slow, entry(x, s), travelled)
+        return self._reference_search(
+            trace, "onto the cam and reference", x, t, s, slow, entry(x, s), travelled
+        )
 
     def _one_phase(self, trace: Trace, x: float, s: int, active, entry) -> Trace:
         """Homing without reversal: flying spindle homing at vb_reflow; otherwise the cam is approached at
         vb_refmax and the reference is its edge (type I) or the next zero pulse, searched at vb_reflow (type III)."""
         if self.strategy.setup.spindle:
-            return self._reference_search(trace, "reference on the fly", x, 0.0, s, self.slow, entry(x, s), 0.0)
+            return self._reference_search(
+                trace, "reference on the fly", x, 0.0, s, self.slow, entry(x, s), 0.0
+            )
         if active(x):
-            trace.warn("LIS402", "the axis starts on the reference cam: one-phase homing references without "
-                                 "leaving it, at the wrong place")
+            trace.warn(
+                "LIS402",
+                "the axis starts on the reference cam: one-phase homing references without "
+                "leaving it, at the wrong place",
+            )
         if not self.strategy.with_zero_pulse:
-            return self._reference_search(trace, "to the cam and reference", x, 0.0, s, self.fast, entry(x, s), 0.0)
+            return self._reference_search(
+                trace, "to the cam and reference", x, 0.0, s, self.fast, entry(x, s), 0.0
+            )
         t, travelled = 0.0, 0.0
         if not active(x):
-            x_end, t, reached = self._edge_move(trace, "to the reference cam", x, t, s, self.fast, entry(x, s),
-                                                "the cam was reached (sampled each cycle)", "cam reached", travelled)
+            x_end, t, reached = self._edge_move(
+                trace,
+                "to the reference cam",
+                x,
+                t,
+                s,
+                self.fast,
+                entry(x, s),
+                "the cam was reached (sampled each cycle)",
+                "cam reached",
+                travelled,
+            )
             if not reached:
                 return trace
             travelled, x = abs(x_end - x), x_end
@@ -502,8 +618,9 @@ class Simulator:
         t_edge = None
         if self.strategy.with_cam:
             if scenario.cam is None:
-                return self.stand_still(trace, "failed", "flying homing with cam needs a reference cam but the "
-                                                         "scenario has none")
+                return self.stand_still(
+                    trace, "failed", "flying homing with cam needs a reference cam but the scenario has none"
+                )
             lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
             active, entry, exit_ = self._active(lo, hi)
             if active(x):
@@ -532,27 +649,55 @@ class Simulator:
         t_ref = self._sample(ramp, distance, latched)
         x_ref = x + s * ramp.distance_at(t_ref)
         segments = ramp.run_until(t_ref)
-        trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_ref, 0.0, t_ref,
-                                        f"the {event} was detected; the spindle turns on without stopping", segments))
+        trace.phases.append(
+            PhaseRecord(
+                name,
+                _dir(s),
+                speed,
+                x,
+                x_ref,
+                0.0,
+                t_ref,
+                f"the {event} was detected; the spindle turns on without stopping",
+                segments,
+            )
+        )
         if t_edge is not None:
             self._edge_event(trace, t_edge, x + s * ramp.distance_at(t_edge))
         trace.events.append(Event(t_ref, x_ref, event))
-        trace.reference = {"kind": event, "position": self.wrap(x_ref), "value": self.refpkt,
-                           "speed": ramp.speed_at(t_ref)}
+        trace.reference = {
+            "kind": event,
+            "position": self.wrap(x_ref),
+            "value": self.refpkt,
+            "speed": ramp.speed_at(t_ref),
+        }
         trace.final_position = self.wrap(self.refpkt)
         trace.ends_moving = True
         return trace
 
     def _edge_event(self, trace: Trace, t: float, position: float) -> None:
-        armed = ("cam left, zero-pulse logic armed" if not self.shift
-                 else f"cam left, zero-pulse logic armed {self.shift:g} {self.unit} later")
+        armed = (
+            "cam left, zero-pulse logic armed"
+            if not self.shift
+            else f"cam left, zero-pulse logic armed {self.shift:g} {self.unit} later"
+        )
         trace.events.append(Event(t, position, armed))
 
-    def _flying_abort(self, trace: Trace, ramp: _Ramp, name: str, bound: float, reason: str,
-                      t_edge: float | None = None, x: float = 0.0) -> Trace:
+    def _flying_abort(
+        self,
+        trace: Trace,
+        ramp: _Ramp,
+        name: str,
+        bound: float,
+        reason: str,
+        t_edge: float | None = None,
+        x: float = 0.0,
+    ) -> Trace:
         """A flying search that a bound ends: the CNC aborts homing and the spindle brakes."""
         segments, t_end, x_end = ramp.stop(ramp.time_to(bound))
-        trace.phases.append(PhaseRecord(name, _dir(ramp.s), ramp.v, ramp.x0, x_end, ramp.t0, t_end, reason, segments))
+        trace.phases.append(
+            PhaseRecord(name, _dir(ramp.s), ramp.v, ramp.x0, x_end, ramp.t0, t_end, reason, segments)
+        )
         if t_edge is not None and t_edge <= ramp.time_to(bound):
             self._edge_event(trace, t_edge, ramp.x0 + ramp.s * ramp.distance_at(t_edge))
         trace.outcome, trace.failure = "failed", f"{name}: {reason} before the event was found"
@@ -560,15 +705,27 @@ class Simulator:
 
     def zero_pulse_only(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         if not self.strategy.setup.zero_pulse:
-            return self.stand_still(trace, "failed", "neither a reference cam nor a zero pulse marks the reference "
-                                                     "(LIS318)")
+            return self.stand_still(
+                trace, "failed", "neither a reference cam nor a zero pulse marks the reference (LIS318)"
+            )
         s = self.direction
         speed = self.slow
         event = "encoder overflow" if self.overflow else "zero pulse"
         latched = self.scenario.hardware_latch or self.overflow
         search_max = self.zero_search_max if self.zero_search_max > 0 else INF
-        x_end, t_end, x_ref = self._move(trace, f"to the {event}", x, 0.0, s, speed, self._next_pulse(x, s),
-                                         latched, f"the {event} was detected", 0.0, search_max)
+        x_end, _t_end, x_ref = self._move(
+            trace,
+            f"to the {event}",
+            x,
+            0.0,
+            s,
+            speed,
+            self._next_pulse(x, s),
+            latched,
+            f"the {event} was detected",
+            0.0,
+            search_max,
+        )
         if x_ref is not None:
             self._reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
         return trace
@@ -577,10 +734,22 @@ class Simulator:
         s = self.direction
         speed = self.slow
         distance = abs(self.values.get("antr.simu.rpf_weg_bis_nip")) * POSITION
-        x_end, t_end, x_ref = self._move(trace, "to the simulated zero pulse", x, 0.0, s, speed, distance, True,
-                                         "the simulated zero pulse was reached", 0.0)
+        x_end, _t_end, x_ref = self._move(
+            trace,
+            "to the simulated zero pulse",
+            x,
+            0.0,
+            s,
+            speed,
+            distance,
+            True,
+            "the simulated zero pulse was reached",
+            0.0,
+        )
         if x_ref is not None:
-            self._reference(trace, "simulated zero pulse", x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
+            self._reference(
+                trace, "simulated zero pulse", x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end
+            )
         return trace
 
     def fixed_stop(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
@@ -590,7 +759,10 @@ class Simulator:
         acceleration = values.get(f"getriebe[{gear}].homing.torq_move_acceleration")
         if speed <= 0 or acceleration <= 0:
             missing = "torq_move_velocity" if speed <= 0 else "torq_move_acceleration"
-            trace.outcome, trace.failure = "failed", f"{missing} is not set (0): the axis does not move (LIS315)"
+            trace.outcome, trace.failure = (
+                "failed",
+                f"{missing} is not set (0): the axis does not move (LIS315)",
+            )
             return trace
         if self.strategy.setup.simulated:
             stop = x + s * values.get("kenngr.homing.torq_distance_to_block") * POSITION
@@ -603,8 +775,19 @@ class Simulator:
         if stop is None or reach <= 0 or (max_distance > 0 and reach > max_distance):
             limit = max_distance if max_distance > 0 else self._bound(x, s, 0.0)[0]
             segments, t_end, x_end = ramp.stop(ramp.time_to(limit))
-            trace.phases.append(PhaseRecord("to the fixed stop", _dir(s), speed, x, x_end, 0.0, t_end,
-                                            "torq_max_distance travelled without a stop", segments))
+            trace.phases.append(
+                PhaseRecord(
+                    "to the fixed stop",
+                    _dir(s),
+                    speed,
+                    x,
+                    x_end,
+                    0.0,
+                    t_end,
+                    "torq_max_distance travelled without a stop",
+                    segments,
+                )
+            )
             trace.outcome, trace.failure = "failed", "no fixed stop within torq_max_distance: homing aborted"
             return trace
         t_contact = ramp.time_to(reach)
@@ -612,25 +795,53 @@ class Simulator:
         segments = ramp.stop(t_contact)[0][:-1]
         segments.append(Segment(t_contact, t_contact, stop, 0.0, 0.0))
         if reach < min_distance:
-            trace.phases.append(PhaseRecord("to the fixed stop", _dir(s), speed, x, stop, 0.0, t_contact,
-                                            "blocked before torq_min_distance", segments))
-            trace.outcome, trace.failure = "failed", ("the stop lies within torq_min_distance: detection is not armed "
-                                                      "yet when the axis is blocked")
+            trace.phases.append(
+                PhaseRecord(
+                    "to the fixed stop",
+                    _dir(s),
+                    speed,
+                    x,
+                    stop,
+                    0.0,
+                    t_contact,
+                    "blocked before torq_min_distance",
+                    segments,
+                )
+            )
+            trace.outcome, trace.failure = (
+                "failed",
+                (
+                    "the stop lies within torq_min_distance: detection is not armed "
+                    "yet when the axis is blocked"
+                ),
+            )
             return trace
         detect = values.get("kenngr.homing.torq_detect_time") * 1e-6
         t_detect = t_contact + detect
         segments.append(Segment(t_contact, t_detect, stop, 0.0, 0.0))
-        trace.phases.append(PhaseRecord("to the fixed stop", _dir(s), speed, x, stop, 0.0, t_detect,
-                                        "the fixed stop was detected", segments))
+        trace.phases.append(
+            PhaseRecord(
+                "to the fixed stop",
+                _dir(s),
+                speed,
+                x,
+                stop,
+                0.0,
+                t_detect,
+                "the fixed stop was detected",
+                segments,
+            )
+        )
         trace.events.append(Event(t_contact, stop, "fixed stop reached"))
         value = values.get("kenngr.homing.torq_homing_position") * POSITION
         retraction = values.get("kenngr.homing.torq_retraction_distance") * POSITION
         trace.events.append(Event(t_detect, stop, "fixed stop detected"))
         trace.reference = {"kind": "fixed stop", "position": stop, "value": value, "speed": 0.0}
-        x_end, t_end = _point_to_point(trace, "retract from the stop", stop, t_detect, -s, speed, float(acceleration), retraction)
+        x_end, t_end = _point_to_point(
+            trace, "retract from the stop", stop, t_detect, -s, speed, float(acceleration), retraction
+        )
         trace.final_position = value + (x_end - stop)
         return trace
-
 
     # -- drive-side homing (Triamec drive homing methods) -------------------------------------
     EARLY_TRIGGER = 0.005  # s: a search whose trigger comes sooner is refused by the drive
@@ -645,7 +856,12 @@ class Simulator:
             trace.final_position = x
             return trace
         if drive.method == "at-position":
-            trace.reference = {"kind": "position set at standstill", "position": x, "value": reference, "speed": 0.0}
+            trace.reference = {
+                "kind": "position set at standstill",
+                "position": x,
+                "value": reference,
+                "speed": 0.0,
+            }
             trace.final_position = reference
             return trace
         if drive.method == "absolute-encoder":
@@ -661,20 +877,46 @@ class Simulator:
             return trace
         if drive.relocate_distance:
             s = 1 if drive.relocate_distance > 0 else -1
-            x, t = _point_to_point(trace, "relocate", x, t, s, drive.velocity, drive.acceleration,
-                                   abs(drive.relocate_distance), "relocation distance travelled")
-        x_end, t, event = self._drive_search(trace, "second search", x, t, drive, drive.second_search, cam_shift)
+            x, t = _point_to_point(
+                trace,
+                "relocate",
+                x,
+                t,
+                s,
+                drive.velocity,
+                drive.acceleration,
+                abs(drive.relocate_distance),
+                "relocation distance travelled",
+            )
+        x_end, t, event = self._drive_search(
+            trace, "second search", x, t, drive, drive.second_search, cam_shift
+        )
         if event is None:
             return trace
-        self._reference(trace, f"{drive.second_search.trigger.replace('_', ' ')} (drive)", event,
-                        trace.phases[-1].segments[-1].t0, reference, x_end)
+        self._reference(
+            trace,
+            f"{drive.second_search.trigger.replace('_', ' ')} (drive)",
+            event,
+            trace.phases[-1].segments[-1].t0,
+            reference,
+            x_end,
+        )
         if drive.home_position is not None:
             homed_now = trace.final_position
             distance = drive.home_position - homed_now
             if distance:
                 s = 1 if distance > 0 else -1
-                x_home, _ = _point_to_point(trace, "move to home position", x_end, t, s, drive.velocity,
-                                            drive.acceleration, abs(distance), "home position reached")
+                x_home, _ = _point_to_point(
+                    trace,
+                    "move to home position",
+                    x_end,
+                    t,
+                    s,
+                    drive.velocity,
+                    drive.acceleration,
+                    abs(distance),
+                    "home position reached",
+                )
                 trace.final_position = homed_now + (x_home - x_end)
         return trace
 
@@ -682,10 +924,15 @@ class Simulator:
         """TwinCAT NC / AX5000 homing: to the cam, off its falling edge, then the event of the reference mode."""
         scenario = self.scenario
         if scenario.cam is None:
-            trace.outcome, trace.failure = "failed", "the NC reference modes need a reference cam in the scenario"
+            trace.outcome, trace.failure = (
+                "failed",
+                "the NC reference modes need a reference cam in the scenario",
+            )
             return trace
         lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
-        toward = 1 if drive.invert_cam_search else -1  # the NC searches the cam in negative direction by default
+        toward = (
+            1 if drive.invert_cam_search else -1
+        )  # the NC searches the cam in negative direction by default
         away = -toward
         sync_speed = drive.velocity_sync or drive.velocity
         saved = self.acceleration, self.cam_level
@@ -694,8 +941,18 @@ class Simulator:
             active, entry, exit_ = self._active(lo, hi)
             t, travelled = 0.0, 0.0
             if not active(x):
-                x_end, t, reached = self._edge_move(trace, "to the reference cam", x, t, toward, drive.velocity,
-                                                    entry(x, toward), "the cam was reached", "cam reached", travelled)
+                x_end, t, reached = self._edge_move(
+                    trace,
+                    "to the reference cam",
+                    x,
+                    t,
+                    toward,
+                    drive.velocity,
+                    entry(x, toward),
+                    "the cam was reached",
+                    "cam reached",
+                    travelled,
+                )
                 if not reached:
                     return trace
                 travelled += abs(x_end - x)
@@ -709,7 +966,10 @@ class Simulator:
                 ramp_edge = x + away * edge
                 sync = away if not drive.invert_sync_search else toward
                 if sync != away:
-                    trace.outcome, trace.failure = "failed", "a sync search back towards the cam is not simulated"
+                    trace.outcome, trace.failure = (
+                        "failed",
+                        "a sync search back towards the cam is not simulated",
+                    )
                     return trace
                 if mode == "hardware-sync":
                     distance, event = edge + self._next_pulse(ramp_edge, away), "sync pulse"
@@ -717,14 +977,30 @@ class Simulator:
                     period = drive.reference_mask_period or scenario.zero_pulse_period
                     k = (ramp_edge - scenario.zero_pulse_phase) / period
                     n = math.ceil(k - 1e-12) if away > 0 else math.floor(k + 1e-12)
-                    distance, event = edge + abs(scenario.zero_pulse_phase + n * period - ramp_edge), "reference mask overflow"
+                    distance, event = (
+                        edge + abs(scenario.zero_pulse_phase + n * period - ramp_edge),
+                        "reference mask overflow",
+                    )
                 else:
                     if drive.latch_position is None or (drive.latch_position - ramp_edge) * away < 0:
-                        trace.outcome, trace.failure = "failed", "no latch signal after the cam edge (scenario latch_position)"
+                        trace.outcome, trace.failure = (
+                            "failed",
+                            "no latch signal after the cam edge (scenario latch_position)",
+                        )
                         return trace
                     distance, event = edge + abs(drive.latch_position - ramp_edge), "hardware latch"
-            x_end, t, x_ref = self._move(trace, "off the cam and reference", x, t, away, sync_speed, distance, latched,
-                                         f"the {event} was detected", travelled)
+            x_end, t, x_ref = self._move(
+                trace,
+                "off the cam and reference",
+                x,
+                t,
+                away,
+                sync_speed,
+                distance,
+                latched,
+                f"the {event} was detected",
+                travelled,
+            )
             if x_ref is not None:
                 self._reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, reference, x_end)
             return trace
@@ -743,22 +1019,51 @@ class Simulator:
         ramp = _Ramp(t, x, s, speed, drive.acceleration)
         if distance > limit:
             segments, t_end, x_end = ramp.stop(ramp.time_to(limit))
-            trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end,
-                                            "SignedMaxDistance travelled without a trigger", segments))
-            trace.outcome, trace.failure = "failed", f"{name}: no {search.trigger.replace('_', ' ')} within {limit:g} {self.unit}"
+            trace.phases.append(
+                PhaseRecord(
+                    name,
+                    _dir(s),
+                    speed,
+                    x,
+                    x_end,
+                    t,
+                    t_end,
+                    "SignedMaxDistance travelled without a trigger",
+                    segments,
+                )
+            )
+            trace.outcome, trace.failure = (
+                "failed",
+                f"{name}: no {search.trigger.replace('_', ' ')} within {limit:g} {self.unit}",
+            )
             return x_end, t_end, None
         t_event = ramp.time_to(distance)
         if t_event < self.EARLY_TRIGGER:
             segments, t_end, x_end = ramp.stop(t_event)
-            trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, "early trigger", segments))
+            trace.phases.append(
+                PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, "early trigger", segments)
+            )
             trace.outcome = "failed"
-            trace.failure = (f"{name}: the trigger came {t_event * 1000:.3g} ms after the start, within the drive's "
-                             f"5 ms early-trigger window; start farther from it")
+            trace.failure = (
+                f"{name}: the trigger came {t_event * 1000:.3g} ms after the start, within the drive's "
+                f"5 ms early-trigger window; start farther from it"
+            )
             return x_end, t_end, None
         segments, t_end, x_end = ramp.stop(t_event)
         x_event = x + s * distance
-        trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end,
-                                        f"{search.trigger.replace('_', ' ')} {'left' if initially else 'found'}", segments))
+        trace.phases.append(
+            PhaseRecord(
+                name,
+                _dir(s),
+                speed,
+                x,
+                x_end,
+                t,
+                t_end,
+                f"{search.trigger.replace('_', ' ')} {'left' if initially else 'found'}",
+                segments,
+            )
+        )
         trace.events.append(Event(t + t_event, x_event, f"{name}: {search.trigger.replace('_', ' ')} edge"))
         return x_end, t_end, x_event
 
@@ -768,7 +1073,11 @@ class Simulator:
         if search.trigger == "zero_pulse":
             return (lambda x: False), (lambda x, s, initially: self._next_pulse(x, s))
         if search.trigger in ("fixed_stop", "limit_switch"):
-            points = [scenario.fixed_stop] if search.trigger == "fixed_stop" else list(scenario.limit_switches or ())
+            points = (
+                [scenario.fixed_stop]
+                if search.trigger == "fixed_stop"
+                else list(scenario.limit_switches or ())
+            )
 
             def to_point(x, s, initially):
                 ahead = [(p - x) * s for p in points if p is not None and (p - x) * s >= 0]
@@ -794,8 +1103,17 @@ class Simulator:
         return active, edge
 
 
-def _point_to_point(trace: Trace, name: str, x: float, t: float, s: int, speed: float, a: float, distance: float,
-                    ended_by: str = "retraction distance travelled"):
+def _point_to_point(
+    trace: Trace,
+    name: str,
+    x: float,
+    t: float,
+    s: int,
+    speed: float,
+    a: float,
+    distance: float,
+    ended_by: str = "retraction distance travelled",
+):
     """A move of a known length from rest to rest (triangular when too short to reach the speed)."""
     if distance <= 0:
         return x, t
@@ -833,6 +1151,6 @@ def _acceleration(strategy: HomingStrategy, scenario: Scenario) -> tuple[float |
         "a_ref": "getriebe[i].a_ref (P-AXIS-00285)",
         "fallback": "a_ref is 0: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) (P-AXIS-00005/00006, §3.2.4)",
         "default ramps": "spindle default ramps: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) "
-                         "(P-AXIS-00005/00006; a_ref is for axis types T and R, §2.3.2.1)",
+        "(P-AXIS-00005/00006; a_ref is for axis types T and R, §2.3.2.1)",
     }[acceleration.source]
     return acceleration.value or 1.0, source

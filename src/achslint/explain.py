@@ -38,17 +38,30 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
         speed = _speed_words(phase.velocity, axis_type)
         where = phase.velocity_parameter or ""
         if phase.velocity == 0:
-            text = f"{number}. {phase.name}: no move, {where} is 0" + (f" — {phase.note}" if phase.note else "")
+            text = f"{number}. {phase.name}: no move, {where} is 0" + (
+                f" — {phase.note}" if phase.note else ""
+            )
         else:
-            text = f"{number}. {phase.name}: move {phase.direction} at {speed} ({where}) until {phase.ends_when}"
+            text = (
+                f"{number}. {phase.name}: move {phase.direction} at {speed} ({where}) until {phase.ends_when}"
+            )
             if phase.note:
                 text += f" — {phase.note}"
-        phases.append({
-            "number": number, "name": phase.name, "direction": phase.direction,
-            "velocity_parameter": phase.velocity_parameter, "velocity": phase.velocity,
-            "velocity_human": to_human(phase.velocity, "um/s" if axis_type == "T" else "0.001deg/s") if phase.velocity else None,
-            "ends_when": phase.ends_when, "note": phase.note, "text": text,
-        })
+        phases.append(
+            {
+                "number": number,
+                "name": phase.name,
+                "direction": phase.direction,
+                "velocity_parameter": phase.velocity_parameter,
+                "velocity": phase.velocity,
+                "velocity_human": to_human(phase.velocity, "um/s" if axis_type == "T" else "0.001deg/s")
+                if phase.velocity
+                else None,
+                "ends_when": phase.ends_when,
+                "note": phase.note,
+                "text": text,
+            }
+        )
     parameters = [parameter_row(values, strategy, path) for path in homing_parameter_paths(gear)]
     acceleration = strategy.setup.acceleration
     return {
@@ -66,12 +79,16 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
             "homing_type_set": not values.homing_type_is_default,
         },
         "strategy": {
-            "id": strategy.id, "title": strategy.title, "description": strategy.description,
-            "controlled_by": strategy.controlled_by, "manual_type": strategy.manual_type,
+            "id": strategy.id,
+            "title": strategy.title,
+            "description": strategy.description,
+            "controlled_by": strategy.controlled_by,
+            "manual_type": strategy.manual_type,
             "variants": strategy.variants,
             "ends_with_braking": strategy.definition.ends_with_braking,
             "acceleration": {"value": acceleration.value, "source": acceleration.source}
-            if strategy.moves and strategy.controlled_by == "cnc" and strategy.id != "fixed_stop" else None,
+            if strategy.moves and strategy.controlled_by == "cnc" and strategy.id != "fixed_stop"
+            else None,
         },
         "phases": phases,
         "corrections": [c.as_dict() for c in values.corrections],
@@ -94,7 +111,9 @@ def parameter_row(values, strategy, path: str) -> dict:
         "written": _plain(correction.written) if correction else None,
         "correction": correction.error if correction else None,
         "unit": unit_label(unit) or None,
-        "human": to_human(value, unit) if isinstance(value, (int, float)) and not isinstance(value, bool) else None,
+        "human": to_human(value, unit)
+        if isinstance(value, (int, float)) and not isinstance(value, bool)
+        else None,
         "source": {"kind": origin.kind, "line": origin.setting.line.number if origin.setting else None},
         "effective": found.effective,
         "reason": found.reason,
@@ -108,12 +127,16 @@ def render_list(report: dict, console) -> None:
     axis = report["axis"]
     console.print(Text(f"{report['file']}", style="bold"))
     drive_note = "" if axis["drive_type_set"] else " (not set in the list: CNC default)"
-    console.print(f"Axis {axis['name']} (logical axis {axis['number']}): {axis['axis_type']} axis, "
-                  f"drive type {axis['drive_type']} = {axis['drive']}{drive_note}")
+    console.print(
+        f"Axis {axis['name']} (logical axis {axis['number']}): {axis['axis_type']} axis, "
+        f"drive type {axis['drive_type']} = {axis['drive']}{drive_note}"
+    )
     type_note = "" if axis["homing_type_set"] else " (not set: the drive type's default)"
     strategy = report["strategy"]
-    console.print(Text(f"Homing: {strategy['title']}", style="bold") +
-                  Text(f" — homing_type {axis['homing_type']}{type_note}"))
+    console.print(
+        Text(f"Homing: {strategy['title']}", style="bold")
+        + Text(f" — homing_type {axis['homing_type']}{type_note}")
+    )
     console.print(strategy["description"])
     for variant in strategy["variants"]:
         console.print(f"  • {variant}")
@@ -122,27 +145,41 @@ def render_list(report: dict, console) -> None:
         for phase in report["phases"]:
             console.print("  " + phase["text"])
         if strategy["ends_with_braking"]:
-            console.print("  After the reference event the axis brakes, so it stops beyond the reference position "
-                          "by its braking distance.")
+            console.print(
+                "  After the reference event the axis brakes, so it stops beyond the reference position "
+                "by its braking distance."
+            )
     for correction in report["corrections"]:
-        console.print(Text(f"CNC correction {correction['error']}: ", style="yellow") +
-                      Text(f"`{correction['parameter']}` {correction['written']} is used as {correction['used']}: "
-                           f"{correction['reason']}"))
-    table = Table(title=f"Homing parameters (gear stage {report['gear']})", title_justify="left", show_lines=False)
+        console.print(
+            Text(f"CNC correction {correction['error']}: ", style="yellow")
+            + Text(
+                f"`{correction['parameter']}` {correction['written']} is used as {correction['used']}: "
+                f"{correction['reason']}"
+            )
+        )
+    table = Table(
+        title=f"Homing parameters (gear stage {report['gear']})", title_justify="left", show_lines=False
+    )
     for column in ("parameter", "id", "value", "unit", "human", "source", "effective", "why"):
         table.add_column(column, overflow="fold")
     for row in report["parameters"]:
         source = "default" if row["source"]["kind"] == "default" else f"line {row['source']['line']}"
         table.add_row(
-            row["parameter"], row["p_axis"],
-            str(row["value"]) + (f" (written {row['written']}, {row['correction']})" if row["correction"] else ""),
-            row["unit"] or "", row["human"] or "", source,
-            Text("yes", style="green") if row["effective"] else Text("no", style="red"), row["reason"],
+            row["parameter"],
+            row["p_axis"],
+            str(row["value"])
+            + (f" (written {row['written']}, {row['correction']})" if row["correction"] else ""),
+            row["unit"] or "",
+            row["human"] or "",
+            source,
+            Text("yes", style="green") if row["effective"] else Text("no", style="red"),
+            row["reason"],
         )
     console.print(table)
 
 
 # --- parameter cards --------------------------------------------------------------------------
+
 
 def strategies_using(parameter: Parameter) -> list[dict] | None:
     """The registered strategies that read a homing parameter (title and example); None for other parameters."""
@@ -184,7 +221,9 @@ def parameter_card(parameter: Parameter) -> dict:
         "accepted_values": list(parameter.allowed) or None,
         "symbols": list(parameter.symbols) or None,
         "max_length": parameter.max_length,
-        "default": _plain(parameter.typed_default) if parameter.typed_default is not None else parameter.default,
+        "default": _plain(parameter.typed_default)
+        if parameter.typed_default is not None
+        else parameter.default,
         "units": {AXIS_TYPE_NAMES[k]: unit_label(v) for k, v in parameter.units.items() if v} or None,
         "index_bounds": [list(b) for b in parameter.index_bounds] or None,
         "drive_types": [f"{code} {drives.get(code, '')}".strip() for code in parameter.drive_types] or None,
@@ -206,7 +245,10 @@ def render_card(card: dict, console) -> None:
     rows = [
         ("type", card["type"]),
         ("range (manual)", card["range"]),
-        ("checked range", card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}"),
+        (
+            "checked range",
+            card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}",
+        ),
         ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
         ("symbols", card["symbols"] and ", ".join(card["symbols"])),
         ("max length", card["max_length"]),
@@ -217,8 +259,11 @@ def render_card(card: dict, console) -> None:
         ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
         ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
         ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
-        ("matters for", card["strategies"] is not None and (", ".join(s["title"] for s in card["strategies"])
-                                                             or "no homing strategy")),
+        (
+            "matters for",
+            card["strategies"] is not None
+            and (", ".join(s["title"] for s in card["strategies"]) or "no homing strategy"),
+        ),
         ("checked by", card["rules"] and ", ".join(card["rules"])),
         ("manual title", card["manual_title"]),
         ("manual", card["manual"]),

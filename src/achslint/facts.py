@@ -9,11 +9,10 @@ explicit columns).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Union
 
 from .numbers import NumberProblem, Reference
 
-Span = Union[str, tuple[int, int]]
+Span = str | tuple[int, int]
 
 
 @dataclass(frozen=True, slots=True)
@@ -26,6 +25,7 @@ class ValueFact:
 
 
 # Array indices -------------------------------------------------------------------------------------------
+
 
 @dataclass(frozen=True, slots=True)
 class IndexOutOfBounds(ValueFact):
@@ -44,6 +44,7 @@ class IndexOutOfBounds(ValueFact):
 
 
 # Data types ----------------------------------------------------------------------------------------------
+
 
 @dataclass(frozen=True, slots=True)
 class MissingValue(ValueFact):
@@ -76,6 +77,7 @@ class TextForNumber(ValueFact):
 
 
 # Ranges --------------------------------------------------------------------------------------------------
+
 
 @dataclass(frozen=True, slots=True)
 class UnusableNumber(ValueFact):
@@ -112,6 +114,7 @@ class OutOfRange(ValueFact):
 
 
 # Symbols, strings, references ----------------------------------------------------------------------------
+
 
 @dataclass(frozen=True, slots=True)
 class UnknownSymbol(ValueFact):

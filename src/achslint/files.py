@@ -194,7 +194,9 @@ def _check_unchanged(target: Path, shown: Path, expected: bytes | None) -> None:
     try:
         current = target.read_bytes()
     except FileNotFoundError:
-        raise ChangedOnDisk(f"{shown} was removed while achslint was working on it; nothing written") from None
+        raise ChangedOnDisk(
+            f"{shown} was removed while achslint was working on it; nothing written"
+        ) from None
     if current != expected:
         raise ChangedOnDisk(f"{shown} changed while achslint was working on it; nothing written, run again")
 
@@ -203,7 +205,9 @@ def _write_in_place(target: Path, shown: Path, data: bytes, expected: bytes | No
     """Overwrite the file's own content (same inode: hard links, owner and mode stay as they are)."""
     with open(target, "r+b") as stream:
         if expected is not None and stream.read() != expected:
-            raise ChangedOnDisk(f"{shown} changed while achslint was working on it; nothing written, run again")
+            raise ChangedOnDisk(
+                f"{shown} changed while achslint was working on it; nothing written, run again"
+            )
         stream.seek(0)
         stream.write(data)
         stream.truncate()

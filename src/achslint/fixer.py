@@ -52,8 +52,10 @@ def apply_edits(source: SourceText, fixes) -> tuple[SourceText, int]:
                 bom = False
                 applied += 1
             continue
-        ranges = [(starts[e.line - 1] + e.column - 1, starts[e.end_line - 1] + e.end_column - 1, e.content)
-                  for e in fix.edits]
+        ranges = [
+            (starts[e.line - 1] + e.column - 1, starts[e.end_line - 1] + e.end_column - 1, e.content)
+            for e in fix.edits
+        ]
         if any(a < end and start < b for start, end, _ in ranges for a, b, _ in spans):
             continue  # overlaps an edit already taken: next round
         spans.extend(ranges)
@@ -97,18 +99,28 @@ def _demoted(result: FileResult, unsafe: set[int]) -> None:
     """Mark the fixes that failed the behaviour test as unsafe in what is reported."""
     for index in unsafe:
         d = result.diagnostics[index]
-        d.fix = replace(d.fix, applicability="unsafe", description=d.fix.description + " (changes what the CNC does)")
+        d.fix = replace(
+            d.fix, applicability="unsafe", description=d.fix.description + " (changes what the CNC does)"
+        )
 
 
-def fix_bytes(data: bytes, name: str, settings: FileSettings | None = None, *, unsafe: bool = False) -> FixOutcome:
+def fix_bytes(
+    data: bytes, name: str, settings: FileSettings | None = None, *, unsafe: bool = False
+) -> FixOutcome:
     """Fix what can be fixed; the result holds the diagnostics that remain."""
     fixed = 0
     result = check_bytes(data, name, settings)
     for _ in range(MAX_ROUNDS):
         if result.error:
             break
-        risky = {i for i, d in enumerate(result.diagnostics) if d.fix is not None and d.fix.applicability == "safe"
-                 and not d.fix.remove_bom and not keeps_behaviour(data, name, settings, d, result)}
+        risky = {
+            i
+            for i, d in enumerate(result.diagnostics)
+            if d.fix is not None
+            and d.fix.applicability == "safe"
+            and not d.fix.remove_bom
+            and not keeps_behaviour(data, name, settings, d, result)
+        }
         _demoted(result, risky)
         allowed = {"safe", "unsafe"} if unsafe else {"safe"}
         fixes = [d.fix for d in result.diagnostics if d.fix is not None and d.fix.applicability in allowed]
@@ -122,6 +134,14 @@ def fix_bytes(data: bytes, name: str, settings: FileSettings | None = None, *, u
         data = new_data
         result = check_bytes(data, name, settings)
     if not result.error:
-        _demoted(result, {i for i, d in enumerate(result.diagnostics) if d.fix is not None
-                          and d.fix.applicability == "safe" and not keeps_behaviour(data, name, settings, d, result)})
+        _demoted(
+            result,
+            {
+                i
+                for i, d in enumerate(result.diagnostics)
+                if d.fix is not None
+                and d.fix.applicability == "safe"
+                and not keeps_behaviour(data, name, settings, d, result)
+            },
+        )
     return FixOutcome(data, fixed, result)

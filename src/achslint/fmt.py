@@ -65,7 +65,7 @@ def format_file(file: syntax.ListFile) -> str:
     column = value_column(file)
     lines = list(file.lines)
     end = file.end_index
-    if end is not None and all(line.kind == syntax.BLANK for line in lines[end + 1:]):
+    if end is not None and all(line.kind == syntax.BLANK for line in lines[end + 1 :]):
         lines = lines[: end + 1]
     newlines = Counter(line.newline for line in file.lines if line.newline)
     usual = newlines.most_common(1)[0][0] if newlines else "\n"

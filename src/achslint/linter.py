@@ -1,7 +1,7 @@
 """The lint engine: one readable loop from bytes to sorted diagnostics.
 
-    parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
-          -> rules about suppressions (LIS009) -> sort
+parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
+      -> rules about suppressions (LIS009) -> sort
 """
 
 from __future__ import annotations
@@ -43,7 +43,9 @@ class FileSettings:
     keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
     keep_context: bool = False  # keep the rules' Context on the result (the language server reuses it)
     fail_on: str = "error"  # lowest severity that fails the run (from the configuration nearest the file)
-    machine_in_file: bool = True  # check the lists of one XML file as a machine (off: the caller groups files)
+    machine_in_file: bool = (
+        True  # check the lists of one XML file as a machine (off: the caller groups files)
+    )
 
 
 @dataclass
@@ -68,7 +70,9 @@ class FileResult:
         return any(d.severity.rank >= threshold for d in self.diagnostics)
 
 
-def check_bytes(data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None) -> FileResult:
+def check_bytes(
+    data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None
+) -> FileResult:
     """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`.
 
     `defaults` is the default axis list the CNC loads underneath (start-up key default_achs_mds).
@@ -94,8 +98,10 @@ def check_parsed(file, name: str, settings: FileSettings | None = None, default_
     return _check_file(file, name, settings, default_file=default_file)
 
 
-NOT_A_LIST = ("not an axis list (no line is a `parameter value` assignment and there is no `Ende`); "
-              "nothing of its content is shown")
+NOT_A_LIST = (
+    "not an axis list (no line is a `parameter value` assignment and there is no `Ende`); "
+    "nothing of its content is shown"
+)
 
 
 def looks_like_a_list(file) -> bool:
@@ -135,8 +141,14 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
     ranks = {code: rank for rank, code in enumerate(rules)}
     diagnostics.sort(key=lambda d: ((d.line << 24) + d.column << 8) + ranks.get(d.code, 255))
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
-    return FileResult(name, diagnostics, None, lines, summary=machine.summary(ctx),
-                      context=ctx if settings.keep_context else None)
+    return FileResult(
+        name,
+        diagnostics,
+        None,
+        lines,
+        summary=machine.summary(ctx),
+        context=ctx if settings.keep_context else None,
+    )
 
 
 def _mapped_summary(summary: dict, embedded) -> dict:
@@ -156,8 +168,12 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     try:
         lists = extract(data, name)
     except NoAxisList:
-        return FileResult(name, [], note=f"{name}: skipped, an XML file without an axis list "
-                                         f"(<{root_element(data)}>: no <AchsMds> or <AX_MDS> in it)")
+        return FileResult(
+            name,
+            [],
+            note=f"{name}: skipped, an XML file without an axis list "
+            f"(<{root_element(data)}>: no <AchsMds> or <AX_MDS> in it)",
+        )
     except UnreadableInput as exc:
         return FileResult(name, [], str(exc))
     diagnostics: list[Diagnostic] = []
@@ -170,8 +186,14 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
             d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
             if d.end_line < d.line or (d.end_line == d.line and d.end_column <= d.column):
                 d.end_line, d.end_column = d.line, d.column + 1
-            d.related = tuple(replace(r, line=embedded.position(r.line, r.column)[0],
-                                      column=embedded.position(r.line, r.column)[1]) for r in d.related)
+            d.related = tuple(
+                replace(
+                    r,
+                    line=embedded.position(r.line, r.column)[0],
+                    column=embedded.position(r.line, r.column)[1],
+                )
+                for r in d.related
+            )
             d.fix = None  # edits refer to the embedded text; XML files are not rewritten
             diagnostics.append(d)
     if len(members) > 1 and settings.machine_in_file:  # a TwinCAT project: its axes form one machine

@@ -31,19 +31,30 @@ def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | N
             continue
         parameter = left.parameter(path)
         unit = parameter.unit(right.axis_type)
-        rows.append({
-            "parameter": path,
-            "p_axis": parameter.id,
-            "a": _plain(before), "b": _plain(after),
-            "unit": unit_label(unit) or None,
-            "a_human": to_human(before, unit) if isinstance(before, (int, float)) and not isinstance(before, bool) else None,
-            "b_human": to_human(after, unit) if isinstance(after, (int, float)) and not isinstance(after, bool) else None,
-            "a_source": str(left.origin(path)), "b_source": str(right.origin(path)),
-        })
+        rows.append(
+            {
+                "parameter": path,
+                "p_axis": parameter.id,
+                "a": _plain(before),
+                "b": _plain(after),
+                "unit": unit_label(unit) or None,
+                "a_human": to_human(before, unit)
+                if isinstance(before, (int, float)) and not isinstance(before, bool)
+                else None,
+                "b_human": to_human(after, unit)
+                if isinstance(after, (int, float)) and not isinstance(after, bool)
+                else None,
+                "a_source": str(left.origin(path)),
+                "b_source": str(right.origin(path)),
+            }
+        )
     unknown_a = {s.line.path: s.line.value or "" for s in left.analysis.settings if not s.known}
     unknown_b = {s.line.path: s.line.value or "" for s in right.analysis.settings if not s.known}
-    unknown = [{"parameter": path, "a": unknown_a.get(path), "b": unknown_b.get(path)}
-               for path in sorted(set(unknown_a) | set(unknown_b)) if unknown_a.get(path) != unknown_b.get(path)]
+    unknown = [
+        {"parameter": path, "a": unknown_a.get(path), "b": unknown_b.get(path)}
+        for path in sorted(set(unknown_a) | set(unknown_b))
+        if unknown_a.get(path) != unknown_b.get(path)
+    ]
     return {"version": 1, "a": a_name, "b": b_name, "differences": rows, "unknown_parameters": unknown}
 
 
@@ -57,8 +68,17 @@ def render(report: dict, console) -> None:
     for column in ("parameter", "id", "A", "B", "unit", "A human", "B human", "A from", "B from"):
         table.add_column(column, overflow="fold")
     for row in report["differences"]:
-        table.add_row(row["parameter"], row["p_axis"], str(row["a"]), str(row["b"]), row["unit"] or "",
-                      row["a_human"] or "", row["b_human"] or "", row["a_source"], row["b_source"])
+        table.add_row(
+            row["parameter"],
+            row["p_axis"],
+            str(row["a"]),
+            str(row["b"]),
+            row["unit"] or "",
+            row["a_human"] or "",
+            row["b_human"] or "",
+            row["a_source"],
+            row["b_source"],
+        )
     console.print(table)
     for row in report["unknown_parameters"]:
         console.print(f"unknown parameter {row['parameter']}: {row['a']!r} → {row['b']!r}")

@@ -52,8 +52,12 @@ def is_default_list(path: Path) -> bool:
     return fnmatch.fnmatch(path.name.lower(), "default*mds*.lis")
 
 
-_MISSING = ("no such file or directory", "a part of the path is not a folder", "a name too long for the file system",
-            "a symbolic link to a file that does not exist")
+_MISSING = (
+    "no such file or directory",
+    "a part of the path is not a folder",
+    "a name too long for the file system",
+    "a symbolic link to a file that does not exist",
+)
 
 
 def _entry_path(raw: str) -> Path:
@@ -90,8 +94,9 @@ def find_cnc_root(startup: Path, entries: list[str]) -> Path:
     return best
 
 
-def _resolve(raw: str, startup: Path, root: Path, root_given: bool,
-             scope: Scope | None) -> tuple[Path | None, str | None, Path]:
+def _resolve(
+    raw: str, startup: Path, root: Path, root_given: bool, scope: Scope | None
+) -> tuple[Path | None, str | None, Path]:
     """(file, None, looked) for an entry achslint reads, (None, why, looked) for one it refuses, and
     (None, None, looked) when it is missing.
 
@@ -105,23 +110,37 @@ def _resolve(raw: str, startup: Path, root: Path, root_given: bool,
         return None, None, target
     if problem is not None:
         return None, f"it is {problem}" if problem.startswith("a ") else problem, target
-    allowed = inside(target, startup.parent) or (root_given and inside(target, root)) or (scope and scope.contains(target))
+    allowed = (
+        inside(target, startup.parent)
+        or (root_given and inside(target, root))
+        or (scope and scope.contains(target))
+    )
     if not allowed:
-        return None, (f"it lies outside the start-up list's folder {startup.parent}"
-                      + ("" if root_given else " and no --cnc-root / `cnc-root` was set")), target
+        return (
+            None,
+            (
+                f"it lies outside the start-up list's folder {startup.parent}"
+                + ("" if root_given else " and no --cnc-root / `cnc-root` was set")
+            ),
+            target,
+        )
     return target, None, target
 
 
-def read_startup(path: Path, scope: Scope | None = None, cnc_root: Path | None = None,
-                 root_origin: str = "") -> Startup:
+def read_startup(
+    path: Path, scope: Scope | None = None, cnc_root: Path | None = None, root_origin: str = ""
+) -> Startup:
     """The entries of a start-up list, resolved against `cnc_root` (found from the entries when None).
 
     Raises `OSError` / `decode.UnreadableInput` when the start-up list cannot be read.
     """
     from .syntax import parse_bytes
 
-    lines = [line for line in parse_bytes(read_list(path), str(path)).assignments()
-             if line.path_ok and line.value is not None and _ENTRY.fullmatch(line.path)]
+    lines = [
+        line
+        for line in parse_bytes(read_list(path), str(path)).assignments()
+        if line.path_ok and line.value is not None and _ENTRY.fullmatch(line.path)
+    ]
     given = cnc_root is not None
     if cnc_root is None:
         cnc_root = find_cnc_root(path, [line.value for line in lines])
@@ -147,9 +166,12 @@ def summary(ctx) -> dict:
         return (setting.line.number, setting.line.path_column) if setting else None
 
     return {
-        "achs_nr": values.get("kopf.achs_nr"), "achs_nr_at": at("kopf.achs_nr"),
-        "name": values.get("kopf.log_achs_name"), "name_at": at("kopf.log_achs_name"),
-        "gantry_ax_nr": values.get("kenngr.gantry_ax_nr"), "gantry_at": at("kenngr.gantry_ax_nr"),
+        "achs_nr": values.get("kopf.achs_nr"),
+        "achs_nr_at": at("kopf.achs_nr"),
+        "name": values.get("kopf.log_achs_name"),
+        "name_at": at("kopf.log_achs_name"),
+        "gantry_ax_nr": values.get("kenngr.gantry_ax_nr"),
+        "gantry_at": at("kenngr.gantry_ax_nr"),
         "resettable": values.get("kenngr.gantry_max_diff_resetable"),
         "retraction": values.get("kenngr.homing.torq_retraction_distance"),
         "torq": values.homing_type == "TORQ",
@@ -157,12 +179,20 @@ def summary(ctx) -> dict:
     }
 
 
-def diagnostic(code: str, member: tuple[str, dict], where: str, message: str, severity: Severity,
-               related: list[Related] | None = None) -> Diagnostic:
+def diagnostic(
+    code: str,
+    member: tuple[str, dict],
+    where: str,
+    message: str,
+    severity: Severity,
+    related: list[Related] | None = None,
+) -> Diagnostic:
     """A machine-level diagnostic at a member list's line for `where` (or its first line)."""
     name, info = member
     line, column = info.get(where) or (1, 1)
-    return Diagnostic(name, line, column, line, column + 1, code, severity, message, related=tuple(related or ()))
+    return Diagnostic(
+        name, line, column, line, column + 1, code, severity, message, related=tuple(related or ())
+    )
 
 
 def unset_note(member: tuple[str, dict], where: str) -> str:

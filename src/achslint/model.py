@@ -34,7 +34,16 @@ from pydantic_core import InitErrorDetails, PydanticCustomError
 from .catalogue import catalogue
 from .model_base import DEFAULT, AxisBase, Source
 
-__all__ = ["DEFAULT", "AxisBase", "Source", "axis_model", "build_model", "dumps", "json_schema", "rule_errors"]
+__all__ = [
+    "DEFAULT",
+    "AxisBase",
+    "Source",
+    "axis_model",
+    "build_model",
+    "dumps",
+    "json_schema",
+    "rule_errors",
+]
 
 
 def field_name(name: str) -> str:
@@ -55,7 +64,9 @@ def axis_model() -> type[AxisBase]:
 def json_schema() -> dict:
     schema = axis_model().model_json_schema(by_alias=True)
     schema["title"] = "AxisParameters"
-    schema["description"] = "Axis parameter list (achsmds*.lis) of a TwinCAT 3 CNC / ISG CNC axis, as typed by achslint."
+    schema["description"] = (
+        "Axis parameter list (achsmds*.lis) of a TwinCAT 3 CNC / ISG CNC axis, as typed by achslint."
+    )
     return schema
 
 
@@ -65,7 +76,7 @@ def _parts(path: str) -> list[tuple[str, str]]:
 
     for catalogue_path, (rest, field) in JOINED.items():
         if path == catalogue_path:
-            return _parts(path[: -len(rest) - 1]) + [(field, "")]
+            return [*_parts(path[: -len(rest) - 1]), (field, "")]
     return re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", path)
 
 
@@ -134,14 +145,20 @@ def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None =
         origin = axis.origin(path)
         if origin.setting is not None:
             line = origin.setting.line
-            sources[path] = Source(origin.kind, origin.file if origin.kind == "default list" else name, line.number,
-                                   line.path_column)
+            sources[path] = Source(
+                origin.kind,
+                origin.file if origin.kind == "default list" else name,
+                line.number,
+                line.path_column,
+            )
     unknown = {s.line.path: s.line.value or "" for s in axis.analysis.settings if not s.known}
     model = axis_model()  # also records the joined groups _nested_set needs
     nested: dict = {}
     for path, value in values.items():
         _nested_set(nested, path, value)
-    result = model.model_validate({**_materialise(model, nested), "unknown": unknown}, context={"lenient": True})
+    result = model.model_validate(
+        {**_materialise(model, nested), "unknown": unknown}, context={"lenient": True}
+    )
     result._sources = sources
     result._corrections = axis.corrections
     return result
@@ -155,7 +172,9 @@ def rule_errors(diagnostics) -> ValidationError:
     """One ValidationError with an entry per finding: its code, the parameter path and the message."""
     details = [
         InitErrorDetails(
-            type=PydanticCustomError("cross_rule", "{code}: {message}", {"code": d.code, "message": d.message}),
+            type=PydanticCustomError(
+                "cross_rule", "{code}: {message}", {"code": d.code, "message": d.message}
+            ),
             loc=_loc(d.parameter) if d.parameter else ("list",),
             input=d.parameter,
         )
@@ -183,7 +202,7 @@ def _rule_findings(text: str) -> list:
 def dumps(axis: BaseModel) -> str:
     """The model as an axis list in canonical layout: every value that differs from the CNC's default, then `Ende`."""
     lines = [f"{path:<48}{_written(value)}".rstrip() for path, value in _changed(axis, "")]
-    return "\n".join(lines + ["Ende", ""])
+    return "\n".join([*lines, "Ende", ""])
 
 
 def _changed(node: BaseModel, prefix: str):
@@ -208,6 +227,6 @@ def _written(value: Any) -> str:
         return "1" if value else "0"
     if isinstance(value, float):
         return repr(value)
-    if isinstance(value, str) and (not value or any(c in value for c in " \t\"(")):
+    if isinstance(value, str) and (not value or any(c in value for c in ' \t"(')):
         return '"' + value.replace('"', "") + '"' if value else ""
     return str(value)

@@ -34,7 +34,9 @@ class AxisBase(BaseModel):
     """Shared behaviour of the generated root model."""
 
     model_config = ConfigDict(populate_by_name=True, extra="forbid")
-    unknown: dict[str, str] = Field(default_factory=dict, description="Parameters the catalogue does not know, as written.")
+    unknown: dict[str, str] = Field(
+        default_factory=dict, description="Parameters the catalogue does not know, as written."
+    )
     _sources: dict[str, Source] = PrivateAttr(default_factory=dict)
     _corrections: list = PrivateAttr(default_factory=list)
     _findings: list = PrivateAttr(default_factory=list)

@@ -68,8 +68,9 @@ def build_figure(trace: Trace):
 
     times, positions, velocities = samples(trace)
     unit = trace.unit
-    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(12, 7.5),
-                                         gridspec_kw={"height_ratios": [3, 1.4]})
+    figure, (top, bottom) = plt.subplots(
+        2, 1, sharex=True, figsize=(12, 7.5), gridspec_kw={"height_ratios": [3, 1.4]}
+    )
     figure.subplots_adjust(left=0.08, right=0.66, top=0.9, bottom=0.08, hspace=0.08)
     top.plot(times, positions, color="black", linewidth=1.4, label="position", gid="position")
     bottom.plot(times, velocities, color="black", linewidth=1.2, label="velocity", gid="velocity")
@@ -83,10 +84,26 @@ def build_figure(trace: Trace):
         colour = PHASE_COLOURS[(number - 1) % len(PHASE_COLOURS)]
         for axis in (top, bottom):
             axis.axvspan(phase.start_time, phase.end_time, color=colour, alpha=0.18, zorder=0, linewidth=0)
-        top.text((phase.start_time + phase.end_time) / 2, 1.01, str(number), transform=top.get_xaxis_transform(),
-                 ha="center", va="bottom", fontsize=9, fontweight="bold", color=colour)
-        handles.append(Patch(color=colour, alpha=0.45, label=_wrap(
-            f"{number}. {phase.name} ({phase.direction or '-'}, {_fmt(phase.velocity)} {unit}/s)", 48)))
+        top.text(
+            (phase.start_time + phase.end_time) / 2,
+            1.01,
+            str(number),
+            transform=top.get_xaxis_transform(),
+            ha="center",
+            va="bottom",
+            fontsize=9,
+            fontweight="bold",
+            color=colour,
+        )
+        handles.append(
+            Patch(
+                color=colour,
+                alpha=0.45,
+                label=_wrap(
+                    f"{number}. {phase.name} ({phase.direction or '-'}, {_fmt(phase.velocity)} {unit}/s)", 48
+                ),
+            )
+        )
 
     low, high = (min(positions), max(positions)) if positions else (trace.scenario.start_position,) * 2
     span = max(high - low, 1e-6)
@@ -102,22 +119,39 @@ def build_figure(trace: Trace):
             shifts = [k * revolution for k in range(first, first + int(span / revolution) + 3)]
         for shift in shifts:
             if lo + shift <= y_high and hi + shift >= y_low:
-                top.axhspan(lo + shift, hi + shift, color="#117733", alpha=0.14, zorder=0, linewidth=0,
-                            gid="cam")
+                top.axhspan(
+                    lo + shift, hi + shift, color="#117733", alpha=0.14, zorder=0, linewidth=0, gid="cam"
+                )
                 shown = True
         if shown:
-            handles.append(Patch(color="#117733", alpha=0.3, label=f"reference cam [{_fmt(lo)}, {_fmt(hi)}]"
-                                 + (" every revolution" if revolution else "")))
+            handles.append(
+                Patch(
+                    color="#117733",
+                    alpha=0.3,
+                    label=f"reference cam [{_fmt(lo)}, {_fmt(hi)}]"
+                    + (" every revolution" if revolution else ""),
+                )
+            )
     if trace.strategy.with_zero_pulse and scenario.zero_pulse_period > 0:
         period, phase_at = scenario.zero_pulse_period, scenario.zero_pulse_phase
         first = math.ceil((y_low - phase_at) / period)
         last = math.floor((y_high - phase_at) / period)
         if 0 <= last - first <= MAX_PULSE_MARKS:
             marks = [phase_at + k * period for k in range(first, last + 1)]
-            top.hlines(marks, 0, 0.012, transform=top.get_yaxis_transform(), color="#882255", linewidth=1.5,
-                       gid="zero_pulses")
-            handles.append(plt.Line2D([], [], color="#882255", linewidth=1.5,
-                                      label=f"zero pulses (every {_fmt(period)} {unit})"))
+            top.hlines(
+                marks,
+                0,
+                0.012,
+                transform=top.get_yaxis_transform(),
+                color="#882255",
+                linewidth=1.5,
+                gid="zero_pulses",
+            )
+            handles.append(
+                plt.Line2D(
+                    [], [], color="#882255", linewidth=1.5, label=f"zero pulses (every {_fmt(period)} {unit})"
+                )
+            )
     lines = []
     if scenario.limit_switches:
         lines += [(value, "limit switch", "#cc3311", "-") for value in scenario.limit_switches]
@@ -134,46 +168,126 @@ def build_figure(trace: Trace):
             y_low, y_high = min(y_low, value), max(y_high, value)
     for name, values in labels.items():
         colour, style = styles[name]
-        handles.append(plt.Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}"))
+        handles.append(
+            plt.Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}")
+        )
     top.set_ylim(y_low - 0.02 * span, y_high + 0.02 * span)
 
     reference = trace.reference
     reference_event = None
     if reference is not None:
         reference_event = next((e for e in reversed(trace.events) if e.kind == reference["kind"]), None)
-        t_ref = reference_event.time if reference_event else (trace.phases[-1].end_time if trace.phases else 0.0)
+        t_ref = (
+            reference_event.time if reference_event else (trace.phases[-1].end_time if trace.phases else 0.0)
+        )
         x_ref = reference_event.position if reference_event else reference["position"]
-        top.plot([t_ref], [x_ref], marker="*", markersize=14, color="#ddaa33", markeredgecolor="black",
-                 linestyle="none", gid="reference", zorder=5)
-        handles.append(plt.Line2D([], [], marker="*", markersize=12, color="#ddaa33", markeredgecolor="black",
-                                  linestyle="none", label=f"reference ({reference['kind']}): "
-                                  f"{_fmt(reference['position'])} {unit} \u2192 {_fmt(reference['value'])} {unit}"))
+        top.plot(
+            [t_ref],
+            [x_ref],
+            marker="*",
+            markersize=14,
+            color="#ddaa33",
+            markeredgecolor="black",
+            linestyle="none",
+            gid="reference",
+            zorder=5,
+        )
+        handles.append(
+            plt.Line2D(
+                [],
+                [],
+                marker="*",
+                markersize=12,
+                color="#ddaa33",
+                markeredgecolor="black",
+                linestyle="none",
+                label=f"reference ({reference['kind']}): "
+                f"{_fmt(reference['position'])} {unit} \u2192 {_fmt(reference['value'])} {unit}",
+            )
+        )
     if trace.final_position is not None and trace.phases:
         last = trace.phases[-1]
-        top.plot([last.end_time], [last.end_position], marker="s", markersize=8, color="white",
-                 markeredgecolor="black", linestyle="none", gid="final", zorder=5)
+        top.plot(
+            [last.end_time],
+            [last.end_position],
+            marker="s",
+            markersize=8,
+            color="white",
+            markeredgecolor="black",
+            linestyle="none",
+            gid="final",
+            zorder=5,
+        )
         moving = " (still turning)" if trace.ends_moving else ""
-        handles.append(plt.Line2D([], [], marker="s", color="white", markeredgecolor="black", linestyle="none",
-                                  label=f"final position {_fmt(trace.final_position)} {unit} (homed){moving}"))
+        handles.append(
+            plt.Line2D(
+                [],
+                [],
+                marker="s",
+                color="white",
+                markeredgecolor="black",
+                linestyle="none",
+                label=f"final position {_fmt(trace.final_position)} {unit} (homed){moving}",
+            )
+        )
     for event in trace.events:
         if event is reference_event:
             continue
-        top.plot([event.time], [event.position], marker="o", markersize=5, color="#555555", linestyle="none",
-                 zorder=4)
+        top.plot(
+            [event.time],
+            [event.position],
+            marker="o",
+            markersize=5,
+            color="#555555",
+            linestyle="none",
+            zorder=4,
+        )
     if trace.events:
         kinds = list(dict.fromkeys(e.kind for e in trace.events if e is not reference_event))
         if kinds:
-            handles.append(plt.Line2D([], [], marker="o", markersize=5, color="#555555", linestyle="none",
-                                      label=_wrap("events: " + "; ".join(kinds), 48)))
+            handles.append(
+                plt.Line2D(
+                    [],
+                    [],
+                    marker="o",
+                    markersize=5,
+                    color="#555555",
+                    linestyle="none",
+                    label=_wrap("events: " + "; ".join(kinds), 48),
+                )
+            )
     if trace.outcome == "failed":
         where = (trace.phases[-1].end_time, trace.phases[-1].end_position) if trace.phases else (0.0, low)
-        top.plot([where[0]], [where[1]], marker="X", markersize=14, color="#cc3311", linestyle="none",
-                 gid="failure", zorder=6)
-        handles.append(plt.Line2D([], [], marker="X", markersize=12, color="#cc3311", linestyle="none",
-                                  label=_wrap(f"FAILED: {trace.failure or 'homing failed'}", 48)))
+        top.plot(
+            [where[0]],
+            [where[1]],
+            marker="X",
+            markersize=14,
+            color="#cc3311",
+            linestyle="none",
+            gid="failure",
+            zorder=6,
+        )
+        handles.append(
+            plt.Line2D(
+                [],
+                [],
+                marker="X",
+                markersize=12,
+                color="#cc3311",
+                linestyle="none",
+                label=_wrap(f"FAILED: {trace.failure or 'homing failed'}", 48),
+            )
+        )
 
-    top.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
-               borderaxespad=0.0)
+    top.legend(
+        handles=handles,
+        loc="upper left",
+        bbox_to_anchor=(1.01, 1.0),
+        fontsize=8,
+        frameon=False,
+        borderaxespad=0.0,
+    )
     title = f"{trace.strategy.title}: {trace.outcome}"
     if trace.phases:
         title += f" in {_fmt(trace.total_time)} s"
@@ -181,8 +295,15 @@ def build_figure(trace: Trace):
     if reference_event is not None and trace.phases:
         _inset(figure, top, trace, reference_event)
     if not trace.phases:
-        top.text(0.5, 0.5, "no homing motion" + (f": {trace.failure}" if trace.failure else ""),
-                 transform=top.transAxes, ha="center", va="center", fontsize=10)
+        top.text(
+            0.5,
+            0.5,
+            "no homing motion" + (f": {trace.failure}" if trace.failure else ""),
+            transform=top.transAxes,
+            ha="center",
+            va="center",
+            fontsize=10,
+        )
     return figure
 
 
@@ -195,11 +316,18 @@ def _inset(figure, top, trace: Trace, event) -> None:
         t0, t1 = event.time - window / 2, event.time + window / 2
     inset = figure.add_axes([0.74, 0.1, 0.22, 0.26])
     times, positions, _ = samples(trace, per_segment=400)
-    pairs = [(t, x) for t, x in zip(times, positions) if t0 <= t <= t1]
+    pairs = [(t, x) for t, x in zip(times, positions, strict=False) if t0 <= t <= t1]
     if pairs:
         inset.plot([t for t, _ in pairs], [x for _, x in pairs], color="black", linewidth=1.2, gid="zoom")
-    inset.plot([event.time], [event.position], marker="*", markersize=12, color="#ddaa33", markeredgecolor="black",
-               linestyle="none")
+    inset.plot(
+        [event.time],
+        [event.position],
+        marker="*",
+        markersize=12,
+        color="#ddaa33",
+        markeredgecolor="black",
+        linestyle="none",
+    )
     inset.axhline(event.position, color="#ddaa33", linewidth=0.8, linestyle=":")
     scenario = trace.scenario
     if trace.strategy.with_zero_pulse and scenario.zero_pulse_period > 0 and pairs:
@@ -207,8 +335,15 @@ def _inset(figure, top, trace: Trace, event) -> None:
         period, phase_at = scenario.zero_pulse_period, scenario.zero_pulse_phase
         first, last = math.ceil((y0 - phase_at) / period), math.floor((y1 - phase_at) / period)
         if 0 <= last - first <= MAX_PULSE_MARKS:
-            inset.hlines([phase_at + k * period for k in range(first, last + 1)], 0, 0.05,
-                         transform=inset.get_yaxis_transform(), color="#882255", linewidth=2.0, gid="zoom_pulses")
+            inset.hlines(
+                [phase_at + k * period for k in range(first, last + 1)],
+                0,
+                0.05,
+                transform=inset.get_yaxis_transform(),
+                color="#882255",
+                linewidth=2.0,
+                gid="zoom_pulses",
+            )
     inset.set_title(f"zoom: {event.kind} at t = {_fmt(event.time)} s", fontsize=8)
     inset.tick_params(labelsize=7)
 

@@ -58,8 +58,12 @@ class Correction:
     def as_dict(self) -> dict:
         setting = self.origin.setting
         return {
-            "parameter": self.parameter, "written": _plain(self.written), "used": _plain(self.used),
-            "error": self.error, "reason": self.reason, "source": self.origin.kind,
+            "parameter": self.parameter,
+            "written": _plain(self.written),
+            "used": _plain(self.used),
+            "error": self.error,
+            "reason": self.reason,
+            "source": self.origin.kind,
             "line": setting.line.number if setting else None,
         }
 
@@ -85,7 +89,12 @@ class DriveType(IntEnum):
     CAN_BUS = 32
 
 
-SERCOS, SIMULATION, LIGHTBUS, CANOPEN = DriveType.SERCOS, DriveType.SIMULATION, DriveType.LIGHTBUS, DriveType.CANOPEN
+SERCOS, SIMULATION, LIGHTBUS, CANOPEN = (
+    DriveType.SERCOS,
+    DriveType.SIMULATION,
+    DriveType.LIGHTBUS,
+    DriveType.CANOPEN,
+)
 
 
 class ResolvedAxis:
@@ -138,7 +147,11 @@ class ResolvedAxis:
         count = target.path.count("[i]")
         if count:
             _, own = path_pattern(path)
-            indices = ((reference.index,) + (0,) * (count - 1)) if reference.index is not None else (own + (0,) * count)[:count]
+            indices = (
+                ((reference.index,) + (0,) * (count - 1))
+                if reference.index is not None
+                else (own + (0,) * count)[:count]
+            )
         else:
             indices = ()
         return fill_indices(target.path, indices)
@@ -176,7 +189,7 @@ class ResolvedAxis:
             for path in self._origins:
                 pattern, indices = path_pattern(path)
                 if pattern.startswith("getriebe[i].") and indices:
-                    self._stages.setdefault(pattern[len("getriebe[i]."):], set()).add(indices[0])
+                    self._stages.setdefault(pattern[len("getriebe[i].") :], set()).add(indices[0])
         stages: set[int] = set()
         for member in members:
             stages |= self._stages.get(member, set())
@@ -197,7 +210,7 @@ class ResolvedAxis:
     # -- the axis as a whole -----------------------------------------------------------------
     @property
     def axis_type(self) -> str:
-        """"T" (linear), "R" (rotary) or "S" (spindle); the CNC assumes linear when unset."""
+        """ "T" (linear), "R" (rotary) or "S" (spindle); the CNC assumes linear when unset."""
         value = self.get("kenngr.achs_typ")
         codes = self.parameter("kenngr.achs_typ").symbol_codes
         return AXIS_TYPE_CODES.get(codes.get(value, value), "T")
@@ -224,7 +237,10 @@ class ResolvedAxis:
 
     @property
     def homing_type_is_default(self) -> bool:
-        return not self.is_set("kenngr.homing.homing_type") or self.written("kenngr.homing.homing_type") == "DRIVE_DEFAULT"
+        return (
+            not self.is_set("kenngr.homing.homing_type")
+            or self.written("kenngr.homing.homing_type") == "DRIVE_DEFAULT"
+        )
 
 
 def resolve_bytes(data: bytes, name: str, defaults: bytes | None = None) -> ResolvedAxis:
@@ -242,7 +258,15 @@ def default_homing_type(drive_type: int) -> str:
 
 
 # Drive types that only home CNC-controlled (P-AXIS-00299 table, plus the conventional drive).
-CNC_ONLY_DRIVES = frozenset({DriveType.CONVENTIONAL, DriveType.PROFIDRIVE, SIMULATION, LIGHTBUS, DriveType.TERMINAL,
-                             DriveType.REALTIME_ETHERNET})
+CNC_ONLY_DRIVES = frozenset(
+    {
+        DriveType.CONVENTIONAL,
+        DriveType.PROFIDRIVE,
+        SIMULATION,
+        LIGHTBUS,
+        DriveType.TERMINAL,
+        DriveType.REALTIME_ETHERNET,
+    }
+)
 # Drive types with encoder-overflow homing (P-AXIS-00354/00355 drive types; §3.1.1.2).
 OVERFLOW_DRIVES = frozenset({SERCOS, LIGHTBUS, CANOPEN})

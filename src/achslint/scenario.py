@@ -94,8 +94,9 @@ def _models() -> dict:
         relocate_distance: Position = 0.0
         second_search: SearchInput | None = None
         # method "nc": TwinCAT NC / AX5000 reference modes
-        reference_mode: Literal["plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos",
-                                "hardware-latch-neg"] = "plc-cam"
+        reference_mode: Literal[
+            "plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos", "hardware-latch-neg"
+        ] = "plc-cam"
         invert_cam_search: bool = False
         invert_sync_search: bool = False
         velocity_sync: Rate | None = None
@@ -130,10 +131,15 @@ def _models() -> dict:
                 pair = getattr(self, name)
                 if pair is not None and pair[0] >= pair[1]:
                     raise ValueError(f"{name} must be [low, high] with low < high, got {list(pair)}")
-            if self.cam_jitter is not None and self.zero_pulse_period is not None \
-                    and self.cam_jitter >= self.zero_pulse_period:
-                raise ValueError(f"cam_jitter ({self.cam_jitter:g}) must be smaller than zero_pulse_period "
-                                 f"({self.zero_pulse_period:g})")
+            if (
+                self.cam_jitter is not None
+                and self.zero_pulse_period is not None
+                and self.cam_jitter >= self.zero_pulse_period
+            ):
+                raise ValueError(
+                    f"cam_jitter ({self.cam_jitter:g}) must be smaller than zero_pulse_period "
+                    f"({self.zero_pulse_period:g})"
+                )
             return self
 
     return {"SearchInput": SearchInput, "DriveInput": DriveInput, "ScenarioInput": ScenarioInput}
@@ -160,7 +166,9 @@ class Scenario:
     cam_jitter: float = 0.0
     drive: object = None  # DriveInput
     assumed: list[str] = field(default_factory=list)
-    modulo: tuple[float, float] | None = None  # positions recur every revolution (spindles, modulo rotary axes)
+    modulo: tuple[float, float] | None = (
+        None  # positions recur every revolution (spindles, modulo rotary axes)
+    )
 
     def as_dict(self) -> dict:
         data = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "assumed"}
@@ -182,8 +190,12 @@ def parse_input(data: dict, where: str = "scenario"):
     from pydantic import ValidationError
 
     models = _models()
-    levels = {(): models["ScenarioInput"], ("drive",): models["DriveInput"],
-              ("drive", "first_search"): models["SearchInput"], ("drive", "second_search"): models["SearchInput"]}
+    levels = {
+        (): models["ScenarioInput"],
+        ("drive",): models["DriveInput"],
+        ("drive", "first_search"): models["SearchInput"],
+        ("drive", "second_search"): models["SearchInput"],
+    }
     if not isinstance(data, dict):
         raise ScenarioError(f"{where}: a scenario is a table of keys, not {type(data).__name__}")
     try:
@@ -208,15 +220,33 @@ def default_scenario(strategy, given=None, cycle_time_us: int = 1000) -> Scenari
     setup = strategy.setup
     direction = setup.torq_direction if strategy.id == "fixed_stop" else setup.direction
     braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
-    return complete(given, direction=direction, rotary=setup.rotary, soft_limits=setup.soft_limits,
-                    cycle_time=cycle_time_us / 1e6, zero_pulse=strategy.with_zero_pulse, braking=braking,
-                    modulo=setup.modulo, spindle=setup.spindle, armed_on_exit=strategy.id == "spindle_flying_cam")
+    return complete(
+        given,
+        direction=direction,
+        rotary=setup.rotary,
+        soft_limits=setup.soft_limits,
+        cycle_time=cycle_time_us / 1e6,
+        zero_pulse=strategy.with_zero_pulse,
+        braking=braking,
+        modulo=setup.modulo,
+        spindle=setup.spindle,
+        armed_on_exit=strategy.id == "spindle_flying_cam",
+    )
 
 
-def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, float],
-             cycle_time: float, zero_pulse: bool, braking: float = 0.0,
-             modulo: tuple[float, float] | None = None, spindle: bool = False,
-             armed_on_exit: bool = False) -> Scenario:
+def complete(
+    given,
+    *,
+    direction: int,
+    rotary: bool,
+    soft_limits: tuple[float, float],
+    cycle_time: float,
+    zero_pulse: bool,
+    braking: float = 0.0,
+    modulo: tuple[float, float] | None = None,
+    spindle: bool = False,
+    armed_on_exit: bool = False,
+) -> Scenario:
     """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry.
 
     On a modulo axis (spindle, rotary axis with MODULO) positions recur every revolution: there are no limit
@@ -244,8 +274,10 @@ def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, f
             width = min(width, revolution / 2)
         cam = (near - width, near) if direction < 0 else (near, near + width)
     elif revolution and cam[1] - cam[0] >= revolution:
-        raise ScenarioError(f"scenario: `cam` [{cam[0]:g}, {cam[1]:g}] is as wide as the modulo range of "
-                            f"{revolution:g}° or wider: the cam would be operated all the time")
+        raise ScenarioError(
+            f"scenario: `cam` [{cam[0]:g}, {cam[1]:g}] is as wide as the modulo range of "
+            f"{revolution:g}° or wider: the cam would be operated all the time"
+        )
     period = pick("zero_pulse_period", revolution if spindle and revolution else (10.0 if rotary else 5.0))
     # Ideal phase: the first pulse half a period after the cam edge that arms the zero-pulse logic (the edge
     # where the cam is reached; for flying spindle homing the edge where it is left).
@@ -264,10 +296,24 @@ def complete(given, *, direction: int, rotary: bool, soft_limits: tuple[float, f
     stop = pick("fixed_stop", start + direction * 100.0)
     jitter = pick("cam_jitter", 0.0)
     if jitter and jitter >= period:
-        raise ScenarioError(f"scenario: `cam_jitter` ({jitter:g}) must be smaller than the zero-pulse period "
-                            f"({period:g} {unit})")
-    return Scenario(start, tuple(cam), period, phase, latch, cycle, tuple(limits) if limits else None, stop, jitter,
-                    getattr(given, "drive", None), assumed, modulo)
+        raise ScenarioError(
+            f"scenario: `cam_jitter` ({jitter:g}) must be smaller than the zero-pulse period "
+            f"({period:g} {unit})"
+        )
+    return Scenario(
+        start,
+        tuple(cam),
+        period,
+        phase,
+        latch,
+        cycle,
+        tuple(limits) if limits else None,
+        stop,
+        jitter,
+        getattr(given, "drive", None),
+        assumed,
+        modulo,
+    )
 
 
 def _check_bounds(given, unit: str) -> None:
@@ -285,8 +331,12 @@ def _check_bounds(given, unit: str) -> None:
         elif isinstance(value, (list, tuple)):
             for item in value:
                 walk(prefix, item)
-        elif isinstance(value, float) and not isinstance(value, bool) and abs(value) > bound \
-                and not prefix.endswith(("velocity", "acceleration", "velocity_sync")):
+        elif (
+            isinstance(value, float)
+            and not isinstance(value, bool)
+            and abs(value) > bound
+            and not prefix.endswith(("velocity", "acceleration", "velocity_sync"))
+        ):
             found.append(f"`{prefix}` = {value:g} is beyond ±{bound:g} {unit}")
 
     walk("", data)

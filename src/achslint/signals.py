@@ -10,6 +10,7 @@ and the exit code 128 + signal number, as a shell reports it.
 
 from __future__ import annotations
 
+import contextlib
 import signal
 from contextlib import contextmanager
 
@@ -42,10 +43,9 @@ def install() -> dict:
     for name in NAMES:
         number = getattr(signal, name, None)
         if number is not None:
-            try:
+            # ValueError/OSError: not the main thread, or a platform that forbids it
+            with contextlib.suppress(ValueError, OSError):
                 previous[number] = signal.signal(number, _stop)
-            except (ValueError, OSError):  # not the main thread, or a platform that forbids it
-                pass
     return previous
 
 

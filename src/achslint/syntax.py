@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import re
 import sys
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import Iterator
 
 from .numbers import parse_int
 
@@ -25,7 +25,13 @@ ASSIGNMENT = "assignment"
 
 # Value kinds, as named by the grammar's value alternatives.
 INT, HEX, REAL, REFERENCE, STRING, BAD_STRING, SYMBOL = (
-    "int", "hex", "real", "reference", "string", "bad_string", "symbol",
+    "int",
+    "hex",
+    "real",
+    "reference",
+    "string",
+    "bad_string",
+    "symbol",
 )
 NUMERIC_KINDS = frozenset({INT, HEX, REAL})
 
@@ -125,7 +131,7 @@ class _Builder:
     """Inline transformer: builds `Line` objects while Lark reduces the rules."""
 
     # Value alternatives all become (kind, blanks before the value, value text).
-    def _value(kind: str):  # noqa: N805 - factory used in the class body
+    def _value(kind: str):
         def build(self, children):
             text = str(children[0])
             value = text.lstrip(" \t")
@@ -241,7 +247,7 @@ def parser():
     if cache:
         try:
             return Lark(grammar, cache=cache, **options)
-        except Exception:  # noqa: BLE001 - an unreadable or stale cache is never fatal
+        except Exception:
             pass
     return Lark(grammar, **options)
 

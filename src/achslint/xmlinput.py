@@ -84,8 +84,11 @@ def is_xml(name: str) -> bool:
     return name.lower().endswith(XML_SUFFIXES)
 
 
-_MARKERS = tuple(marker.encode(encoding) for marker in ("<AchsMds", "<AX_MDS", ":AchsMds", ":AX_MDS")
-                 for encoding in ("ascii", "utf-16-le", "utf-16-be"))
+_MARKERS = tuple(
+    marker.encode(encoding)
+    for marker in ("<AchsMds", "<AX_MDS", ":AchsMds", ":AX_MDS")
+    for encoding in ("ascii", "utf-16-le", "utf-16-be")
+)
 
 
 def may_hold_axis_list(data: bytes) -> bool:
@@ -142,7 +145,7 @@ class _Collector(ContentHandler):
     def _here(self) -> tuple[int, int]:
         return self.locator.getLineNumber(), self.locator.getColumnNumber() + 1
 
-    def startElement(self, name, attrs):  # noqa: N802 - SAX interface
+    def startElement(self, name, attrs):
         local = _local(name)
         line, column = self._here()
         if local == "IsgAxisDef":
@@ -169,7 +172,7 @@ class _Collector(ContentHandler):
         elif self.field is not None:
             self.field_text.append(content)
 
-    def endElement(self, name):  # noqa: N802 - SAX interface
+    def endElement(self, name):
         local = _local(name)
         if local == "AchsMds" and self.current is not None:
             self.current.text = "".join(self.chunks)
@@ -232,7 +235,11 @@ def _parse(data: bytes, name: str) -> _Collector:
     try:
         parser.feed(data)
         parser.close()
-    except (defusedxml.DTDForbidden, defusedxml.EntitiesForbidden, defusedxml.ExternalReferenceForbidden) as exc:
+    except (
+        defusedxml.DTDForbidden,
+        defusedxml.EntitiesForbidden,
+        defusedxml.ExternalReferenceForbidden,
+    ) as exc:
         raise UnreadableInput(
             f"refusing to read {name}: it declares a DTD or entities ({type(exc).__name__}), which can expand or "
             "load external content"
@@ -240,7 +247,9 @@ def _parse(data: bytes, name: str) -> _Collector:
     except SAXException as exc:
         raise UnreadableInput(f"{name} is not well-formed XML: {exc.getMessage()}{_where(exc)}") from None
     except LookupError as exc:  # expat asks Python's codecs for encodings it does not know itself
-        raise UnreadableInput(f"{name} is not well-formed XML: it declares an {exc}; save it as UTF-8") from None
+        raise UnreadableInput(
+            f"{name} is not well-formed XML: it declares an {exc}; save it as UTF-8"
+        ) from None
     return collector
 
 
@@ -267,6 +276,8 @@ def single_list(data: bytes, name: str) -> bytes:
     lists = extract(data, name)
     if len(lists) > 1:
         where = ", ".join(f"line {embedded.first_line}" for embedded in lists)
-        raise UnreadableInput(f"{name} holds {len(lists)} axis lists (at {where}); this command reads one list, "
-                              "so export the axis you mean on its own")
+        raise UnreadableInput(
+            f"{name} holds {len(lists)} axis lists (at {where}); this command reads one list, "
+            "so export the axis you mean on its own"
+        )
     return lists[0].text.encode("utf-8")

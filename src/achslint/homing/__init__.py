@@ -25,8 +25,25 @@ from .registry import (
 from .setup import POSITION, VELOCITY, Acceleration, HomingSetup
 
 __all__ = [
-    "NEGATIVE", "POSITIVE", "HomingStrategy", "Phase", "StrategyDef", "Use", "HOMING_PARAMETERS",
-    "STRATEGY_MODULES", "Effect", "by_id", "classify", "effect", "generic", "homing_parameter_paths",
-    "is_homing_parameter", "strategies", "strategies_reading", "POSITION", "VELOCITY", "Acceleration",
+    "HOMING_PARAMETERS",
+    "NEGATIVE",
+    "POSITION",
+    "POSITIVE",
+    "STRATEGY_MODULES",
+    "VELOCITY",
+    "Acceleration",
+    "Effect",
     "HomingSetup",
+    "HomingStrategy",
+    "Phase",
+    "StrategyDef",
+    "Use",
+    "by_id",
+    "classify",
+    "effect",
+    "generic",
+    "homing_parameter_paths",
+    "is_homing_parameter",
+    "strategies",
+    "strategies_reading",
 ]

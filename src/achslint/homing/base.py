@@ -4,8 +4,9 @@ strategy; `homing/registry.py` lists them in classification order."""
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Callable, Mapping
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from ..resolved import ResolvedAxis
@@ -56,7 +57,9 @@ class StrategyDef:
     with_zero_pulse: bool = False
     one_phase: bool = False
     reference_speed: str | None = None  # getriebe member of the speed at which the reference is taken
-    ends_with_braking: bool = True  # the axis brakes beyond the reference (not for retraction / flying homing)
+    ends_with_braking: bool = (
+        True  # the axis brakes beyond the reference (not for retraction / flying homing)
+    )
     variants: Callable[[HomingSetup], list[str]] = lambda setup: []
     # simulate(simulator, trace, start, cam_shift) -> trace: which engine sequence runs this strategy
     simulate: Callable = lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped")

@@ -36,7 +36,9 @@ STRATEGY_MODULES = (
 
 @lru_cache(maxsize=1)
 def strategies() -> tuple[StrategyDef, ...]:
-    return tuple(importlib.import_module(f"{__package__}.strategies.{name}").STRATEGY for name in STRATEGY_MODULES)
+    return tuple(
+        importlib.import_module(f"{__package__}.strategies.{name}").STRATEGY for name in STRATEGY_MODULES
+    )
 
 
 def by_id(strategy_id: str) -> StrategyDef:
@@ -51,8 +53,13 @@ def classify(axis: ResolvedAxis, gear: int = 0) -> HomingStrategy:
     for definition in strategies():
         if definition.matches(axis):
             setup = HomingSetup(axis, gear)
-            return HomingStrategy(definition, setup, definition.describe(axis), definition.phases(setup),
-                                  definition.variants(setup))
+            return HomingStrategy(
+                definition,
+                setup,
+                definition.describe(axis),
+                definition.phases(setup),
+                definition.variants(setup),
+            )
     raise AssertionError("the last strategy matches every axis")  # pragma: no cover
 
 

@@ -112,8 +112,10 @@ class HomingSetup:
     @cached_property
     def acceleration(self) -> Acceleration:
         """P-AXIS-00285, or min(P-AXIS-00005, P-AXIS-00006) when 0 (§3.2.4); spindles use their default ramps (§2.3.2.1)."""
-        fallback = min(self.axis.get(self.stage("lslope_profil.a_grenz_stufe_1")),
-                       self.axis.get(self.stage("lslope_profil.a_grenz_stufe_2")))
+        fallback = min(
+            self.axis.get(self.stage("lslope_profil.a_grenz_stufe_1")),
+            self.axis.get(self.stage("lslope_profil.a_grenz_stufe_2")),
+        )
         if self.spindle:
             return Acceleration(float(fallback), "default ramps")
         own = self.axis.get(self.stage("a_ref"))

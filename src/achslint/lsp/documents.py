@@ -53,7 +53,9 @@ class LineCache:
 
     def __init__(self) -> None:
         self._parsed: dict[str, Line] = {}  # line body -> its parse (number 0, no line break)
-        self._previous: dict[tuple[int, str], Line] = {}  # (number, text with break) -> Line of the last parse
+        self._previous: dict[
+            tuple[int, str], Line
+        ] = {}  # (number, text with break) -> Line of the last parse
 
     def _one(self, body: str) -> Line:
         template = self._parsed.get(body)
@@ -76,7 +78,7 @@ class LineCache:
             if line is None:
                 body = raw.rstrip("\r\n")
                 line = copy.copy(self._one(body))
-                line.newline = raw[len(body):]
+                line.newline = raw[len(body) :]
                 line.number = number
             current[key] = line
             lines.append(line)
@@ -170,7 +172,7 @@ class Document:
             self._lines = self._raw = None
         else:
             a, b = self.offset(*start), self.offset(*end)
-            self.text = self.text[:a] + new_text + self.text[max(a, b):]
+            self.text = self.text[:a] + new_text + self.text[max(a, b) :]
         self._lines = self._raw = None
 
     def parse(self) -> ListFile:

@@ -31,13 +31,17 @@ from ..rules import registry
 from ..units import describe, unit_label
 from .documents import Document, units
 
-SEVERITY = {Severity.ERROR: lsp.DiagnosticSeverity.Error, Severity.WARNING: lsp.DiagnosticSeverity.Warning,
-            Severity.INFO: lsp.DiagnosticSeverity.Information}
+SEVERITY = {
+    Severity.ERROR: lsp.DiagnosticSeverity.Error,
+    Severity.WARNING: lsp.DiagnosticSeverity.Warning,
+    Severity.INFO: lsp.DiagnosticSeverity.Information,
+}
 FIX_ALL = "source.fixAll.achslint"
 _CODE = re.compile(r"LIS[0-9]{3}", re.IGNORECASE)
 
 
 # -- positions ------------------------------------------------------------------------------------
+
 
 def lsp_range(document: Document, line: int, column: int, end_line: int, end_column: int) -> lsp.Range:
     start = document.to_lsp(line, column)
@@ -51,6 +55,7 @@ def uri_of(path: str | Path) -> str:
 
 
 # -- rule documentation ------------------------------------------------------------------------------
+
 
 @lru_cache(maxsize=1)
 def rules_document() -> str | None:
@@ -81,11 +86,18 @@ def rule_href(code: str) -> str | None:
 
 # -- diagnostics -----------------------------------------------------------------------------------
 
+
 def to_lsp_diagnostic(document: Document, d: Diagnostic) -> lsp.Diagnostic:
     related = []
     for r in d.related:
-        where = lsp_range(document, r.line, r.column, r.line, r.column + 1) if r.path == d.path else \
-            lsp.Range(lsp.Position(max(r.line - 1, 0), max(r.column - 1, 0)), lsp.Position(max(r.line - 1, 0), r.column))
+        where = (
+            lsp_range(document, r.line, r.column, r.line, r.column + 1)
+            if r.path == d.path
+            else lsp.Range(
+                lsp.Position(max(r.line - 1, 0), max(r.column - 1, 0)),
+                lsp.Position(max(r.line - 1, 0), r.column),
+            )
+        )
         target = document.uri if r.path == d.path else uri_of(r.path)
         text = r.message or (f"`{r.parameter}`" if r.parameter else "related")
         if r.parameter and r.message:
@@ -108,17 +120,27 @@ def publishable(document: Document, snapshot, found: list[Diagnostic]) -> list[l
     out = [to_lsp_diagnostic(document, d) for d in found]
     start = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1))
     if snapshot is not None and snapshot.result.error:
-        out.insert(0, lsp.Diagnostic(start, snapshot.result.error, lsp.DiagnosticSeverity.Error, source="achslint"))
+        out.insert(
+            0, lsp.Diagnostic(start, snapshot.result.error, lsp.DiagnosticSeverity.Error, source="achslint")
+        )
     if snapshot is not None and snapshot.config_error:
-        out.insert(0, lsp.Diagnostic(start, f"{snapshot.config_error} (the built-in defaults are used)",
-                                     lsp.DiagnosticSeverity.Error, source="achslint"))
+        out.insert(
+            0,
+            lsp.Diagnostic(
+                start,
+                f"{snapshot.config_error} (the built-in defaults are used)",
+                lsp.DiagnosticSeverity.Error,
+                source="achslint",
+            ),
+        )
     return out
 
 
 # -- where the cursor is -------------------------------------------------------------------------------
 
+
 def part_at(line: syntax.Line, column: int) -> str | None:
-    """"path", "value", "rest", "end" or "comment": the part of a parsed line at a 1-based column."""
+    """ "path", "value", "rest", "end" or "comment": the part of a parsed line at a 1-based column."""
     if line.kind == syntax.END:
         return "end" if column <= line.path_column + len(line.path or "") else "rest"
     if line.kind == syntax.COMMENT:
@@ -155,6 +177,7 @@ def setting_of(context, line: syntax.Line):
 
 # -- hover --------------------------------------------------------------------------------------------
 
+
 def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
     from ..explain import parameter_card
 
@@ -166,7 +189,10 @@ def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
         ("type", card["type"]),
         ("unit", card["units"] and ", ".join(f"{v} ({k})" for k, v in card["units"].items())),
         ("range", card["range"]),
-        ("checked range", card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}"),
+        (
+            "checked range",
+            card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}",
+        ),
         ("symbols", card["symbols"] and ", ".join(card["symbols"])),
         ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
         ("max length", card["max_length"]),
@@ -174,7 +200,10 @@ def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
         ("indices", card["index_bounds"] and ", ".join(f"{a}..{b_}" for a, b_ in card["index_bounds"])),
         ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
         ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
-        ("old names", ", ".join(f"{a['path']} ({a['kind']})" for a in card["aliases"] if a["kind"] != "misspelling")),
+        (
+            "old names",
+            ", ".join(f"{a['path']} ({a['kind']})" for a in card["aliases"] if a["kind"] != "misspelling"),
+        ),
         ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
     ]
     for key, value in rows:
@@ -208,8 +237,10 @@ def axis_lines(context, path: str, markdown: bool = True) -> list[str]:
     out.append(f"- from: {values.origin(path)}" if values.is_set(path) else "- from: the built-in default")
     correction = values.correction(path)
     if correction is not None:
-        out.append(f"- CNC correction {correction.error}: written {correction.written}, the CNC uses "
-                   f"{correction.used} — {correction.reason}")
+        out.append(
+            f"- CNC correction {correction.error}: written {correction.written}, the CNC uses "
+            f"{correction.used} — {correction.reason}"
+        )
     found_effect = row["effective"]
     if is_homing_parameter(path) or not found_effect:
         verdict = "takes effect" if found_effect else "has no effect"
@@ -226,12 +257,16 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
     if part is None:
         return None
     if part == "end":
-        return "\n".join([
-            "**Ende** — the end marker" if markdown else "Ende — the end marker",
-            "",
-            ("The CNC stops reading the list here: lines after it are ignored (LIS003). Without it the "
-             "CNC reports the list as incomplete (LIS002); `End` or `ENDE` are not the marker (LIS004)."),
-        ])
+        return "\n".join(
+            [
+                "**Ende** — the end marker" if markdown else "Ende — the end marker",
+                "",
+                (
+                    "The CNC stops reading the list here: lines after it are ignored (LIS003). Without it the "
+                    "CNC reports the list as incomplete (LIS002); `End` or `ENDE` are not the marker (LIS004)."
+                ),
+            ]
+        )
     if part in ("rest", "comment"):
         text = line.rest if part == "rest" else (line.indent + (line.comment or ""))
         start = line.rest_column if part == "rest" else 1
@@ -248,7 +283,7 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
         if resolution.alias is not None and resolution.alias.kind != "alternative":
             out.insert(2, f"(written with the {resolution.alias.kind} name {line.path})")
         if context is not None and canonical is not None:
-            out += [""] + axis_lines(context, canonical, markdown)
+            out += ["", *axis_lines(context, canonical, markdown)]
         return "\n".join(out)
     # the value
     if context is None or canonical is None:
@@ -260,8 +295,12 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
         target = values.referenced(canonical, written)
         referenced = values.parameter(target)
         origin = f"from: {values.origin(target)}" if values.is_set(target) else "from: the built-in default"
-        out = [f"{written} → {target} ({referenced.summary})", "", f"resolved value: {value_words(values, target)}",
-               origin]
+        out = [
+            f"{written} → {target} ({referenced.summary})",
+            "",
+            f"resolved value: {value_words(values, target)}",
+            origin,
+        ]
         return "\n".join(out)
     if isinstance(written, bool):
         words = f"{int(written)} ({'on' if written else 'off'})"
@@ -274,7 +313,9 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
     out = [words]
     correction = values.correction(canonical)
     if correction is not None:
-        out.append(f"the CNC uses {value_words(values, canonical)} instead ({correction.error}: {correction.reason})")
+        out.append(
+            f"the CNC uses {value_words(values, canonical)} instead ({correction.error}: {correction.reason})"
+        )
     return "\n\n".join(out)
 
 
@@ -306,9 +347,15 @@ def _applies(parameter: Parameter, context) -> bool:
     if context is None:
         return True
     analysis = context.analysis
-    if analysis.drive_type is not None and parameter.drive_group and analysis.drive_type not in parameter.drive_group:
+    if (
+        analysis.drive_type is not None
+        and parameter.drive_group
+        and analysis.drive_type not in parameter.drive_group
+    ):
         return False
-    return not (analysis.axis_type_known and parameter.axis_types and analysis.axis_type not in parameter.axis_types)
+    return not (
+        analysis.axis_type_known and parameter.axis_types and analysis.axis_type not in parameter.axis_types
+    )
 
 
 def _snippet_path(pattern: str, typed: tuple[int, ...], bounds, snippets: bool) -> str:
@@ -326,8 +373,14 @@ def _snippet_path(pattern: str, typed: tuple[int, ...], bounds, snippets: bool) 
     return "".join(out)
 
 
-def complete(document: Document, snapshot, line_number: int, column: int, snippets: bool = True,
-             edit_range_default: bool = False) -> lsp.CompletionList:
+def complete(
+    document: Document,
+    snapshot,
+    line_number: int,
+    column: int,
+    snippets: bool = True,
+    edit_range_default: bool = False,
+) -> lsp.CompletionList:
     """Completion at a 1-based position: rule codes after `noqa:`, parameter paths at the start of a
     line, symbols and references in the value. With `edit_range_default` (the client supports
     `itemDefaults.editRange`) the range the items replace is sent once instead of with every item."""
@@ -349,8 +402,9 @@ def complete(document: Document, snapshot, line_number: int, column: int, snippe
     match = _VALUE_PREFIX.match(before)
     if match:
         start = column - len(match.group(2))
-        return lsp.CompletionList(False, _value_items(document, context, line_number, start, column,
-                                                      match.group(1), match.group(2)))
+        return lsp.CompletionList(
+            False, _value_items(document, context, line_number, start, column, match.group(1), match.group(2))
+        )
     return lsp.CompletionList(False, [])
 
 
@@ -373,20 +427,29 @@ def _path_items(context, typed, snippets, where: lsp.Range | None) -> list[lsp.C
         insert = _snippet_path(parameter.path, done_indices, parameter.index_bounds, snippets)
         label = fill_indices(parameter.path, done_indices)
         is_snippet = snippets and "$" in insert
-        items.append(lsp.CompletionItem(
-            label=label, kind=lsp.CompletionItemKind.Field, detail=f"{parameter.id} {parameter.type}",
-            text_edit=lsp.TextEdit(where, insert) if where is not None else None,
-            text_edit_text=insert if where is None and insert != label else None,
-            insert_text_format=snippet if is_snippet else plain,
-        ))
+        items.append(
+            lsp.CompletionItem(
+                label=label,
+                kind=lsp.CompletionItemKind.Field,
+                detail=f"{parameter.id} {parameter.type}",
+                text_edit=lsp.TextEdit(where, insert) if where is not None else None,
+                text_edit_text=insert if where is None and insert != label else None,
+                insert_text_format=snippet if is_snippet else plain,
+            )
+        )
         for alias in parameter.aliases:
             if alias.kind != "old" or not alias.path.startswith(done):
                 continue
-            items.append(lsp.CompletionItem(
-                label=alias.path, kind=lsp.CompletionItemKind.Field, detail=f"old name of {parameter.path}",
-                tags=[lsp.CompletionItemTag.Deprecated], sort_text="~" + alias.path,
-                text_edit=lsp.TextEdit(where, alias.path) if where is not None else None,
-            ))
+            items.append(
+                lsp.CompletionItem(
+                    label=alias.path,
+                    kind=lsp.CompletionItemKind.Field,
+                    detail=f"old name of {parameter.path}",
+                    tags=[lsp.CompletionItemTag.Deprecated],
+                    sort_text="~" + alias.path,
+                    text_edit=lsp.TextEdit(where, alias.path) if where is not None else None,
+                )
+            )
     return items
 
 
@@ -397,14 +460,25 @@ def _value_items(document, context, line, start, end, path, typed) -> list[lsp.C
     parameter = resolution.parameter
     items = []
     for symbol in parameter.symbols:
-        items.append(lsp.CompletionItem(label=symbol, kind=lsp.CompletionItemKind.EnumMember,
-                                        detail=f"{parameter.path} ({parameter.id})",
-                                        documentation=f"a value of {parameter.path}: {parameter.summary}",
-                                        text_edit=_edit(document, line, start, end, symbol)))
+        items.append(
+            lsp.CompletionItem(
+                label=symbol,
+                kind=lsp.CompletionItemKind.EnumMember,
+                detail=f"{parameter.path} ({parameter.id})",
+                documentation=f"a value of {parameter.path}: {parameter.summary}",
+                text_edit=_edit(document, line, start, end, symbol),
+            )
+        )
     if parameter.kind == BOOL and not parameter.symbols:
         for value, words in (("0", "off"), ("1", "on")):
-            items.append(lsp.CompletionItem(label=value, kind=lsp.CompletionItemKind.Value, detail=words,
-                                            text_edit=_edit(document, line, start, end, value)))
+            items.append(
+                lsp.CompletionItem(
+                    label=value,
+                    kind=lsp.CompletionItemKind.Value,
+                    detail=words,
+                    text_edit=_edit(document, line, start, end, value),
+                )
+            )
     if parameter.kind in (INTEGER, REAL) and (typed.upper().startswith("P") or not typed):
         axis_type = context.values.axis_type if context is not None else "T"
         unit = parameter.unit(axis_type)
@@ -412,10 +486,16 @@ def _value_items(document, context, line, start, end, path, typed) -> list[lsp.C
             if other is parameter or other.kind not in (INTEGER, REAL) or other.unit(axis_type) != unit:
                 continue
             label = other.id + (".0" if "[i]" in other.path else "")
-            items.append(lsp.CompletionItem(
-                label=label, kind=lsp.CompletionItemKind.Reference, detail=other.path,
-                documentation=f"take the value of {other.path} ({unit_label(unit) or 'no unit'}): {other.summary}",
-                sort_text="~" + label, text_edit=_edit(document, line, start, end, label)))
+            items.append(
+                lsp.CompletionItem(
+                    label=label,
+                    kind=lsp.CompletionItemKind.Reference,
+                    detail=other.path,
+                    documentation=f"take the value of {other.path} ({unit_label(unit) or 'no unit'}): {other.summary}",
+                    sort_text="~" + label,
+                    text_edit=_edit(document, line, start, end, label),
+                )
+            )
     return items
 
 
@@ -425,11 +505,16 @@ def _code_items(document, snapshot, line, start, end) -> list[lsp.CompletionItem
         here = {d.code for d in snapshot.result.diagnostics if d.line == line}
     items = []
     for code, rule in registry().items():
-        items.append(lsp.CompletionItem(
-            label=code, kind=lsp.CompletionItemKind.Constant, detail=rule.summary,
-            documentation=f"{rule.name} ({rule.severity.value})",
-            sort_text=("0" if code in here else "1") + code,
-            text_edit=_edit(document, line, start, end, code)))
+        items.append(
+            lsp.CompletionItem(
+                label=code,
+                kind=lsp.CompletionItemKind.Constant,
+                detail=rule.summary,
+                documentation=f"{rule.name} ({rule.severity.value})",
+                sort_text=("0" if code in here else "1") + code,
+                text_edit=_edit(document, line, start, end, code),
+            )
+        )
     return items
 
 
@@ -438,15 +523,20 @@ def resolve_item(item: lsp.CompletionItem, markdown: bool = True) -> lsp.Complet
     resolution = catalogue().resolve(item.label) if item.kind == lsp.CompletionItemKind.Field else None
     if resolution is not None and item.documentation is None:
         text = "\n".join(card_text(resolution.parameter, markdown))
-        item.documentation = lsp.MarkupContent(lsp.MarkupKind.Markdown if markdown else lsp.MarkupKind.PlainText, text)
+        item.documentation = lsp.MarkupContent(
+            lsp.MarkupKind.Markdown if markdown else lsp.MarkupKind.PlainText, text
+        )
     return item
 
 
 # -- code actions ----------------------------------------------------------------------------------
 
+
 def text_edits(document: Document, fix) -> list[lsp.TextEdit]:
-    edits = [lsp.TextEdit(lsp_range(document, e.line, e.column, e.end_line, e.end_column), e.content)
-             for e in fix.edits]
+    edits = [
+        lsp.TextEdit(lsp_range(document, e.line, e.column, e.end_line, e.end_column), e.content)
+        for e in fix.edits
+    ]
     if fix.remove_bom and document.bom:
         edits.append(lsp.TextEdit(lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)), ""))
     return edits
@@ -461,8 +551,11 @@ def diff_edits(document: Document, new_text: str) -> list[lsp.TextEdit]:
     for tag, i1, i2, j1, j2 in matcher.get_opcodes():
         if tag == "equal":
             continue
-        edits.append(lsp.TextEdit(lsp.Range(_line_start(document, old, i1), _line_start(document, old, i2)),
-                                  "".join(new[j1:j2])))
+        edits.append(
+            lsp.TextEdit(
+                lsp.Range(_line_start(document, old, i1), _line_start(document, old, i2)), "".join(new[j1:j2])
+            )
+        )
     return edits
 
 
@@ -501,10 +594,19 @@ def noqa_edit(document: Document, file, d: Diagnostic) -> lsp.TextEdit | None:
     return lsp.TextEdit(at_end, f"  {marker} noqa: {d.code}")
 
 
-def code_actions(document: Document, snapshot, found: list[Diagnostic], request: lsp.Range,
-                 only: list[str] | None, fix_all_edits) -> list[lsp.CodeAction]:
+def code_actions(
+    document: Document,
+    snapshot,
+    found: list[Diagnostic],
+    request: lsp.Range,
+    only: list[str] | None,
+    fix_all_edits,
+) -> list[lsp.CodeAction]:
     start_line, end_line = request.start.line + 1, request.end.line + 1
-    wanted = lambda kind: not only or any(kind == k or kind.startswith(k + ".") for k in only)
+
+    def wanted(kind):
+        return not only or any(kind == k or kind.startswith(k + ".") for k in only)
+
     actions = []
     xml = snapshot is None or snapshot.file is None
     if wanted(lsp.CodeActionKind.QuickFix):
@@ -512,39 +614,61 @@ def code_actions(document: Document, snapshot, found: list[Diagnostic], request:
             if not (d.line <= end_line and d.end_line >= start_line):
                 continue
             diagnostic = to_lsp_diagnostic(document, d)
-            if d.fix is not None and d.fix.edits or (d.fix is not None and d.fix.remove_bom):
+            if (d.fix is not None and d.fix.edits) or (d.fix is not None and d.fix.remove_bom):
                 unsafe = d.fix.applicability != "safe"
-                actions.append(lsp.CodeAction(
-                    title=f"{d.code}: {d.fix.description}" + (" (unsafe fix: check the result)" if unsafe else ""),
-                    kind=lsp.CodeActionKind.QuickFix, diagnostics=[diagnostic], is_preferred=not unsafe,
-                    edit=lsp.WorkspaceEdit(changes={document.uri: text_edits(document, d.fix)})))
+                actions.append(
+                    lsp.CodeAction(
+                        title=f"{d.code}: {d.fix.description}"
+                        + (" (unsafe fix: check the result)" if unsafe else ""),
+                        kind=lsp.CodeActionKind.QuickFix,
+                        diagnostics=[diagnostic],
+                        is_preferred=not unsafe,
+                        edit=lsp.WorkspaceEdit(changes={document.uri: text_edits(document, d.fix)}),
+                    )
+                )
             if not xml and d.path == document.name:
                 edit = noqa_edit(document, snapshot.file, d)
                 if edit is not None:
                     whole_file = edit.new_text.startswith("# achslint: noqa")
-                    actions.append(lsp.CodeAction(
-                        title=f"Suppress {d.code} in this file (noqa)" if whole_file
-                        else f"Suppress {d.code} on this line (noqa)",
-                        kind=lsp.CodeActionKind.QuickFix, diagnostics=[diagnostic],
-                        edit=lsp.WorkspaceEdit(changes={document.uri: [edit]})))
+                    actions.append(
+                        lsp.CodeAction(
+                            title=f"Suppress {d.code} in this file (noqa)"
+                            if whole_file
+                            else f"Suppress {d.code} on this line (noqa)",
+                            kind=lsp.CodeActionKind.QuickFix,
+                            diagnostics=[diagnostic],
+                            edit=lsp.WorkspaceEdit(changes={document.uri: [edit]}),
+                        )
+                    )
     if not xml and any(d.fix is not None and d.fix.applicability == "safe" for d in found):
         for kind in (FIX_ALL, lsp.CodeActionKind.SourceFixAll):
             if only and wanted(kind):
                 edits = fix_all_edits()
                 if edits:
-                    actions.append(lsp.CodeAction("achslint: fix all safe findings", kind=FIX_ALL,
-                                                  edit=lsp.WorkspaceEdit(changes={document.uri: edits})))
+                    actions.append(
+                        lsp.CodeAction(
+                            "achslint: fix all safe findings",
+                            kind=FIX_ALL,
+                            edit=lsp.WorkspaceEdit(changes={document.uri: edits}),
+                        )
+                    )
                 break
         else:
             if not only or wanted(lsp.CodeActionKind.QuickFix):
                 edits = fix_all_edits()
                 if edits:
-                    actions.append(lsp.CodeAction("achslint: fix all safe findings", kind=lsp.CodeActionKind.QuickFix,
-                                                  edit=lsp.WorkspaceEdit(changes={document.uri: edits})))
+                    actions.append(
+                        lsp.CodeAction(
+                            "achslint: fix all safe findings",
+                            kind=lsp.CodeActionKind.QuickFix,
+                            edit=lsp.WorkspaceEdit(changes={document.uri: edits}),
+                        )
+                    )
     return actions
 
 
 # -- formatting ------------------------------------------------------------------------------------
+
 
 def format_document(document: Document, file) -> list[lsp.TextEdit]:
     from ..fmt import format_file
@@ -559,14 +683,17 @@ def format_range(document: Document, file, request: lsp.Range) -> list[lsp.TextE
     column = value_column(file)
     edits = []
     first, last = request.start.line + 1, request.end.line + (1 if request.end.character else 0)
-    for line in file.lines[max(first, 1) - 1: max(last, first)]:
+    for line in file.lines[max(first, 1) - 1 : max(last, first)]:
         body = format_line(line, column)
         if body != line.body:
-            edits.append(lsp.TextEdit(lsp_range(document, line.number, 1, line.number, line.end_column), body))
+            edits.append(
+                lsp.TextEdit(lsp_range(document, line.number, 1, line.number, line.end_column), body)
+            )
     return edits
 
 
 # -- outline and definitions ---------------------------------------------------------------------------
+
 
 def document_symbols(document: Document, file) -> list[lsp.DocumentSymbol]:
     groups: dict[str, list[lsp.DocumentSymbol]] = {}
@@ -580,15 +707,26 @@ def document_symbols(document: Document, file) -> list[lsp.DocumentSymbol]:
             continue
         head, _, tail = line.path.partition(".")
         where = lsp_range(document, line.number, 1, line.number, line.end_column)
-        name_range = lsp_range(document, line.number, line.path_column, line.number, line.path_column + len(line.path))
-        symbol = lsp.DocumentSymbol(tail or head, lsp.SymbolKind.Field, where, name_range, detail=line.value or "")
+        name_range = lsp_range(
+            document, line.number, line.path_column, line.number, line.path_column + len(line.path)
+        )
+        symbol = lsp.DocumentSymbol(
+            tail or head, lsp.SymbolKind.Field, where, name_range, detail=line.value or ""
+        )
         if not tail:
             out.append(symbol)
             continue
         if head not in groups:
             groups[head] = []
-            out.append(lsp.DocumentSymbol(head, lsp.SymbolKind.Array if "[" in head else lsp.SymbolKind.Namespace,
-                                          where, name_range, children=groups[head]))
+            out.append(
+                lsp.DocumentSymbol(
+                    head,
+                    lsp.SymbolKind.Array if "[" in head else lsp.SymbolKind.Namespace,
+                    where,
+                    name_range,
+                    children=groups[head],
+                )
+            )
         groups[head].append(symbol)
     for group in out:
         if group.children:
@@ -596,7 +734,9 @@ def document_symbols(document: Document, file) -> list[lsp.DocumentSymbol]:
     return out
 
 
-def definition(document: Document, snapshot, line_number: int, column: int, startup_entries) -> list[lsp.Location]:
+def definition(
+    document: Document, snapshot, line_number: int, column: int, startup_entries
+) -> list[lsp.Location]:
     file = snapshot.file if snapshot is not None else None
     if file is None or not 1 <= line_number <= len(file.lines):
         return []
@@ -620,11 +760,25 @@ def definition(document: Document, snapshot, line_number: int, column: int, star
         return []
     found = origin.setting.line
     if origin.kind == "list":
-        return [lsp.Location(document.uri, lsp_range(document, found.number, found.path_column, found.number,
-                                                     found.path_column + len(found.path or "")))]
+        return [
+            lsp.Location(
+                document.uri,
+                lsp_range(
+                    document,
+                    found.number,
+                    found.path_column,
+                    found.number,
+                    found.path_column + len(found.path or ""),
+                ),
+            )
+        ]
     start = lsp.Position(found.number - 1, found.path_column - 1)
-    return [lsp.Location(uri_of(origin.file), lsp.Range(start, lsp.Position(found.number - 1, found.path_column - 1
-                                                                             + len(found.path or ""))))]
+    return [
+        lsp.Location(
+            uri_of(origin.file),
+            lsp.Range(start, lsp.Position(found.number - 1, found.path_column - 1 + len(found.path or ""))),
+        )
+    ]
 
 
 def inlay_hints(document: Document, snapshot, request: lsp.Range) -> list[lsp.InlayHint]:
@@ -649,4 +803,3 @@ def inlay_hints(document: Document, snapshot, request: lsp.Range) -> list[lsp.In
             where = document.to_lsp(line.number, line.value_column + len(line.value or ""))
             hints.append(lsp.InlayHint(lsp.Position(*where), f" = {human}", padding_left=True))
     return hints
-

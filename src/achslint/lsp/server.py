@@ -28,7 +28,9 @@ log = logging.getLogger("achslint.lsp")
 
 class AchslintServer(LanguageServer):
     def __init__(self) -> None:
-        super().__init__("achslint", __version__, text_document_sync_kind=lsp.TextDocumentSyncKind.Incremental)
+        super().__init__(
+            "achslint", __version__, text_document_sync_kind=lsp.TextDocumentSyncKind.Incremental
+        )
         self.session = Session()
         self._timers: dict[str, asyncio.TimerHandle] = {}
 
@@ -59,7 +61,9 @@ class AchslintServer(LanguageServer):
     @property
     def encoding(self) -> str:
         encoding = self.workspace.position_encoding if self.workspace is not None else None
-        return {lsp.PositionEncodingKind.Utf8: "utf-8", lsp.PositionEncodingKind.Utf32: "utf-32"}.get(encoding, "utf-16")
+        return {lsp.PositionEncodingKind.Utf8: "utf-8", lsp.PositionEncodingKind.Utf32: "utf-32"}.get(
+            encoding, "utf-16"
+        )
 
     # -- diagnostics -----------------------------------------------------------------------------
     def publish(self, uri: str) -> None:
@@ -71,14 +75,19 @@ class AchslintServer(LanguageServer):
         try:
             snapshot, found, peers = self.session.diagnostics(uri)
             diagnostics = features.publishable(document, snapshot, found)
-        except Exception as exc:  # noqa: BLE001 - a finding that cannot be computed must not end the server
+        except Exception as exc:
             log.error("achslint: cannot lint %s: %s\n%s", uri, exc, traceback.format_exc())
-            diagnostics = [lsp.Diagnostic(lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)),
-                                          f"achslint could not check this document: internal error "
-                                          f"{type(exc).__name__}: {exc}", lsp.DiagnosticSeverity.Error,
-                                          source="achslint")]
+            diagnostics = [
+                lsp.Diagnostic(
+                    lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)),
+                    f"achslint could not check this document: internal error {type(exc).__name__}: {exc}",
+                    lsp.DiagnosticSeverity.Error,
+                    source="achslint",
+                )
+            ]
         self.text_document_publish_diagnostics(
-            lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version))
+            lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
+        )
         for peer in peers:  # other open lists of the machine whose machine findings changed with this one
             self.publish(peer)
 
@@ -103,22 +112,25 @@ server = AchslintServer()
 
 def guarded(default=None):
     """Answer `default` instead of failing when a handler meets something unexpected (logged on stderr)."""
+
     def wrap(handler):
         @functools.wraps(handler)
         def run(ls, params):
             try:
                 return handler(ls, params)
-            except Exception as exc:  # noqa: BLE001 - the server keeps running whatever a document holds
+            except Exception as exc:
                 log.error("achslint: %s failed: %s\n%s", handler.__name__, exc, traceback.format_exc())
                 return default() if callable(default) else default
+
         return run
+
     return wrap
 
 
 def _path(uri: str) -> Path | None:
     try:
         path = to_fs_path(uri)
-    except Exception:  # noqa: BLE001 - an odd URI is simply not a file
+    except Exception:
         return None
     return Path(path) if path and uri.startswith("file:") else None
 
@@ -205,6 +217,7 @@ def did_change_watched_files(ls: AchslintServer, params: lsp.DidChangeWatchedFil
 
 # -- requests ---------------------------------------------------------------------------------------
 
+
 def _where(ls: AchslintServer, uri: str, position: lsp.Position):
     document = ls.session.documents.get(uri)
     if document is None:
@@ -233,7 +246,9 @@ def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
                 continue
             file = parse_text(embedded.text, document.name)
             config, _ = ls.session.config_for(document)
-            result = check_parsed(file, document.name, ls.session.file_settings(config, document.path, document.name))
+            result = check_parsed(
+                file, document.name, ls.session.file_settings(config, document.path, document.name)
+            )
             list_column = 1 if embedded.line_map is not None else column - xml_column + 1
             return result.context, file, number, max(list_column, 1)
     return None
@@ -259,8 +274,10 @@ def hover(ls: AchslintServer, params: lsp.HoverParams):
     return lsp.Hover(lsp.MarkupContent(kind, text))
 
 
-@server.feature(lsp.TEXT_DOCUMENT_COMPLETION, lsp.CompletionOptions(trigger_characters=[".", "[", " ", ":", ","],
-                                                                     resolve_provider=True))
+@server.feature(
+    lsp.TEXT_DOCUMENT_COMPLETION,
+    lsp.CompletionOptions(trigger_characters=[".", "[", " ", ":", ","], resolve_provider=True),
+)
 @guarded()
 def completion(ls: AchslintServer, params: lsp.CompletionParams):
     document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
@@ -275,8 +292,12 @@ def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem):
     return features.resolve_item(item, ls.markdown)
 
 
-@server.feature(lsp.TEXT_DOCUMENT_CODE_ACTION, lsp.CodeActionOptions(
-    code_action_kinds=[lsp.CodeActionKind.QuickFix, features.FIX_ALL, lsp.CodeActionKind.SourceFixAll]))
+@server.feature(
+    lsp.TEXT_DOCUMENT_CODE_ACTION,
+    lsp.CodeActionOptions(
+        code_action_kinds=[lsp.CodeActionKind.QuickFix, features.FIX_ALL, lsp.CodeActionKind.SourceFixAll]
+    ),
+)
 @guarded(default=list)
 def code_action(ls: AchslintServer, params: lsp.CodeActionParams):
     uri = params.text_document.uri

@@ -135,7 +135,9 @@ class Session:
         self._snapshots: dict[str, Snapshot] = {}
         self._disk: dict[tuple, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
         self._by_real: dict[str, Document] = {}  # open files by real path
-        self._machines: dict[str, Machine | None] = {}  # real path of a list -> its machine (until forget_disk)
+        self._machines: dict[
+            str, Machine | None
+        ] = {}  # real path of a list -> its machine (until forget_disk)
         self._machine_found: dict[str, list] = {}  # uri -> the machine findings last reported for it
 
     # -- documents ---------------------------------------------------------------------------
@@ -204,8 +206,9 @@ class Session:
         settings = self.file_settings(config, document.path, document.name)
         name = document.name
         if document.path is not None and is_startup_list(document.path):
-            return Snapshot(document.version, document.text, FileResult(name, []), config_error=config_error,
-                            startup=True)
+            return Snapshot(
+                document.version, document.text, FileResult(name, []), config_error=config_error, startup=True
+            )
         if is_xml(name):
             result = check_bytes(xml_bytes(document.text), name, settings)
             return Snapshot(document.version, document.text, result, config_error=config_error)
@@ -276,11 +279,16 @@ class Session:
             startup = self._read_startup(startup_path)
         except (OSError, UnreadableInput):
             return None
-        if member is not None and not any(e.path is not None and _real(e.path) == member for e in startup.axes):
+        if member is not None and not any(
+            e.path is not None and _real(e.path) == member for e in startup.axes
+        ):
             return None
         defaults = startup.default.path if startup.default else None
-        targets = [Target(str(e.path), e.path, self._config(e.path), machine=str(startup_path), defaults=defaults)
-                   for e in startup.axes if e.path is not None]
+        targets = [
+            Target(str(e.path), e.path, self._config(e.path), machine=str(startup_path), defaults=defaults)
+            for e in startup.axes
+            if e.path is not None
+        ]
         return Machine(targets, [startup], defaults)
 
     @staticmethod
@@ -310,7 +318,8 @@ class Session:
             if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
                 continue
             if any(matches_glob(config.relative(candidate), pattern) for pattern in exclude) or (
-                    not_a_list_file(candidate) is not None and self.by_path(candidate) is None):
+                not_a_list_file(candidate) is not None and self.by_path(candidate) is None
+            ):
                 continue
             targets.append(Target(str(candidate), candidate, self._config(candidate), machine=str(folder)))
         if not any(_real(t.path) == _real(path) for t in targets):
@@ -354,7 +363,9 @@ class Session:
         results = []
         for target in machine.targets:
             if _real(target.path) == real and not snapshot.startup:
-                results.append(FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary))
+                results.append(
+                    FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
+                )
             else:
                 results.append(self._summary_result(target))
         linter = Linter(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))

@@ -10,4 +10,6 @@ def report(results, stream, **_options) -> None:
         if result.error:
             continue
         for d in result.diagnostics:
-            stream.write(printable(f"{d.path}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {d.message}") + "\n")
+            stream.write(
+                printable(f"{d.path}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {d.message}") + "\n"
+            )

@@ -24,16 +24,24 @@ def _caret(line: str, d) -> str:
     shown = line.expandtabs(1)  # a tab is one column in positions and one blank on screen
     end = d.end_column if d.end_line == d.line else len(shown) + 1
     before = printable(shown[: d.column - 1])
-    span = printable(shown[d.column - 1: end - 1])
+    span = printable(shown[d.column - 1 : end - 1])
     return " " * len(before) + "^" * max(len(span), 1)
 
 
-def report(results, stream, *, color: bool = False, sources: dict[str, list[str]] | None = None, **_options) -> None:
+def report(
+    results, stream, *, color: bool = False, sources: dict[str, list[str]] | None = None, **_options
+) -> None:
     from rich.console import Console
     from rich.text import Text
 
-    console = Console(file=stream, force_terminal=color, no_color=not color, highlight=False, soft_wrap=True,
-                      width=max(80, 200))
+    console = Console(
+        file=stream,
+        force_terminal=color,
+        no_color=not color,
+        highlight=False,
+        soft_wrap=True,
+        width=max(80, 200),
+    )
     sources = sources or {}
     total = {"error": 0, "warning": 0, "info": 0}
     for result in results:
@@ -53,10 +61,14 @@ def report(results, stream, *, color: bool = False, sources: dict[str, list[str]
                 caret = _caret(lines[d.line - 1], d)
                 console.print(Text(" " * width + " │ ", style="blue") + Text(caret, style=_STYLE[d.severity]))
             for related in d.related:
-                console.print(Text(f"  related: {printable(related.path)}:{related.line}:{related.column}", style="dim")
-                              + Text(printable(f" {related.parameter or ''} {related.message}".rstrip()), style="dim"))
+                console.print(
+                    Text(f"  related: {printable(related.path)}:{related.line}:{related.column}", style="dim")
+                    + Text(printable(f" {related.parameter or ''} {related.message}".rstrip()), style="dim")
+                )
             if d.fix is not None:
-                console.print(Text(f"  fix ({d.fix.applicability}): {printable(d.fix.description)}", style="green"))
+                console.print(
+                    Text(f"  fix ({d.fix.applicability}): {printable(d.fix.description)}", style="green")
+                )
             console.print()
     summary = ", ".join(f"{count} {name}{'s' if count != 1 else ''}" for name, count in total.items())
     files = len(results)

@@ -31,4 +31,6 @@ def report(results, stream, **_options) -> None:
             if d.end_line == d.line:
                 properties.append(f"endColumn={d.end_column}")
             properties.append(f"title={_property(f'achslint {d.code}')}")
-            stream.write(f"::{COMMANDS[d.severity]} {','.join(properties)}::{_data(f'{d.code} {d.message}')}\n")
+            stream.write(
+                f"::{COMMANDS[d.severity]} {','.join(properties)}::{_data(f'{d.code} {d.message}')}\n"
+            )

@@ -26,15 +26,17 @@ def issues(results) -> list[dict]:
             anchor = d.parameter or source
             key = (d.path, d.code, anchor)
             seen[key] = seen.get(key, 0) + 1
-            found.append({
-                "type": "issue",
-                "check_name": d.code,
-                "description": f"{d.code} {d.message}",
-                "categories": ["Bug Risk"] if d.severity is Severity.ERROR else ["Style"],
-                "severity": SEVERITIES[d.severity],
-                "fingerprint": fingerprint(d.path, d.code, anchor, seen[key]),
-                "location": {"path": d.path, "lines": {"begin": d.line, "end": d.end_line}},
-            })
+            found.append(
+                {
+                    "type": "issue",
+                    "check_name": d.code,
+                    "description": f"{d.code} {d.message}",
+                    "categories": ["Bug Risk"] if d.severity is Severity.ERROR else ["Style"],
+                    "severity": SEVERITIES[d.severity],
+                    "fingerprint": fingerprint(d.path, d.code, anchor, seen[key]),
+                    "location": {"path": d.path, "lines": {"begin": d.line, "end": d.end_line}},
+                }
+            )
     return found
 
 

@@ -29,7 +29,13 @@ def diagnostic_dict(d: Diagnostic, docs_url: str | None = None) -> dict:
         "parameter": d.parameter,
         "p_axis": d.p_axis,
         "related": [
-            {"path": r.path, "line": r.line, "column": r.column, "parameter": r.parameter, "message": r.message}
+            {
+                "path": r.path,
+                "line": r.line,
+                "column": r.column,
+                "parameter": r.parameter,
+                "message": r.message,
+            }
             for r in d.related
         ],
         "fix": fix,
@@ -87,37 +93,74 @@ SCHEMA = {
     "$defs": {
         "diagnostic": {
             "type": "object",
-            "required": ["path", "line", "column", "end_line", "end_column", "code", "severity", "message",
-                         "parameter", "p_axis", "related", "fix", "url"],
+            "required": [
+                "path",
+                "line",
+                "column",
+                "end_line",
+                "end_column",
+                "code",
+                "severity",
+                "message",
+                "parameter",
+                "p_axis",
+                "related",
+                "fix",
+                "url",
+            ],
             "properties": {
                 "path": {"type": "string"},
-                "line": _POSITION, "column": _POSITION, "end_line": _POSITION, "end_column": _POSITION,
+                "line": _POSITION,
+                "column": _POSITION,
+                "end_line": _POSITION,
+                "end_column": _POSITION,
                 "code": {"type": "string", "pattern": "^LIS[0-9]{3}$"},
                 "severity": {"enum": ["error", "warning", "info"]},
                 "message": {"type": "string", "minLength": 1},
                 "parameter": _TEXT_OR_NULL,
                 "p_axis": {"type": ["string", "null"], "pattern": "^P-AXIS-[0-9]{5}$"},
-                "related": {"type": "array", "items": {
-                    "type": "object",
-                    "required": ["path", "line", "column", "parameter", "message"],
-                    "properties": {"path": {"type": "string"}, "line": _POSITION, "column": _POSITION,
-                                   "parameter": _TEXT_OR_NULL, "message": {"type": "string"}},
-                }},
-                "fix": {"oneOf": [{"type": "null"}, {
-                    "type": "object",
-                    "required": ["applicability", "description", "remove_bom", "edits"],
-                    "properties": {
-                        "applicability": {"enum": ["safe", "unsafe"]},
-                        "description": {"type": "string"},
-                        "remove_bom": {"type": "boolean"},
-                        "edits": {"type": "array", "items": {
-                            "type": "object",
-                            "required": ["line", "column", "end_line", "end_column", "content"],
-                            "properties": {"line": _POSITION, "column": _POSITION, "end_line": _POSITION,
-                                           "end_column": _POSITION, "content": {"type": "string"}},
-                        }},
+                "related": {
+                    "type": "array",
+                    "items": {
+                        "type": "object",
+                        "required": ["path", "line", "column", "parameter", "message"],
+                        "properties": {
+                            "path": {"type": "string"},
+                            "line": _POSITION,
+                            "column": _POSITION,
+                            "parameter": _TEXT_OR_NULL,
+                            "message": {"type": "string"},
+                        },
                     },
-                }]},
+                },
+                "fix": {
+                    "oneOf": [
+                        {"type": "null"},
+                        {
+                            "type": "object",
+                            "required": ["applicability", "description", "remove_bom", "edits"],
+                            "properties": {
+                                "applicability": {"enum": ["safe", "unsafe"]},
+                                "description": {"type": "string"},
+                                "remove_bom": {"type": "boolean"},
+                                "edits": {
+                                    "type": "array",
+                                    "items": {
+                                        "type": "object",
+                                        "required": ["line", "column", "end_line", "end_column", "content"],
+                                        "properties": {
+                                            "line": _POSITION,
+                                            "column": _POSITION,
+                                            "end_line": _POSITION,
+                                            "end_column": _POSITION,
+                                            "content": {"type": "string"},
+                                        },
+                                    },
+                                },
+                            },
+                        },
+                    ]
+                },
                 "url": {"type": "string", "format": "uri"},
             },
         },

@@ -32,11 +32,15 @@ def document(results) -> ET.Element:
             failed = 0
             threshold = Severity(result.fail_on).rank
             for d in result.diagnostics:
-                case = ET.SubElement(suite, "testcase", classname=name, name=f"{d.code} line {d.line}:{d.column}")
+                case = ET.SubElement(
+                    suite, "testcase", classname=name, name=f"{d.code} line {d.line}:{d.column}"
+                )
                 message = printable(d.message)
                 text = f"{printable(d.path)}:{d.line}:{d.column}: {d.code} [{d.severity.value}] {message}"
                 if d.severity.rank >= threshold:
-                    failure = ET.SubElement(case, "failure", message=message, type=f"{d.code} ({d.severity.value})")
+                    failure = ET.SubElement(
+                        case, "failure", message=message, type=f"{d.code} ({d.severity.value})"
+                    )
                     failure.text = text
                     failed += 1
                 else:

@@ -26,13 +26,20 @@ def artifact_uri(path: str) -> str:
 
 
 def _region(line: int, column: int, end_line: int, end_column: int) -> dict:
-    return {"startLine": line, "startColumn": column, "endLine": end_line, "endColumn": max(end_column, column)}
+    return {
+        "startLine": line,
+        "startColumn": column,
+        "endLine": end_line,
+        "endColumn": max(end_column, column),
+    }
 
 
 def _fingerprint(d) -> str:
     """Stable across runs and line shifts: the rule, the file and what the finding is about."""
     subject = d.parameter or d.message
-    return hashlib.sha256(f"{d.code}\0{d.path}\0{subject}".encode("utf-8", "backslashreplace")).hexdigest()[:32]
+    return hashlib.sha256(f"{d.code}\0{d.path}\0{subject}".encode("utf-8", "backslashreplace")).hexdigest()[
+        :32
+    ]
 
 
 def _rules(docs_url: str | None) -> list[dict]:
@@ -41,16 +48,18 @@ def _rules(docs_url: str | None) -> list[dict]:
 
     rules = []
     for rule in registry().values():
-        rules.append({
-            "id": rule.code,
-            "name": rule.name,
-            "shortDescription": {"text": rule.summary},
-            "fullDescription": {"text": rule.section("What") or rule.summary},
-            "help": {"text": rule_text(rule), "markdown": rule_text(rule)},
-            "helpUri": rule_url(rule.code, docs_url),
-            "defaultConfiguration": {"level": LEVELS[rule.severity]},
-            "properties": {"fix": rule.fix},
-        })
+        rules.append(
+            {
+                "id": rule.code,
+                "name": rule.name,
+                "shortDescription": {"text": rule.summary},
+                "fullDescription": {"text": rule.section("What") or rule.summary},
+                "help": {"text": rule_text(rule), "markdown": rule_text(rule)},
+                "helpUri": rule_url(rule.code, docs_url),
+                "defaultConfiguration": {"level": LEVELS[rule.severity]},
+                "properties": {"fix": rule.fix},
+            }
+        )
     return rules
 
 
@@ -65,13 +74,19 @@ def document(results, docs_url: str | None = None) -> dict:
                 "ruleIndex": index.get(d.code, -1),
                 "level": LEVELS[d.severity],
                 "message": {"text": d.message},
-                "locations": [{
-                    "physicalLocation": {
-                        "artifactLocation": {"uri": artifact_uri(d.path)},
-                        "region": _region(d.line, d.column, d.end_line, d.end_column),
-                    },
-                    **({"logicalLocations": [{"name": d.parameter, "kind": "variable"}]} if d.parameter else {}),
-                }],
+                "locations": [
+                    {
+                        "physicalLocation": {
+                            "artifactLocation": {"uri": artifact_uri(d.path)},
+                            "region": _region(d.line, d.column, d.end_line, d.end_column),
+                        },
+                        **(
+                            {"logicalLocations": [{"name": d.parameter, "kind": "variable"}]}
+                            if d.parameter
+                            else {}
+                        ),
+                    }
+                ],
                 "partialFingerprints": {"achslint/v1": _fingerprint(d)},
             }
             if d.related:
@@ -96,16 +111,20 @@ def document(results, docs_url: str | None = None) -> dict:
     return {
         "$schema": SCHEMA,
         "version": "2.1.0",
-        "runs": [{
-            "tool": {"driver": {
-                "name": "achslint",
-                "version": __version__,
-                "informationUri": rule_url("index", docs_url).split("#", 1)[0],
-                "rules": rules,
-            }},
-            "invocations": [invocation],
-            "results": sarif_results,
-        }],
+        "runs": [
+            {
+                "tool": {
+                    "driver": {
+                        "name": "achslint",
+                        "version": __version__,
+                        "informationUri": rule_url("index", docs_url).split("#", 1)[0],
+                        "rules": rules,
+                    }
+                },
+                "invocations": [invocation],
+                "results": sarif_results,
+            }
+        ],
     }
 
 

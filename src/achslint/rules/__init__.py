@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import importlib
 import re
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from types import ModuleType
-from typing import Callable, Iterable
 
 from ..diagnostics import Severity
 
@@ -138,7 +138,9 @@ def selector_problem(selector: str) -> str | None:
 
 
 def _picks_some(code: str) -> bool:
-    return code == "ALL" or bool(re.fullmatch(r"LIS[0-9]*", code)) and any(c.startswith(code) for c in known_codes())
+    return code == "ALL" or (
+        bool(re.fullmatch(r"LIS[0-9]*", code)) and any(c.startswith(code) for c in known_codes())
+    )
 
 
 def _closest(code: str) -> str:

@@ -6,8 +6,15 @@ from ..catalogue import BOOL, INTEGER, REAL, SYMBOL
 from ..diagnostics import Edit, Fix
 
 
-def value_facts(ctx, code: str, kinds: tuple[type, ...], message, replacement=None, applicability: str = "safe",
-                to_line_end: bool = False):
+def value_facts(
+    ctx,
+    code: str,
+    kinds: tuple[type, ...],
+    message,
+    replacement=None,
+    applicability: str = "safe",
+    to_line_end: bool = False,
+):
     """Report every fact of the given kinds that the conversion stage recorded for a value.
 
     `message(fact, setting)` words the finding; `replacement(fact)`, when given and not None, is a value
@@ -25,9 +32,14 @@ def value_facts(ctx, code: str, kinds: tuple[type, ...], message, replacement=No
             new = replacement(fact) if replacement is not None else None
             fix = None
             if new is not None and line.value is not None:
-                fix = Fix(applicability, f"replace `{line.value}` with `{new}`",
-                          (Edit(line.number, start, line.number, start + len(line.value), new),))
-            yield ctx.report(code, line, message(fact, setting), column=start, end_column=end, setting=setting, fix=fix)
+                fix = Fix(
+                    applicability,
+                    f"replace `{line.value}` with `{new}`",
+                    (Edit(line.number, start, line.number, start + len(line.value), new),),
+                )
+            yield ctx.report(
+                code, line, message(fact, setting), column=start, end_column=end, setting=setting, fix=fix
+            )
 
 
 def expected(parameter) -> str:

@@ -82,17 +82,23 @@ def check(ctx):
         if not line.path_ok:
             start, end = ctx.path_span(line)
             yield ctx.report(
-                CODE, line, f"syntax error in `{line.path}`: {explain_bad_path(line.path)}",
-                column=start, end_column=end,
+                CODE,
+                line,
+                f"syntax error in `{line.path}`: {explain_bad_path(line.path)}",
+                column=start,
+                end_column=end,
             )
         elif line.value_kind == syntax.BAD_STRING:
             start = line.value_column
             closing = line.value.find('"', 1)
             if closing < 0:
-                reason = "the double quote is never closed; add the closing `\"`"
+                reason = 'the double quote is never closed; add the closing `"`'
             else:
-                reason = "text follows the closing `\"` without a blank; put a space or `(` before the comment"
+                reason = 'text follows the closing `"` without a blank; put a space or `(` before the comment'
             yield ctx.report(
-                CODE, line, f"syntax error in the value of `{line.path}`: {reason}",
-                column=start, end_column=start + len(line.value),
+                CODE,
+                line,
+                f"syntax error in the value of `{line.path}`: {reason}",
+                column=start,
+                end_column=start + len(line.value),
             )

@@ -50,9 +50,14 @@ def check(ctx):
     if last.body == "":
         edit = Edit(last.number, 1, last.number, 1, "Ende" + ctx.newline)
     else:
-        edit = Edit(last.number, last.end_column, last.number, last.end_column, ctx.newline + "Ende" + ctx.newline)
+        edit = Edit(
+            last.number, last.end_column, last.number, last.end_column, ctx.newline + "Ende" + ctx.newline
+        )
     yield ctx.report(
-        CODE, last, "the list has no `Ende` line; add `Ende` as the last line",
-        column=1, end_column=max(last.end_column, 2),
+        CODE,
+        last,
+        "the list has no `Ende` line; add `Ende` as the last line",
+        column=1,
+        end_column=max(last.end_column, 2),
         fix=Fix("safe", "append the end marker `Ende`", (edit,)),
     )

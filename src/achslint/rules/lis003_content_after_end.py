@@ -46,7 +46,7 @@ def check(ctx):
     end = ctx.file.end_index
     if end is None:
         return
-    ignored = [line for line in ctx.file.lines[end + 1:] if line.kind == syntax.ASSIGNMENT]
+    ignored = [line for line in ctx.file.lines[end + 1 :] if line.kind == syntax.ASSIGNMENT]
     if not ignored:
         return
     marker = ctx.file.lines[end]
@@ -54,9 +54,11 @@ def check(ctx):
     count = len(ignored)
     noun = "line" if count == 1 else "lines"
     yield ctx.report(
-        CODE, first,
+        CODE,
+        first,
         f"{count} parameter {noun} after `Ende` (line {marker.number}) {'is' if count == 1 else 'are'} ignored by "
         f"the CNC; move {'it' if count == 1 else 'them'} above `Ende` or delete {'it' if count == 1 else 'them'}",
-        end_line=last.number, end_column=last.end_column,
+        end_line=last.number,
+        end_column=last.end_column,
         related=(Related(ctx.name, marker.number, marker.path_column, None, "end marker"),),
     )

@@ -47,7 +47,14 @@ def check(ctx):
         if syntax.is_misspelt_end(line):
             start, end = ctx.path_span(line)
             yield ctx.report(
-                CODE, line, f"`{line.path}` is not the end marker; the CNC only recognises `Ende`",
-                column=start, end_column=end,
-                fix=Fix("safe", f"replace `{line.path}` with `Ende`", (Edit(line.number, start, line.number, end, "Ende"),)),
+                CODE,
+                line,
+                f"`{line.path}` is not the end marker; the CNC only recognises `Ende`",
+                column=start,
+                end_column=end,
+                fix=Fix(
+                    "safe",
+                    f"replace `{line.path}` with `Ende`",
+                    (Edit(line.number, start, line.number, end, "Ende"),),
+                ),
             )

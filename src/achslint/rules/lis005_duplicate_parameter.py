@@ -52,9 +52,11 @@ def check(ctx):
         first = group[0]
         # Shared by every repetition of this parameter: a list repeated n times stays small.
         related = (ctx.related(first, "first assignment"),)
-        same = (f"`{canonical}` is assigned again with the same value (first on line {first.line.number}); "
-                f"delete the repetition")
-        for setting, key in zip(group[1:], keys[1:]):
+        same = (
+            f"`{canonical}` is assigned again with the same value (first on line {first.line.number}); "
+            f"delete the repetition"
+        )
+        for setting, key in zip(group[1:], keys[1:], strict=False):
             differs = key != keys[0]
             if differs:
                 message = (
@@ -66,6 +68,11 @@ def check(ctx):
                 message = same
             start, end = ctx.path_span(setting.line)
             yield ctx.report(
-                CODE, setting.line, message, column=start, end_column=end, setting=setting,
+                CODE,
+                setting.line,
+                message,
+                column=start,
+                end_column=end,
+                setting=setting,
                 related=related,
             )

@@ -49,7 +49,10 @@ def check(ctx):
     if ctx.file.bom:
         first = ctx.file.lines[0]
         yield ctx.report(
-            CODE, first, "the file starts with a UTF-8 byte-order mark, which the CNC rejects; save it without BOM",
-            column=1, end_column=2,
+            CODE,
+            first,
+            "the file starts with a UTF-8 byte-order mark, which the CNC rejects; save it without BOM",
+            column=1,
+            end_column=2,
             fix=Fix("safe", "remove the byte-order mark", remove_bom=True),
         )

@@ -47,11 +47,15 @@ FACTS = (CommentReadAsValue, TextAfterString)
 def message(fact, setting) -> str:
     name = setting.canonical
     if isinstance(fact, CommentReadAsValue):
-        return (f"`{name}` is a string parameter: the CNC reads `{fact.text}` as its value, not as a comment "
-                f"(after a string only `(` starts a comment); to leave it empty write nothing after the name "
-                f"or start the comment with `(`")
-    return (f"text `{fact.text}` after the string value of `{name}` is not a `(` comment; the CNC reads it "
-            f"as part of the value or rejects the line; start the comment with `(`")
+        return (
+            f"`{name}` is a string parameter: the CNC reads `{fact.text}` as its value, not as a comment "
+            f"(after a string only `(` starts a comment); to leave it empty write nothing after the name "
+            f"or start the comment with `(`"
+        )
+    return (
+        f"text `{fact.text}` after the string value of `{name}` is not a `(` comment; the CNC reads it "
+        f"as part of the value or rejects the line; start the comment with `(`"
+    )
 
 
 def check(ctx):

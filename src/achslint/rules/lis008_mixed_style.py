@@ -60,8 +60,11 @@ def check(ctx):
         odd = next(line for line in lines if line.newline and line.newline != usual)
         summary = ", ".join(f"{count} {_NAMES[nl]}" for nl, count in endings.most_common())
         yield ctx.report(
-            CODE, odd, f"mixed line endings ({summary}); this line ends with {_NAMES[odd.newline]}",
-            column=odd.end_column, end_column=odd.end_column + 1,
+            CODE,
+            odd,
+            f"mixed line endings ({summary}); this line ends with {_NAMES[odd.newline]}",
+            column=odd.end_column,
+            end_column=odd.end_column + 1,
         )
     styles: dict[str, list[syntax.Line]] = {"tab": [], "space": []}
     for line in lines:
@@ -72,8 +75,10 @@ def check(ctx):
         kind = "tabs" if minority is styles["tab"] else "spaces"
         odd = minority[0]
         yield ctx.report(
-            CODE, odd,
+            CODE,
+            odd,
             f"{len(styles['tab'])} lines separate name and value with tabs, {len(styles['space'])} with spaces; "
             f"this line uses {kind}",
-            column=odd.path_column + len(odd.path), end_column=odd.value_column,
+            column=odd.path_column + len(odd.path),
+            end_column=odd.value_column,
         )

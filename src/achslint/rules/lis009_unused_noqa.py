@@ -54,12 +54,22 @@ def check_after(ctx, directives, enabled):
                 problem = selector_problem(code)
                 # The did-you-mean part; a prefix (`LIS3`) picks rules elsewhere but is no code for noqa.
                 hint = problem.split("; ", 1)[1] if problem else "noqa takes full codes such as LIS302"
-                yield _report(ctx, directive, f"`noqa` names the unknown code `{code}`, which suppresses nothing; {hint}")
-        unused = [code for code in directive.codes if code in known and code not in directive.used and enabled(code)]
+                yield _report(
+                    ctx,
+                    directive,
+                    f"`noqa` names the unknown code `{code}`, which suppresses nothing; {hint}",
+                )
+        unused = [
+            code for code in directive.codes if code in known and code not in directive.used and enabled(code)
+        ]
         if unused:
             where = "in this file" if directive.file_level else "on this line"
-            yield _report(ctx, directive, f"`noqa` for {', '.join(unused)} suppresses nothing {where}; remove "
-                                          f"{'it' if len(unused) == len(directive.codes) else 'those codes'}")
+            yield _report(
+                ctx,
+                directive,
+                f"`noqa` for {', '.join(unused)} suppresses nothing {where}; remove "
+                f"{'it' if len(unused) == len(directive.codes) else 'those codes'}",
+            )
 
 
 def _report(ctx, directive, message):

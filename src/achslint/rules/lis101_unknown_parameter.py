@@ -65,7 +65,11 @@ def _diagnose(ctx, setting):
     pattern, indices = syntax.path_pattern(path)
     if setting.misspelt:
         target = setting.resolution.canonical
-        return f"unknown parameter `{path}` (a spelling found in manuals); the CNC name is `{target}`", target, "safe"
+        return (
+            f"unknown parameter `{path}` (a spelling found in manuals); the CNC name is `{target}`",
+            target,
+            "safe",
+        )
     shape = cat.by_unindexed.get(pattern.replace("[i]", ""))
     if shape and len(shape) == 1:
         right = shape[0].path

@@ -44,9 +44,12 @@ def check(ctx):
             line = setting.line
             start, end = ctx.path_span(line)
             yield ctx.report(
-                CODE, line,
+                CODE,
+                line,
                 f"`{line.path}` is the old name of {setting.parameter.id} `{setting.canonical}`; "
                 f"it still works, but prefer the current name",
-                column=start, end_column=end, setting=setting,
+                column=start,
+                end_column=end,
+                setting=setting,
                 fix=replace_path_fix(line, setting.canonical, "safe"),
             )

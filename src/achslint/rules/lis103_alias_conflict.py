@@ -51,10 +51,13 @@ def check(ctx):
                 continue
             start, end = ctx.path_span(setting.line)
             yield ctx.report(
-                CODE, setting.line,
+                CODE,
+                setting.line,
                 f"`{setting.line.path}` = `{setting.written_value}` contradicts `{first.line.path}` = "
                 f"`{first.written_value}` on line {first.line.number}; both set {setting.parameter.id} "
                 f"`{canonical}`, keep one",
-                column=start, end_column=end, setting=setting,
+                column=start,
+                end_column=end,
+                setting=setting,
                 related=(ctx.related(first, "first assignment"),),
             )

@@ -42,8 +42,10 @@ FACTS = (IndexOutOfBounds,)
 
 def message(fact: IndexOutOfBounds, setting) -> str:
     shown = fact.index if fact.index is not None else f"`{fact.written}`"
-    return (f"index {shown} of `{fact.array}` in `{setting.line.path}` is out of bounds: {setting.parameter.id} allows "
-            f"{fact.array}[{fact.low}]..{fact.array}[{fact.high}] (indices are zero-based)")
+    return (
+        f"index {shown} of `{fact.array}` in `{setting.line.path}` is out of bounds: {setting.parameter.id} allows "
+        f"{fact.array}[{fact.low}]..{fact.array}[{fact.high}] (indices are zero-based)"
+    )
 
 
 def check(ctx):

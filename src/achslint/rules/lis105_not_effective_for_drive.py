@@ -72,16 +72,26 @@ def check(ctx):
         if drive is not None and parameter.drive_group and drive not in parameter.drive_group:
             wanted = ", ".join(names.get(code, str(code)) for code in parameter.drive_group)
             yield ctx.report(
-                CODE, line,
+                CODE,
+                line,
                 f"`{setting.canonical}` only takes effect with drive type {wanted}; this axis has "
                 f"kenngr.antr_typ {drive} ({names.get(drive, 'unknown')})",
-                column=start, end_column=end, setting=setting,
+                column=start,
+                end_column=end,
+                setting=setting,
             )
-        elif analysis.axis_type_known and parameter.axis_types and analysis.axis_type not in parameter.axis_types:
+        elif (
+            analysis.axis_type_known
+            and parameter.axis_types
+            and analysis.axis_type not in parameter.axis_types
+        ):
             wanted = ", ".join(AXIS_TYPE_NAMES[a] for a in parameter.axis_types)
             yield ctx.report(
-                CODE, line,
+                CODE,
+                line,
                 f"`{setting.canonical}` only takes effect on {wanted} axes; this axis is a "
                 f"{AXIS_TYPE_NAMES[analysis.axis_type]} axis (kenngr.achs_typ)",
-                column=start, end_column=end, setting=setting,
+                column=start,
+                end_column=end,
+                setting=setting,
             )

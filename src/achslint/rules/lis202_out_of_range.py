@@ -60,10 +60,15 @@ def message(fact, setting) -> str:
         return f"`{name}` = {fact.number} is not an accepted value; accepted: {', '.join(map(str, fact.accepted))}"
     if isinstance(fact, NotPositive):
         return f"`{name}` = {describe(fact.number, fact.unit)} must be greater than 0"
-    side, bound, least = ("below the minimum", fact.low, "at least") if fact.low is not None else (
-        "above the maximum", fact.high, "at most")
-    return (f"`{name}` = {describe(fact.number, fact.unit)} is {side} {describe(bound, fact.unit)}"
-            f"{_range_hint(parameter)}; use a value of {least} {_plain(bound)}")
+    side, bound, least = (
+        ("below the minimum", fact.low, "at least")
+        if fact.low is not None
+        else ("above the maximum", fact.high, "at most")
+    )
+    return (
+        f"`{name}` = {describe(fact.number, fact.unit)} is {side} {describe(bound, fact.unit)}"
+        f"{_range_hint(parameter)}; use a value of {least} {_plain(bound)}"
+    )
 
 
 def _plain(value: float) -> str:

@@ -71,7 +71,11 @@ def check(ctx):
             line = setting.line
             start, end = ctx.value_span(line)
             yield ctx.report(
-                CODE, line,
-                f"`kenngr.achs_mode` {line.value} ({' | '.join(names) or 'no known bit'}): " + "; ".join(problems),
-                column=start, end_column=end, setting=setting,
+                CODE,
+                line,
+                f"`kenngr.achs_mode` {line.value} ({' | '.join(names) or 'no known bit'}): "
+                + "; ".join(problems),
+                column=start,
+                end_column=end,
+                setting=setting,
             )

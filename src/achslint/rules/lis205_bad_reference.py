@@ -55,11 +55,15 @@ def message(fact: BadReference, setting) -> str:
     if fact.reason == "itself":
         return f"`{name}` refers to itself ({reference}); write a value instead"
     if fact.reason == "kind":
-        return (f"`{name}` ({parameter.type}) refers to {target} `{fact.target_path}`, which is {fact.target_type}; "
-                f"a reference must name a parameter of the same kind")
+        return (
+            f"`{name}` ({parameter.type}) refers to {target} `{fact.target_path}`, which is {fact.target_type}; "
+            f"a reference must name a parameter of the same kind"
+        )
     if fact.reason == "unit":
-        return (f"`{name}` is in {unit_label(fact.own_unit) or 'no unit'} but refers to {target} `{fact.target_path}` "
-                f"in {unit_label(fact.target_unit) or 'no unit'}; the CNC rejects references with different units")
+        return (
+            f"`{name}` is in {unit_label(fact.own_unit) or 'no unit'} but refers to {target} `{fact.target_path}` "
+            f"in {unit_label(fact.target_unit) or 'no unit'}; the CNC rejects references with different units"
+        )
     return f"`{name}` refers to {reference}, but {target} has indices {fact.low}..{fact.high} only"
 
 

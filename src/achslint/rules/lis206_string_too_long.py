@@ -41,8 +41,10 @@ FACTS = (TooLong,)
 
 
 def message(fact: TooLong, setting) -> str:
-    return (f"`{setting.canonical}` is {fact.length} characters long; the CNC stores at most "
-            f"{fact.max_length} characters for this parameter, shorten the value")
+    return (
+        f"`{setting.canonical}` is {fact.length} characters long; the CNC stores at most "
+        f"{fact.max_length} characters for this parameter, shorten the value"
+    )
 
 
 def check(ctx):

@@ -45,11 +45,19 @@ CODE = "LIS303"
 NAME = "refmax-above-limits"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("getriebe[i].vb_refmax", "getriebe[i].vb_reflow", "getriebe[i].dynamik.vb_max",
-              "getriebe[i].vb_not_referenced", "getriebe[i].homing.torq_move_velocity")  # parameters this rule reads
+PARAMETERS = (
+    "getriebe[i].vb_refmax",
+    "getriebe[i].vb_reflow",
+    "getriebe[i].dynamik.vb_max",
+    "getriebe[i].vb_not_referenced",
+    "getriebe[i].homing.torq_move_velocity",
+)  # parameters this rule reads
 SUMMARY = "Homing speed above `vb_max` or above `vb_not_referenced` (lowered by the CNC)"
 
-_ABOVE_MAX = (("vb_refmax", "fast homing speed", "P-ERR-110147"), ("vb_reflow", "slow homing speed", "P-ERR-110148"))
+_ABOVE_MAX = (
+    ("vb_refmax", "fast homing speed", "P-ERR-110147"),
+    ("vb_reflow", "slow homing speed", "P-ERR-110148"),
+)
 
 
 def check(ctx):
@@ -70,5 +78,9 @@ def check(ctx):
         for member, _ in CAPPED_SPEEDS:
             path = f"getriebe[{gear}].{member}"
             correction = ctx.correction(path)
-            if correction is not None and values.written(path) <= values.get(f"getriebe[{gear}].dynamik.vb_max"):
-                yield ctx.report_correction(CODE, correction, f"gear stage {gear}: {ctx.show(path)}", [path, unref])
+            if correction is not None and values.written(path) <= values.get(
+                f"getriebe[{gear}].dynamik.vb_max"
+            ):
+                yield ctx.report_correction(
+                    CODE, correction, f"gear stage {gear}: {ctx.show(path)}", [path, unref]
+                )

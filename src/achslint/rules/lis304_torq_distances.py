@@ -46,7 +46,10 @@ CODE = "LIS304"
 NAME = "torq-distances"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.homing.torq_min_distance", "kenngr.homing.torq_max_distance")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.homing.torq_min_distance",
+    "kenngr.homing.torq_max_distance",
+)  # parameters this rule reads
 SUMMARY = "`torq_min_distance` not below `torq_max_distance`"
 
 MIN, MAX = "kenngr.homing.torq_min_distance", "kenngr.homing.torq_max_distance"

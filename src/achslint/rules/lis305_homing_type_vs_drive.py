@@ -49,5 +49,11 @@ def check(ctx):
     if correction is None:
         return
     values = ctx.values
-    unset = "" if values.drive_type_known else " (kenngr.antr_typ is not set, so the CNC's default drive type counts)"
-    yield ctx.report_correction(CODE, correction, f"`{TYPE}` {correction.written}{unset}", [TYPE, "kenngr.antr_typ"])
+    unset = (
+        ""
+        if values.drive_type_known
+        else " (kenngr.antr_typ is not set, so the CNC's default drive type counts)"
+    )
+    yield ctx.report_correction(
+        CODE, correction, f"`{TYPE}` {correction.written}{unset}", [TYPE, "kenngr.antr_typ"]
+    )

@@ -40,7 +40,12 @@ CODE = "LIS309"
 NAME = "homing-max-movement-dist"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.homing_max_movement_dist", "kenngr.achs_typ", "getriebe[i].moduloo", "getriebe[i].modulou")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.homing_max_movement_dist",
+    "kenngr.achs_typ",
+    "getriebe[i].moduloo",
+    "getriebe[i].modulou",
+)  # parameters this rule reads
 SUMMARY = "Homing path monitoring on a linear axis or shorter than the modulo range"
 
 DIST = "kenngr.homing_max_movement_dist"
@@ -50,9 +55,12 @@ def check(ctx):
     values = ctx.values
     correction = ctx.correction(DIST)
     if correction is not None:
-        assumed = "" if values.is_set("kenngr.achs_typ") else " (kenngr.achs_typ is not set, so the axis is linear)"
-        yield ctx.report_correction(CODE, correction, f"{ctx.show(DIST)} on a linear axis{assumed}",
-                                    [DIST, "kenngr.achs_typ"])
+        assumed = (
+            "" if values.is_set("kenngr.achs_typ") else " (kenngr.achs_typ is not set, so the axis is linear)"
+        )
+        yield ctx.report_correction(
+            CODE, correction, f"{ctx.show(DIST)} on a linear axis{assumed}", [DIST, "kenngr.achs_typ"]
+        )
         return
     limit = values.get(DIST)
     if not limit or values.axis_type == "T" or not ctx.effective(DIST):

@@ -42,7 +42,11 @@ CODE = "LIS310"
 NAME = "reference-check"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("antr.reference_check.element_name", "antr.reference_check.bit_nr", "kenngr.antr_typ")  # parameters this rule reads
+PARAMETERS = (
+    "antr.reference_check.element_name",
+    "antr.reference_check.bit_nr",
+    "kenngr.antr_typ",
+)  # parameters this rule reads
 SUMMARY = "Reference monitoring on a non-SERCOS drive or with an invalid bit"
 
 NAME_PATH, BIT_PATH = "antr.reference_check.element_name", "antr.reference_check.bit_nr"
@@ -55,10 +59,13 @@ def _element_bytes(ctx, element: str) -> int | None:
         return 2
     values = ctx.values
     for setting in ctx.settings:
-        if setting.known and re.fullmatch(r"antr\.sercos\.at\[\d+\]\.nc_ref", setting.canonical or ""):
-            if setting.value == element:
-                length_path = setting.canonical.replace(".nc_ref", ".ident_len")
-                return int(values.get(length_path)) or None
+        if (
+            setting.known
+            and re.fullmatch(r"antr\.sercos\.at\[\d+\]\.nc_ref", setting.canonical or "")
+            and setting.value == element
+        ):
+            length_path = setting.canonical.replace(".nc_ref", ".ident_len")
+            return int(values.get(length_path)) or None
     return None
 
 
@@ -71,15 +78,23 @@ def check(ctx):
     paths = [NAME_PATH, BIT_PATH]
     correction = ctx.correction(NAME_PATH)
     if correction is not None:
-        yield ctx.report_correction(CODE, correction, f"{ctx.show(NAME_PATH)}", paths + ["kenngr.antr_typ"])
+        yield ctx.report_correction(CODE, correction, f"{ctx.show(NAME_PATH)}", [*paths, "kenngr.antr_typ"])
         return
     if not element:
-        yield ctx.cross(CODE, f"{ctx.show(BIT_PATH)} is set but no element name: name the telegram element "
-                              f"(`{STATUS_WORD}` for the status word) in {NAME_PATH}", paths)
+        yield ctx.cross(
+            CODE,
+            f"{ctx.show(BIT_PATH)} is set but no element name: name the telegram element "
+            f"(`{STATUS_WORD}` for the status word) in {NAME_PATH}",
+            paths,
+        )
         return
     if bit == -1:
-        yield ctx.cross(CODE, f"{ctx.show(NAME_PATH)} switches reference monitoring on, but {BIT_PATH} is not set; "
-                              "give the bit number of the 'drive is referenced' signal (P-ERR-110549)", paths)
+        yield ctx.cross(
+            CODE,
+            f"{ctx.show(NAME_PATH)} switches reference monitoring on, but {BIT_PATH} is not set; "
+            "give the bit number of the 'drive is referenced' signal (P-ERR-110549)",
+            paths,
+        )
         return
     size = _element_bytes(ctx, element)
     if size and not 0 <= bit <= size * 8 - 1:

@@ -46,7 +46,12 @@ CODE = "LIS311"
 NAME = "encoder-overflow"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.homing_overflow_evaluation", "kenngr.homing_without_zero_pulse", "antr.encoder_bit_range", "antr.encoder_overflow_offset")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.homing_overflow_evaluation",
+    "kenngr.homing_without_zero_pulse",
+    "antr.encoder_bit_range",
+    "antr.encoder_overflow_offset",
+)  # parameters this rule reads
 SUMMARY = "Encoder-overflow homing that cannot work"
 
 SELECT, NO_PULSE = "kenngr.homing_overflow_evaluation", "kenngr.homing_without_zero_pulse"

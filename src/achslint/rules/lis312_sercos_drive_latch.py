@@ -46,10 +46,18 @@ CODE = "LIS312"
 NAME = "sercos-drive-latch"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("antr.sercos.drive_supports_cnc_homing", "antr.cnc_homing_encoder", "antr.sercos.cnc_homing_rt_bit_layout")  # parameters this rule reads
+PARAMETERS = (
+    "antr.sercos.drive_supports_cnc_homing",
+    "antr.cnc_homing_encoder",
+    "antr.sercos.cnc_homing_rt_bit_layout",
+)  # parameters this rule reads
 SUMMARY = "Drive-supported CNC homing (S-0-146) configured inconsistently"
 
-LATCH, ENCODER, LAYOUT = "antr.sercos.drive_supports_cnc_homing", "antr.cnc_homing_encoder", "antr.sercos.cnc_homing_rt_bit_layout"
+LATCH, ENCODER, LAYOUT = (
+    "antr.sercos.drive_supports_cnc_homing",
+    "antr.cnc_homing_encoder",
+    "antr.sercos.cnc_homing_rt_bit_layout",
+)
 
 
 def check(ctx):
@@ -61,8 +69,12 @@ def check(ctx):
     if not values.get(LATCH) or not ctx.effective(LATCH):
         return  # another drive type (LIS105) or a strategy without zero-pulse search (LIS401)
     if not values.get(ENCODER):
-        yield ctx.cross(CODE, f"{ctx.show(LATCH)} but {ctx.show(ENCODER)} (not configured): set 1 (from S-0-147), "
-                              "2 (motor encoder) or 3 (external encoder)", [ENCODER, LATCH])
+        yield ctx.cross(
+            CODE,
+            f"{ctx.show(LATCH)} but {ctx.show(ENCODER)} (not configured): set 1 (from S-0-147), "
+            "2 (motor encoder) or 3 (external encoder)",
+            [ENCODER, LATCH],
+        )
     layout = ctx.correction(LAYOUT)
     if layout is not None:
         yield ctx.report_correction(CODE, layout, ctx.show(LAYOUT), [LAYOUT, LATCH])

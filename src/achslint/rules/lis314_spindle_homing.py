@@ -38,7 +38,12 @@ CODE = "LIS314"
 NAME = "spindle-homing"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.ref_ohne_rev", "kenngr.achs_mode", "kenngr.achs_typ", "kenngr.antr_typ")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.ref_ohne_rev",
+    "kenngr.achs_mode",
+    "kenngr.achs_typ",
+    "kenngr.antr_typ",
+)  # parameters this rule reads
 SUMMARY = "Spindle homing without the settings a spindle needs"
 
 KEINE_AUTO_RPF = 0x100
@@ -56,7 +61,12 @@ def check(ctx):
             ["kenngr.ref_ohne_rev", "kenngr.achs_typ", "kenngr.antr_typ"],
         )
     mode = values.get("kenngr.achs_mode")
-    if drive == 2 and values.homing_type == "DRIVE_CONTROLLED" and isinstance(mode, int) and not mode & KEINE_AUTO_RPF:
+    if (
+        drive == 2
+        and values.homing_type == "DRIVE_CONTROLLED"
+        and isinstance(mode, int)
+        and not mode & KEINE_AUTO_RPF
+    ):
         yield ctx.cross(
             CODE,
             f"a SERCOS spindle with drive-controlled homing needs the KEINE_AUTO_RPF bit (0x100) in "

@@ -51,13 +51,28 @@ CODE = "LIS315"
 NAME = "fixed-stop-setup"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.homing.torq_detect_time", "kenngr.homing.torq_detect_pos_lag_limit", "kenngr.homing.torq_detect_velocity_limit", "kenngr.homing.torq_detect_torque_limit", "kenngr.homing.torq_distance_to_block", "getriebe[i].homing.torq_move_velocity", "getriebe[i].homing.torq_move_acceleration")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.homing.torq_detect_time",
+    "kenngr.homing.torq_detect_pos_lag_limit",
+    "kenngr.homing.torq_detect_velocity_limit",
+    "kenngr.homing.torq_detect_torque_limit",
+    "kenngr.homing.torq_distance_to_block",
+    "getriebe[i].homing.torq_move_velocity",
+    "getriebe[i].homing.torq_move_acceleration",
+)  # parameters this rule reads
 SUMMARY = "Fixed-stop homing without a detection criterion or with impossible move values"
 
-SPECIFIC = ["kenngr.homing.torq_detect_time", "kenngr.homing.torq_detect_pos_lag_limit",
-            "kenngr.homing.torq_detect_velocity_limit", "kenngr.homing.torq_detect_torque_limit"]
-GENERAL = ["antr.fixed_stop.detect.pos_lag_limit", "antr.fixed_stop.detect.detect_velocity_limit",
-           "antr.fixed_stop.detect.detect_torque_limit"]
+SPECIFIC = [
+    "kenngr.homing.torq_detect_time",
+    "kenngr.homing.torq_detect_pos_lag_limit",
+    "kenngr.homing.torq_detect_velocity_limit",
+    "kenngr.homing.torq_detect_torque_limit",
+]
+GENERAL = [
+    "antr.fixed_stop.detect.pos_lag_limit",
+    "antr.fixed_stop.detect.detect_velocity_limit",
+    "antr.fixed_stop.detect.detect_torque_limit",
+]
 
 
 def _active(path: str, value) -> bool:
@@ -72,7 +87,10 @@ def check(ctx):
     values = ctx.values
     if values.homing_type != "TORQ":
         return
-    stage_criteria = [f"getriebe[{g}].homing.torq_detect_torque_limit" for g in values.gear_stages_set("homing.torq_detect_torque_limit")]
+    stage_criteria = [
+        f"getriebe[{g}].homing.torq_detect_torque_limit"
+        for g in values.gear_stages_set("homing.torq_detect_torque_limit")
+    ]
     criteria = SPECIFIC + stage_criteria + GENERAL
     if not any(_active(p, values.get(p)) for p in criteria):
         yield ctx.cross(
@@ -89,16 +107,35 @@ def check(ctx):
             "(P-AXIS-00822), the distance at which the simulated stop is hit",
             ["kenngr.homing.torq_distance_to_block", "kenngr.antr_typ", "kenngr.homing.homing_type"],
         )
-    for gear in sorted({0} | set(values.gear_stages_set("homing.torq_move_velocity", "homing.torq_move_acceleration",
-                                                         "dynamik.vb_max", "dynamik.a_max"))):
+    for gear in sorted(
+        {0}
+        | set(
+            values.gear_stages_set(
+                "homing.torq_move_velocity",
+                "homing.torq_move_acceleration",
+                "dynamik.vb_max",
+                "dynamik.a_max",
+            )
+        )
+    ):
         speed, vmax = f"getriebe[{gear}].homing.torq_move_velocity", f"getriebe[{gear}].dynamik.vb_max"
         accel, amax = f"getriebe[{gear}].homing.torq_move_acceleration", f"getriebe[{gear}].dynamik.a_max"
-        for path, limit, what, pid in ((speed, vmax, "speed", "P-AXIS-00333"), (accel, amax, "acceleration", "P-AXIS-00334")):
+        for path, limit, what, pid in (
+            (speed, vmax, "speed", "P-AXIS-00333"),
+            (accel, amax, "acceleration", "P-AXIS-00334"),
+        ):
             value = values.written(path)
             if not value:
                 if gear == 0 or values.is_set(path):
-                    yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(path)}: fixed-stop homing needs a move {what} "
-                                          f"of at least 1 ({pid}); without it the axis does not move", [path])
+                    yield ctx.cross(
+                        CODE,
+                        f"gear stage {gear}: {ctx.show(path)}: fixed-stop homing needs a move {what} "
+                        f"of at least 1 ({pid}); without it the axis does not move",
+                        [path],
+                    )
             elif value > values.get(limit):
-                yield ctx.cross(CODE, f"gear stage {gear}: {ctx.show(path)} must not exceed {ctx.show(limit)} "
-                                      f"(§2.3.3.5)", [path, limit])
+                yield ctx.cross(
+                    CODE,
+                    f"gear stage {gear}: {ctx.show(path)} must not exceed {ctx.show(limit)} (§2.3.3.5)",
+                    [path, limit],
+                )

@@ -48,8 +48,11 @@ CODE = "LIS316"
 NAME = "gantry-slave-no-homing"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.gantry_slave_no_homing", "kenngr.homing.torq_retraction_distance",
-              "kenngr.gantry_max_diff_resetable")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.gantry_slave_no_homing",
+    "kenngr.homing.torq_retraction_distance",
+    "kenngr.gantry_max_diff_resetable",
+)  # parameters this rule reads
 SUMMARY = "Gantry slave homing suppression on a spindle"
 
 
@@ -71,11 +74,15 @@ def check_machine(members, startups):
             continue
         line, column = master[1].get("achs_nr_at") or (1, 1)
         yield diagnostic(
-            CODE, (name, info), "gantry_at",
+            CODE,
+            (name, info),
+            "gantry_at",
             f"the gantry master {master[0]} retracts {_length(master[1]['retraction'], master[1])} after its fixed "
             f"stop, not more than this slave's kenngr.gantry_max_diff_resetable {_length(info['resettable'], info)}; "
             "the CNC raises the resettable distance to the retraction distance (P-ERR-70651)",
-            Severity.ERROR, [Related(master[0], line, column, "kenngr.homing.torq_retraction_distance", "master")])
+            Severity.ERROR,
+            [Related(master[0], line, column, "kenngr.homing.torq_retraction_distance", "master")],
+        )
 
 
 def _length(value, info) -> str:

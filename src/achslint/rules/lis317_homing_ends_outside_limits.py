@@ -49,9 +49,15 @@ CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
 SEVERITY = "warning"
 FIX = "none"
-PARAMETERS = ("getriebe[i].pos_refpkt", "kenngr.swe_neg", "kenngr.swe_pos", "getriebe[i].vb_reflow",
-              "getriebe[i].a_ref", "kenngr.homing.torq_homing_position",
-              "kenngr.homing.torq_retraction_distance")  # parameters this rule reads
+PARAMETERS = (
+    "getriebe[i].pos_refpkt",
+    "kenngr.swe_neg",
+    "kenngr.swe_pos",
+    "getriebe[i].vb_reflow",
+    "getriebe[i].a_ref",
+    "kenngr.homing.torq_homing_position",
+    "kenngr.homing.torq_retraction_distance",
+)  # parameters this rule reads
 SUMMARY = "Homing ends outside the software limits (braking or retraction)"
 
 
@@ -67,11 +73,16 @@ def check(ctx):
         # Only the distances matter: put the stop where detection is certain.
         low = values.get("kenngr.homing.torq_min_distance") * 1e-4
         probe.scenario.fixed_stop = probe.scenario.start_position + (
-            1 if values.get("kenngr.homing.torq_homing_dir") else -1) * (low + 1.0)
+            1 if values.get("kenngr.homing.torq_homing_dir") else -1
+        ) * (low + 1.0)
         probe.scenario.limit_switches = (-1e12, 1e12)
     trace = probe.run()
     probe.check_soft_limits(trace)
     for warning in trace.warnings:
         if warning["code"] == CODE:
-            paths = ["kenngr.homing.torq_homing_position"] if strategy.id == "fixed_stop" else [f"getriebe[{strategy.gear}].pos_refpkt"]
-            yield ctx.cross(CODE, warning["message"], paths + ["kenngr.swe_neg", "kenngr.swe_pos"])
+            paths = (
+                ["kenngr.homing.torq_homing_position"]
+                if strategy.id == "fixed_stop"
+                else [f"getriebe[{strategy.gear}].pos_refpkt"]
+            )
+            yield ctx.cross(CODE, warning["message"], [*paths, "kenngr.swe_neg", "kenngr.swe_pos"])

@@ -48,8 +48,12 @@ CODE = "LIS322"
 NAME = "sercos-zero-pulse-without-latch"
 SEVERITY = "error"
 FIX = "none"
-PARAMETERS = ("kenngr.homing_without_zero_pulse", "antr.sercos.drive_supports_cnc_homing",
-              "kenngr.echtzeit_bit_nr", "kenngr.homing_overflow_evaluation")  # parameters this rule reads
+PARAMETERS = (
+    "kenngr.homing_without_zero_pulse",
+    "antr.sercos.drive_supports_cnc_homing",
+    "kenngr.echtzeit_bit_nr",
+    "kenngr.homing_overflow_evaluation",
+)  # parameters this rule reads
 SUMMARY = "SERCOS CNC-controlled homing on a zero pulse nobody latches"
 
 PULSE = "kenngr.homing_without_zero_pulse"
@@ -58,7 +62,11 @@ PULSE = "kenngr.homing_without_zero_pulse"
 def check(ctx):
     values, strategy = ctx.values, ctx.strategy
     setup = strategy.setup
-    if values.drive_type != DriveType.SERCOS or strategy.controlled_by != "cnc" or not strategy.with_zero_pulse:
+    if (
+        values.drive_type != DriveType.SERCOS
+        or strategy.controlled_by != "cnc"
+        or not strategy.with_zero_pulse
+    ):
         return
     if setup.overflow or setup.simulated or strategy.id.startswith("spindle"):
         return

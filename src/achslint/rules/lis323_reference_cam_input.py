@@ -45,7 +45,14 @@ SUMMARY = "Reference cam read from an input the drive type does not have"
 SIGNAL = "antr.reference_cam_signal"
 INPUTS = {
     DriveType.SERCOS: ("PLC", "RT_STATUS_BIT_1", "RT_STATUS_BIT_2"),
-    DriveType.CANOPEN: ("PLC", "STATUS_DIG_INPUTS", "DIG_INPUT_1", "DIG_INPUT_2", "DIG_INPUT_3", "DIG_INPUT_4"),
+    DriveType.CANOPEN: (
+        "PLC",
+        "STATUS_DIG_INPUTS",
+        "DIG_INPUT_1",
+        "DIG_INPUT_2",
+        "DIG_INPUT_3",
+        "DIG_INPUT_4",
+    ),
 }
 
 

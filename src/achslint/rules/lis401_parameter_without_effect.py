@@ -66,7 +66,10 @@ def check(ctx):
             continue  # a parameter of another drive or axis type is LIS105's
         start, end = ctx.path_span(setting.line)
         yield ctx.report(
-            CODE, setting.line,
+            CODE,
+            setting.line,
             f"`{canonical}` has no effect here: {effect.reason} (the CNC runs: {ctx.strategy.title})",
-            column=start, end_column=end, setting=setting,
+            column=start,
+            end_column=end,
+            setting=setting,
         )

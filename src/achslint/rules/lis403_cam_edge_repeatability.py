@@ -48,7 +48,11 @@ CODE = "LIS403"
 NAME = "cam-edge-repeatability"
 SEVERITY = "warning"
 FIX = "none"
-PARAMETERS = ("getriebe[i].vb_reflow", "getriebe[i].vb_refmax", "kenngr.homing_without_zero_pulse")  # parameters this rule reads
+PARAMETERS = (
+    "getriebe[i].vb_reflow",
+    "getriebe[i].vb_refmax",
+    "kenngr.homing_without_zero_pulse",
+)  # parameters this rule reads
 SUMMARY = "Cam-edge referencing less repeatable than the tolerance"
 
 
@@ -61,7 +65,9 @@ def check(ctx):
     cycle = ctx.options.cycle_time_us
     rotary = values.axis_type != "T"
     # Linear: µm/s × s = µm; rotary: 0.001°/s × s = 0.001° (the tolerance is given in degrees).
-    tolerance = ctx.options.repeatability_tolerance_deg * 1000 if rotary else ctx.options.repeatability_tolerance_um
+    tolerance = (
+        ctx.options.repeatability_tolerance_deg * 1000 if rotary else ctx.options.repeatability_tolerance_um
+    )
     unit, speed_unit = ("0.001°", "0.001deg/s") if rotary else ("µm", "um/s")
     for gear in sorted(set(values.gear_stages_set(member)) | {0}):
         path = f"getriebe[{gear}].{member}"

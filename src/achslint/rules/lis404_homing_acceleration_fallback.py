@@ -40,7 +40,11 @@ CODE = "LIS404"
 NAME = "homing-acceleration-fallback"
 SEVERITY = "info"
 FIX = "none"
-PARAMETERS = ("getriebe[i].a_ref", "getriebe[i].lslope_profil.a_grenz_stufe_1", "getriebe[i].lslope_profil.a_grenz_stufe_2")  # parameters this rule reads
+PARAMETERS = (
+    "getriebe[i].a_ref",
+    "getriebe[i].lslope_profil.a_grenz_stufe_1",
+    "getriebe[i].lslope_profil.a_grenz_stufe_2",
+)  # parameters this rule reads
 SUMMARY = "Homing acceleration not set: the CNC's fallback is used"
 
 

@@ -61,7 +61,12 @@ SUMMARY = "Two axis lists of a machine with the same logical axis number"
 def check_machine(members, startups):
     for member, other in first_uses(members, "achs_nr"):
         line, column = other[1].get("achs_nr_at") or (1, 1)
-        yield diagnostic(CODE, member, "achs_nr_at",
-                         f"logical axis number kopf.achs_nr {member[1]['achs_nr']}{unset_note(member, 'achs_nr_at')} is also used by {other[0]}; "
-                         "every axis of a machine needs its own", Severity.WARNING,
-                         [Related(other[0], line, column, "kopf.achs_nr", "first use")])
+        yield diagnostic(
+            CODE,
+            member,
+            "achs_nr_at",
+            f"logical axis number kopf.achs_nr {member[1]['achs_nr']}{unset_note(member, 'achs_nr_at')} is also used by {other[0]}; "
+            "every axis of a machine needs its own",
+            Severity.WARNING,
+            [Related(other[0], line, column, "kopf.achs_nr", "first use")],
+        )

@@ -59,7 +59,12 @@ SUMMARY = "Two axis lists of a machine with the same axis name"
 def check_machine(members, startups):
     for member, other in first_uses(members, "name"):
         line, column = other[1].get("name_at") or (1, 1)
-        yield diagnostic(CODE, member, "name_at",
-                         f"axis name kopf.log_achs_name `{member[1]['name']}`{unset_note(member, 'name_at')} is also used by {other[0]}; give each "
-                         "axis its own name", Severity.WARNING,
-                         [Related(other[0], line, column, "kopf.log_achs_name", "first use")])
+        yield diagnostic(
+            CODE,
+            member,
+            "name_at",
+            f"axis name kopf.log_achs_name `{member[1]['name']}`{unset_note(member, 'name_at')} is also used by {other[0]}; give each "
+            "axis its own name",
+            Severity.WARNING,
+            [Related(other[0], line, column, "kopf.log_achs_name", "first use")],
+        )

@@ -62,6 +62,11 @@ def check_machine(members, startups):
     for member in members:
         master = member[1]["gantry_ax_nr"]
         if master and master not in numbers:
-            yield diagnostic(CODE, member, "gantry_at",
-                             f"kenngr.gantry_ax_nr {master} names a gantry master, but no axis list of this machine "
-                             "has that kopf.achs_nr", Severity.WARNING)
+            yield diagnostic(
+                CODE,
+                member,
+                "gantry_at",
+                f"kenngr.gantry_ax_nr {master} names a gantry master, but no axis list of this machine "
+                "has that kopf.achs_nr",
+                Severity.WARNING,
+            )

@@ -62,7 +62,11 @@ def check(ctx):
     if embedded is None:
         return
     values = ctx.values
-    if embedded.drive_type is not None and values.is_set("kenngr.antr_typ") and values.drive_type != embedded.drive_type:
+    if (
+        embedded.drive_type is not None
+        and values.is_set("kenngr.antr_typ")
+        and values.drive_type != embedded.drive_type
+    ):
         yield ctx.cross(
             CODE,
             f"the TwinCAT axis says <DriveType>{embedded.drive_type}</DriveType> (line {embedded.drive_type_line}, "
@@ -70,7 +74,11 @@ def check(ctx):
             f"({values.drive_name()}); make them the same",
             ["kenngr.antr_typ"],
         )
-    if embedded.spindle is not None and values.is_set("kenngr.achs_typ") and (values.axis_type == "S") != embedded.spindle:
+    if (
+        embedded.spindle is not None
+        and values.is_set("kenngr.achs_typ")
+        and (values.axis_type == "S") != embedded.spindle
+    ):
         kind = "a spindle" if values.axis_type == "S" else "a linear or rotary axis"
         yield ctx.cross(
             CODE,

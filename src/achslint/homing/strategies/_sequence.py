@@ -20,10 +20,14 @@ def variants(setup) -> list[str]:
     if setup.overflow:
         found.append("reference on the encoder overflow instead of the zero pulse (P-AXIS-00294)")
     if setup.falling_edge and not setup.spindle:
-        found.append("cam_level 0: the CNC takes a 0-signal as 'on the cam'. With a 0-active switch that is ordinary "
-                     "wiring; with a 1-active switch it inverts the cam, and together with an inverted ref_richt the "
-                     "axis references on the falling edge while moving off the cam (§2.3.3.1)")
+        found.append(
+            "cam_level 0: the CNC takes a 0-signal as 'on the cam'. With a 0-active switch that is ordinary "
+            "wiring; with a 1-active switch it inverts the cam, and together with an inverted ref_richt the "
+            "axis references on the falling edge while moving off the cam (§2.3.3.1)"
+        )
     if setup.zero_pulse and setup.with_cam and setup.shift:
-        found.append(f"zero-pulse detection switched on only {setup.shift:g} {setup.unit} after the cam edge "
-                     "(P-AXIS-00494, §2.6)")
+        found.append(
+            f"zero-pulse detection switched on only {setup.shift:g} {setup.unit} after the cam edge "
+            "(P-AXIS-00494, §2.6)"
+        )
     return found

@@ -15,8 +15,10 @@ def describe(axis) -> str:
     from ..setup import HomingSetup
 
     event = _sequence.reference_event(HomingSetup(axis))
-    return ("Default homing in three phases: to the reference cam at the fast speed, back off the cam, and slowly "
-            f"onto the cam again, referencing on {event} (§2.3.1).")
+    return (
+        "Default homing in three phases: to the reference cam at the fast speed, back off the cam, and slowly "
+        f"onto the cam again, referencing on {event} (§2.3.1)."
+    )
 
 
 def phases(setup) -> list[Phase]:
@@ -24,9 +26,21 @@ def phases(setup) -> list[Phase]:
     fast, slow = setup.stage("vb_refmax"), setup.stage("vb_reflow")
     off = fast if setup.fast_from_cam else slow
     return [
-        Phase("to the reference cam", way, fast, setup.speed("vb_refmax"),
-              "the cam is reached (skipped when starting on the cam)"),
-        Phase("off the reference cam", opposite(way), off, setup.speed(off.split(".", 1)[1]), "the cam is left"),
-        Phase("onto the cam and reference", way, slow, setup.speed("vb_reflow"),
-              f"the cam is reached and {_sequence.reference_event(setup)} is detected"),
+        Phase(
+            "to the reference cam",
+            way,
+            fast,
+            setup.speed("vb_refmax"),
+            "the cam is reached (skipped when starting on the cam)",
+        ),
+        Phase(
+            "off the reference cam", opposite(way), off, setup.speed(off.split(".", 1)[1]), "the cam is left"
+        ),
+        Phase(
+            "onto the cam and reference",
+            way,
+            slow,
+            setup.speed("vb_reflow"),
+            f"the cam is reached and {_sequence.reference_event(setup)} is detected",
+        ),
     ]

@@ -8,12 +8,18 @@ from . import _sequence
 from ._three_phases import THREE_PHASE_SPEEDS, describe, phases
 
 STRATEGY = StrategyDef(
-    id="cam_zero_pulse", title="three-phase homing on the cam and the zero pulse (type III)", controlled_by="cnc",
+    id="cam_zero_pulse",
+    title="three-phase homing on the cam and the zero pulse (type III)",
+    controlled_by="cnc",
     matches=lambda axis: _zero_pulse(axis),
     describe=describe,
     parameters={**SEQUENCE, **CAM, **ZERO_PULSE, **CAM_AND_ZERO_PULSE, **THREE_PHASE_SPEEDS},
     example="kenngr.ref_ohne_nocken 0\nkenngr.ref_ohne_rev 0\nkenngr.homing_without_zero_pulse 0\n",
-    phases=phases, manual_type="III", with_cam=True, with_zero_pulse=True, reference_speed="vb_reflow",
+    phases=phases,
+    manual_type="III",
+    with_cam=True,
+    with_zero_pulse=True,
+    reference_speed="vb_reflow",
     variants=_sequence.variants,
     unused="not part of three-phase homing on the cam and the zero pulse",
     simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
@@ -24,5 +30,3 @@ def _zero_pulse(axis) -> bool:
     from ..setup import HomingSetup
 
     return HomingSetup(axis).zero_pulse
-
-

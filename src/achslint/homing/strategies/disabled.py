@@ -7,20 +7,27 @@ from ..parameters import EVERYWHERE
 
 
 def _describe(axis) -> str:
-    text = ("Homing is disabled: a G74 that names this axis ends with an error (P-ERR-50685 / P-ERR-60313). "
-            "The setting is meant for axes with an absolute measuring system.")
+    text = (
+        "Homing is disabled: a G74 that names this axis ends with an error (P-ERR-50685 / P-ERR-60313). "
+        "The setting is meant for axes with an absolute measuring system."
+    )
     if not axis.get("kenngr.abs_pos_gueltig"):
         text += " This axis is incremental (abs_pos_gueltig = 0), so it can never be homed."
     return text
 
 
 STRATEGY = StrategyDef(
-    id="disabled", title="homing disabled", controlled_by="none",
+    id="disabled",
+    title="homing disabled",
+    controlled_by="none",
     matches=lambda axis: axis.homing_type == "DISABLED",
-    describe=_describe, parameters=EVERYWHERE,
+    describe=_describe,
+    parameters=EVERYWHERE,
     example="kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED\n",
     unused="homing is disabled for this axis",
     simulate=lambda sim, trace, x, cam_shift: (
-        sim.stand_still(trace, "not_required") if sim.strategy.setup.absolute
-        else sim.stand_still(trace, "failed", "homing is DISABLED on an incremental axis: G74 is refused")),
+        sim.stand_still(trace, "not_required")
+        if sim.strategy.setup.absolute
+        else sim.stand_still(trace, "failed", "homing is DISABLED on an incremental axis: G74 is refused")
+    ),
 )

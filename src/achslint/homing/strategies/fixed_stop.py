@@ -26,22 +26,36 @@ def _phases(setup) -> list[Phase]:
     unit = setup.axis.parameter("kenngr.homing.torq_retraction_distance").unit(setup.axis_type)
     missing = "" if speed else "torq_move_velocity is not set (0): the axis does not move (LIS315)"
     return [
-        Phase("to the fixed stop", direction, path, speed,
-              "the stop is detected (armed after torq_min_distance; homing aborts after torq_max_distance)", missing),
-        Phase("retract from the stop", opposite(direction), path, speed,
-              f"torq_retraction_distance = {describe(retraction, unit)} is travelled"),
+        Phase(
+            "to the fixed stop",
+            direction,
+            path,
+            speed,
+            "the stop is detected (armed after torq_min_distance; homing aborts after torq_max_distance)",
+            missing,
+        ),
+        Phase(
+            "retract from the stop",
+            opposite(direction),
+            path,
+            speed,
+            f"torq_retraction_distance = {describe(retraction, unit)} is travelled",
+        ),
     ]
 
 
 _TORQ = "parameter of homing to a fixed stop"
 
 STRATEGY = StrategyDef(
-    id="fixed_stop", title="homing to a fixed stop (TORQ)", controlled_by="cnc",
+    id="fixed_stop",
+    title="homing to a fixed stop (TORQ)",
+    controlled_by="cnc",
     matches=lambda axis: axis.homing_type == "TORQ",
     describe=lambda axis: (
         "The axis moves with limited torque towards a mechanical stop; once the stop is detected the position "
         "torq_homing_position is set and the axis backs off by the retraction distance, so it ends that far from "
-        "the stop (§2.3.3.4)."),
+        "the stop (§2.3.3.4)."
+    ),
     parameters={
         **{k: v for k, v in CNC_MOVES.items() if k not in ("getriebe[i].pos_refpkt",)},
         "kenngr.homing.torq_homing_dir": Use("direction towards the stop"),
@@ -54,15 +68,21 @@ STRATEGY = StrategyDef(
         "kenngr.homing.torq_detect_velocity_limit": Use(_TORQ + ": detection criterion"),
         "kenngr.homing.torq_detect_pos_lag_limit": Use(_TORQ + ": detection criterion"),
         "kenngr.homing.torq_detect_torque_limit": Use(_TORQ + ": detection criterion"),
-        "kenngr.homing.torq_retraction_distance": Use("distance backed off after the stop", when=_not_gantry_slave,
-                                                      otherwise=_MASTER_RETRACTS),
+        "kenngr.homing.torq_retraction_distance": Use(
+            "distance backed off after the stop", when=_not_gantry_slave, otherwise=_MASTER_RETRACTS
+        ),
         "kenngr.homing.torq_homing_position": Use("the position set at the stop"),
-        "kenngr.homing.torq_distance_to_block": Use("distance to the simulated stop (P-AXIS-00822)", when=_simulated,
-                                                    otherwise="distance to the simulated stop, simulated drives only"),
+        "kenngr.homing.torq_distance_to_block": Use(
+            "distance to the simulated stop (P-AXIS-00822)",
+            when=_simulated,
+            otherwise="distance to the simulated stop, simulated drives only",
+        ),
     },
-    example=("kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
-             "kenngr.homing.torq_max_distance 200000\nkenngr.homing.torq_detect_time 25000\n"
-             "getriebe[0].homing.torq_move_velocity 2000\ngetriebe[0].homing.torq_move_acceleration 50\n"),
+    example=(
+        "kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+        "kenngr.homing.torq_max_distance 200000\nkenngr.homing.torq_detect_time 25000\n"
+        "getriebe[0].homing.torq_move_velocity 2000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+    ),
     phases=_phases,
     unused="fixed-stop homing uses only its own torq_* parameters",
     ends_with_braking=False,

@@ -14,9 +14,13 @@ def _describe(axis) -> str:
 
 
 STRATEGY = StrategyDef(
-    id="ignore_abs_pos", title="homing skipped (IGNORE_ABS_POS)", controlled_by="none",
+    id="ignore_abs_pos",
+    title="homing skipped (IGNORE_ABS_POS)",
+    controlled_by="none",
     matches=lambda axis: axis.homing_type == "IGNORE_ABS_POS",
-    describe=_describe, parameters=EVERYWHERE, manual_type=None,
+    describe=_describe,
+    parameters=EVERYWHERE,
+    manual_type=None,
     example="kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type IGNORE_ABS_POS\n",
     unused="G74 skips this axis (IGNORE_ABS_POS)",
     simulate=lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped"),

@@ -8,27 +8,50 @@ from . import _sequence
 
 
 def _phases(setup) -> list[Phase]:
-    return [Phase("reference on the fly", _sequence.direction(setup), setup.stage("vb_reflow"), setup.speed("vb_reflow"),
-                  "the cam changes from operated to not operated (a spindle on the cam first turns until it is "
-                  "left) and the next zero pulse arrives; the spindle keeps turning")]
+    return [
+        Phase(
+            "reference on the fly",
+            _sequence.direction(setup),
+            setup.stage("vb_reflow"),
+            setup.speed("vb_reflow"),
+            "the cam changes from operated to not operated (a spindle on the cam first turns until it is "
+            "left) and the next zero pulse arrives; the spindle keeps turning",
+        )
+    ]
 
 
 STRATEGY = StrategyDef(
-    id="spindle_flying_cam", title="flying homing of a spindle with cam", controlled_by="cnc",
-    matches=lambda axis: axis.axis_type == "S" and bool(axis.get("kenngr.ref_ohne_rev"))
-    and not axis.get("kenngr.ref_ohne_nocken"),
+    id="spindle_flying_cam",
+    title="flying homing of a spindle with cam",
+    controlled_by="cnc",
+    matches=lambda axis: (
+        axis.axis_type == "S"
+        and bool(axis.get("kenngr.ref_ohne_rev"))
+        and not axis.get("kenngr.ref_ohne_nocken")
+    ),
     describe=lambda axis: (
         "The spindle references while it turns, without stopping or reversing: it runs at vb_reflow in the homing "
-        "direction (from standstill or from endless rotation) and takes the reference on the fly (§2.3.2.1)."),
+        "direction (from standstill or from endless rotation) and takes the reference on the fly (§2.3.2.1)."
+    ),
     parameters={
-        **SEQUENCE, **CAM,
+        **SEQUENCE,
+        **CAM,
         "getriebe[i].vb_reflow": Use("speed at which the spindle references"),
-        "kenngr.shift_offset_zero_pulse_activation": Use("delays the zero-pulse detection after the cam edge (§2.6)"),
-        "lr_hw[0].zero_pulse_search_max_dist": Use("bounds the zero-pulse search, counted from where the zero-pulse logic is armed (the cam edge plus shift_offset_zero_pulse_activation; the manual does not say, this is the tool's reading)"),
+        "kenngr.shift_offset_zero_pulse_activation": Use(
+            "delays the zero-pulse detection after the cam edge (§2.6)"
+        ),
+        "lr_hw[0].zero_pulse_search_max_dist": Use(
+            "bounds the zero-pulse search, counted from where the zero-pulse logic is armed (the cam edge plus shift_offset_zero_pulse_activation; the manual does not say, this is the tool's reading)"
+        ),
     },
     example="kenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\n",
-    phases=_phases, with_cam=True, with_zero_pulse=True, one_phase=True, reference_speed="vb_reflow",
-    ends_with_braking=False, variants=_sequence.variants,
+    phases=_phases,
+    with_cam=True,
+    with_zero_pulse=True,
+    one_phase=True,
+    reference_speed="vb_reflow",
+    ends_with_braking=False,
+    variants=_sequence.variants,
     unused="flying spindle homing reads only the cam, the zero pulse and vb_reflow",
     simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
 )

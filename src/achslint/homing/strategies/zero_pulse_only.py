@@ -8,19 +8,33 @@ from . import _sequence
 
 
 def _phases(setup) -> list[Phase]:
-    return [Phase("to the zero pulse", _sequence.direction(setup), setup.stage("vb_reflow"), setup.speed("vb_reflow"),
-                  f"{_sequence.reference_event(setup)} is detected")]
+    return [
+        Phase(
+            "to the zero pulse",
+            _sequence.direction(setup),
+            setup.stage("vb_reflow"),
+            setup.speed("vb_reflow"),
+            f"{_sequence.reference_event(setup)} is detected",
+        )
+    ]
 
 
 STRATEGY = StrategyDef(
-    id="zero_pulse_only", title="zero pulse without reference cam (type II)", controlled_by="cnc",
+    id="zero_pulse_only",
+    title="zero pulse without reference cam (type II)",
+    controlled_by="cnc",
     matches=lambda axis: bool(axis.get("kenngr.ref_ohne_nocken")),
     describe=lambda axis: (
         "There is no reference cam: the axis moves at vb_reflow in the homing direction and takes the first zero "
-        "pulse as the reference (§2.3.3.3); the pulse must occur only once in the travel range to be unique."),
+        "pulse as the reference (§2.3.3.3); the pulse must occur only once in the travel range to be unique."
+    ),
     parameters={**SEQUENCE, **ZERO_PULSE},
     example="kenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n",
-    phases=_phases, manual_type="II", with_zero_pulse=True, one_phase=True, reference_speed="vb_reflow",
+    phases=_phases,
+    manual_type="II",
+    with_zero_pulse=True,
+    one_phase=True,
+    reference_speed="vb_reflow",
     variants=_sequence.variants,
     unused="there is no reference cam and no fast search phase (§3.5, type II)",
     simulate=lambda sim, trace, x, cam_shift: sim.zero_pulse_only(trace, x),
