@@ -56,8 +56,8 @@ def test_bytes_encoding_and_line_endings_are_kept():
     formatted, _ = format_bytes(MESSY)
     assert "µ".encode("latin-1") in formatted and "µ".encode() not in formatted
     assert formatted.count(b"\r\n") == formatted.count(b"\n")
-    mixed = b"a 1\r\nb 2\nEnde\r\n"
-    assert format_bytes(mixed)[0] == b"a  1\r\nb  2\nEnde\r\n"
+    mixed = b"a 1\r\nbb 2\nEnde\r\n"
+    assert format_bytes(mixed)[0] == b"a   1\r\nbb  2\nEnde\r\n"
     bom = b"\xef\xbb\xbfa 1\nEnde\n"
     assert format_bytes(bom)[0].startswith(b"\xef\xbb\xbfa  1")
 

@@ -1,11 +1,35 @@
-"""`achslint fmt`: the canonical layout of a list, changing whitespace only.
+"""`achslint fmt`: consistent whitespace in the layout a list already has.
 
-* assignments start in column 1 and their values start in one common column
-  (two blanks after the longest parameter path of the file), separated by
-  blanks, not tabs;
-* one blank before the comment that follows a value — unless the value is a
-  string followed by text that is not a `(` comment, where the blanks may be
-  part of what the CNC reads (LIS007), so they are left alone;
+fmt first looks at how the file is laid out and keeps it:
+
+* **where the values stand**: in one common column (left-aligned), or ending in
+  one common column (right-aligned, as the numbers and names of ISG's sample
+  lists are). The alignment most values share is the file's *main* alignment.
+  A run of at least three consecutive value lines that shares another alignment
+  (a section written in another style, as in the SDK's start-up list) is a
+  *block* alignment: lines in it are kept too;
+* **where the comments after values start**: the column most of them share,
+  counting only comments set off by two or more blanks (a single blank after a
+  value shows no column);
+* **tabs or blanks** between name, value and comment (tab stops every
+  `TAB_WIDTH` columns; columns are counted with tabs expanded).
+
+A line whose layout already fits is left byte for byte as it is. A value in
+none of the file's alignments moves to the main alignment (a name too long for
+it keeps its value where it is); a comment moves to the comment column, or one
+blank after the value when the value reaches past it; when the file has no
+comment column, each comment keeps its column. `FmtOptions` replaces what is
+detected by fixed choices. A file whose values share no column at all gets the
+canonical layout:
+
+* assignments start in column 1 and their values in one common column, two
+  blanks after the longest parameter path of the file, separated by blanks;
+* one blank before the comment that follows a value.
+
+In every layout:
+
+* the blanks before text after a string value that is not a `(` comment are
+  left alone: they may be part of what the CNC reads (LIS007);
 * no trailing blanks, and blank-only lines become empty lines;
 * the end marker stands alone in column 1 and is the last line: blank lines
   after it are dropped and the file ends with a line break after `Ende`.
@@ -14,25 +38,113 @@
 feed or U+2028 is content to the CNC and to fmt. Names, values and comment text
 are never touched, nor are lines the parser could not read (LIS001). Each line
 keeps its own line break (no two lines are ever joined), the file keeps its
-encoding and byte-order mark, and formatting twice changes nothing.
+encoding and byte-order mark, and formatting twice changes nothing: lines are
+only ever moved onto the alignments and the comment column that were detected,
+so the formatted file shows the same layout again.
 """
 
 from __future__ import annotations
 
 import difflib
 from collections import Counter
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Literal
 
 from . import syntax
 from .decode import decode
 
 NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
 BLANKS = " \t"
+TAB_WIDTH = 8
+MIN_BLOCK = 3  # consecutive value lines that make a block alignment of their own
+
+LEFT: Literal["left"] = "left"
+RIGHT: Literal["right"] = "right"
+KEEP: Literal["keep"] = "keep"
+AlignValues = Literal["left", "right", "keep"]
+ALIGN_VALUES: tuple[AlignValues, ...] = (LEFT, RIGHT, KEEP)
 
 
-def value_column(file: syntax.ListFile) -> int:
-    """0-based column where every value starts."""
-    lengths = [len(line.path) for line in file.lines if line.kind == syntax.ASSIGNMENT and line.path_ok]
-    return max(lengths, default=0) + 2
+@dataclass(frozen=True)
+class FmtOptions:
+    """Layout choices that replace what fmt would detect in a file.
+
+    Columns count from 1, as editors show them. `value_column` is where values
+    start (left-aligned) or the column of their last character (right-aligned);
+    `comment_column` is where a comment after a value starts. `align_values`
+    `"keep"` keeps the file's own alignment, `"left"`/`"right"` put every value
+    in one column of that kind (the one most values already use, else the
+    canonical one).
+    """
+
+    value_column: int | None = None
+    comment_column: int | None = None
+    align_values: AlignValues = KEEP
+
+    def __post_init__(self) -> None:
+        for name in ("value_column", "comment_column"):
+            column = getattr(self, name)
+            if column is not None and (type(column) is not int or column < 1):
+                raise ValueError(f"{name.replace('_', '-')} must be a column number from 1 up, not {column!r}")
+        if self.align_values not in ALIGN_VALUES:
+            choices = ", ".join(f'"{choice}"' for choice in ALIGN_VALUES)
+            raise ValueError(f"align-values must be one of {choices}, not {self.align_values!r}")
+
+
+@dataclass(frozen=True, order=True)
+class Alignment:
+    """Values starting (left) or ending (right) in one column, counted from 0 with tabs expanded.
+
+    For right alignment `column` is the column just after the last character.
+    """
+
+    kind: Literal["left", "right"]
+    column: int
+
+    def describe(self) -> str:
+        if self.kind == LEFT:
+            return f"values start in column {self.column + 1}"
+        return f"values end in column {self.column}"
+
+
+@dataclass(frozen=True)
+class Style:
+    """The layout of a file: what fmt keeps. `values` None means the canonical layout."""
+
+    values: Alignment | None
+    blocks: tuple[Alignment, ...] = ()
+    comments: int | None = None  # 0-based column of comments after values; None: each where it is
+    tabs: bool = False
+
+    def describe(self) -> str:
+        if self.values is None:
+            return "no common value column: canonical layout"
+        parts = [self.values.describe()]
+        parts += [f"a block where {block.describe()}" for block in self.blocks]
+        parts.append(f"comments in column {self.comments + 1}" if self.comments is not None else "comments kept")
+        parts.append("tabs" if self.tabs else "blanks")
+        return ", ".join(parts)
+
+
+def _advance(column: int, text: str) -> int:
+    """The column after `text` written from `column` (tabs to the next tab stop)."""
+    for char in text:
+        column = _next_stop(column) if char == "\t" else column + 1
+    return column
+
+
+def _next_stop(column: int) -> int:
+    return (column // TAB_WIDTH + 1) * TAB_WIDTH
+
+
+def _pad(start: int, stop: int, tabs: bool) -> str:
+    """Whitespace from column `start` to `stop`: tabs as far as they go (if `tabs`), then blanks."""
+    out = ""
+    while tabs and _next_stop(start) <= stop:
+        out += "\t"
+        start = _next_stop(start)
+    return out + " " * (stop - start)
 
 
 def _comment_is_free(line: syntax.Line) -> bool:
@@ -40,8 +152,212 @@ def _comment_is_free(line: syntax.Line) -> bool:
     return line.value_kind in NUMERIC_OR_REFERENCE or (line.rest or "").startswith("(")
 
 
-def format_line(line: syntax.Line, column: int) -> str:
-    """The canonical body of one line (without its line break)."""
+@dataclass(slots=True)
+class _Row:
+    """A line with a value, and the whitespace fmt may change in it."""
+
+    line: syntax.Line
+    indent: str
+    sep: str
+    sep2: str
+    free: bool = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.free = self.line.rest is not None and _comment_is_free(self.line)
+
+    @property
+    def path(self) -> str:
+        return self.line.path or ""
+
+    @property
+    def value(self) -> str:
+        return self.line.value or ""
+
+    @property
+    def path_end(self) -> int:
+        return _advance(0, self.indent) + len(self.path)
+
+    @property
+    def value_start(self) -> int:
+        return _advance(self.path_end, self.sep)
+
+    @property
+    def value_end(self) -> int:
+        return _advance(self.value_start, self.value)
+
+    @property
+    def tail(self) -> str:
+        """What belongs to the value's right edge: the text after a string the CNC may read as part of it."""
+        if self.line.rest is None or self.free:
+            return self.value
+        return self.value + self.sep2 + self.line.rest.rstrip(BLANKS)
+
+    @property
+    def extent_end(self) -> int:
+        return _advance(self.value_start, self.tail)
+
+    @property
+    def comment_start(self) -> int:
+        return _advance(self.value_end, self.sep2)
+
+    def alignments(self) -> tuple[Alignment, Alignment]:
+        return Alignment(LEFT, self.value_start), Alignment(RIGHT, self.extent_end)
+
+    def start_for(self, alignment: Alignment) -> int | None:
+        """Where the value starts in `alignment`, written without indent; None if the line cannot get there."""
+        if alignment.kind == LEFT:
+            start = alignment.column
+        elif "\t" in self.tail:  # its width would change with where it stands
+            return None
+        else:
+            start = alignment.column - len(self.tail)
+        return start if start > len(self.path) else None
+
+    def body(self) -> str:
+        line = self.line
+        text = self.indent + self.path + self.sep + self.value
+        if line.rest is not None:
+            text += self.sep2 + line.rest
+        return text.rstrip(BLANKS)
+
+
+def _rows(file: syntax.ListFile) -> list[_Row]:
+    return [
+        _Row(line, line.indent, line.sep, line.sep2)
+        for line in file.lines
+        if line.kind == syntax.ASSIGNMENT
+        and line.path_ok
+        and line.value is not None
+        and line.value_kind != syntax.BAD_STRING
+    ]
+
+
+def _uses_tabs(rows: Iterable[_Row]) -> bool:
+    """Whether the file separates with tabs: more tab-holding than blank-only gaps wide enough for a tab."""
+    votes: Counter[bool] = Counter()
+    for row in rows:
+        gaps = [(row.path_end, row.sep, row.value_start)]
+        if row.free:
+            gaps.append((row.value_end, row.sep2, row.comment_start))
+        for start, text, stop in gaps:
+            if _next_stop(start) <= stop:
+                votes["\t" in text] += 1
+    return votes[True] > votes[False]
+
+
+def _most_common(counts: Counter[Alignment], kinds: Sequence[str]) -> Alignment | None:
+    """The alignment most lines share (ties: left before right, then the smaller column)."""
+    candidates = [alignment for alignment in counts if alignment.kind in kinds]
+    if not candidates:
+        return None
+    return max(candidates, key=lambda a: (counts[a], a.kind == LEFT, -a.column))
+
+
+def _blocks(rows: Sequence[_Row], main: Alignment) -> tuple[Alignment, ...]:
+    """Alignments shared by a run of `MIN_BLOCK` consecutive value lines outside the main alignment."""
+    longest: Counter[Alignment] = Counter()
+    run: dict[Alignment, int] = {}
+    for row in rows:
+        here = () if row.indent else row.alignments()
+        if main in here:
+            here = ()
+        run = {alignment: run.get(alignment, 0) + 1 for alignment in here}
+        for alignment, length in run.items():
+            longest[alignment] = max(longest[alignment], length)
+    return tuple(sorted(alignment for alignment, length in longest.items() if length >= MIN_BLOCK))
+
+
+def _canonical_column(file: syntax.ListFile) -> int:
+    """Two blanks after the longest parameter path (0-based column of the values)."""
+    lengths = [len(line.path) for line in file.lines if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path]
+    return max(lengths, default=0) + 2
+
+
+def _value_style(file: syntax.ListFile, rows: Sequence[_Row], options: FmtOptions) -> Style:
+    """Where the values go (the comment column is found after they are placed)."""
+    tabs = _uses_tabs(rows)
+    evidence = [row for row in rows if not row.indent]
+    counts = Counter(alignment for row in evidence for alignment in row.alignments())
+    majority = len(rows) // 2 + 1
+    main = _most_common(counts, (LEFT, RIGHT))
+    if options.align_values == KEEP and options.value_column is None:
+        if main is None or counts[main] < 2:
+            return Style(None)
+        blocks = _blocks(rows, main)
+        kept = sum(1 for row in evidence if any(a == main or a in blocks for a in row.alignments()))
+        return Style(main, blocks, tabs=tabs) if kept >= majority else Style(None)
+    kind = options.align_values if options.align_values != KEEP else (main.kind if main else LEFT)
+    if options.value_column is not None:
+        column = options.value_column - 1 if kind == LEFT else options.value_column
+        return Style(Alignment(kind, column), tabs=tabs)
+    usual = _most_common(counts, (kind,))
+    if usual is not None and counts[usual] >= max(2, majority):
+        return Style(usual, tabs=tabs)
+    if kind == LEFT:
+        return Style(Alignment(LEFT, _canonical_column(file)), tabs=tabs)
+    widest = max((len(row.path) + 2 + len(row.tail) for row in rows if "\t" not in row.tail), default=0)
+    return Style(Alignment(RIGHT, widest), tabs=tabs)
+
+
+def _place_values(rows: Sequence[_Row], style: Style, canonical: int) -> None:
+    """Move values that are in none of the style's alignments; tidy the blanks of those that are."""
+    target = style.values or Alignment(LEFT, canonical)
+    kept = {target, *style.blocks}
+    for row in rows:
+        if not row.indent and any(alignment in kept for alignment in row.alignments()):
+            row.sep = _pad(row.path_end, row.value_start, style.tabs)
+            continue
+        start = row.start_for(target)
+        if start is None:
+            continue  # a name too long for the column: the value stays where it is
+        comment = row.comment_start
+        row.indent, row.sep = "", _pad(len(row.path), start, style.tabs)
+        if row.free:  # the comment stays in its column when the value leaves room for it
+            end = row.value_end
+            row.sep2 = _pad(end, comment if comment > end else end + 1, style.tabs)
+
+
+def _comment_column(rows: Sequence[_Row], style: Style, options: FmtOptions) -> int | None:
+    if options.comment_column is not None:
+        return options.comment_column - 1
+    if style.values is None:
+        return None
+    commented = [row for row in rows if row.free]
+    starts = Counter(row.comment_start for row in commented if row.comment_start - row.value_end >= 2)
+    if not starts:
+        return None
+    column = max(starts, key=lambda start: (starts[start], -start))
+    return column if starts[column] >= 2 and 2 * starts[column] > len(commented) else None
+
+
+def _place_comments(rows: Sequence[_Row], column: int | None, canonical: bool, tabs: bool) -> None:
+    for row in rows:
+        if not row.free:
+            continue
+        end, start = row.value_end, row.comment_start
+        if column is not None and start != column:
+            start = column if column > end else end + 1
+        elif canonical and column is None:
+            start = end + 1
+        row.sep2 = _pad(end, start, tabs)
+
+
+def _plan(file: syntax.ListFile, options: FmtOptions, canonical: bool = False) -> tuple[Style, list[_Row]]:
+    rows = _rows(file)
+    style = Style(None) if canonical else _value_style(file, rows, options)
+    _place_values(rows, style, _canonical_column(file))
+    comments = None if canonical else _comment_column(rows, style, options)
+    _place_comments(rows, comments, style.values is None, style.tabs)
+    return Style(style.values, style.blocks, comments, style.tabs), rows
+
+
+def detect_style(file: syntax.ListFile, options: FmtOptions | None = None) -> Style:
+    """The layout fmt keeps in a parsed list."""
+    return _plan(file, options or FmtOptions())[0]
+
+
+def _other_line(line: syntax.Line) -> str:
+    """The body of a line without a value fmt could align."""
     if line.kind == syntax.BLANK:
         return ""
     if line.kind == syntax.COMMENT:
@@ -51,18 +367,21 @@ def format_line(line: syntax.Line, column: int) -> str:
         return (line.path or "") + rest
     if not line.path_ok or line.value_kind == syntax.BAD_STRING:
         return line.body.rstrip(BLANKS)
-    if line.value is None:
-        return line.path
-    text = line.path.ljust(column - 1) + " " + line.value
-    if line.rest is not None:
-        separator = " " if _comment_is_free(line) else line.sep2
-        text += separator + line.rest
-    return text.rstrip(BLANKS)
+    return line.path or ""
 
 
-def format_file(file: syntax.ListFile) -> str:
-    """The formatted text of a parsed list."""
-    column = value_column(file)
+def formatted_lines(
+    file: syntax.ListFile, options: FmtOptions | None = None, *, canonical: bool = False
+) -> list[str]:
+    """The formatted body (without line break) of every line of the list, in order."""
+    _, rows = _plan(file, options or FmtOptions(), canonical)
+    bodies = {id(row.line): row.body() for row in rows}
+    return [bodies[id(line)] if id(line) in bodies else _other_line(line) for line in file.lines]
+
+
+def format_file(file: syntax.ListFile, options: FmtOptions | None = None, *, canonical: bool = False) -> str:
+    """The formatted text of a parsed list (`canonical`: the canonical layout, whatever the file's own)."""
+    bodies = formatted_lines(file, options, canonical=canonical)
     lines = list(file.lines)
     end = file.end_index
     if end is not None and all(line.kind == syntax.BLANK for line in lines[end + 1 :]):
@@ -75,7 +394,7 @@ def format_file(file: syntax.ListFile) -> str:
         newline = line.newline
         if position == len(lines) - 1 and end is not None and position == end and not newline:
             newline = usual
-        body = format_line(line, column)
+        body = bodies[position]
         if not body and previous.endswith("\r") and newline.startswith("\n"):
             body = line.body  # emptied, this line's LF would join the CR before it into one CRLF
         out.append(body + newline)
@@ -83,17 +402,31 @@ def format_file(file: syntax.ListFile) -> str:
     return "".join(out)
 
 
-def format_text(text: str, name: str = "<string>") -> str:
+def format_text(text: str, name: str = "<string>", options: FmtOptions | None = None) -> str:
     """The formatted version of a list's text."""
-    return format_file(syntax.parse_text(text, name))
+    return format_file(syntax.parse_text(text, name), options)
 
 
-def format_bytes(data: bytes, name: str = "<bytes>") -> tuple[bytes, bool]:
+def canonical_text(text: str, name: str = "<string>") -> str:
+    """A list's text in the canonical layout (for lists written by programs)."""
+    return format_file(syntax.parse_text(text, name), canonical=True)
+
+
+def format_bytes(data: bytes, name: str = "<bytes>", options: FmtOptions | None = None) -> tuple[bytes, bool]:
     """(formatted bytes, changed). Raises `decode.UnreadableInput` for UTF-16/32 input."""
     source = decode(data)
     file = syntax.parse_text(source.text, name, encoding=source.encoding, bom=source.bom)
-    formatted = source.encode(format_file(file))
+    formatted = source.encode(format_file(file, options))
     return formatted, formatted != data
+
+
+def changed_lines(data: bytes, options: FmtOptions | None = None) -> int:
+    """How many lines formatting changes (dropped blank lines after `Ende` count too)."""
+    formatted, _ = format_bytes(data, options=options)
+    before = syntax.split_lines(decode(data).text, keepends=True)
+    after = syntax.split_lines(decode(formatted).text, keepends=True)
+    differing = sum(1 for old, new in zip(before, after, strict=False) if old != new)
+    return differing + abs(len(before) - len(after))
 
 
 NO_NEWLINE = "\\ No newline at end of file\n"

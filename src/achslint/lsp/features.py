@@ -678,13 +678,13 @@ def format_document(document: Document, file) -> list[lsp.TextEdit]:
 
 
 def format_range(document: Document, file, request: lsp.Range) -> list[lsp.TextEdit]:
-    from ..fmt import format_line, value_column
+    from ..fmt import formatted_lines
 
-    column = value_column(file)
+    bodies = formatted_lines(file)
     edits = []
     first, last = request.start.line + 1, request.end.line + (1 if request.end.character else 0)
     for line in file.lines[max(first, 1) - 1 : max(last, first)]:
-        body = format_line(line, column)
+        body = bodies[line.number - 1]
         if body != line.body:
             edits.append(
                 lsp.TextEdit(lsp_range(document, line.number, 1, line.number, line.end_column), body)
