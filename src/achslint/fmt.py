@@ -70,12 +70,12 @@ ALIGN_VALUES: tuple[AlignValues, ...] = (LEFT, RIGHT, KEEP)
 class FmtOptions:
     """Layout choices that replace what fmt would detect in a file.
 
-    Columns count from 1, as editors show them. `value_column` is where values
-    start (left-aligned) or the column of their last character (right-aligned);
-    `comment_column` is where a comment after a value starts. `align_values`
-    `"keep"` keeps the file's own alignment, `"left"`/`"right"` put every value
-    in one column of that kind (the one most values already use, else the
-    canonical one).
+    Columns count from 1, as editors show them. `align_values` `"keep"` keeps
+    the file's own alignment; `"left"`/`"right"` put every value in one column
+    of that kind: `value_column`, else the one most values already use, else the
+    canonical one. `value_column` is where values start (left-aligned; also when
+    it is given with `"keep"`) or the column of their last character
+    (right-aligned). `comment_column` is where a comment after a value starts.
     """
 
     value_column: int | None = None
@@ -86,7 +86,9 @@ class FmtOptions:
         for name in ("value_column", "comment_column"):
             column = getattr(self, name)
             if column is not None and (type(column) is not int or column < 1):
-                raise ValueError(f"{name.replace('_', '-')} must be a column number from 1 up, not {column!r}")
+                raise ValueError(
+                    f"{name.replace('_', '-')} must be a column number from 1 up, not {column!r}"
+                )
         if self.align_values not in ALIGN_VALUES:
             choices = ", ".join(f'"{choice}"' for choice in ALIGN_VALUES)
             raise ValueError(f"align-values must be one of {choices}, not {self.align_values!r}")
@@ -122,7 +124,9 @@ class Style:
             return "no common value column: canonical layout"
         parts = [self.values.describe()]
         parts += [f"a block where {block.describe()}" for block in self.blocks]
-        parts.append(f"comments in column {self.comments + 1}" if self.comments is not None else "comments kept")
+        parts.append(
+            f"comments in column {self.comments + 1}" if self.comments is not None else "comments kept"
+        )
         parts.append("tabs" if self.tabs else "blanks")
         return ", ".join(parts)
 
@@ -203,6 +207,10 @@ class _Row:
     def alignments(self) -> tuple[Alignment, Alignment]:
         return Alignment(LEFT, self.value_start), Alignment(RIGHT, self.extent_end)
 
+    def fits(self, kept: set[Alignment]) -> bool:
+        """Whether the value stands in one of the `kept` alignments (an indented line never does)."""
+        return not self.indent and any(alignment in kept for alignment in self.alignments())
+
     def start_for(self, alignment: Alignment) -> int | None:
         """Where the value starts in `alignment`, written without indent; None if the line cannot get there."""
         if alignment.kind == LEFT:
@@ -236,12 +244,8 @@ def _uses_tabs(rows: Iterable[_Row]) -> bool:
     """Whether the file separates with tabs: more tab-holding than blank-only gaps wide enough for a tab."""
     votes: Counter[bool] = Counter()
     for row in rows:
-        gaps = [(row.path_end, row.sep, row.value_start)]
-        if row.free:
-            gaps.append((row.value_end, row.sep2, row.comment_start))
-        for start, text, stop in gaps:
-            if _next_stop(start) <= stop:
-                votes["\t" in text] += 1
+        if _next_stop(row.path_end) <= row.value_start:
+            votes["\t" in row.sep] += 1
     return votes[True] > votes[False]
 
 
@@ -269,13 +273,14 @@ def _blocks(rows: Sequence[_Row], main: Alignment) -> tuple[Alignment, ...]:
 
 def _canonical_column(file: syntax.ListFile) -> int:
     """Two blanks after the longest parameter path (0-based column of the values)."""
-    lengths = [len(line.path) for line in file.lines if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path]
+    lengths = [
+        len(line.path) for line in file.lines if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path
+    ]
     return max(lengths, default=0) + 2
 
 
-def _value_style(file: syntax.ListFile, rows: Sequence[_Row], options: FmtOptions) -> Style:
-    """Where the values go (the comment column is found after they are placed)."""
-    tabs = _uses_tabs(rows)
+def _alignments(file: syntax.ListFile, rows: Sequence[_Row], options: FmtOptions) -> Style:
+    """Where the values go; the blank character and the comment column are found after this."""
     evidence = [row for row in rows if not row.indent]
     counts = Counter(alignment for row in evidence for alignment in row.alignments())
     majority = len(rows) // 2 + 1
@@ -284,37 +289,42 @@ def _value_style(file: syntax.ListFile, rows: Sequence[_Row], options: FmtOption
         if main is None or counts[main] < 2:
             return Style(None)
         blocks = _blocks(rows, main)
-        kept = sum(1 for row in evidence if any(a == main or a in blocks for a in row.alignments()))
-        return Style(main, blocks, tabs=tabs) if kept >= majority else Style(None)
-    kind = options.align_values if options.align_values != KEEP else (main.kind if main else LEFT)
+        kept = sum(1 for row in rows if row.fits({main, *blocks}))
+        return Style(main, blocks) if kept >= majority else Style(None)
+    # A column given alone means left-aligned values, as in the canonical layout: taking the kind
+    # from the file instead would not survive formatting (the forced column can change which kind
+    # the file shows).
+    kind = RIGHT if options.align_values == RIGHT else LEFT
     if options.value_column is not None:
-        column = options.value_column - 1 if kind == LEFT else options.value_column
-        return Style(Alignment(kind, column), tabs=tabs)
+        return Style(Alignment(kind, options.value_column - 1 if kind == LEFT else options.value_column))
     usual = _most_common(counts, (kind,))
     if usual is not None and counts[usual] >= max(2, majority):
-        return Style(usual, tabs=tabs)
+        return Style(usual)
     if kind == LEFT:
-        return Style(Alignment(LEFT, _canonical_column(file)), tabs=tabs)
+        return Style(Alignment(LEFT, _canonical_column(file)))
     widest = max((len(row.path) + 2 + len(row.tail) for row in rows if "\t" not in row.tail), default=0)
-    return Style(Alignment(RIGHT, widest), tabs=tabs)
+    return Style(Alignment(RIGHT, widest))
 
 
-def _place_values(rows: Sequence[_Row], style: Style, canonical: int) -> None:
-    """Move values that are in none of the style's alignments; tidy the blanks of those that are."""
-    target = style.values or Alignment(LEFT, canonical)
-    kept = {target, *style.blocks}
+def _in_place(row: _Row, target: Alignment, kept: set[Alignment]) -> bool:
+    """Whether the row's value stays where it is: in the style already, or unable to move."""
+    return row.fits(kept) or row.start_for(target) is None
+
+
+def _place_values(rows: Sequence[_Row], target: Alignment, kept: set[Alignment], tabs: bool) -> None:
+    """Move values that are in none of the kept alignments; tidy the blanks of those that are."""
     for row in rows:
-        if not row.indent and any(alignment in kept for alignment in row.alignments()):
-            row.sep = _pad(row.path_end, row.value_start, style.tabs)
+        if row.fits(kept):
+            row.sep = _pad(row.path_end, row.value_start, tabs)
             continue
         start = row.start_for(target)
         if start is None:
             continue  # a name too long for the column: the value stays where it is
         comment = row.comment_start
-        row.indent, row.sep = "", _pad(len(row.path), start, style.tabs)
+        row.indent, row.sep = "", _pad(len(row.path), start, tabs)
         if row.free:  # the comment stays in its column when the value leaves room for it
             end = row.value_end
-            row.sep2 = _pad(end, comment if comment > end else end + 1, style.tabs)
+            row.sep2 = _pad(end, comment if comment > end else end + 1, tabs)
 
 
 def _comment_column(rows: Sequence[_Row], style: Style, options: FmtOptions) -> int | None:
@@ -344,11 +354,15 @@ def _place_comments(rows: Sequence[_Row], column: int | None, canonical: bool, t
 
 def _plan(file: syntax.ListFile, options: FmtOptions, canonical: bool = False) -> tuple[Style, list[_Row]]:
     rows = _rows(file)
-    style = Style(None) if canonical else _value_style(file, rows, options)
-    _place_values(rows, style, _canonical_column(file))
+    style = Style(None) if canonical else _alignments(file, rows, options)
+    target = style.values or Alignment(LEFT, _canonical_column(file))
+    kept = {target, *style.blocks}
+    # Only rows that keep their value where it is vote: moving a row may narrow its gap below a tab.
+    tabs = style.values is not None and _uses_tabs(row for row in rows if _in_place(row, target, kept))
+    _place_values(rows, target, kept, tabs)
     comments = None if canonical else _comment_column(rows, style, options)
-    _place_comments(rows, comments, style.values is None, style.tabs)
-    return Style(style.values, style.blocks, comments, style.tabs), rows
+    _place_comments(rows, comments, style.values is None, tabs)
+    return Style(style.values, style.blocks, comments, tabs), rows
 
 
 def detect_style(file: syntax.ListFile, options: FmtOptions | None = None) -> Style:
