@@ -11,7 +11,7 @@ from achslint.context import Context
 from achslint.dryrun import DryRunRefused, dry_run, prepare
 from achslint.explain import explain_list
 from achslint.homing import STRATEGY_MODULES, strategies
-from achslint.linter import FileSettings, check_bytes
+from achslint.linter import FileSettings, lint_file
 from achslint.resolved import resolve_bytes
 from achslint.rules import registry
 from achslint.syntax import parse_bytes
@@ -76,7 +76,7 @@ AXIS_LISTS = st.lists(
 
 def assert_consistent(data: bytes) -> str:
     """Every invariant for one list; returns the strategy id."""
-    diagnostics = check_bytes(data, "t.lis", FileSettings(keep_source=False)).diagnostics
+    diagnostics = lint_file(data, "t.lis", FileSettings(keep_source=False)).diagnostics
     without_effect = {d.parameter for d in diagnostics if d.code in NO_EFFECT}
     rules = registry()
     for d in diagnostics:

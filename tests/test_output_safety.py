@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from achslint.diagnostics import Diagnostic, Fix, Related, Severity
 from achslint.display import printable
-from achslint.linter import FileResult, check_bytes
+from achslint.linter import FileResult, lint_file
 from achslint.reporters import REPORTERS, get
 
 TEXT_FORMATS = ("concise", "full", "github")
@@ -88,7 +88,7 @@ def test_every_format_is_valid_for_any_name_and_message(path, message, source, e
 
 def test_escape_sequences_from_a_list_are_shown_escaped():
     data = b"kenngr.homing.homing_type \x1b[2J\x1b]0;owned\x07\nEnde\n"
-    result = check_bytes(data, "achsmds\x1b[31m1.lis")
+    result = lint_file(data, "achsmds\x1b[31m1.lis")
     for fmt in TEXT_FORMATS:
         out = render(fmt, [result], {result.name: result.source_lines})
         assert "\x1b" not in out and "\x07" not in out
@@ -97,7 +97,7 @@ def test_escape_sequences_from_a_list_are_shown_escaped():
 
 
 def test_the_caret_stays_under_an_escaped_value():
-    result = check_bytes(b"kenngr.homing.homing_type \x1bTORQ\nEnde\n", "a.lis")
+    result = lint_file(b"kenngr.homing.homing_type \x1bTORQ\nEnde\n", "a.lis")
     out = render("full", [result], {"a.lis": result.source_lines}).splitlines()
     frame = next(i for i, line in enumerate(out) if line.startswith("1 │ "))
     text, caret = out[frame], out[frame + 1]

@@ -12,7 +12,7 @@ import achslint
 from achslint.decode import UnreadableInput, decode
 from achslint.dryrun import dry_run, trace_json
 from achslint.explain import explain_list
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.listdiff import diff_lists
 from achslint.reporters import REPORTERS, get
 from achslint.scenario import ScenarioError
@@ -77,7 +77,7 @@ RAW = st.one_of(
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(RAW)
 def test_any_bytes_lint_without_exception_and_report_in_every_format(data):
-    result = check_bytes(data, "fuzz.lis")
+    result = lint_file(data, "fuzz.lis")
     for name in REPORTERS:
         get(name)([result], io.StringIO(), sources={result.name: result.source_lines})
     for d in result.diagnostics:
@@ -175,7 +175,7 @@ XML_PIECES = st.sampled_from(
     st.one_of(st.binary(max_size=300), st.lists(XML_PIECES, max_size=40).map(lambda p: "".join(p).encode()))
 )
 def test_any_bytes_named_xml_give_diagnostics_or_an_error(data):
-    result = check_bytes(data, "fuzz.xml")
+    result = lint_file(data, "fuzz.xml")
     assert result.error is None or "fuzz.xml" in result.error  # the error names the file
     for name in REPORTERS:
         get(name)([result], io.StringIO(), sources={result.name: result.source_lines})

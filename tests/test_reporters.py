@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.reporters import REPORTERS, get
 
 from .conftest import FIXTURES
@@ -21,7 +21,7 @@ NAME = "fixtures/multi_rule.lis"
 
 @pytest.fixture(scope="module")
 def results():
-    return [check_bytes((FIXTURES / "multi_rule.lis").read_bytes(), NAME)]
+    return [lint_file((FIXTURES / "multi_rule.lis").read_bytes(), NAME)]
 
 
 def render(name: str, results) -> str:
@@ -111,7 +111,7 @@ def test_gitlab_fingerprints_are_stable_across_line_shifts(results):
     shifted = (
         "# one more comment line at the top\n" + (FIXTURES / "multi_rule.lis").read_text(encoding="latin-1")
     ).encode("latin-1")
-    moved = [check_bytes(shifted, NAME)]
+    moved = [lint_file(shifted, NAME)]
     second = {issue["fingerprint"] for issue in json.loads(render("gitlab", moved))}
     assert first == second
     assert len(first) == len(json.loads(render("gitlab", results)))  # unique per issue

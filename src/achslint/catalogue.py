@@ -151,9 +151,6 @@ class Parameter:
     def unit(self, axis_type: str = "T") -> str | None:
         return self.units.get(axis_type) if self.units else None
 
-    def symbol_names(self) -> list[str]:
-        return list(self.symbols)
-
 
 @dataclass(frozen=True, slots=True)
 class Resolution:

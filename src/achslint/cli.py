@@ -496,7 +496,7 @@ def fmt(
     ),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
-    from .api import Linter, LintRequest, write_error
+    from .api import LintRequest, LintRun, write_error
     from .config import ConfigError
     from .decode import UnreadableInput
     from .files import read_list, reason, write_atomically
@@ -504,7 +504,9 @@ def fmt(
     from .xmlinput import is_xml
 
     try:
-        found = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
+        found = LintRun(
+            LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)
+        ).discover()
     except ConfigError as exc:
         _fail(str(exc))
     targets, errors = found.targets, found.errors

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 from . import syntax
 from .analysis import Analysis, Setting, analyse
 from .catalogue import Catalogue, catalogue
+from .config import Settings
 from .diagnostics import Diagnostic, Fix, Related, Severity
 
 if TYPE_CHECKING:
@@ -18,20 +19,10 @@ if TYPE_CHECKING:
 
 
 @dataclass
-class Options:
-    """Settings that change what rules report (not which rules run)."""
-
-    unknown_parameters: str = "warn"  # warn | error | ignore
-    cycle_time_us: int = 1000
-    repeatability_tolerance_um: float = 20.0
-    repeatability_tolerance_deg: float = 0.01  # rotary axes (LIS403)
-
-
-@dataclass
 class Context:
     name: str
     file: syntax.ListFile
-    options: Options = field(default_factory=Options)
+    options: Settings = field(default_factory=Settings)  # what rules read: unknown-parameters, cycle time …
     catalogue: Catalogue = field(default_factory=catalogue)
     embedded: object = None  # xmlinput.EmbeddedList when the list came from an XML file
     default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)

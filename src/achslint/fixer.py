@@ -21,7 +21,7 @@ from collections import Counter
 from dataclasses import dataclass, replace
 
 from .decode import SourceText, decode
-from .linter import FileResult, FileSettings, check_bytes
+from .linter import FileResult, FileSettings, lint_file
 from .syntax import parse_text
 
 MAX_ROUNDS = 10
@@ -79,7 +79,7 @@ def keeps_behaviour(data: bytes, name: str, settings, diagnostic, before) -> boo
     if not applied:
         return False
     new_data = source.encode()
-    after = check_bytes(new_data, name, settings)
+    after = lint_file(new_data, name, settings)
     if after.error:
         return False
     old = Counter((d.code, d.parameter) for d in before.diagnostics)
@@ -109,7 +109,7 @@ def fix_bytes(
 ) -> FixOutcome:
     """Fix what can be fixed; the result holds the diagnostics that remain."""
     fixed = 0
-    result = check_bytes(data, name, settings)
+    result = lint_file(data, name, settings)
     for _ in range(MAX_ROUNDS):
         if result.error:
             break
@@ -132,7 +132,7 @@ def fix_bytes(
             break
         fixed += applied
         data = new_data
-        result = check_bytes(data, name, settings)
+        result = lint_file(data, name, settings)
     if not result.error:
         _demoted(
             result,

@@ -7,10 +7,10 @@ parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from pathlib import Path
 
 from . import machine, suppression
-from .context import Context, Options
+from .config import Settings
+from .context import Context
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .rules import matches, registry
@@ -35,17 +35,36 @@ class Selection:
 
 @dataclass
 class FileSettings:
-    """Everything that decides what is reported for one file."""
+    """Everything that decides what is reported for one file: its settings (configuration nearest the file
+    with the command line applied), the codes `per-file-ignores` ignores for it, and what to keep."""
 
-    selection: Selection = field(default_factory=Selection)
-    options: Options = field(default_factory=Options)
-    severity: dict[str, str] = field(default_factory=dict)  # code -> severity override
+    settings: Settings = field(default_factory=Settings)
+    ignored_here: list[str] = field(default_factory=list)  # per-file-ignores matching this file
     keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
     keep_context: bool = False  # keep the rules' Context on the result (the language server reuses it)
-    fail_on: str = "error"  # lowest severity that fails the run (from the configuration nearest the file)
     machine_in_file: bool = (
         True  # check the lists of one XML file as a machine (off: the caller groups files)
     )
+
+    @classmethod
+    def of(
+        cls, select: list[str] | None = None, ignore: list[str] | None = None, **flags: bool
+    ) -> FileSettings:
+        """Settings that run the rules `select` (default: all) minus `ignore`."""
+        return cls(Settings(select=select, ignore=list(ignore or [])), **flags)
+
+    @property
+    def selection(self) -> Selection:
+        s = self.settings
+        return Selection(s.select, list(s.extend_select), [*s.ignore, *self.ignored_here])
+
+    @property
+    def severity(self) -> dict[str, str]:
+        return dict(self.settings.severity)
+
+    @property
+    def fail_on(self) -> str:
+        return self.settings.fail_on
 
 
 @dataclass
@@ -70,7 +89,7 @@ class FileResult:
         return any(d.severity.rank >= threshold for d in self.diagnostics)
 
 
-def check_bytes(
+def lint_file(
     data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None
 ) -> FileResult:
     """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`.
@@ -90,8 +109,8 @@ def check_bytes(
     return _check_file(file, name, settings, default_file=default_file)
 
 
-def check_parsed(file, name: str, settings: FileSettings | None = None, default_file=None) -> FileResult:
-    """`check_bytes` for a list that is already parsed (the language server parses edited lines only)."""
+def lint_parsed(file, name: str, settings: FileSettings | None = None, default_file=None) -> FileResult:
+    """`lint_file` for a list that is already parsed (the language server parses edited lines only)."""
     settings = settings or FileSettings()
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
@@ -119,7 +138,7 @@ def looks_like_a_list(file) -> bool:
 
 
 def _check_file(file, name: str, settings: FileSettings, embedded=None, default_file=None) -> FileResult:
-    ctx = Context(name, file, settings.options, embedded=embedded, default_file=default_file)
+    ctx = Context(name, file, settings.settings, embedded=embedded, default_file=default_file)
     enabled = settings.selection.enabled
     rules = registry()
     diagnostics: list[Diagnostic] = []
@@ -136,10 +155,7 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
         override = settings.severity.get(diagnostic.code)
         if override:
             diagnostic.severity = Severity(override)
-    # One file: sort by position and code. An int key is a third the size of a tuple key, which
-    # matters for lists with a million findings.
-    ranks = {code: rank for rank, code in enumerate(rules)}
-    diagnostics.sort(key=lambda d: ((d.line << 24) + d.column << 8) + ranks.get(d.code, 255))
+    diagnostics.sort(key=Diagnostic.sort_key)
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
     return FileResult(
         name,
@@ -205,18 +221,9 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])
 
 
-def lint_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
+def findings(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
     """Diagnostics for the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
-    result = check_bytes(data, name, settings)
+    result = lint_file(data, name, settings)
     if result.error or result.note:
         raise UnreadableInput(result.error or result.note)
     return result.diagnostics
-
-
-def lint_path(path: Path, name: str | None = None, settings: FileSettings | None = None) -> FileResult:
-    display = name or str(path)
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        return FileResult(display, [], f"cannot read {display}: {exc.strerror or exc}")
-    return check_bytes(data, display, settings)

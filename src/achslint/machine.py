@@ -13,6 +13,7 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -211,3 +212,27 @@ def first_uses(members: list[tuple[str, dict]], key: str):
             yield member, first[value]
         else:
             first[value] = member
+
+
+def check_machines(
+    groups: dict[str, list[tuple[str, dict]]], startups: list[Startup]
+) -> Iterator[tuple[str, Diagnostic]]:
+    """Every machine-level rule over every machine, as (code, finding).
+
+    `groups` holds each machine's members (list name, `summary`) by machine key: the path of the start-up
+    list that names them, or their folder. A start-up list none of whose axis lists was read is still
+    checked on its own (its entries may all be missing).
+    """
+    from .rules import registry
+
+    rules = [(code, rule.check_machine) for code, rule in registry().items() if rule.check_machine]
+    for key, members in groups.items():
+        own = [startup for startup in startups if str(startup.path) == key]
+        for code, check in rules:
+            for found in check(members, own):
+                yield code, found
+    for startup in startups:
+        if str(startup.path) not in groups:
+            for code, check in rules:
+                for found in check([], [startup]):
+                    yield code, found

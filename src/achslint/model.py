@@ -193,10 +193,10 @@ def _loc(path: str) -> tuple:
 
 
 def _rule_findings(text: str) -> list:
-    from .linter import FileSettings, Selection, lint_bytes
+    from .linter import FileSettings, findings
 
-    settings = FileSettings(Selection(["LIS3", "LIS4"]), keep_source=False)
-    return lint_bytes(text.encode("utf-8"), "<model>", settings)
+    settings = FileSettings.of(["LIS3", "LIS4"], keep_source=False)
+    return findings(text.encode("utf-8"), "<model>", settings)
 
 
 def dumps(axis: BaseModel) -> str:

@@ -33,7 +33,6 @@ INT, HEX, REAL, REFERENCE, STRING, BAD_STRING, SYMBOL = (
     "bad_string",
     "symbol",
 )
-NUMERIC_KINDS = frozenset({INT, HEX, REAL})
 
 GRAMMAR_NAME = "achsmds.lark"
 

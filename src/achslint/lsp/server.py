@@ -229,7 +229,7 @@ def _where(ls: AchslintServer, uri: str, position: lsp.Position):
 def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
     """The embedded list, its context and the list position under an XML position (TwinCAT CDATA, ISG XML)."""
     from ..decode import UnreadableInput
-    from ..linter import check_parsed
+    from ..linter import lint_parsed
     from ..syntax import parse_text
     from ..xmlinput import extract
     from .session import xml_bytes
@@ -246,7 +246,7 @@ def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
                 continue
             file = parse_text(embedded.text, document.name)
             config, _ = ls.session.config_for(document)
-            result = check_parsed(
+            result = lint_parsed(
                 file, document.name, ls.session.file_settings(config, document.path, document.name)
             )
             list_column = 1 if embedded.line_map is not None else column - xml_column + 1

@@ -1,9 +1,9 @@
 """What the language server knows about the open documents, computed by achslint's own API.
 
 Nothing here decides what a finding is: the file-level findings come from the linter
-(`linter.check_parsed` / `check_bytes`, the same path as `achslint lint`), the settings from
+(`linter.lint_parsed` / `lint_file`, the same path as `achslint lint`), the settings from
 the nearest configuration (`config.discover`, `api.file_settings`), and the machine-level
-findings from `api.Linter`'s machine step, fed with the lists of the document's folder (or
+findings from `api.LintRun`'s machine step, fed with the lists of the document's folder (or
 of the start-up list that names it) as the editor has them: open buffers, else the files.
 
 This module does not import pygls: the benchmarks time it directly.
@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..api import Linter, LintRequest, Target, file_settings
+from ..api import LintRequest, LintRun, Target, file_settings
 from ..config import (
     ConfigError,
     Overrides,
@@ -28,7 +28,7 @@ from ..config import (
 from ..decode import UnreadableInput
 from ..diagnostics import Diagnostic
 from ..files import not_a_list_file, read_list
-from ..linter import FileResult, check_bytes, check_parsed
+from ..linter import FileResult, lint_file, lint_parsed
 from ..machine import is_startup_list, read_startup
 from ..syntax import parse_bytes
 from ..xmlinput import is_xml
@@ -173,8 +173,7 @@ class Session:
         self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
         for uri in list(self._snapshots):
             self._snapshots[uri] = None  # type: ignore[assignment]
-        config._config_in.cache_clear()
-        config._load_cached.cache_clear()
+        config.forget_cached()
 
     # -- configuration -------------------------------------------------------------------------
     def config_for(self, document: Document) -> tuple[ResolvedConfig, str | None]:
@@ -210,7 +209,7 @@ class Session:
                 document.version, document.text, FileResult(name, []), config_error=config_error, startup=True
             )
         if is_xml(name):
-            result = check_bytes(xml_bytes(document.text), name, settings)
+            result = lint_file(xml_bytes(document.text), name, settings)
             return Snapshot(document.version, document.text, result, config_error=config_error)
         default_file = None
         machine = self.machine(document)
@@ -220,7 +219,7 @@ class Session:
             except (OSError, UnreadableInput):
                 default_file = None  # the start-up list's LIS504 says why
         file = document.parse()
-        result = check_parsed(file, name, settings, default_file)
+        result = lint_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
 
     def diagnostics(self, uri: str) -> tuple[Snapshot | None, list[Diagnostic], list[str]]:
@@ -350,7 +349,7 @@ class Session:
             except OSError as exc:
                 return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
             settings = file_settings(target.config, self.settings.overrides, target.path, keep_source=False)
-            full = check_bytes(data, target.name, settings, defaults)
+            full = lint_file(data, target.name, settings, defaults)
             cached = self._disk[key] = FileResult(target.name, [], full.error, summary=full.summary)
         return FileResult(target.name, [], cached.error, summary=cached.summary)
 
@@ -368,9 +367,9 @@ class Session:
                 )
             else:
                 results.append(self._summary_result(target))
-        linter = Linter(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
+        linter = LintRun(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
         linter.startups = machine.startups
-        extra = linter._machine_level(machine.targets, results)
+        extra = linter.machine_level(machine.targets, results)
         found: dict[str, list[Diagnostic]] = {}
         for result in results + extra:
             found.setdefault(_real(result.name), []).extend(result.diagnostics)
