@@ -499,6 +499,79 @@ def run_lint(request: LintRequest, stdin=None, progress=None) -> LintOutcome:
     return LintRun(request).run(stdin, progress)
 
 
+@dataclass
+class FormatRequest:
+    paths: list[str]
+    config_file: str | None = None
+    stdin_filename: str | None = None
+    mode: str = "write"  # write | check (change nothing) | diff (change nothing, say how)
+
+
+@dataclass
+class Formatted:
+    name: str
+    changed: bool
+    written: bool = False
+    diff: str = ""  # mode diff: the unified diff
+    output: bytes | None = None  # standard input in write mode: the formatted bytes
+
+
+@dataclass
+class FormatOutcome:
+    results: list[Formatted]
+    errors: list[str]
+    notes: list[str]
+    found: int  # lists found (XML files found in folders are not fmt's business and not counted)
+
+    @property
+    def changed(self) -> int:
+        return sum(result.changed for result in self.results)
+
+    @property
+    def written(self) -> int:
+        return sum(result.written for result in self.results)
+
+
+def run_format(request: FormatRequest, stdin=None) -> FormatOutcome:
+    """`achslint fmt`: format every list the paths name, writing (atomically, only if the file did not
+    change meanwhile), checking or diffing. Raises `ConfigError`."""
+    from .fmt import format_bytes, unified_diff
+
+    found = LintRun(
+        LintRequest(
+            paths=request.paths, config_file=request.config_file, stdin_filename=request.stdin_filename
+        )
+    ).discover()
+    outcome = FormatOutcome([], list(found.errors), list(found.notes), len(found.targets))
+    for target in found.targets:
+        if is_xml(target.name):
+            if target.name in request.paths:  # XML found in a folder is simply not fmt's business
+                outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            continue
+        try:
+            data = stdin.read() if target.path is None else read_list(target.path)
+            formatted, differs = format_bytes(data, target.name)
+        except OSError as exc:
+            outcome.errors.append(f"cannot read {target.name}: {reason(exc)}")
+            continue
+        except UnreadableInput as exc:
+            outcome.errors.append(f"{target.name}: {exc}")
+            continue
+        result = Formatted(target.name, differs)
+        if request.mode == "diff":
+            result.diff = unified_diff(data, formatted, target.name) if differs else ""
+        elif request.mode == "write" and target.path is None:
+            result.output = formatted
+        elif request.mode == "write" and differs:
+            try:
+                write_atomically(target.path, formatted, expected=data)
+                result.written = True
+            except OSError as exc:
+                outcome.errors.append(write_error(exc, target.name))
+        outcome.results.append(result)
+    return outcome
+
+
 def _as_bytes(source) -> tuple[bytes, str]:
     """The bytes and display name of a list given as a path (str or Path) or as bytes.
 
