@@ -127,6 +127,13 @@ def guarded(default=None):
     return wrap
 
 
+def _take_settings(ls: AchslintServer, raw: object) -> None:
+    """Use the editor's settings; codes that pick no rule are told to the user (and not used)."""
+    ls.session.settings = ClientSettings.from_dict(raw)
+    for problem in ls.session.settings.problems:
+        ls.window_show_message(lsp.ShowMessageParams(lsp.MessageType.Warning, problem))
+
+
 def _path(uri: str) -> Path | None:
     try:
         path = to_fs_path(uri)
@@ -138,7 +145,7 @@ def _path(uri: str) -> Path | None:
 @server.feature(lsp.INITIALIZE)
 @guarded()
 def initialize(ls: AchslintServer, params: lsp.InitializeParams):
-    ls.session.settings = ClientSettings.from_dict(params.initialization_options or {})
+    _take_settings(ls, params.initialization_options or {})
     folders = params.workspace_folders or []
     root = _path(folders[0].uri) if folders else (_path(params.root_uri) if params.root_uri else None)
     ls.session.root = root
@@ -203,7 +210,7 @@ def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams):
 @guarded()
 def did_change_configuration(ls: AchslintServer, params: lsp.DidChangeConfigurationParams):
     if isinstance(params.settings, dict) and params.settings:
-        ls.session.settings = ClientSettings.from_dict(params.settings)
+        _take_settings(ls, params.settings)
     ls.session.forget_disk()
     ls.publish_all()
 

@@ -24,6 +24,7 @@ from ..config import (
     Settings,
     discover,
     matches_glob,
+    parse_codes,
 )
 from ..decode import UnreadableInput
 from ..diagnostics import Diagnostic
@@ -46,20 +47,28 @@ class ClientSettings:
     ignore: list[str] = field(default_factory=list)
     inlay_hints: bool = False
     debounce_ms: int = 200
+    problems: list[str] = field(default_factory=list)  # codes that pick no rule (shown to the user, not used)
 
     @classmethod
     def from_dict(cls, raw) -> ClientSettings:
         if not isinstance(raw, dict):
             return cls()
         raw = raw.get("achslint", raw) if isinstance(raw.get("achslint"), dict) else raw
+        problems: list[str] = []
 
-        def codes(key):
+        def codes(key: str) -> list[str] | None:
             value = raw.get(key)
             if isinstance(value, str):
                 value = value.split(",")
             if not isinstance(value, list):
                 return None
-            return [str(c).strip().upper() for c in value if str(c).strip()]
+            chosen = []
+            for code in value:  # the same check as --select and the configuration file
+                try:
+                    chosen.extend(parse_codes([str(code)]))
+                except ValueError as exc:
+                    problems.append(f"achslint.{key}: {exc}")
+            return chosen
 
         debounce = raw.get("debounceMs", raw.get("debounce_ms", 200))
         return cls(
@@ -68,6 +77,7 @@ class ClientSettings:
             ignore=codes("ignore") or [],
             inlay_hints=bool(raw.get("inlayHints", raw.get("inlay_hints", False))),
             debounce_ms=debounce if isinstance(debounce, int) and 0 <= debounce <= 5000 else 200,
+            problems=problems,
         )
 
     @property
