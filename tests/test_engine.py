@@ -11,6 +11,8 @@ from hypothesis import strategies as st
 from achslint.dryrun import dry_run, prepare, sweep, trace_json
 from achslint.scenario import ScenarioInput
 
+from .conftest import examples
+
 AXIS = (
     "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
     "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
@@ -217,7 +219,7 @@ def test_json_has_the_stable_keys():
 # --- properties of every trace ---------------------------------------------------------------
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(
     start=st.floats(-400, 400),
     ref_richt=st.sampled_from(["0", "1"]),

@@ -16,7 +16,7 @@ from achslint.resolved import resolve_bytes
 from achslint.rules import registry
 from achslint.syntax import parse_bytes
 
-from .conftest import FIXTURES
+from .conftest import FIXTURES, examples
 
 NO_EFFECT = {"LIS105", "LIS401"}
 
@@ -118,7 +118,7 @@ def assert_consistent(data: bytes) -> str:
     return ctx.strategy.id
 
 
-@settings(max_examples=250, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(250), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(AXIS_LISTS)
 def test_generated_lists_never_contradict_themselves(data):
     assert_consistent(data)

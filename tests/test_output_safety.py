@@ -15,6 +15,8 @@ from achslint.display import printable
 from achslint.linter import FileResult, lint_file
 from achslint.reporters import REPORTERS, get
 
+from .conftest import examples
+
 TEXT_FORMATS = ("concise", "full", "github")
 RAW_CONTROL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
 
@@ -64,7 +66,7 @@ def assert_valid(fmt: str, out: str) -> None:
         assert not RAW_CONTROL.search(out), repr(out)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(path=HOSTILE, message=HOSTILE, source=HOSTILE, error=HOSTILE)
 def test_every_format_is_valid_for_any_name_and_message(path, message, source, error):
     name = path or "x"

@@ -17,6 +17,8 @@ from achslint.fmt import format_bytes, unified_diff
 from achslint.linter import lint_file
 from achslint.syntax import parse_text, split_lines
 
+from .conftest import examples
+
 OTHER_SPACES = ["\xa0", "\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x1f", "\x85", "\u2028", "\u2029", "\u3000"]
 
 
@@ -98,7 +100,7 @@ TEXT = st.lists(
 ).map(lambda rows: "".join(body + brk for body, brk in rows))
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=examples(400), deadline=None)
 @given(TEXT, st.sampled_from(["utf-8", "latin-1"]))
 def test_fmt_changes_blanks_and_tabs_only_and_keeps_every_line_break(text, encoding):
     data = text.encode(encoding, "ignore")
