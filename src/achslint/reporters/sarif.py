@@ -3,12 +3,17 @@
 from __future__ import annotations
 
 import hashlib
+from collections.abc import Mapping
 from pathlib import Path, PurePosixPath
+from typing import TYPE_CHECKING
 from urllib.parse import quote
 
 from .. import __version__
 from ..diagnostics import Severity, rule_url
 from . import write_json
+
+if TYPE_CHECKING:
+    from ..rules import Rule
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
@@ -42,12 +47,12 @@ def _fingerprint(d) -> str:
     ]
 
 
-def _rules(docs_url: str | None) -> list[dict]:
+def _rules(docs_url: str | None, chosen: Mapping[str, Rule] | None) -> list[dict]:
     from ..docs import rule_text
     from ..rules import registry
 
     rules = []
-    for rule in registry().values():
+    for rule in (registry() if chosen is None else chosen).values():
         rules.append(
             {
                 "id": rule.code,
@@ -63,9 +68,10 @@ def _rules(docs_url: str | None) -> list[dict]:
     return rules
 
 
-def document(results, docs_url: str | None = None) -> dict:
-    rules = _rules(docs_url)
-    index = {rule["id"]: position for position, rule in enumerate(rules)}
+def document(results, docs_url: str | None = None, rules: Mapping[str, Rule] | None = None) -> dict:
+    """The SARIF log; `rules` (default: every registered rule) are the rules its driver describes."""
+    described = _rules(docs_url, rules)
+    index = {rule["id"]: position for position, rule in enumerate(described)}
     sarif_results = []
     for result in results:
         for d in result.diagnostics:
@@ -118,7 +124,7 @@ def document(results, docs_url: str | None = None) -> dict:
                         "name": "achslint",
                         "version": __version__,
                         "informationUri": rule_url("index", docs_url).split("#", 1)[0],
-                        "rules": rules,
+                        "rules": described,
                     }
                 },
                 "invocations": [invocation],
