@@ -14,9 +14,12 @@ import os
 from dataclasses import MISSING, dataclass, field, fields, replace
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from .tomlfile import read_toml
+
+if TYPE_CHECKING:
+    from pydantic import ValidationError
 
 CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
 
@@ -183,7 +186,7 @@ def matches_glob(relative: str, pattern: str) -> bool:
     )
 
 
-def _format_error(path: Path, error, model) -> str:
+def _format_error(path: Path, error: ValidationError, model: Any) -> str:
     problems = []
     for item in error.errors():
         key = ".".join(str(part) for part in item["loc"]) or "(top level)"

@@ -7,6 +7,7 @@ parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 from . import machine, suppression
 from .config import Settings
@@ -14,8 +15,12 @@ from .context import Context
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .rules import matches, registry
-from .syntax import ASSIGNMENT, END, parse_bytes
+from .syntax import ASSIGNMENT, END, ListFile, parse_bytes
 from .xmlinput import is_xml
+
+if TYPE_CHECKING:
+    from .machine import Member, Summary
+    from .xmlinput import EmbeddedList
 
 
 @dataclass
@@ -48,10 +53,10 @@ class FileSettings:
 
     @classmethod
     def of(
-        cls, select: list[str] | None = None, ignore: list[str] | None = None, **flags: bool
+        cls, select: list[str] | None = None, ignore: list[str] | None = None, *, keep_source: bool = True
     ) -> FileSettings:
         """Settings that run the rules `select` (default: all) minus `ignore`."""
-        return cls(Settings(select=select, ignore=list(ignore or [])), **flags)
+        return cls(Settings(select=select, ignore=list(ignore or [])), keep_source=keep_source)
 
     @property
     def selection(self) -> Selection:
@@ -76,9 +81,9 @@ class FileResult:
     fixed: int = 0  # diagnostics fixed by --fix
     diff: str = ""  # what --fix --diff would change
     fixed_data: bytes | None = None  # the fixed content (standard input only)
-    summary: dict | None = None  # what the machine-level rules need (machine.summary)
+    summary: Summary | None = None  # what the machine-level rules need (machine.summary)
     context: Context | None = None  # with FileSettings.keep_context: the parsed, resolved list
-    summaries: list[dict] = field(default_factory=list)  # the same, one per list, for an XML file
+    summaries: list[Summary] = field(default_factory=list)  # the same, one per list, for an XML file
     note: str | None = None  # skipped on purpose (XML without an axis list): said once, not an error
     fail_on: str = "error"  # lowest severity that fails the run for this file (its configuration's fail-on)
 
@@ -109,7 +114,9 @@ def lint_file(
     return _check_file(file, name, settings, default_file=default_file)
 
 
-def lint_parsed(file, name: str, settings: FileSettings | None = None, default_file=None) -> FileResult:
+def lint_parsed(
+    file: ListFile, name: str, settings: FileSettings | None = None, default_file: ListFile | None = None
+) -> FileResult:
     """`lint_file` for a list that is already parsed (the language server parses edited lines only)."""
     settings = settings or FileSettings()
     if not looks_like_a_list(file):
@@ -123,7 +130,7 @@ NOT_A_LIST = (
 )
 
 
-def looks_like_a_list(file) -> bool:
+def looks_like_a_list(file: ListFile) -> bool:
     """Whether a file is an axis list at all: some line assigns a well-formed name, or it has the end marker.
 
     Anything else (a password file, the process environment, a binary) is reported once instead of line by
@@ -137,7 +144,13 @@ def looks_like_a_list(file) -> bool:
     return not content
 
 
-def _check_file(file, name: str, settings: FileSettings, embedded=None, default_file=None) -> FileResult:
+def _check_file(
+    file: ListFile,
+    name: str,
+    settings: FileSettings,
+    embedded: EmbeddedList | None = None,
+    default_file: ListFile | None = None,
+) -> FileResult:
     ctx = Context(name, file, settings.settings, embedded=embedded, default_file=default_file)
     enabled = settings.selection.enabled
     rules = registry()
@@ -167,7 +180,7 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
     )
 
 
-def _mapped_summary(summary: dict, embedded) -> dict:
+def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
     """A list's machine summary with its positions moved into the XML file."""
     mapped = dict(summary)
     for key, value in summary.items():
@@ -193,10 +206,10 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     except UnreadableInput as exc:
         return FileResult(name, [], str(exc))
     diagnostics: list[Diagnostic] = []
-    members: list[tuple[str, dict]] = []
+    members: list[Member] = []
     for embedded in lists:
         result = _check_file(parse_text(embedded.text, name), name, settings, embedded)
-        members.append((name, _mapped_summary(result.summary, embedded)))
+        members.append((name, _mapped_summary(result.summary or {}, embedded)))
         for d in result.diagnostics:
             d.line, d.column = embedded.position(d.line, d.column)
             d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
