@@ -114,16 +114,15 @@ class Parameter:
         always accepted: several parameters use an out-of-range default such
         as 0 or -1 to mean "not set".
         """
-        type_limits = TYPE_LIMITS.get(self.type)
+        type_low, type_high = TYPE_LIMITS.get(self.type, (None, None))
         low: float | None = self.min if isinstance(self.min, (int, float)) else None
         high: float | None = self.max if isinstance(self.max, (int, float)) else None
         integer = self.kind in (INTEGER, BOOL)
         if low is not None and self.min_strict and low == 0 and integer:
             low = 1
-        if high is not None and self.max_strict and integer and (type_limits is None or high != type_limits[1]):
+        if high is not None and self.max_strict and integer and high != type_high:
             high = high - 1
-        if type_limits is not None:
-            type_low, type_high = type_limits
+        if type_low is not None and type_high is not None:
             low = type_low if low is None else max(low, type_low)
             high = type_high if high is None else min(high, type_high)
         if isinstance(self.default, (int, float)) and not isinstance(self.default, bool):
