@@ -39,7 +39,14 @@ P-ERR-110148, P-ERR-110421, P-ERR-110422, P-ERR-110413.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..corrections import CAPPED_SPEEDS
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS303"
 NAME = "refmax-above-limits"
@@ -60,7 +67,7 @@ _ABOVE_MAX = (
 )
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     for gear in values.gear_stages_set("vb_refmax", "vb_reflow", "dynamik.vb_max"):
         vmax = f"getriebe[{gear}].dynamik.vb_max"

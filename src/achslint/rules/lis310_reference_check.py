@@ -37,6 +37,12 @@ TF5200 homing manual §2.5.1; P-AXIS-00425, P-AXIS-00426; CNC messages P-ERR-110
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS310"
 NAME = "reference-check"
@@ -69,7 +75,7 @@ def _element_bytes(ctx, element: str) -> int | None:
     return None
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     element = values.written(NAME_PATH) or ""
     bit = values.get(BIT_PATH)

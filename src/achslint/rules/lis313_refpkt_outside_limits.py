@@ -34,6 +34,13 @@ P-AXIS-00152 range (swe_neg < pos_refpkt < swe_pos); TF5200 homing manual §2 (s
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS313"
 NAME = "refpkt-outside-limits"
 SEVERITY = "error"
@@ -44,7 +51,7 @@ SUMMARY = "`pos_refpkt` not between the software limits"
 NEG, POS = "kenngr.swe_neg", "kenngr.swe_pos"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.axis_type == "S":
         return

@@ -47,6 +47,13 @@ and §2.3.3.4.4 (P-AXIS-00822 for simulation); ranges of P-AXIS-00333 and P-AXIS
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS315"
 NAME = "fixed-stop-setup"
 SEVERITY = "error"
@@ -83,7 +90,7 @@ def _active(path: str, value) -> bool:
     return value > 0
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.homing_type != "TORQ":
         return

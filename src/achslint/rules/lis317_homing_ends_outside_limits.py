@@ -45,6 +45,13 @@ position; software limits monitored once homing is complete) and §2.3.3.4 (retr
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
 SEVERITY = "warning"
@@ -61,7 +68,7 @@ PARAMETERS = (
 SUMMARY = "Homing ends outside the software limits (braking or retraction)"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     from ..engine import Simulator
     from ..scenario import default_scenario
 
