@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from .resolved import numeric
 from .units import describe
 
 if TYPE_CHECKING:
@@ -64,7 +63,7 @@ def encoder_overflow(axis: ResolvedAxis) -> None:
         )
         return
     revolution = encoder_revolution(axis, 0)
-    offset = numeric(axis.written(OFFSET), OFFSET)
+    offset = axis.written_number(OFFSET)
     if revolution and abs(offset) >= revolution:
         unit = axis.parameter(OFFSET).unit(axis.axis_type)
         axis.correct(
@@ -106,7 +105,7 @@ def speed_caps(axis: ResolvedAxis) -> None:
             continue  # 0: no limit
         for member, error in CAPPED_SPEEDS:
             path = f"getriebe[{gear}].{member}"
-            if numeric(axis.written(path), path) > cap:
+            if axis.written_number(path) > cap:
                 axis.correct(
                     path,
                     cap,
@@ -139,7 +138,7 @@ def sercos_latch(axis: ResolvedAxis) -> None:
             "the drive's zero-pulse latch (S-0-146) is not available for spindles; the CNC switches it off",
         )
         return
-    if not 1 <= numeric(axis.written(LAYOUT), LAYOUT) <= 16:
+    if not 1 <= axis.written_number(LAYOUT) <= 16:
         axis.correct(
             LAYOUT,
             1,

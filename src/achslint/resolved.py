@@ -164,6 +164,10 @@ class ResolvedAxis:
         """The value the CNC uses of a numeric parameter (see `numeric`)."""
         return numeric(self.get(path), path)
 
+    def written_number(self, path: str) -> float:
+        """The value of a numeric parameter before the CNC's corrections (see `numeric`)."""
+        return numeric(self.written(path), path)
+
     def written(self, path: str, _depth: int = 0) -> Value | None:
         """The value before the CNC's corrections (references followed, the default when unset)."""
         value = self._values.get(path)

@@ -55,7 +55,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     for gear in values.gear_stages_set("vb_reflow", "vb_refmax"):
         slow, fast = f"getriebe[{gear}].vb_reflow", f"getriebe[{gear}].vb_refmax"
-        if values.get(slow) > values.get(fast) and ctx.effective(slow, fast):
+        if values.number(slow) > values.number(fast) and ctx.effective(slow, fast):
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: slow homing speed {ctx.show(slow)} is higher than the fast one {ctx.show(fast)}; "

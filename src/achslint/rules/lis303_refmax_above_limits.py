@@ -73,7 +73,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         vmax = f"getriebe[{gear}].dynamik.vb_max"
         for member, words, error in _ABOVE_MAX:
             path = f"getriebe[{gear}].{member}"
-            if values.written(path) > values.get(vmax) and ctx.effective(path):
+            if values.written_number(path) > values.number(vmax) and ctx.effective(path):
                 yield ctx.cross(
                     CODE,
                     f"gear stage {gear}: {words} {ctx.show(path)} is above the maximum axis speed {ctx.show(vmax)} "
@@ -85,7 +85,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         for member, _ in CAPPED_SPEEDS:
             path = f"getriebe[{gear}].{member}"
             correction = ctx.correction(path)
-            if correction is not None and values.written(path) <= values.get(
+            if correction is not None and values.written_number(path) <= values.number(
                 f"getriebe[{gear}].dynamik.vb_max"
             ):
                 yield ctx.report_correction(

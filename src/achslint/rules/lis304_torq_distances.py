@@ -66,7 +66,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if not (values.is_set(MIN) or values.is_set(MAX)) or not ctx.effective(MIN, MAX):
         return  # only fixed-stop homing reads them
-    low, high = values.get(MIN), values.get(MAX)
+    low, high = values.number(MIN), values.number(MAX)
     if (low or high) and low >= high:
         yield ctx.cross(
             CODE,

@@ -69,12 +69,12 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
             CODE, correction, f"{ctx.show(DIST)} on a linear axis{assumed}", [DIST, "kenngr.achs_typ"]
         )
         return
-    limit = values.get(DIST)
+    limit = values.number(DIST)
     if not limit or values.axis_type == "T" or not ctx.effective(DIST):
         return
     for gear in sorted(set(values.gear_stages_set("moduloo", "modulou")) | {0}):
         upper, lower = f"getriebe[{gear}].moduloo", f"getriebe[{gear}].modulou"
-        span = values.get(upper) - values.get(lower)
+        span = values.number(upper) - values.number(lower)
         if limit < span:
             yield ctx.cross(
                 CODE,

@@ -58,10 +58,10 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     stages = values.gear_stages_set("pos_refpkt")
     if values.is_set(NEG) or values.is_set(POS):
         stages = sorted(set(stages) | {0})
-    low, high = values.get(NEG), values.get(POS)
+    low, high = values.number(NEG), values.number(POS)
     for gear in stages:
         path = f"getriebe[{gear}].pos_refpkt"
-        position = values.get(path)
+        position = values.number(path)
         if not low < position < high and ctx.effective(path):
             side = NEG if position <= low else POS
             yield ctx.cross(

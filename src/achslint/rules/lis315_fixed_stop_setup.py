@@ -51,6 +51,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from ..catalogue import Value
     from ..context import Context
     from ..diagnostics import Diagnostic
 
@@ -82,9 +83,9 @@ GENERAL = [
 ]
 
 
-def _active(path: str, value) -> bool:
-    if value is None:
-        return False
+def _active(path: str, value: Value | None) -> bool:
+    if not isinstance(value, (int, float)):
+        return False  # no value
     if path.endswith("detect.detect_velocity_limit"):
         return value < 1000  # 1000 = not active
     return value > 0
@@ -131,7 +132,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
             (speed, vmax, "speed", "P-AXIS-00333"),
             (accel, amax, "acceleration", "P-AXIS-00334"),
         ):
-            value = values.written(path)
+            value = values.written_number(path)
             if not value:
                 if gear == 0 or values.is_set(path):
                     yield ctx.cross(
@@ -140,7 +141,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
                         f"of at least 1 ({pid}); without it the axis does not move",
                         [path],
                     )
-            elif value > values.get(limit):
+            elif value > values.number(limit):
                 yield ctx.cross(
                     CODE,
                     f"gear stage {gear}: {ctx.show(path)} must not exceed {ctx.show(limit)} (§2.3.3.5)",

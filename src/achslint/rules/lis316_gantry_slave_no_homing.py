@@ -41,7 +41,7 @@ P-AXIS-00074 (axis types T, R; not supported for spindles); TF5200 homing manual
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..diagnostics import Diagnostic, Related, Severity
 from ..machine import Startup, diagnostic
@@ -92,5 +92,5 @@ def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iter
         )
 
 
-def _length(value, info) -> str:
+def _length(value: object, info: dict[str, Any]) -> str:
     return describe(value, "0.0001deg" if info.get("axis_type", "T") != "T" else "0.1um")

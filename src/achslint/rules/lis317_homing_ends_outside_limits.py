@@ -78,7 +78,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     probe = Simulator(values, strategy, default_scenario(strategy, cycle_time_us=ctx.options.cycle_time_us))
     if strategy.id == "fixed_stop":
         # Only the distances matter: put the stop where detection is certain.
-        low = values.get("kenngr.homing.torq_min_distance") * 1e-4
+        low = values.number("kenngr.homing.torq_min_distance") * 1e-4
         probe.scenario.fixed_stop = probe.scenario.start_position + (
             1 if values.get("kenngr.homing.torq_homing_dir") else -1
         ) * (low + 1.0)

@@ -50,7 +50,7 @@ PARAMETERS = ("antr.reference_cam_signal", "kenngr.antr_typ")  # parameters this
 SUMMARY = "Reference cam read from an input the drive type does not have"
 
 SIGNAL = "antr.reference_cam_signal"
-INPUTS = {
+INPUTS: dict[int, tuple[str, ...]] = {
     DriveType.SERCOS: ("PLC", "RT_STATUS_BIT_1", "RT_STATUS_BIT_2"),
     DriveType.CANOPEN: (
         "PLC",

@@ -80,7 +80,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         path = f"getriebe[{gear}].{member}"
         if not ctx.effective(path):
             continue
-        spread = values.get(path) * cycle / 1e6
+        spread = values.number(path) * cycle / 1e6
         if spread > tolerance:
             best = int(tolerance * 1e6 / cycle)
             yield ctx.cross(

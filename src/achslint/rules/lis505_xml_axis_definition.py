@@ -65,9 +65,11 @@ SUMMARY = "TwinCAT axis definition (DriveType, Spindle) disagrees with the axis 
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
+    from ..xmlinput import EmbeddedList
+
     embedded = ctx.embedded
-    if embedded is None:
-        return
+    if not isinstance(embedded, EmbeddedList):
+        return  # not a list from an XML file
     values = ctx.values
     if (
         embedded.drive_type is not None
