@@ -82,7 +82,10 @@ def encoder_revolution(axis: ResolvedAxis, gear: int) -> float | None:
         axis.number(f"getriebe[{gear}].wegaufz"),
         axis.number(f"getriebe[{gear}].wegaufn"),
     )
-    if not bits or not numerator:
+    _, most = axis.parameter(BITS).limits
+    if not bits or not numerator or (most is not None and bits > most):
+        # A reference can bring a number beyond encoder_bit_range's range (its value is not range-checked);
+        # it describes no encoder, and 2 to its power may not even fit a float.
         return None
     return (2**bits) * denominator / numerator
 
