@@ -15,6 +15,7 @@ import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from ..api import LintRequest, LintRun, Target, file_settings
 from ..config import (
@@ -27,13 +28,16 @@ from ..config import (
     parse_codes,
 )
 from ..decode import UnreadableInput
-from ..diagnostics import Diagnostic
+from ..diagnostics import Diagnostic, Severity
 from ..files import not_a_list_file, read_list
-from ..linter import FileResult, lint_file, lint_parsed
-from ..machine import is_startup_list, read_startup
-from ..syntax import parse_bytes
+from ..linter import FileResult, FileSettings, lint_file, lint_parsed
+from ..machine import Startup, is_startup_list, read_startup
+from ..syntax import ListFile, parse_bytes
 from ..xmlinput import is_xml
 from .documents import Document
+
+if TYPE_CHECKING:
+    from ..context import Context
 
 
 @dataclass
@@ -50,10 +54,10 @@ class ClientSettings:
     problems: list[str] = field(default_factory=list)  # codes that pick no rule (shown to the user, not used)
 
     @classmethod
-    def from_dict(cls, raw) -> ClientSettings:
-        if not isinstance(raw, dict):
+    def from_dict(cls, given: object) -> ClientSettings:
+        if not isinstance(given, dict):
             return cls()
-        raw = raw.get("achslint", raw) if isinstance(raw.get("achslint"), dict) else raw
+        raw: dict[str, Any] = given["achslint"] if isinstance(given.get("achslint"), dict) else given
         problems: list[str] = []
 
         def codes(key: str) -> list[str] | None:
@@ -92,8 +96,8 @@ class Snapshot:
     version: int | None
     text: str
     result: FileResult
-    file: object = None  # syntax.ListFile (lists only)
-    context: object = None  # context.Context (lists only)
+    file: ListFile | None = None  # lists only
+    context: Context | None = None  # lists only
     config_error: str | None = None
     startup: bool = False  # a start-up list: only its entries are checked (LIS504), as in `achslint lint`
 
@@ -103,7 +107,7 @@ class Machine:
     """The lists that form a machine with a document, as `achslint lint` would group them."""
 
     targets: list[Target]
-    startups: list
+    startups: list[Startup]
     defaults: Path | None = None  # the default list loaded under the document (start-up list)
 
 
@@ -138,17 +142,17 @@ def _real(path: Path | str) -> str:
 
 
 class Session:
-    def __init__(self, root: Path | None = None):
+    def __init__(self, root: Path | None = None) -> None:
         self.root = root
         self.settings = ClientSettings()
         self.documents: dict[str, Document] = {}
-        self._snapshots: dict[str, Snapshot] = {}
-        self._disk: dict[tuple, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
+        self._snapshots: dict[str, Snapshot | None] = {}  # None: to be linted again
+        self._disk: dict[_DiskKey, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
         self._by_real: dict[str, Document] = {}  # open files by real path
         self._machines: dict[
             str, Machine | None
         ] = {}  # real path of a list -> its machine (until forget_disk)
-        self._machine_found: dict[str, list] = {}  # uri -> the machine findings last reported for it
+        self._machine_found: dict[str, list[_Found]] = {}  # uri -> the machine findings last reported for it
 
     # -- documents ---------------------------------------------------------------------------
     def open(self, document: Document) -> None:
@@ -182,7 +186,7 @@ class Session:
         _REAL.clear()
         self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
         for uri in list(self._snapshots):
-            self._snapshots[uri] = None  # type: ignore[assignment]
+            self._snapshots[uri] = None
         config.forget_cached()
 
     # -- configuration -------------------------------------------------------------------------
@@ -193,7 +197,7 @@ class Session:
         except ConfigError as exc:
             return ResolvedConfig(Settings()), str(exc)
 
-    def file_settings(self, config: ResolvedConfig, path: Path | None, name: str):
+    def file_settings(self, config: ResolvedConfig, path: Path | None, name: str) -> FileSettings:
         settings = file_settings(config, self.settings.overrides, path or Path(name), keep_source=False)
         settings.keep_context = True
         return settings
@@ -301,7 +305,7 @@ class Session:
         return Machine(targets, [startup], defaults)
 
     @staticmethod
-    def _read_startup(path: Path):
+    def _read_startup(path: Path) -> Startup:
         """A start-up list's entries, as saved on disk (the CNC and `achslint lint` read the file too)."""
         return read_startup(path)
 
@@ -331,18 +335,20 @@ class Session:
             ):
                 continue
             targets.append(Target(str(candidate), candidate, self._config(candidate), machine=str(folder)))
-        if not any(_real(t.path) == _real(path) for t in targets):
+        if not any(_real(t.path or t.name) == _real(path) for t in targets):
             return None  # not a list `lint FOLDER` would take: no machine rules, as on the command line
         return Machine(targets, [])
 
     def _summary_result(self, target: Target) -> FileResult:
         """A member's result (its summary is what the machine rules compare): open buffer or file."""
-        document = self.by_path(target.path)
-        if document is not None and not is_startup_list(target.path):
+        path = target.path or Path(target.name)  # the lists of a machine are files
+        document = self.by_path(path)
+        if document is not None and not is_startup_list(path):
             snapshot = self.snapshot(document.uri)
-            return FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
+            if snapshot is not None:  # an open document always has one
+                return FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
         try:
-            info = os.stat(target.path)
+            info = os.stat(path)
             stamp = (info.st_mtime_ns, info.st_size)
             defaults_stamp = None
             if target.defaults is not None:
@@ -350,15 +356,15 @@ class Session:
                 defaults_stamp = (str(target.defaults), default_info.st_mtime_ns, default_info.st_size)
         except OSError as exc:
             return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
-        key = (_real(target.path), stamp, defaults_stamp, repr(self.settings.overrides))
+        key = (_real(path), stamp, defaults_stamp, repr(self.settings.overrides))
         cached = self._disk.get(key)
         if cached is None:
             try:
-                data = read_list(target.path)
+                data = read_list(path)
                 defaults = self.text_of(target.defaults) if target.defaults is not None else None
             except OSError as exc:
                 return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
-            settings = file_settings(target.config, self.settings.overrides, target.path, keep_source=False)
+            settings = file_settings(target.config, self.settings.overrides, path, keep_source=False)
             full = lint_file(data, target.name, settings, defaults)
             cached = self._disk[key] = FileResult(target.name, [], full.error, summary=full.summary)
         return FileResult(target.name, [], cached.error, summary=cached.summary)
@@ -366,12 +372,12 @@ class Session:
     def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> dict[str, list[Diagnostic]]:
         """The machine-level findings of every list of the document's machine, by real path."""
         machine = self.machine(document)
-        if machine is None:
+        if machine is None or document.path is None:
             return {}
         real = _real(document.path)
-        results = []
+        results: list[FileResult] = []
         for target in machine.targets:
-            if _real(target.path) == real and not snapshot.startup:
+            if _real(target.path or target.name) == real and not snapshot.startup:
                 results.append(
                     FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
                 )
@@ -390,5 +396,9 @@ class Session:
         return found
 
 
-def _key(d: Diagnostic) -> tuple:
+_Found = tuple[int, int, str, str, Severity]  # what tells two findings apart (for `peers`)
+_DiskKey = tuple[str, tuple[int, int], tuple[str, int, int] | None, str]
+
+
+def _key(d: Diagnostic) -> _Found:
     return (d.line, d.column, d.code, d.message, d.severity)

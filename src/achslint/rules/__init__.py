@@ -18,8 +18,21 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from types import ModuleType
+from typing import TYPE_CHECKING, Any
 
-from ..diagnostics import Severity
+from ..diagnostics import Diagnostic, Severity
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..machine import Startup
+    from ..suppression import Directive
+
+# A list of a machine for the machine-level rules: its name and what `machine.summary` took from it.
+MachineMember = tuple[str, dict[str, Any]]
+# The three kinds of rule function (see the module docstring).
+Check = Callable[["Context"], Iterable[Diagnostic]]
+CheckAfter = Callable[["Context", "list[Directive]", Callable[[str], bool]], Iterable[Diagnostic]]
+CheckMachine = Callable[[list[MachineMember], "list[Startup]"], Iterable[Diagnostic]]
 
 RULE_MODULES = (
     "lis001_syntax_error",
@@ -89,11 +102,11 @@ class Rule:
     fix: str
     summary: str
     doc: str
-    check: Callable | None
+    check: Check | None
     module: ModuleType
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
-    check_after: Callable | None = None
-    check_machine: Callable | None = None
+    check_after: CheckAfter | None = None
+    check_machine: CheckMachine | None = None
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
 
     def section(self, title: str) -> str:

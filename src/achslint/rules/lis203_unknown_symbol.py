@@ -32,10 +32,18 @@ P-AXIS-00299 value table; documented inconsistency B.14 (`DRIVE_CONROLLED` is a 
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterator
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 from ..facts import UnknownSymbol
 from ._common import value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS203"
 NAME = "unknown-symbol"
@@ -76,7 +84,7 @@ def replacement(fact: UnknownSymbol) -> str | None:
     return strong[0] if len(strong) == 1 else None
 
 
-def message(fact: UnknownSymbol, setting) -> str:
+def message(fact: UnknownSymbol, setting: Setting, parameter: Parameter) -> str:
     text = f"`{fact.text}` is not a value of `{setting.canonical}`"
     closest = _closest(fact)
     if closest:
@@ -87,5 +95,5 @@ def message(fact: UnknownSymbol, setting) -> str:
     return text
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message, replacement, applicability="safe")
