@@ -249,8 +249,17 @@ def lint(
         metavar="DIR",
         help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist).",
     ),
+    machine: str | None = typer.Option(
+        None,
+        "--machine",
+        metavar="STARTUP",
+        help="Start-up list (hochlauf.lis) of the machine the NC programs among PATH (rfp.nc) are checked against (LIS6xx).",
+    ),
+    channel: int = typer.Option(
+        1, "--channel", min=1, max=12, help="With --machine: the channel whose axis names the programs use."
+    ),
 ) -> None:
-    """Lint axis parameter lists."""
+    """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .api import LintRequest, run_lint
     from .config import ConfigError, Overrides
 
@@ -285,6 +294,8 @@ def lint(
         keep_source=fmt in ("full", "gitlab"),
         force_exclude=force_exclude,
         respect_gitignore=respect_gitignore,
+        machine=machine,
+        channel=channel,
     )
     quiet = quiet or silent
     try:
