@@ -291,7 +291,7 @@ class _Reader:
             axis_words.append(
                 AxisWord(word.address, float(int(value)), self.at(number, word.column, word.end_column))
             )
-        if not words:
+        if not words and keep:  # (a block that cannot be read has its own problem)
             self.problem(
                 number,
                 location.column,
