@@ -102,7 +102,7 @@ def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
             if axis is None or axis.resolved.homing_type != "DISABLED":
                 continue
             origin = axis.resolved.setting("kenngr.homing.homing_type")
-            related = ()
+            related: tuple[Related, ...] = ()
             if origin is not None and axis.list_path is not None:
                 related = (
                     Related(
