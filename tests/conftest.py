@@ -10,6 +10,15 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "fixtures"
 
+# Property tests run a bounded number of examples so the suite stays fast; ACHSLINT_THOROUGH=1 runs each
+# test's full budget (for a nightly job or before a release).
+THOROUGH = os.environ.get("ACHSLINT_THOROUGH", "") not in ("", "0")
+
+
+def examples(full: int, quick: int = 40) -> int:
+    """The number of hypothesis examples a property test runs: `full` when thorough, else at most `quick`."""
+    return full if THOROUGH else min(full, quick)
+
 
 def run_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> subprocess.CompletedProcess:
     """Run the CLI's entry point (`achslint.cli.main`, what the console script calls) in this process, with

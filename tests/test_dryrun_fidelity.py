@@ -29,7 +29,7 @@ from achslint.dryrun import (
 )
 from achslint.scenario import ScenarioError, ScenarioInput, parse_input
 
-from .conftest import FIXTURES
+from .conftest import FIXTURES, examples
 
 X_AXIS = FIXTURES / "lists" / "achsmds1.lis"
 
@@ -501,7 +501,7 @@ def _toml(value: float) -> str:
     return repr(float(value))  # nan, inf and -inf are TOML spellings too
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(60), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     axis=st.sampled_from(sorted(LISTS)),
     scalars=st.dictionaries(st.sampled_from(FIELDS), NUMBERS, max_size=4),

@@ -11,6 +11,8 @@ from hypothesis import strategies as st
 from achslint.dryrun import dry_run, prepare, sweep, trace_json
 from achslint.scenario import ScenarioInput
 
+from .conftest import examples
+
 AXIS = (
     "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
     "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
@@ -154,6 +156,21 @@ def test_fixed_stop_by_hand():
     assert missing.outcome == "failed" and "torq_max_distance" in missing.failure
 
 
+def test_fixed_stop_without_a_stop_in_the_scenario_aborts_after_the_maximum_distance():
+    # A Scenario built in Python may have no fixed stop at all: the move ends at torq_max_distance
+    # (2000000 x 0.1 µm = 200 mm), as when the stop lies beyond it (it raised a TypeError before).
+    text = (
+        b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+        b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+        b"kenngr.homing.torq_max_distance 2000000\nEnde\n"
+    )
+    simulator = prepare(text, "torq.lis", ScenarioInput(start_position=0.0))
+    simulator.scenario.fixed_stop = None
+    trace = simulator.run()
+    assert trace.outcome == "failed" and "torq_max_distance" in (trace.failure or "")
+    assert approx(trace.phases[0].end_position, 200.0 + 0.25)  # braking from 5 mm/s at 50 mm/s²: 0.25 mm
+
+
 def test_absolute_and_disabled_axes_do_not_move():
     assert dry_run(b"kenngr.abs_pos_gueltig 1\nEnde\n", "a.lis").trace.outcome == "not_required"
     disabled = dry_run(b"kenngr.homing.homing_type DISABLED\nEnde\n", "d.lis").trace
@@ -217,7 +234,7 @@ def test_json_has_the_stable_keys():
 # --- properties of every trace ---------------------------------------------------------------
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(
     start=st.floats(-400, 400),
     ref_richt=st.sampled_from(["0", "1"]),

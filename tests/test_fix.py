@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from achslint.fixer import fix_bytes
-from achslint.linter import FileSettings, Selection
+from achslint.linter import FileSettings
 
 from .conftest import FIXTURES
 
@@ -15,7 +15,7 @@ SAFE = ["LIS002", "LIS004", "LIS006", "LIS102", "LIS203"]  # LIS101's fixture fi
 @pytest.mark.parametrize("code", SAFE)
 def test_safe_fix_removes_the_finding_and_is_stable(code):
     data = (FIXTURES / "rules" / code / "bad.lis").read_bytes()
-    settings = FileSettings(Selection([code]))
+    settings = FileSettings.of([code])
     outcome = fix_bytes(data, "bad.lis", settings)
     assert outcome.fixed >= 1
     remaining = [d for d in outcome.result.diagnostics if d.code == code]

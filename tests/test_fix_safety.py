@@ -8,7 +8,7 @@ from collections import Counter
 import pytest
 
 from achslint.fixer import behaviour, fix_bytes
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 
 from .conftest import FIXTURES
 
@@ -50,11 +50,11 @@ def test_a_name_fix_that_writes_the_value_the_cnc_already_uses_is_safe():
 @pytest.mark.parametrize("path", sorted(FIXTURES.rglob("*.lis")), ids=lambda p: str(p.relative_to(FIXTURES)))
 def test_safe_fixes_over_every_fixture_keep_behaviour_and_add_no_finding(path):
     data = path.read_bytes()
-    before = check_bytes(data, path.name)
+    before = lint_file(data, path.name)
     if before.error:
         return
     outcome = fix_bytes(data, path.name)
-    after = check_bytes(outcome.data, path.name)
+    after = lint_file(outcome.data, path.name)
     assert after.error is None
     new = Counter((d.code, d.parameter) for d in after.diagnostics) - Counter(
         (d.code, d.parameter) for d in before.diagnostics

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from achslint.decode import decode
 from achslint.fmt import format_bytes
 
-from .conftest import FIXTURES
+from .conftest import FIXTURES, examples
 
 MESSY = (
     "# header comment   \r\n"
@@ -99,7 +99,7 @@ PIECES = st.sampled_from(
 )
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=examples(300), deadline=None)
 @given(st.lists(PIECES, max_size=40).map("".join))
 def test_format_preserves_tokens_and_is_idempotent(text):
     data = text.encode("latin-1")

@@ -11,12 +11,12 @@ from achslint.context import Context
 from achslint.dryrun import DryRunRefused, dry_run, prepare
 from achslint.explain import explain_list
 from achslint.homing import STRATEGY_MODULES, strategies
-from achslint.linter import FileSettings, check_bytes
+from achslint.linter import FileSettings, lint_file
 from achslint.resolved import resolve_bytes
 from achslint.rules import registry
 from achslint.syntax import parse_bytes
 
-from .conftest import FIXTURES
+from .conftest import FIXTURES, examples
 
 NO_EFFECT = {"LIS105", "LIS401"}
 
@@ -76,7 +76,7 @@ AXIS_LISTS = st.lists(
 
 def assert_consistent(data: bytes) -> str:
     """Every invariant for one list; returns the strategy id."""
-    diagnostics = check_bytes(data, "t.lis", FileSettings(keep_source=False)).diagnostics
+    diagnostics = lint_file(data, "t.lis", FileSettings(keep_source=False)).diagnostics
     without_effect = {d.parameter for d in diagnostics if d.code in NO_EFFECT}
     rules = registry()
     for d in diagnostics:
@@ -118,7 +118,7 @@ def assert_consistent(data: bytes) -> str:
     return ctx.strategy.id
 
 
-@settings(max_examples=250, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(250), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(AXIS_LISTS)
 def test_generated_lists_never_contradict_themselves(data):
     assert_consistent(data)

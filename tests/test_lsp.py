@@ -227,6 +227,19 @@ async def test_config_of_the_files_folder_is_honoured(client: LanguageClient, fo
     close_doc(client, first), close_doc(client, second)
 
 
+async def test_editor_settings_with_a_code_that_picks_no_rule_are_told_not_used(client: LanguageClient):
+    shown = client.wait_for_notification(lsp.WINDOW_SHOW_MESSAGE)
+    client.workspace_did_change_configuration(
+        lsp.DidChangeConfigurationParams({"achslint": {"debounceMs": 20, "ignore": ["LIS9999", "LIS203"]}})
+    )
+    message = await asyncio.wait_for(shown, 10)
+    assert message.type == lsp.MessageType.Warning
+    assert "achslint.ignore" in message.message and "LIS9999" in message.message
+    client.workspace_did_change_configuration(
+        lsp.DidChangeConfigurationParams({"achslint": {"debounceMs": 20, "inlayHints": True}})
+    )
+
+
 async def test_machine_rule_uses_open_buffers_and_files(client: LanguageClient, folder: Path):
     machine = folder / "machine"
     machine.mkdir()

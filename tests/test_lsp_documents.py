@@ -11,6 +11,8 @@ from hypothesis import strategies as st
 from achslint.lsp.documents import Document, LineCache
 from achslint.syntax import parse_text
 
+from .conftest import examples
+
 PIECES = st.sampled_from(
     [
         "kopf.achs_nr",
@@ -60,7 +62,7 @@ def fields(file):
     ], file.end_index
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(TEXTS, TEXTS, st.integers(min_value=0, max_value=400))
 def test_line_cache_parse_equals_the_full_parse_after_any_edit(before, inserted, at):
     cache = LineCache()

@@ -83,3 +83,16 @@ def test_a_shared_default_name_says_it_is_the_default(cli, tmp_path):
     result = cli("lint", str(tmp_path), "--format", "json", "--select", "LIS502")
     (message,) = [d["message"] for d in json.loads(result.stdout)["diagnostics"]]
     assert "not written" not in message  # written in the list that is reported
+
+
+def test_machine_findings_on_a_utf8_list_show_its_text_as_written(cli, tmp_path):
+    # The second list only gets a finding from the machine-level rule (LIS501), so its lines are read
+    # again for the code frame: through the same decoding as the list itself (UTF-8 here, not Latin-1).
+    for number in (1, 2):
+        (tmp_path / f"achsmds{number}.lis").write_text(
+            "( Wegauflösung 1 µm )\nkopf.achs_nr 1\nEnde\n", encoding="utf-8"
+        )
+    shown = cli("lint", str(tmp_path), "--select", "LIS501", "--format", "full").stdout.decode()
+    assert "LIS501" in shown
+    assert "kopf.achs_nr 1" in shown
+    assert "Ã" not in shown and "Â" not in shown

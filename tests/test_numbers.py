@@ -7,7 +7,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from achslint.catalogue import catalogue
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.numbers import (
     NumberProblem,
     Reference,
@@ -82,7 +82,7 @@ def test_unit_formatting_takes_any_value():
     ],
 )
 def test_huge_numbers_in_a_list_are_findings(line, code, words):
-    result = check_bytes(line + b"\nEnde\n", "achsmds1.lis")
+    result = lint_file(line + b"\nEnde\n", "achsmds1.lis")
     assert result.error is None
     [finding] = [d for d in result.diagnostics if d.code == code]
     assert words in finding.message

@@ -12,8 +12,10 @@ from hypothesis import strategies as st
 
 from achslint.diagnostics import Diagnostic, Fix, Related, Severity
 from achslint.display import printable
-from achslint.linter import FileResult, check_bytes
+from achslint.linter import FileResult, lint_file
 from achslint.reporters import REPORTERS, get
+
+from .conftest import examples
 
 TEXT_FORMATS = ("concise", "full", "github")
 RAW_CONTROL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
@@ -64,7 +66,7 @@ def assert_valid(fmt: str, out: str) -> None:
         assert not RAW_CONTROL.search(out), repr(out)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(path=HOSTILE, message=HOSTILE, source=HOSTILE, error=HOSTILE)
 def test_every_format_is_valid_for_any_name_and_message(path, message, source, error):
     name = path or "x"
@@ -88,7 +90,7 @@ def test_every_format_is_valid_for_any_name_and_message(path, message, source, e
 
 def test_escape_sequences_from_a_list_are_shown_escaped():
     data = b"kenngr.homing.homing_type \x1b[2J\x1b]0;owned\x07\nEnde\n"
-    result = check_bytes(data, "achsmds\x1b[31m1.lis")
+    result = lint_file(data, "achsmds\x1b[31m1.lis")
     for fmt in TEXT_FORMATS:
         out = render(fmt, [result], {result.name: result.source_lines})
         assert "\x1b" not in out and "\x07" not in out
@@ -97,7 +99,7 @@ def test_escape_sequences_from_a_list_are_shown_escaped():
 
 
 def test_the_caret_stays_under_an_escaped_value():
-    result = check_bytes(b"kenngr.homing.homing_type \x1bTORQ\nEnde\n", "a.lis")
+    result = lint_file(b"kenngr.homing.homing_type \x1bTORQ\nEnde\n", "a.lis")
     out = render("full", [result], {"a.lis": result.source_lines}).splitlines()
     frame = next(i for i, line in enumerate(out) if line.startswith("1 │ "))
     text, caret = out[frame], out[frame + 1]

@@ -113,6 +113,7 @@ def hook_repo(tmp_path_factory) -> Path:
     return repo
 
 
+@pytest.mark.slow  # builds the hook's environment with pip (~20 s): run by `.ci/run` as `pytest -m slow`
 def test_pre_commit_try_repo_reports_the_repeated_axis_number(tmp_path, hook_repo):
     """The case from the issue: 8 lists, one reusing axis 1. The hook fails as a direct run does, with all
     files and with only the changed list passed."""

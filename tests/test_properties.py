@@ -12,13 +12,13 @@ import achslint
 from achslint.decode import UnreadableInput, decode
 from achslint.dryrun import dry_run, trace_json
 from achslint.explain import explain_list
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.listdiff import diff_lists
 from achslint.reporters import REPORTERS, get
 from achslint.scenario import ScenarioError
 from achslint.syntax import parse_bytes
 
-from .conftest import run_cli
+from .conftest import examples, run_cli
 
 # Pieces real lists are made of, so that generated input reaches deep into the rules.
 PIECES = st.sampled_from(
@@ -74,10 +74,10 @@ RAW = st.one_of(
 )
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(300), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(RAW)
 def test_any_bytes_lint_without_exception_and_report_in_every_format(data):
-    result = check_bytes(data, "fuzz.lis")
+    result = lint_file(data, "fuzz.lis")
     for name in REPORTERS:
         get(name)([result], io.StringIO(), sources={result.name: result.source_lines})
     for d in result.diagnostics:
@@ -86,7 +86,7 @@ def test_any_bytes_lint_without_exception_and_report_in_every_format(data):
         assert d.message
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=examples(300), deadline=None)
 @given(RAW)
 def test_parse_unparse_is_byte_identical(data):
     try:
@@ -114,7 +114,7 @@ def _readable_or_refused(call):
         return None
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(150), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(RAW)
 def test_any_bytes_give_a_typed_model_or_a_clear_refusal(data):
     model = _readable_or_refused(lambda: achslint.load(data))
@@ -126,7 +126,7 @@ def test_any_bytes_give_a_typed_model_or_a_clear_refusal(data):
         json.dumps(dumped)
 
 
-@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(100), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(RAW, RAW)
 def test_any_bytes_explain_diff_and_dry_run_without_exception(data, other):
     report = _readable_or_refused(lambda: explain_list(data, "fuzz.lis"))
@@ -170,12 +170,12 @@ XML_PIECES = st.sampled_from(
 )
 
 
-@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(200), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     st.one_of(st.binary(max_size=300), st.lists(XML_PIECES, max_size=40).map(lambda p: "".join(p).encode()))
 )
 def test_any_bytes_named_xml_give_diagnostics_or_an_error(data):
-    result = check_bytes(data, "fuzz.xml")
+    result = lint_file(data, "fuzz.xml")
     assert result.error is None or "fuzz.xml" in result.error  # the error names the file
     for name in REPORTERS:
         get(name)([result], io.StringIO(), sources={result.name: result.source_lines})

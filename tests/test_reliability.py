@@ -22,7 +22,7 @@ from achslint import files
 from achslint.catalogue import catalogue
 from achslint.cli import main
 from achslint.files import ChangedOnDisk, Refused, write_atomically
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.signals import Stopped, stopping_on_signals
 
 ROOT = hasattr(os, "geteuid") and os.geteuid() == 0
@@ -216,7 +216,7 @@ def test_2_a_file_that_is_not_an_axis_list_is_reported_once_without_its_content(
 
 def test_2_a_list_with_content_is_still_linted_line_by_line():
     # Only a file without any assignment or `Ende` is "not an axis list".
-    result = check_bytes(b"%bad line\nkopf.achs_nr 1\n", "a.lis")
+    result = lint_file(b"%bad line\nkopf.achs_nr 1\n", "a.lis")
     assert result.error is None and {d.code for d in result.diagnostics} >= {"LIS001", "LIS002"}
 
 
@@ -252,7 +252,7 @@ def test_5_a_signal_ends_the_command_line_with_one_line(run, tmp_path, monkeypat
     def stopped(*_args, **_kwargs):
         os.kill(os.getpid(), signum)
 
-    monkeypatch.setattr("achslint.api.Linter.run", stopped)
+    monkeypatch.setattr("achslint.api.LintRun.run", stopped)
     code, _, err = run("lint", tmp_path)
     assert code == 128 + signum and one_line(err) == f"achslint: {words}"
 
@@ -447,7 +447,7 @@ def test_12_the_closest_name_is_searched_once_per_distinct_name(monkeypatch):
     calls = []
     real = difflib.get_close_matches
     monkeypatch.setattr(difflib, "get_close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
-    check_bytes(b"kenngr.ref_ricth_zz 1\n" * 500 + b"kenngr.vb_reflow_zz 1\n" * 500 + b"Ende\n", "a.lis")
+    lint_file(b"kenngr.ref_ricth_zz 1\n" * 500 + b"kenngr.vb_reflow_zz 1\n" * 500 + b"Ende\n", "a.lis")
     assert sorted(calls) == ["kenngr.ref_ricth_zz", "kenngr.vb_reflow_zz"]
     catalogue()._suggestions.clear()
 

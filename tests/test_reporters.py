@@ -6,12 +6,16 @@ import io
 import json
 import os
 import xml.etree.ElementTree as ET
+from dataclasses import replace
 from pathlib import Path
+from types import ModuleType
 
 import pytest
 
-from achslint.linter import check_bytes
-from achslint.reporters import REPORTERS, get
+from achslint.diagnostics import Severity
+from achslint.linter import lint_file
+from achslint.reporters import REPORTERS, get, sarif
+from achslint.rules import Rule
 
 from .conftest import FIXTURES
 
@@ -21,7 +25,7 @@ NAME = "fixtures/multi_rule.lis"
 
 @pytest.fixture(scope="module")
 def results():
-    return [check_bytes((FIXTURES / "multi_rule.lis").read_bytes(), NAME)]
+    return [lint_file((FIXTURES / "multi_rule.lis").read_bytes(), NAME)]
 
 
 def render(name: str, results) -> str:
@@ -30,14 +34,36 @@ def render(name: str, results) -> str:
     return stream.getvalue()
 
 
+# Two rules of the test's own, so that the SARIF snapshot shows how rules are described without
+# changing whenever a rule's documentation is edited.
+TWO_RULES = {
+    code: Rule(
+        code=code,
+        name=name,
+        severity=Severity(severity),
+        fix="sometimes",
+        summary=f"Summary of {name}.",
+        doc=f"{name}\n\nWhat\n----\nWhat {name} finds.\n\nWhy\n---\nWhy it matters.\n",
+        check=None,
+        module=ModuleType(name),
+    )
+    for code, name, severity in (("LIS101", "fixture-one", "warning"), ("LIS203", "fixture-two", "error"))
+}
+
+
+def render_snapshot(name: str, results) -> str:
+    if name != "sarif":
+        return render(name, results)
+    only_two = [replace(r, diagnostics=[d for d in r.diagnostics if d.code in TWO_RULES]) for r in results]
+    document = sarif.document(only_two, rules=TWO_RULES)
+    document["runs"][0]["tool"]["driver"]["version"] = "<version>"
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
 @pytest.mark.parametrize("name", sorted(REPORTERS))
 def test_snapshot(name, results):
     """Output must match tests/snapshots/<format>.txt; set ACHSLINT_UPDATE_SNAPSHOTS=1 to rewrite them."""
-    output = render(name, results)
-    if name == "sarif":
-        document = json.loads(output)
-        document["runs"][0]["tool"]["driver"]["version"] = "<version>"
-        output = json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    output = render_snapshot(name, results)
     snapshot = SNAPSHOTS / f"{name}.txt"
     if os.environ.get("ACHSLINT_UPDATE_SNAPSHOTS"):
         snapshot.write_text(output, encoding="utf-8")
@@ -111,7 +137,7 @@ def test_gitlab_fingerprints_are_stable_across_line_shifts(results):
     shifted = (
         "# one more comment line at the top\n" + (FIXTURES / "multi_rule.lis").read_text(encoding="latin-1")
     ).encode("latin-1")
-    moved = [check_bytes(shifted, NAME)]
+    moved = [lint_file(shifted, NAME)]
     second = {issue["fingerprint"] for issue in json.loads(render("gitlab", moved))}
     assert first == second
     assert len(first) == len(json.loads(render("gitlab", results)))  # unique per issue

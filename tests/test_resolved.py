@@ -6,6 +6,7 @@ import pytest
 from pydantic import ValidationError
 
 import achslint
+from achslint.corrections import encoder_revolution
 from achslint.dryrun import dry_run
 from achslint.explain import explain_list
 from achslint.model import axis_model, dumps
@@ -175,3 +176,16 @@ def test_ramp_time_of_homing_counts_only_with_a_non_linear_slope(name, effective
     assert codes == (set() if effective else {"LIS401"})
     rows = {row["parameter"]: row for row in explain_list(data, f"{name}.lis")["parameters"]}
     assert rows["getriebe[0].tr_ref"]["effective"] is effective
+
+
+def test_an_encoder_bit_range_referenced_beyond_its_range_gives_no_revolution():
+    # kenngr.achs_mode (P-AXIS-00015) holds 0x40000001 = 1073741825; as encoder_bit_range (0..31) by reference,
+    # 2^1073741825 increments is no encoder: no overflow lattice and no correction (it ended in an
+    # OverflowError before).
+    axis = resolved(
+        "kenngr.antr_typ 5\nkenngr.homing.homing_type CNC_CONTROLLED\nkenngr.homing_overflow_evaluation 1\n"
+        "kenngr.achs_mode 0x40000001\nantr.encoder_bit_range P-AXIS-00015\nantr.encoder_overflow_offset 5"
+    )
+    assert axis.get("antr.encoder_bit_range") == 0x40000001
+    assert encoder_revolution(axis, 0) is None
+    assert axis.correction("antr.encoder_overflow_offset") is None

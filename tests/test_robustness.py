@@ -12,16 +12,16 @@ from pathlib import Path
 
 import pytest
 
-from achslint.api import Linter, LintRequest
+from achslint.api import LintRequest, LintRun
 from achslint.files import ChangedOnDisk, write_atomically
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 
 MB = 1 << 20
 MESSAGE_LIMIT = 400  # a message names a huge line, it does not repeat it
 
 
 def codes(data: bytes) -> list[str]:
-    result = check_bytes(data, "achsmds1.lis")
+    result = lint_file(data, "achsmds1.lis")
     assert result.error is None
     for diagnostic in result.diagnostics:
         assert len(diagnostic.message) < MESSAGE_LIMIT, diagnostic.message[:200]
@@ -53,21 +53,21 @@ def test_a_one_megabyte_line_gets_a_short_precise_finding(label, data, expected)
 
 
 def test_huge_integer_is_reported_by_its_digit_count_not_converted():
-    message = check_bytes(b"kopf.achs_nr " + b"7" * 5000 + b"\nEnde\n", "a.lis").diagnostics[0].message
+    message = lint_file(b"kopf.achs_nr " + b"7" * 5000 + b"\nEnde\n", "a.lis").diagnostics[0].message
     assert "5,000 digits" in message and "UNS16" in message
     assert "…" in message  # the value itself is shortened
 
 
 def test_a_flood_of_duplicates_is_reported_once_per_repetition():
     count = 20_000
-    result = check_bytes(b"kopf.achs_nr 1\n" * count + b"Ende\n", "achsmds1.lis")
+    result = lint_file(b"kopf.achs_nr 1\n" * count + b"Ende\n", "achsmds1.lis")
     duplicates = [d for d in result.diagnostics if d.code == "LIS005"]
     assert len(duplicates) == count - 1
     assert {d.line for d in duplicates} == set(range(2, count + 1))
 
 
 def test_many_lines_after_the_end_marker_are_one_finding():
-    result = check_bytes(b"Ende\n" + b"kopf.achs_nr 1\n" * 50_000, "achsmds1.lis")
+    result = lint_file(b"Ende\n" + b"kopf.achs_nr 1\n" * 50_000, "achsmds1.lis")
     assert [d.code for d in result.diagnostics] == ["LIS003"]
     assert "50000 parameter lines" in result.diagnostics[0].message
 
@@ -90,7 +90,7 @@ def test_a_list_that_vanishes_during_the_run_is_an_error_for_that_list_only(tmp_
         if len(seen) == 1:
             second.unlink()
 
-    outcome = Linter(LintRequest(paths=[str(tmp_path)], jobs=1)).run(progress=progress)
+    outcome = LintRun(LintRequest(paths=[str(tmp_path)], jobs=1)).run(progress=progress)
     assert len(outcome.errors) == 1
     assert str(second) in outcome.errors[0] and "cannot read" in outcome.errors[0]
     linted = {Path(r.name).name for r in outcome.results if r.error is None}

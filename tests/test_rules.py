@@ -59,7 +59,7 @@ def test_good_fixture_is_clean_for_rule(rule_dir):
         assert _snapshots().dry_run_warnings(rule_dir, "good") == []
         return
     good = fixture(rule_dir, "good")
-    if good.is_dir():
+    if good.is_dir() or good.suffix == ".nc":
         assert [row for row in machine_findings(good, selection(rule_dir)) if row[2] == code] == []
         return
     assert [d for d in lint(good, select=selection(rule_dir)) if d.code == code] == []
@@ -69,7 +69,7 @@ def test_good_fixture_is_clean_for_rule(rule_dir):
 def test_good_fixture_has_no_errors_at_all(rule_dir):
     """The good variant is a correct list: no rule reports an error or warning on it."""
     good = fixture(rule_dir, "good")
-    if good.is_dir():
+    if good.is_dir() or good.suffix == ".nc":
         assert [row for row in machine_findings(good, None)] == []
         return
     found = [d for d in lint(good) if d.severity.value != "info"]
@@ -79,3 +79,21 @@ def test_good_fixture_has_no_errors_at_all(rule_dir):
 def test_every_rule_has_fixtures():
     missing = [code for code in registry() if not list((FIXTURES / "rules" / code).glob("bad.*"))]
     assert missing == []
+
+
+def test_lis203_similarity_is_what_difflib_would_choose():
+    # The rule scores each written word once (message and fix share it); the choice must stay the one
+    # difflib.get_close_matches makes for the message (cutoff 0.6) and for the fix (two at 0.8).
+    import difflib
+    import random
+
+    from achslint.rules.lis203_unknown_symbol import _similar
+
+    accepted = ("TORQ", "IGNORE_ABS_POS", "DISABLED", "CONTINUOUS", "ZERO_PULSE", "NO_ZERO_PULSE", "TORQUE")
+    rnd = random.Random(7)
+    for _ in range(2000):
+        text = "".join(rnd.choice("TORQUEZEROPULSAB_ICDN") for _ in range(rnd.randint(1, 14)))
+        chosen = tuple(rnd.sample(accepted, rnd.randint(1, len(accepted))))
+        for n, cutoff in ((1, 0.6), (2, 0.8)):
+            expected = difflib.get_close_matches(text, chosen, n=n, cutoff=cutoff)
+            assert [s for score, s in _similar(text, chosen) if score >= cutoff][:n] == expected

@@ -14,8 +14,10 @@ from hypothesis import strategies as st
 from achslint.decode import decode
 from achslint.fixer import fix_bytes
 from achslint.fmt import format_bytes, unified_diff
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.syntax import parse_text, split_lines
+
+from .conftest import examples
 
 OTHER_SPACES = ["\xa0", "\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x1f", "\x85", "\u2028", "\u2029", "\u3000"]
 
@@ -38,8 +40,8 @@ def test_a_form_feed_after_a_number_stays_an_error():
     data = b"kopf.achs_nr 1\x0c\nEnde\n"
     formatted, _ = format_bytes(data)
     assert b"1\x0c\n" in formatted
-    assert [d.code for d in check_bytes(formatted, "a.lis").diagnostics] == [
-        d.code for d in check_bytes(data, "a.lis").diagnostics
+    assert [d.code for d in lint_file(formatted, "a.lis").diagnostics] == [
+        d.code for d in lint_file(data, "a.lis").diagnostics
     ]
 
 
@@ -55,7 +57,7 @@ def test_the_parser_counts_lines_only_at_cr_and_lf():
     text = "a 1\x0bb\x0c\x1c\x85\u2028x\r\ny 2\rz 3\n"
     assert split_lines(text) == ["a 1\x0bb\x0c\x1c\x85\u2028x", "y 2", "z 3"]
     assert [line.number for line in parse_text(text).lines] == [1, 2, 3, 4]
-    assert check_bytes(b"a\x0b 1\nkenngr.ref_ricth 1\nEnde\n", "a.lis").diagnostics[-1].line == 2
+    assert lint_file(b"a\x0b 1\nkenngr.ref_ricth 1\nEnde\n", "a.lis").diagnostics[-1].line == 2
 
 
 def test_the_fixer_edits_names_and_keeps_other_spaces_around_them():
@@ -98,7 +100,7 @@ TEXT = st.lists(
 ).map(lambda rows: "".join(body + brk for body, brk in rows))
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=examples(400), deadline=None)
 @given(TEXT, st.sampled_from(["utf-8", "latin-1"]))
 def test_fmt_changes_blanks_and_tabs_only_and_keeps_every_line_break(text, encoding):
     data = text.encode(encoding, "ignore")

@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from achslint.decode import UnreadableInput
-from achslint.linter import check_bytes
+from achslint.linter import lint_file
 from achslint.xmlinput import extract, single_list, source_text
 
 AXIS = (
@@ -21,7 +21,7 @@ BILLION_LAUGHS = (
 
 
 def codes(data: bytes, name: str = "axis.xml") -> list[tuple[int, int, str]]:
-    result = check_bytes(data, name)
+    result = lint_file(data, name)
     assert result.error is None, result.error
     return [(d.line, d.column, d.code) for d in result.diagnostics]
 
@@ -69,7 +69,7 @@ def test_any_encoding_expat_knows_is_read(encoding):
 
 
 def test_an_unknown_declared_encoding_is_a_clear_refusal():
-    result = check_bytes(b'<?xml version="1.0" encoding="x-nonsense"?><AchsMds>Ende</AchsMds>', "a.xml")
+    result = lint_file(b'<?xml version="1.0" encoding="x-nonsense"?><AchsMds>Ende</AchsMds>', "a.xml")
     assert result.error and "not well-formed XML" in result.error and "encoding" in result.error
 
 

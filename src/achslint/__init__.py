@@ -75,14 +75,16 @@ def lint_text(
     return _lint_text(text, filename=filename, select=select, ignore=ignore)
 
 
-def explain(source: str | PathLike[str] | bytes, *, gear: int = 0) -> dict:
+def explain(source: str | PathLike[str] | bytes, *, gear: int = 0) -> dict[str, Any]:
     """The homing explanation of a list, as `achslint explain FILE --format json` prints it."""
     from .api import explain as _explain
 
     return _explain(source, gear=gear)
 
 
-def dry_run(source: str | PathLike[str] | bytes, scenario: dict | None = None, *, gear: int = 0) -> Any:
+def dry_run(
+    source: str | PathLike[str] | bytes, scenario: dict[str, Any] | None = None, *, gear: int = 0
+) -> Any:
     """Simulate the homing of a list; the result's `.trace` holds phases, events and outcome."""
     from .api import dry_run as _dry_run
 

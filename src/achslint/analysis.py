@@ -23,6 +23,7 @@ from .catalogue import (
     Catalogue,
     Parameter,
     Resolution,
+    Value,
     catalogue,
 )
 from .facts import (
@@ -53,7 +54,7 @@ class Setting:
 
     line: syntax.Line
     resolution: Resolution | None
-    value: object = None
+    value: Value | Reference | None = None  # the converted value; None when it could not be converted
     problems: tuple[ValueFact, ...] = ()  # a tuple: most settings have none and share the empty one
     misspelt: bool = field(init=False)
     canonical: str | None = field(init=False)  # canonical concrete path; None when unknown
@@ -79,7 +80,7 @@ class Setting:
         return self.line.value or ""
 
     @property
-    def comparable(self) -> object:
+    def comparable(self) -> Value | Reference:
         """What two assignments are compared by: the typed value, else the written text."""
         if self.value is not None and not self.problems:
             return self.value
@@ -102,7 +103,7 @@ class Analysis:
     axis_type: str = "T"
     axis_type_known: bool = False
     drive_type: int | None = None
-    _groups: dict | None = None
+    _groups: dict[str, list[Setting]] | None = None
 
     def by_canonical(self) -> dict[str, list[Setting]]:
         """Known assignments grouped by canonical path (computed once)."""
@@ -121,28 +122,32 @@ _WRITTEN_INDEX = re.compile(r"\[[0-9]+\]")
 
 def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
     cat = cat or catalogue()
-    settings = [Setting(line, cat.resolve(line.path)) for line in file.assignments() if line.path_ok]
+    settings = [
+        Setting(line, cat.resolve(line.path))
+        for line in file.assignments()
+        if line.path_ok and line.path is not None  # an assignment always has a path
+    ]
     analysis = Analysis(file, settings)
     _axis_and_drive(analysis, cat)
     for setting in settings:
-        if setting.known:
-            _check_indices(setting)
+        resolution = setting.resolution
+        if setting.known and resolution is not None:  # known: resolved, and not by a misspelling
+            _check_indices(setting, resolution)
             if not setting.problems:
-                _check_value(setting, analysis, cat)
+                _check_value(setting, resolution.parameter, analysis, cat)
     return analysis
 
 
-def _check_indices(setting: Setting) -> None:
+def _check_indices(setting: Setting, resolution: Resolution) -> None:
     """Array indices inside the bounds of the catalogue (aliases carry no indices of their own)."""
-    resolution = setting.resolution
     if resolution.in_bounds or resolution.alias is not None:
         return
     parameter = resolution.parameter
     line = setting.line
     arrays = _ARRAY_NAME.findall(parameter.path)
-    written = list(_WRITTEN_INDEX.finditer(line.path))
+    written = list(_WRITTEN_INDEX.finditer(line.path or ""))
     for position, (index, (low, high)) in enumerate(
-        zip(setting.resolution.indices, parameter.index_bounds, strict=False)
+        zip(resolution.indices, parameter.index_bounds, strict=False)
     ):
         if low <= index <= high:
             continue
@@ -163,14 +168,14 @@ def _check_indices(setting: Setting) -> None:
 def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
     value = None
     for setting in settings:
-        if setting.known and setting.parameter.id == parameter_id:
+        parameter = setting.parameter
+        if setting.known and parameter is not None and parameter.id == parameter_id:
             number = _as_int(setting.line)
+            written = setting.line.value
             if isinstance(number, int):
                 value = number
-            elif setting.line.value_kind == syntax.SYMBOL:
-                codes = setting.parameter.symbol_codes
-                if setting.line.value in codes:
-                    value = codes[setting.line.value]
+            elif setting.line.value_kind == syntax.SYMBOL and written in parameter.symbol_codes:
+                value = parameter.symbol_codes[written]
     return value
 
 
@@ -187,9 +192,9 @@ def _axis_and_drive(analysis: Analysis, cat: Catalogue) -> None:
 def _as_int(line: syntax.Line) -> int | NumberProblem | None:
     """The integer an INT or HEX value stands for (or why there is none); None for other kinds."""
     if line.value_kind == syntax.INT:
-        return parse_int(line.value)
+        return parse_int(line.value or "")
     if line.value_kind == syntax.HEX:
-        return parse_hex(line.value)
+        return parse_hex(line.value or "")
     return None
 
 
@@ -199,8 +204,7 @@ def comment_in_value_position(line: syntax.Line) -> bool:
     return line.value_kind in (syntax.SYMBOL, syntax.BAD_STRING) and value.startswith((*_COMMENT_STARTS, "("))
 
 
-def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
-    parameter = setting.parameter
+def _check_value(setting: Setting, parameter: Parameter, analysis: Analysis, cat: Catalogue) -> None:
     line = setting.line
     kind = parameter.kind
     add_problem = setting.add_problem
@@ -211,7 +215,7 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
     if value_kind == syntax.BAD_STRING:
         return  # a syntax error, reported with the line
     if value_kind == syntax.REFERENCE:
-        setting.value = _reference(setting, cat, analysis)
+        setting.value = _reference(setting, parameter, cat, analysis)
         return
     if value_kind is None or (text.startswith("(")):
         # No value at all, or a `(` comment right after the name.
@@ -228,24 +232,24 @@ def _check_value(setting: Setting, analysis: Analysis, cat: Catalogue) -> None:
         return
 
     if kind == BOOL:
-        _check_bool(setting, text, value_kind)
+        _check_bool(setting, parameter, text, value_kind)
     elif kind == INTEGER:
-        _check_integer(setting, text, value_kind, unit)
+        _check_integer(setting, parameter, text, value_kind, unit)
     elif kind == REAL:
-        _check_real(setting, text, value_kind, unit)
+        _check_real(setting, parameter, text, value_kind, unit)
     elif kind == SYMBOL:
-        _check_symbol(setting, text, value_kind)
+        _check_symbol(setting, parameter, text, value_kind)
     else:
-        setting.value = text[1:-1] if value_kind == syntax.STRING else text
-        if parameter.max_length is not None and len(setting.value) > parameter.max_length:
-            add_problem(TooLong(len(setting.value), parameter.max_length))
+        string = text[1:-1] if value_kind == syntax.STRING else text
+        setting.value = string
+        if parameter.max_length is not None and len(string) > parameter.max_length:
+            add_problem(TooLong(len(string), parameter.max_length))
     textual = value_kind in (syntax.SYMBOL, syntax.STRING)
     if kind in (STRING, SYMBOL) and textual and line.rest is not None and not line.rest.startswith("("):
         add_problem(TextAfterString(line.rest))
 
 
-def _check_bool(setting: Setting, text: str, value_kind: str) -> None:
-    parameter = setting.parameter
+def _check_bool(setting: Setting, parameter: Parameter, text: str, value_kind: str) -> None:
     if value_kind in (syntax.INT, syntax.HEX):
         number = _as_int(setting.line)
         if number in (0, 1):
@@ -261,49 +265,49 @@ def _check_bool(setting: Setting, text: str, value_kind: str) -> None:
             setting.value = parameter.symbols.index(text) == 1
             return
         if parameter.symbols:
-            _unknown_symbol(setting, text)
+            _unknown_symbol(setting, parameter, text)
             return
     setting.add_problem(NotBoolean(text))
 
 
-def _check_integer(setting: Setting, text: str, value_kind: str, unit: str | None) -> None:
-    parameter = setting.parameter
+def _check_integer(
+    setting: Setting, parameter: Parameter, text: str, value_kind: str, unit: str | None
+) -> None:
     if value_kind in (syntax.INT, syntax.HEX):
-        number = _as_int(setting.line)
+        number = parse_int(text) if value_kind == syntax.INT else parse_hex(text)
         if isinstance(number, NumberProblem):
             setting.add_problem(UnusableNumber(text, number))
             return
         setting.value = number
-        _check_range(setting, number, unit)
+        _check_range(setting, parameter, number, unit)
         return
     if value_kind == syntax.SYMBOL and parameter.symbols:
         if text in parameter.symbols:
             setting.value = parameter.symbol_codes.get(text, text)
             return
-        _unknown_symbol(setting, text)
+        _unknown_symbol(setting, parameter, text)
         return
     if value_kind == syntax.REAL:
         as_float = parse_real(text)
-        whole = isinstance(as_float, float) and as_float.is_integer()
-        setting.add_problem(RealForInteger(text, str(int(as_float)) if whole else None))
+        replacement = str(int(as_float)) if isinstance(as_float, float) and as_float.is_integer() else None
+        setting.add_problem(RealForInteger(text, replacement))
         return
     setting.add_problem(TextForNumber(text))
 
 
-def _check_real(setting: Setting, text: str, value_kind: str, unit: str | None) -> None:
+def _check_real(setting: Setting, parameter: Parameter, text: str, value_kind: str, unit: str | None) -> None:
     if value_kind in (syntax.INT, syntax.HEX, syntax.REAL):
         number = parse_real(text)
         if isinstance(number, NumberProblem):
             setting.add_problem(UnusableNumber(text, number))
             return
         setting.value = number
-        _check_range(setting, number, unit)
+        _check_range(setting, parameter, number, unit)
         return
     setting.add_problem(TextForNumber(text))
 
 
-def _check_range(setting: Setting, number: float, unit: str | None) -> None:
-    parameter = setting.parameter
+def _check_range(setting: Setting, parameter: Parameter, number: float, unit: str | None) -> None:
     if parameter.allowed:
         if number not in parameter.allowed and number != parameter.default:
             setting.add_problem(NotAccepted(number, tuple(parameter.allowed)))
@@ -318,8 +322,7 @@ def _check_range(setting: Setting, number: float, unit: str | None) -> None:
         setting.add_problem(OutOfRange(number, None, high, unit))
 
 
-def _check_symbol(setting: Setting, text: str, value_kind: str) -> None:
-    parameter = setting.parameter
+def _check_symbol(setting: Setting, parameter: Parameter, text: str, value_kind: str) -> None:
     if value_kind == syntax.STRING:
         text = text[1:-1]
     if text in parameter.symbols:
@@ -332,16 +335,16 @@ def _check_symbol(setting: Setting, text: str, value_kind: str) -> None:
             if code == number:
                 setting.value = symbol
                 return
-    _unknown_symbol(setting, text)
+    _unknown_symbol(setting, parameter, text)
 
 
-def _unknown_symbol(setting: Setting, text: str) -> None:
-    parameter = setting.parameter
+def _unknown_symbol(setting: Setting, parameter: Parameter, text: str) -> None:
     setting.add_problem(UnknownSymbol(text, tuple(parameter.symbols), tuple(parameter.symbol_codes.values())))
 
 
-def _reference(setting: Setting, cat: Catalogue, analysis: Analysis) -> Reference | None:
-    parameter = setting.parameter
+def _reference(
+    setting: Setting, parameter: Parameter, cat: Catalogue, analysis: Analysis
+) -> Reference | None:
     written = setting.line.value or ""
     reference = parse_reference(written)
     if isinstance(reference, NumberProblem):

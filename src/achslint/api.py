@@ -8,8 +8,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
-from .context import Options
-from .decode import UnreadableInput
+from .decode import UnreadableInput, decode
 from .diagnostics import Diagnostic, Severity
 from .files import (
     ChangedOnDisk,
@@ -26,12 +25,11 @@ from .linter import (
     NOT_A_LIST,
     FileResult,
     FileSettings,
-    Selection,
-    check_bytes,
-    lint_bytes,
+    findings,
+    lint_file,
     looks_like_a_list,
 )
-from .machine import is_default_list, is_startup_list, read_startup
+from .machine import check_machines, is_default_list, is_startup_list, read_startup
 from .syntax import parse_bytes, split_lines
 from .xmlinput import is_xml, single_list
 
@@ -52,6 +50,8 @@ class LintRequest:
     keep_source: bool = True  # keep line texts for code frames (the full and gitlab formats need them)
     force_exclude: bool = False  # exclude patterns apply to named files too
     respect_gitignore: bool = True  # files git ignores are not searched in folders
+    machine: str | None = None  # start-up list of the machine NC programs (`rfp.nc`) are checked against
+    channel: int = 1  # the channel whose axis names the programs use
 
 
 @dataclass
@@ -84,19 +84,10 @@ class Target:
 def file_settings(
     config: ResolvedConfig, overrides: Overrides, target: Path, keep_source: bool = True
 ) -> FileSettings:
-    settings = overrides.apply(config.settings)
-    selection = Selection(
-        settings.select, list(settings.extend_select), [*settings.ignore, *config.ignored_for(target)]
-    )
-    options = Options(
-        settings.unknown_parameters, settings.cycle_time_us, settings.repeatability_tolerance_um
-    )
     return FileSettings(
-        selection,
-        options,
-        dict(settings.severity),
+        overrides.apply(config.settings),
+        config.ignored_for(target),
         keep_source=keep_source,
-        fail_on=settings.fail_on,
         machine_in_file=False,
     )
 
@@ -127,7 +118,7 @@ class Discovery:
         self.targets.append(target)
 
 
-class Linter:
+class LintRun:
     """Resolves configuration per file and lints targets, serially or on several cores."""
 
     def __init__(self, request: LintRequest):
@@ -272,7 +263,7 @@ class Linter:
         found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
         return False
 
-    def _machine_level(
+    def machine_level(
         self, targets: list[Target], results: list[FileResult], context: list[tuple[Target, FileResult]] = ()
     ) -> list[FileResult]:
         """Run the machine-level rules per machine; returns results for start-up lists with findings.
@@ -280,8 +271,6 @@ class Linter:
         `context` lists (the neighbours of named lists) take part but get no findings; they come first,
         so a repeated axis number is reported on the named list that repeats it.
         """
-        from .rules import registry
-
         by_name = {result.name: result for result in results}
         hidden = {result.name for _, result in context}
         groups: dict[str, list[tuple[str, dict]]] = {}
@@ -295,45 +284,31 @@ class Linter:
                     groups.setdefault(target.machine, []).append((result.name, summary))
                 settings[result.name] = self.settings_for(target)
         extra: dict[str, FileResult] = {}
-        for key, members in groups.items():
-            startups = [s for s in self.startups if str(s.path) == key]
-            for code, rule in registry().items():
-                if rule.check_machine is None:
-                    continue
-                for d in rule.check_machine(members, startups):
-                    if d.path in hidden:
-                        continue
-                    owner = by_name.get(d.path)
-                    chosen = settings.get(d.path) or self.settings_for(
-                        Target(d.path, Path(d.path), self.config_for(Path(d.path)))
-                    )
-                    if not chosen.selection.enabled(code):
-                        continue
-                    override = chosen.severity.get(code)
-                    if override:
-                        d.severity = Severity(override)
-                    if owner is None:
-                        owner = extra.setdefault(d.path, FileResult(d.path, [], fail_on=chosen.fail_on))
-                    owner.diagnostics.append(d)
-                    owner.diagnostics.sort(key=Diagnostic.sort_key)
-        for startup in self.startups:  # start-up lists without axis lists still get LIS504
-            if str(startup.path) not in groups:
-                chosen = self.settings_for(
-                    Target(str(startup.path), startup.path, self.config_for(startup.path))
-                )
-                for d in registry()["LIS504"].check_machine([], [startup]):
-                    extra.setdefault(
-                        d.path, FileResult(d.path, [], fail_on=chosen.fail_on)
-                    ).diagnostics.append(d)
-        for result in list(by_name.values()) + list(extra.values()):
+        for code, d in check_machines(groups, self.startups):
+            if d.path in hidden:
+                continue
+            chosen = settings.get(d.path) or self.settings_for(
+                Target(d.path, Path(d.path), self.config_for(Path(d.path)))
+            )
+            if not chosen.selection.enabled(code):
+                continue
+            override = chosen.severity.get(code)
+            if override:
+                d.severity = Severity(override)
+            owner = by_name.get(d.path) or extra.setdefault(
+                d.path, FileResult(d.path, [], fail_on=chosen.fail_on)
+            )
+            owner.diagnostics.append(d)
+        for result in [*by_name.values(), *extra.values()]:
+            result.diagnostics.sort(key=Diagnostic.sort_key)
             if (
                 self.request.keep_source
                 and result.diagnostics
                 and not result.source_lines
                 and result.name != "<stdin>"
             ):
-                with contextlib.suppress(OSError):
-                    result.source_lines = split_lines(read_list(Path(result.name)).decode("latin-1"))
+                with contextlib.suppress(OSError, UnreadableInput):
+                    result.source_lines = split_lines(decode(read_list(Path(result.name))).text)
         return list(extra.values())
 
     def settings_for(self, target: Target) -> FileSettings:
@@ -387,15 +362,16 @@ class Linter:
             result.fail_on = self.settings_for(target).fail_on
             results.append(result)
             linted.append(target)
-        results.extend(self._machine_level(linted, results, self._context(found.context)))
+        results.extend(self.machine_level(linted, results, self._context(found.context)))
         return LintOutcome(results, errors, found.notes)
 
     def _context(self, context: list[Target]) -> list[tuple[Target, FileResult]]:
         """Lint the neighbours of named lists for their machine summaries only (never fixed, never shown)."""
-        machine_rules = Selection(["LIS5"])
         pairs = []
         for target in context:
-            settings = replace(self.settings_for(target), selection=machine_rules, keep_source=False)
+            chosen = self.settings_for(target)
+            only_machine = replace(chosen.settings, select=["LIS5"], extend_select=[])
+            settings = replace(chosen, settings=only_machine, keep_source=False)
             result = _lint_one((target.name, str(target.path), settings, (False, False, False), None))
             if not result.error and not result.note:
                 pairs.append((target, result))
@@ -464,7 +440,7 @@ def _process(
     """Lint one list; with --fix, fix it first (writing the file, or describing the change with --diff)."""
     fix, unsafe, show_diff = mode
     if not fix:
-        return check_bytes(data, name, settings, defaults)
+        return lint_file(data, name, settings, defaults)
     from .fixer import fix_bytes
     from .fmt import unified_diff
 
@@ -521,8 +497,97 @@ def _track(results, progress, total: int):
 
 
 def run_lint(request: LintRequest, stdin=None, progress=None) -> LintOutcome:
-    """Lint what the request names. Raises `ConfigError` for an unusable configuration."""
-    return Linter(request).run(stdin, progress)
+    """Lint what the request names. Raises `ConfigError` for an unusable configuration.
+
+    NC programs (`rfp.nc`) among the paths are checked against the machine of `request.machine` (LIS6xx).
+    """
+    from .programlint import is_program, lint_programs
+
+    programs = [path for path in request.paths if is_program(path)]
+    if not programs:
+        return LintRun(request).run(stdin, progress)
+    rest = [path for path in request.paths if not is_program(path)]
+    outcome = LintRun(replace(request, paths=rest)).run(stdin, progress) if rest else LintOutcome([], [])
+    run = LintRun(request)
+    results, errors = lint_programs(
+        programs, request, lambda path: run.settings_for(Target(str(path), path, run.config_for(path)))
+    )
+    outcome.results.extend(results)
+    outcome.errors.extend(errors)
+    return outcome
+
+
+@dataclass
+class FormatRequest:
+    paths: list[str]
+    config_file: str | None = None
+    stdin_filename: str | None = None
+    mode: str = "write"  # write | check (change nothing) | diff (change nothing, say how)
+
+
+@dataclass
+class Formatted:
+    name: str
+    changed: bool
+    written: bool = False
+    diff: str = ""  # mode diff: the unified diff
+    output: bytes | None = None  # standard input in write mode: the formatted bytes
+
+
+@dataclass
+class FormatOutcome:
+    results: list[Formatted]
+    errors: list[str]
+    notes: list[str]
+    found: int  # lists found (XML files found in folders are not fmt's business and not counted)
+
+    @property
+    def changed(self) -> int:
+        return sum(result.changed for result in self.results)
+
+    @property
+    def written(self) -> int:
+        return sum(result.written for result in self.results)
+
+
+def run_format(request: FormatRequest, stdin=None) -> FormatOutcome:
+    """`achslint fmt`: format every list the paths name, writing (atomically, only if the file did not
+    change meanwhile), checking or diffing. Raises `ConfigError`."""
+    from .fmt import format_bytes, unified_diff
+
+    found = LintRun(
+        LintRequest(
+            paths=request.paths, config_file=request.config_file, stdin_filename=request.stdin_filename
+        )
+    ).discover()
+    outcome = FormatOutcome([], list(found.errors), list(found.notes), len(found.targets))
+    for target in found.targets:
+        if is_xml(target.name):
+            if target.name in request.paths:  # XML found in a folder is simply not fmt's business
+                outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            continue
+        try:
+            data = stdin.read() if target.path is None else read_list(target.path)
+            formatted, differs = format_bytes(data, target.name)
+        except OSError as exc:
+            outcome.errors.append(f"cannot read {target.name}: {reason(exc)}")
+            continue
+        except UnreadableInput as exc:
+            outcome.errors.append(f"{target.name}: {exc}")
+            continue
+        result = Formatted(target.name, differs)
+        if request.mode == "diff":
+            result.diff = unified_diff(data, formatted, target.name) if differs else ""
+        elif request.mode == "write" and target.path is None:
+            result.output = formatted
+        elif request.mode == "write" and differs:
+            try:
+                write_atomically(target.path, formatted, expected=data)
+                result.written = True
+            except OSError as exc:
+                outcome.errors.append(write_error(exc, target.name))
+        outcome.results.append(result)
+    return outcome
 
 
 def _as_bytes(source) -> tuple[bytes, str]:
@@ -545,14 +610,14 @@ def _as_bytes(source) -> tuple[bytes, str]:
 def lint(source, *, select=None, ignore=None, name=None) -> list[Diagnostic]:
     """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files."""
     data, default_name = _as_bytes(source)
-    settings = FileSettings(Selection(list(select) if select else None, [], list(ignore or [])))
-    return lint_bytes(data, name or default_name, settings)
+    settings = FileSettings.of(list(select) if select else None, list(ignore or []))
+    return findings(data, name or default_name, settings)
 
 
 def lint_text(text: str, *, filename: str = "<string>", select=None, ignore=None) -> list[Diagnostic]:
     """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
-    settings = FileSettings(Selection(list(select) if select else None, [], list(ignore or [])))
-    return lint_bytes(text.encode("utf-8"), filename, settings)
+    settings = FileSettings.of(list(select) if select else None, list(ignore or []))
+    return findings(text.encode("utf-8"), filename, settings)
 
 
 def load(source, *, defaults=None, strict: bool = False):
@@ -571,9 +636,9 @@ def load(source, *, defaults=None, strict: bool = False):
 
 def _finish(model, data: bytes, name: str, default_data, strict: bool, rule_errors):
     settings = FileSettings(keep_source=False)
-    findings = check_bytes(data, name, settings, default_data[0] if default_data else None).diagnostics
-    model._findings = findings
-    errors = [d for d in findings if d.severity is Severity.ERROR]
+    found = lint_file(data, name, settings, default_data[0] if default_data else None).diagnostics
+    model._findings = found
+    errors = [d for d in found if d.severity is Severity.ERROR]
     if strict and errors:
         raise rule_errors(errors)
     return model
@@ -628,7 +693,7 @@ __all__ = [
     "ConfigError",
     "LintOutcome",
     "LintRequest",
-    "Linter",
+    "LintRun",
     "dry_run",
     "dumps",
     "explain",

@@ -14,6 +14,7 @@ import sys
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from pathlib import Path
+from typing import Any
 
 from .numbers import NumberProblem, parse_reference
 from .syntax import path_pattern
@@ -33,6 +34,12 @@ TYPE_LIMITS: dict[str, tuple[int, int]] = {
 # Value kinds a parameter can have, derived from its data type and symbols.
 BOOL, INTEGER, REAL, STRING, SYMBOL = "bool", "integer", "real", "string", "symbol"
 
+# A parameter's value as Python holds it: BOOLEAN -> bool, integer types -> int, REAL64 -> float, STRING and
+# symbols -> str (an integer parameter written with a symbol that has no code keeps the symbol's text).
+Value = bool | int | float | str
+# A scalar of the catalogue's JSON (defaults, bounds): a number, or text such as `P-AXIS-00212` or a symbol.
+Scalar = int | float | str | None
+
 AXIS_TYPE_CODES = {1: "T", 2: "R", 4: "S"}
 AXIS_TYPE_NAMES = {"T": "linear", "R": "rotary", "S": "spindle"}
 
@@ -50,19 +57,19 @@ class Parameter:
     id: str
     path: str
     type: str
-    default: object = None
+    default: Scalar = None
     aliases: tuple[Alias, ...] = ()
     index_bounds: tuple[tuple[int, int], ...] = ()
     symbols: tuple[str, ...] = ()
-    symbol_codes: dict = field(default_factory=dict)
+    symbol_codes: dict[str, int] = field(default_factory=dict)
     allowed: tuple[int, ...] = ()
     max_length: int | None = None
-    min: object = None
-    max: object = None
+    min: Scalar = None
+    max: Scalar = None
     min_strict: bool = False
     max_strict: bool = False
     range_text: str = ""
-    units: dict = field(default_factory=dict)
+    units: dict[str, str] = field(default_factory=dict)  # axis type ("T", "R", "S") -> unit
     drive_types: tuple[int, ...] = ()
     drive_group: tuple[int, ...] = ()  # drive types of a drive-specific group (antr.sercos. -> SERCOS)
     axis_types: tuple[str, ...] = ()
@@ -108,14 +115,14 @@ class Parameter:
         as 0 or -1 to mean "not set".
         """
         type_low, type_high = TYPE_LIMITS.get(self.type, (None, None))
-        low = self.min if isinstance(self.min, (int, float)) else None
-        high = self.max if isinstance(self.max, (int, float)) else None
+        low: float | None = self.min if isinstance(self.min, (int, float)) else None
+        high: float | None = self.max if isinstance(self.max, (int, float)) else None
         integer = self.kind in (INTEGER, BOOL)
         if low is not None and self.min_strict and low == 0 and integer:
             low = 1
         if high is not None and self.max_strict and integer and high != type_high:
             high = high - 1
-        if type_low is not None:
+        if type_low is not None and type_high is not None:
             low = type_low if low is None else max(low, type_low)
             high = type_high if high is None else min(high, type_high)
         if isinstance(self.default, (int, float)) and not isinstance(self.default, bool):
@@ -130,7 +137,7 @@ class Parameter:
         return self.kind == REAL and self.min == 0 and self.min_strict
 
     @property
-    def typed_default(self):
+    def typed_default(self) -> Value | None:
         """The built-in default as a Python value of the parameter's kind, or None."""
         value = self.default
         if value is None or (isinstance(value, str) and value.startswith("P-AXIS-")):
@@ -150,9 +157,6 @@ class Parameter:
 
     def unit(self, axis_type: str = "T") -> str | None:
         return self.units.get(axis_type) if self.units else None
-
-    def symbol_names(self) -> list[str]:
-        return list(self.symbols)
 
 
 @dataclass(frozen=True, slots=True)
@@ -195,7 +199,7 @@ def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:
 
 
 class Catalogue:
-    def __init__(self, data: dict):
+    def __init__(self, data: dict[str, Any]):  # the parsed catalogue.json
         self.parameters: list[Parameter] = [self._entry(raw) for raw in data["parameters"]]
         self.by_id: dict[str, Parameter] = {p.id: p for p in self.parameters}
         self.by_pattern: dict[str, Parameter] = {p.path: p for p in self.parameters}
@@ -214,7 +218,7 @@ class Catalogue:
         self._suggestions: dict[tuple[str, int], tuple[str, ...]] = {}
 
     @staticmethod
-    def _entry(raw: dict) -> Parameter:
+    def _entry(raw: dict[str, Any]) -> Parameter:
         values = dict(raw)
         values["aliases"] = tuple(Alias(**a) for a in raw.get("aliases", ()))
         values["index_bounds"] = tuple(tuple(b) for b in raw.get("index_bounds", ()))

@@ -9,12 +9,17 @@ from __future__ import annotations
 import contextlib
 import os
 import sys
+from collections.abc import Iterable
 from enum import Enum
 from pathlib import Path
+from typing import TYPE_CHECKING, get_args
 
 import typer
 
 from . import __version__
+from .config import SeverityName
+from .config import UnknownParameters as UnknownParametersChoice
+from .reporters import REPORTERS
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
@@ -27,32 +32,23 @@ app = typer.Typer(
 )
 
 
-class OutputFormat(str, Enum):
-    full = "full"
-    concise = "concise"
-    json = "json"
-    sarif = "sarif"
-    github = "github"
-    gitlab = "gitlab"
-    junit = "junit"
+def _choices(name: str, values: Iterable[str]) -> type[Enum]:
+    """A choice option's values as the Enum typer wants, taken from where they are defined."""
+    return Enum(name, {value: value for value in values}, type=str)  # type: ignore[return-value]
 
 
-class FailOn(str, Enum):
-    error = "error"
-    warning = "warning"
-    info = "info"
+if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
+    OutputFormat = FailOn = UnknownParameters = Enum
+else:
+    OutputFormat = _choices("OutputFormat", REPORTERS)
+    FailOn = _choices("FailOn", get_args(SeverityName))
+    UnknownParameters = _choices("UnknownParameters", get_args(UnknownParametersChoice))
 
 
 class Color(str, Enum):
     auto = "auto"
     always = "always"
     never = "never"
-
-
-class UnknownParameters(str, Enum):
-    warn = "warn"
-    error = "error"
-    ignore = "ignore"
 
 
 class UsageError(Exception):
@@ -249,8 +245,17 @@ def lint(
         metavar="DIR",
         help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist).",
     ),
+    machine: str | None = typer.Option(
+        None,
+        "--machine",
+        metavar="STARTUP",
+        help="Start-up list (hochlauf.lis) of the machine the NC programs among PATH (rfp.nc) are checked against (LIS6xx).",
+    ),
+    channel: int = typer.Option(
+        1, "--channel", min=1, max=12, help="With --machine: the channel whose axis names the programs use."
+    ),
 ) -> None:
-    """Lint axis parameter lists."""
+    """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .api import LintRequest, run_lint
     from .config import ConfigError, Overrides
 
@@ -282,9 +287,11 @@ def lint(
         fix=fix,
         unsafe_fixes=unsafe_fixes,
         show_diff=show_diff,
-        keep_source=fmt in ("full", "gitlab"),
+        keep_source=REPORTERS[fmt].needs_source,
         force_exclude=force_exclude,
         respect_gitignore=respect_gitignore,
+        machine=machine,
+        channel=channel,
     )
     quiet = quiet or silent
     try:
@@ -300,7 +307,7 @@ def lint(
         report_stream = _report_fixes(outcome.results, show_diff, quiet)
     if not silent:
         with _destination(output_file, report_stream) as stream:
-            if statistics and fmt in TEXT_FORMATS:
+            if statistics and REPORTERS[fmt].text:
                 _print_statistics(outcome.results, stream)
             else:
                 from .reporters import get
@@ -312,16 +319,13 @@ def lint(
                     sources=outcome.sources,
                     docs_url=_docs_url(docs_url, config),
                 )
-                if fmt in TEXT_FORMATS and not quiet:
+                if REPORTERS[fmt].text and not quiet:
                     _summary(outcome.results, stream, fix)
                 if statistics:  # a machine format's output stays one document; the counts go to stderr
                     _print_statistics(outcome.results, sys.stderr)
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
     raise typer.Exit(EXIT_FINDINGS if outcome.failing and not exit_zero else EXIT_OK)
-
-
-TEXT_FORMATS = ("full", "concise")
 
 
 def _patterns(values: list[str] | None) -> list[str] | None:
@@ -496,69 +500,46 @@ def fmt(
     ),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
-    from .api import Linter, LintRequest, write_error
+    from .api import FormatRequest, run_format
     from .config import ConfigError
-    from .decode import UnreadableInput
-    from .files import read_list, reason, write_atomically
-    from .fmt import format_bytes, unified_diff
-    from .xmlinput import is_xml
 
+    mode = "diff" if diff else "check" if check else "write"
     try:
-        found = Linter(LintRequest(paths=paths, config_file=config, stdin_filename=stdin_filename)).discover()
+        outcome = run_format(FormatRequest(paths, config, stdin_filename, mode), stdin=sys.stdin.buffer)
     except ConfigError as exc:
         _fail(str(exc))
-    targets, errors = found.targets, found.errors
-    if not targets and not errors and not allow_empty:
-        _tell([], found.notes, quiet)
+    if not outcome.found and not outcome.errors and not allow_empty:
+        _tell([], outcome.notes, quiet)
         _fail(_nothing_found(paths))
-    changed = written = 0
-    for target in targets:
-        if is_xml(target.name):
-            if target.name in paths:  # XML found in a folder is simply not fmt's business
-                errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
-            continue
-        try:
-            data = sys.stdin.buffer.read() if target.path is None else read_list(target.path)
-            formatted, differs = format_bytes(data, target.name)
-        except OSError as exc:
-            errors.append(f"cannot read {target.name}: {reason(exc)}")
-            continue
-        except UnreadableInput as exc:
-            errors.append(f"{target.name}: {exc}")
-            continue
-        if target.path is None and not (check or diff):
-            sys.stdout.buffer.write(formatted)
-            changed += differs
-            continue
-        if not differs:
-            continue
-        changed += 1
-        if diff:
-            typer.echo(unified_diff(data, formatted, target.name), nl=False)
-        elif check:
-            if not quiet:
-                typer.echo(_shown(f"would reformat {target.name}"))
-        else:
-            try:
-                write_atomically(target.path, formatted, expected=data)
-            except OSError as exc:
-                errors.append(write_error(exc, target.name))
-                continue
-            written += 1
-            if not quiet:
-                typer.echo(_shown(f"reformatted {target.name}"))
-    _tell(errors, found.notes, quiet)
-    if not quiet and not diff and targets and (check or targets[0].path is not None):
-        if check:
-            summary = f"{changed} file{'s' if changed != 1 else ''} would be reformatted, {len(targets) - changed} left unchanged"
-        else:  # only what was really written counts; refused or failed writes are errors above
-            summary = f"{written} file{'s' if written != 1 else ''} reformatted, {len(targets) - changed} left unchanged"
-            if changed > written:
-                summary += f", {changed - written} not written"
-        typer.echo(summary, err=True)
-    if errors:
+    for result in outcome.results:
+        if result.output is not None:
+            sys.stdout.buffer.write(result.output)
+        elif result.diff:
+            typer.echo(result.diff, nl=False)
+        elif result.changed and not quiet and (result.written or mode == "check"):
+            typer.echo(_shown(f"{'would reformat' if mode == 'check' else 'reformatted'} {result.name}"))
+    _tell(outcome.errors, outcome.notes, quiet)
+    stdin_only = all(result.output is not None for result in outcome.results)
+    if not quiet and mode != "diff" and outcome.results and (mode == "check" or not stdin_only):
+        typer.echo(_format_summary(outcome, mode), err=True)
+    if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
-    raise typer.Exit(EXIT_FINDINGS if changed and (check or diff) else EXIT_OK)
+    raise typer.Exit(EXIT_FINDINGS if outcome.changed and mode != "write" else EXIT_OK)
+
+
+def _format_summary(outcome, mode: str) -> str:
+    def files(count: int) -> str:
+        return f"{count} file{'s' if count != 1 else ''}"
+
+    unchanged = len(outcome.results) - outcome.changed
+    if mode == "check":
+        return f"{files(outcome.changed)} would be reformatted, {unchanged} left unchanged"
+    # only what was really written counts; refused or failed writes are errors above
+    summary = f"{files(outcome.written)} reformatted, {unchanged} left unchanged"
+    missed = (
+        outcome.changed - outcome.written - sum(r.output is not None and r.changed for r in outcome.results)
+    )
+    return summary + (f", {missed} not written" if missed > 0 else "")
 
 
 def _shown(text: str) -> str:
@@ -603,16 +584,33 @@ def explain(
     ),
     gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing speeds are shown."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+    program: str | None = typer.Option(
+        None, "--program", metavar="NC", help="With a start-up list: show the homing order of this program."
+    ),
+    channel: int = typer.Option(
+        1, "--channel", min=1, max=12, help="With a start-up list: the channel whose axis names are shown."
+    ),
+    cnc_root: str | None = typer.Option(
+        None,
+        "--cnc-root",
+        metavar="DIR",
+        help="With a start-up list: the CNC's working directory its entries are resolved against.",
+    ),
 ) -> None:
-    """Explain the homing configuration of a list, or describe one parameter."""
+    """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
     import json
 
     from .explain import explain_list, parameter_card, render_card, render_list
     from .files import not_a_list_file
+    from .machine import is_startup_list
 
     path = Path(target)
     problem = not_a_list_file(path)
-    if problem is None or problem not in NOT_A_FILE:
+    if problem is None and is_startup_list(path):
+        report, render = _machine_report(path, program, channel, cnc_root, gear), _render_machine
+    elif program is not None:
+        _fail("--program goes with a start-up list (hochlauf.lis)")
+    elif problem is None or problem not in NOT_A_FILE:
         report = explain_list(_one_list(path, target), target, gear)
         render = render_list
     else:
@@ -632,6 +630,30 @@ def explain(
         return
     use = _use_color(color, sys.stdout)
     render(report, _console(use))
+
+
+def _machine_report(path: Path, program: str | None, channel: int, cnc_root: str | None, gear: int) -> dict:
+    """`explain hochlauf.lis`: the machine's axes (and a program's homing order), or a one-line failure."""
+    from .files import reason
+    from .machinebuild import MachineError
+    from .machineexplain import explain_startup
+
+    try:
+        root = Path(_folder(cnc_root, "--cnc-root")) if cnc_root is not None else None
+        return explain_startup(
+            path, program=Path(program) if program else None, cnc_root=root, channel=channel, gear=gear
+        )
+    except (MachineError, UsageError) as exc:
+        _fail(str(exc))
+    except OSError as exc:
+        _fail(str(exc) if exc.errno is None else f"cannot read {program}: {reason(exc)}")
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _render_machine(report: dict, console) -> None:
+    from .machineexplain import render_machine
+
+    render_machine(report, console)
 
 
 # Why an argument of explain names no file at all (then it is taken as a parameter name).

@@ -11,12 +11,15 @@ from __future__ import annotations
 
 import fnmatch
 import os
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import MISSING, dataclass, field, fields, replace
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from .tomlfile import read_toml
+
+if TYPE_CHECKING:
+    from pydantic import ValidationError
 
 CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
 
@@ -45,82 +48,97 @@ def parse_codes(values: list[str]) -> list[str]:
     return cleaned
 
 
+SeverityName = Literal["error", "warning", "info"]
+UnknownParameters = Literal["warn", "error", "ignore"]
+
+# How a command-line value combines with the configuration's (Settings field metadata "cli").
+REPLACE, EXTEND = "replace", "extend"
+
+
+def _key(default: Any = None, *, factory: Any = None, cli: str = REPLACE, **check: Any) -> Any:
+    """A settings field: its default, how the command line combines with it, and the checks pydantic makes
+    on the configuration file's value (`gt`, `ge`, `min_length`, `pattern`, `codes`)."""
+    metadata = {"cli": cli, "check": check}
+    if factory is not None:
+        return field(default_factory=factory, metadata=metadata)
+    return field(default=default, metadata=metadata)
+
+
 @dataclass(frozen=True)
 class Settings:
-    """The keys of an achslint configuration (see README, Configuration); file keys use dashes."""
+    """Every achslint setting, once: the configuration file's schema (keys spelled with dashes), its
+    defaults, what rules read (`ctx.options`) and what the command line may override (`Overrides`)."""
 
-    select: list[str] | None = None
-    extend_select: list[str] = field(default_factory=list)
-    ignore: list[str] = field(default_factory=list)
-    per_file_ignores: dict[str, list[str]] = field(default_factory=dict)
-    severity: dict[str, str] = field(default_factory=dict)
-    fail_on: str = "error"
-    include: list[str] = field(default_factory=lambda: ["achsmds*.lis"])
-    exclude: list[str] = field(default_factory=list)
-    unknown_parameters: str = "warn"
-    cycle_time_us: int = 1000
-    repeatability_tolerance_um: float = 20.0
-    scenario: dict[str, Any] = field(default_factory=dict)  # scenario defaults for dry-run
-    cnc_root: str | None = None  # the CNC working directory start-up entries are resolved against
-    docs_url: str | None = None  # where rule documentation links point (json url, SARIF helpUri)
+    select: list[str] | None = _key(None, codes="list")
+    extend_select: list[str] = _key(factory=list, cli=EXTEND, codes="list")
+    ignore: list[str] = _key(factory=list, cli=EXTEND, codes="list")
+    per_file_ignores: dict[str, list[str]] = _key(factory=dict, codes="values")
+    severity: dict[str, SeverityName] = _key(factory=dict, codes="keys")
+    fail_on: SeverityName = _key("error")
+    include: list[str] = _key(factory=lambda: ["achsmds*.lis"])
+    exclude: list[str] = _key(factory=list, cli=EXTEND)  # the command line extends it (--extend-exclude)
+    unknown_parameters: UnknownParameters = _key("warn")
+    cycle_time_us: int = _key(1000, gt=0)
+    repeatability_tolerance_um: float = _key(20.0, ge=0)  # linear axes (LIS403)
+    repeatability_tolerance_deg: float = _key(0.01, ge=0)  # rotary axes (LIS403)
+    scenario: dict[str, Any] = _key(factory=dict)  # scenario defaults for dry-run
+    cnc_root: str | None = _key(
+        None, min_length=1
+    )  # the CNC working directory start-up entries resolve against
+    docs_url: str | None = _key(None, pattern=r"^https?://\S+$")  # rule documentation links (json, SARIF)
 
     def as_file_keys(self) -> dict[str, Any]:
         """The settings as a configuration file spells them."""
-        return {f.name.replace("_", "-"): getattr(self, f.name) for f in fields(self)}
+        return {file_key(f.name): getattr(self, f.name) for f in fields(self)}
+
+
+def file_key(name: str) -> str:
+    """The configuration-file spelling of a settings field (`fail_on` -> `fail-on`)."""
+    return name.replace("_", "-")
+
+
+def _check_codes(value: Any, how: str) -> Any:
+    """The one validation of rule codes in a configuration file (the command line uses `parse_codes` too)."""
+    from .rules import known_codes
+
+    if value is None:
+        return None
+    if how == "list":
+        return parse_codes(value)
+    if how == "values":
+        return {pattern: parse_codes(codes) for pattern, codes in value.items()}
+    codes = parse_codes(list(value))
+    partial = [code for code in codes if code not in known_codes()]
+    if partial:  # an override is looked up by the full code, so a prefix would change nothing
+        raise ValueError(f"severity overrides take full rule codes, not the prefix {partial[0]!r}")
+    return dict(zip(codes, value.values(), strict=True))
 
 
 @lru_cache(maxsize=1)
-def _file_model():
-    """The pydantic model that validates a configuration file (built only when a file is read)."""
-    from pydantic import BaseModel, ConfigDict, Field, field_validator
+def _file_model() -> Any:
+    """The pydantic model of a configuration file, derived from `Settings` (built only when a file is
+    read: importing pydantic costs more than linting a small list)."""
+    from typing import Annotated, get_type_hints
 
-    severity_name = Literal["error", "warning", "info"]
-    default = Settings()  # the defaults live in one place: the dataclass above
+    from pydantic import AfterValidator, ConfigDict, Field, create_model
 
-    class SettingsFile(BaseModel):
-        model_config = ConfigDict(extra="forbid", populate_by_name=True)
-
-        select: list[str] | None = None
-        extend_select: list[str] = Field(default_factory=list, alias="extend-select")
-        ignore: list[str] = Field(default_factory=list)
-        per_file_ignores: dict[str, list[str]] = Field(default_factory=dict, alias="per-file-ignores")
-        severity: dict[str, severity_name] = Field(default_factory=dict)
-        fail_on: severity_name = Field(default.fail_on, alias="fail-on")
-        include: list[str] = Field(default_factory=lambda: list(default.include))
-        exclude: list[str] = Field(default_factory=list)
-        unknown_parameters: Literal["warn", "error", "ignore"] = Field(
-            default.unknown_parameters, alias="unknown-parameters"
+    hints = get_type_hints(Settings)
+    definitions: dict[str, Any] = {}
+    for item in fields(Settings):
+        check = dict(item.metadata["check"])
+        codes = check.pop("codes", None)
+        kind: Any = hints[item.name]
+        if codes:
+            kind = Annotated[kind, AfterValidator(lambda value, how=codes: _check_codes(value, how))]
+        default: dict[str, Any] = (
+            {"default_factory": item.default_factory}
+            if item.default_factory is not MISSING
+            else {"default": item.default}
         )
-        cycle_time_us: int = Field(default.cycle_time_us, alias="cycle-time-us", gt=0)
-        repeatability_tolerance_um: float = Field(
-            default.repeatability_tolerance_um, alias="repeatability-tolerance-um", ge=0
-        )
-        scenario: dict[str, Any] = Field(default_factory=dict)
-        cnc_root: str | None = Field(None, alias="cnc-root", min_length=1)
-        docs_url: str | None = Field(None, alias="docs-url", pattern=r"^https?://\S+$")
-
-        @field_validator("select", "extend_select", "ignore")
-        @classmethod
-        def _check_codes(cls, value):
-            return None if value is None else parse_codes(value)
-
-        @field_validator("per_file_ignores")
-        @classmethod
-        def _check_per_file(cls, value):
-            return {pattern: parse_codes(codes) for pattern, codes in value.items()}
-
-        @field_validator("severity")
-        @classmethod
-        def _check_severity_codes(cls, value):
-            from .rules import known_codes
-
-            codes = parse_codes(list(value))
-            partial = [code for code in codes if code not in known_codes()]
-            if partial:  # an override is looked up by the full code, so a prefix would change nothing
-                raise ValueError(f"severity overrides take full rule codes, not the prefix {partial[0]!r}")
-            return dict(zip(codes, value.values(), strict=False))
-
-    return SettingsFile
+        definitions[item.name] = (kind, Field(alias=file_key(item.name), **default, **check))
+    return create_model(
+        "SettingsFile", __config__=ConfigDict(extra="forbid", populate_by_name=True), **definitions
+    )
 
 
 @dataclass(frozen=True)
@@ -168,7 +186,7 @@ def matches_glob(relative: str, pattern: str) -> bool:
     )
 
 
-def _format_error(path: Path, error, model) -> str:
+def _format_error(path: Path, error: ValidationError, model: Any) -> str:
     problems = []
     for item in error.errors():
         key = ".".join(str(part) for part in item["loc"]) or "(top level)"
@@ -255,37 +273,39 @@ def _load_cached(path: Path) -> ResolvedConfig:
     return load_file(path)
 
 
-@dataclass
 class Overrides:
-    """What the command line says; None means "use the configuration"."""
+    """What the command line (or an editor) says about settings; an absent or None value means "use the
+    configuration". Keys are `Settings` field names; a field marked `cli=EXTEND` adds to the configuration's
+    list (`extend_exclude` adds to `exclude`)."""
 
-    select: list[str] | None = None
-    extend_select: list[str] = field(default_factory=list)
-    ignore: list[str] = field(default_factory=list)
-    fail_on: str | None = None
-    unknown_parameters: str | None = None
-    cycle_time_us: int | None = None
-    repeatability_tolerance_um: float | None = None
-    include: list[str] | None = None
-    extend_exclude: list[str] | None = None
-    cnc_root: str | None = None  # a folder, already absolute (relative to the working directory when given)
+    def __init__(self, **values: Any) -> None:
+        known = {f.name: f for f in fields(Settings)}
+        self.values: dict[str, Any] = {}
+        for name, value in values.items():
+            target = "exclude" if name == "extend_exclude" else name
+            if target not in known:
+                raise TypeError(f"not a setting: {name}")
+            if value is not None and value != []:
+                self.values[target] = value
+        self._fields = known
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_") or name == "values":
+            raise AttributeError(name)
+        return self.values.get(name)
 
     def apply(self, settings: Settings) -> Settings:
         changes: dict[str, Any] = {}
-        if self.select is not None:
-            changes["select"] = self.select
-        if self.extend_select:
-            changes["extend_select"] = [*settings.extend_select, *self.extend_select]
-        if self.ignore:
-            changes["ignore"] = [*settings.ignore, *self.ignore]
-        for name in ("fail_on", "unknown_parameters", "cycle_time_us", "repeatability_tolerance_um"):
-            value = getattr(self, name)
-            if value is not None:
-                changes[name] = value
-        if self.include is not None:
-            changes["include"] = list(self.include)
-        if self.extend_exclude:
-            changes["exclude"] = [*settings.exclude, *self.extend_exclude]
-        if self.cnc_root is not None:
-            changes["cnc_root"] = self.cnc_root
+        for name, value in self.values.items():
+            if self._fields[name].metadata["cli"] == EXTEND:
+                changes[name] = [*getattr(settings, name), *value]
+            else:
+                changes[name] = list(value) if isinstance(value, list) else value
         return replace(settings, **changes)
+
+
+def forget_cached() -> None:
+    """Forget which folders hold a configuration and what the files said (a file was created, edited or
+    deleted: the language server calls this when the editor reports such a change)."""
+    _config_in.cache_clear()
+    _load_cached.cache_clear()

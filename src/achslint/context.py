@@ -10,28 +10,20 @@ from typing import TYPE_CHECKING
 from . import syntax
 from .analysis import Analysis, Setting, analyse
 from .catalogue import Catalogue, catalogue
+from .config import Settings
 from .diagnostics import Diagnostic, Fix, Related, Severity
 
 if TYPE_CHECKING:
+    from .facts import Span
     from .homing import Effect, HomingStrategy
-    from .resolved import ResolvedAxis
-
-
-@dataclass
-class Options:
-    """Settings that change what rules report (not which rules run)."""
-
-    unknown_parameters: str = "warn"  # warn | error | ignore
-    cycle_time_us: int = 1000
-    repeatability_tolerance_um: float = 20.0
-    repeatability_tolerance_deg: float = 0.01  # rotary axes (LIS403)
+    from .resolved import Correction, ResolvedAxis
 
 
 @dataclass
 class Context:
     name: str
     file: syntax.ListFile
-    options: Options = field(default_factory=Options)
+    options: Settings = field(default_factory=Settings)  # what rules read: unknown-parameters, cycle time …
     catalogue: Catalogue = field(default_factory=catalogue)
     embedded: object = None  # xmlinput.EmbeddedList when the list came from an XML file
     default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
@@ -127,7 +119,7 @@ class Context:
             text += f" (the CNC uses {_shown(correction.used, unit)})"
         return text
 
-    def correction(self, path: str):
+    def correction(self, path: str) -> Correction | None:
         """The CNC's correction of a parameter, when a rule should report it: the parameter takes effect, or
         it is wrong for the axis's drive or axis type (then the correction says more than LIS105)."""
         correction = self.values.correction(path)
@@ -136,7 +128,9 @@ class Context:
         found = self.effect(path)
         return correction if found.effective or found.cause != "strategy" else None
 
-    def report_correction(self, code: str, correction, message: str, paths: list[str]) -> Diagnostic:
+    def report_correction(
+        self, code: str, correction: Correction, message: str, paths: list[str]
+    ) -> Diagnostic:
         """A finding about a load-time correction: the message, then what the CNC does instead."""
         return self.cross(code, f"{message}: {correction.reason} ({correction.error})", paths)
 
@@ -165,7 +159,7 @@ class Context:
             related=related,
         )
 
-    def problem_span(self, line: syntax.Line, span) -> tuple[int, int]:
+    def problem_span(self, line: syntax.Line, span: Span) -> tuple[int, int]:
         if isinstance(span, tuple):
             return span
         if span == "rest" and line.rest is not None:
@@ -177,7 +171,7 @@ class Context:
         return start, start + len(line.path or "")
 
 
-def _shown(value, unit) -> str:
+def _shown(value: object, unit: str | None) -> str:
     from .units import describe
 
     if isinstance(value, bool):

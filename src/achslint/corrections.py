@@ -63,7 +63,7 @@ def encoder_overflow(axis: ResolvedAxis) -> None:
         )
         return
     revolution = encoder_revolution(axis, 0)
-    offset = axis.written(OFFSET)
+    offset = axis.written_number(OFFSET)
     if revolution and abs(offset) >= revolution:
         unit = axis.parameter(OFFSET).unit(axis.axis_type)
         axis.correct(
@@ -77,9 +77,15 @@ def encoder_overflow(axis: ResolvedAxis) -> None:
 
 def encoder_revolution(axis: ResolvedAxis, gear: int) -> float | None:
     """One encoder revolution (2^encoder_bit_range increments) in list units of the gear stage, if known."""
-    bits = axis.get(BITS)
-    numerator, denominator = axis.get(f"getriebe[{gear}].wegaufz"), axis.get(f"getriebe[{gear}].wegaufn")
-    if not bits or not numerator:
+    bits = axis.number(BITS)
+    numerator, denominator = (
+        axis.number(f"getriebe[{gear}].wegaufz"),
+        axis.number(f"getriebe[{gear}].wegaufn"),
+    )
+    _, most = axis.parameter(BITS).limits
+    if not bits or not numerator or (most is not None and bits > most):
+        # A reference can bring a number beyond encoder_bit_range's range (its value is not range-checked);
+        # it describes no encoder, and 2 to its power may not even fit a float.
         return None
     return (2**bits) * denominator / numerator
 
@@ -97,12 +103,12 @@ def speed_caps(axis: ResolvedAxis) -> None:
     (P-ERR-110421 vb_refmax, P-ERR-110422 vb_reflow, P-ERR-110413 torq_move_velocity)."""
     unit = axis.parameter("getriebe[i].vb_not_referenced").unit(axis.axis_type)
     for gear in axis.gear_stages_set("vb_not_referenced"):
-        cap = axis.get(f"getriebe[{gear}].vb_not_referenced")
+        cap = axis.number(f"getriebe[{gear}].vb_not_referenced")
         if not cap:
             continue  # 0: no limit
         for member, error in CAPPED_SPEEDS:
             path = f"getriebe[{gear}].{member}"
-            if axis.written(path) > cap:
+            if axis.written_number(path) > cap:
                 axis.correct(
                     path,
                     cap,
@@ -135,7 +141,7 @@ def sercos_latch(axis: ResolvedAxis) -> None:
             "the drive's zero-pulse latch (S-0-146) is not available for spindles; the CNC switches it off",
         )
         return
-    if not 1 <= axis.written(LAYOUT) <= 16:
+    if not 1 <= axis.written_number(LAYOUT) <= 16:
         axis.correct(
             LAYOUT,
             1,

@@ -43,8 +43,8 @@ def decode(data: bytes) -> SourceText:
     reading them byte-wise would turn every line into noise (hundreds of syntax
     errors for a program file) instead of one useful message.
     """
-    for bom, name in _WIDE_BOMS.items():
-        if data.startswith(bom):
+    for mark, name in _WIDE_BOMS.items():
+        if data.startswith(mark):
             raise UnreadableInput(
                 f"the file is {name} encoded; the CNC reads ASCII/Latin-1 lists, save it as ANSI/Latin-1"
             )

@@ -71,7 +71,7 @@ class Diagnostic:
     def url(self) -> str:
         return rule_url(self.code)
 
-    def sort_key(self) -> tuple:
+    def sort_key(self) -> tuple[str, int, int, str]:
         return (self.path, self.line, self.column, self.code)
 
 

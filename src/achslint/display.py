@@ -26,7 +26,7 @@ _UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\
 _SURROGATE = re.compile("[\ud800-\udfff]")
 
 
-def _escape(match: re.Match) -> str:
+def _escape(match: re.Match[str]) -> str:
     code = ord(match.group(0))
     if 0xDC80 <= code <= 0xDCFF:  # a byte that was not UTF-8, kept by the file system decoding
         return f"\\x{code - 0xDC00:02x}"
@@ -43,7 +43,7 @@ def unicode_text(text: str) -> str:
     return _SURROGATE.sub(_escape, text)
 
 
-def json_text(document) -> str:
+def json_text(document: object) -> str:
     """A JSON document as strict JSON text (UTF-8 friendly, no lone surrogates), indented."""
     text = json.dumps(document, ensure_ascii=False, indent=2)
     if _SURROGATE.search(text):  # rare: only names that are not UTF-8 carry them, so clean only then
@@ -51,7 +51,7 @@ def json_text(document) -> str:
     return text
 
 
-def _unicode_document(value):
+def _unicode_document(value: object) -> object:
     if isinstance(value, str):
         return unicode_text(value)
     if isinstance(value, dict):

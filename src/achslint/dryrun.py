@@ -32,11 +32,18 @@ import random
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from .engine import Simulator, Trace
 from .homing import classify
-from .resolved import ResolvedAxis, resolve_bytes
+from .resolved import ResolvedAxis, plain, resolve_bytes
 from .scenario import ScenarioError, default_scenario, parse_input
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from .catalogue import Value
+    from .scenario_input import ScenarioInput
 
 # Rules whose finding means the CNC does not run the homing at all: the dry-run refuses with their text.
 REFUSING_RULES = ("lis306_torq_drive_type", "lis319_spindle_homing_direction")
@@ -53,7 +60,9 @@ class DryRun:
     trace: Trace
 
 
-def scenario_input(file: Path, scenario: Path | None, options: dict, config: Path | None = None):
+def scenario_input(
+    file: Path, scenario: Path | None, options: dict[str, object], config: Path | None = None
+) -> tuple[ScenarioInput, int]:
     """The scenario a dry run uses and the cycle time: the configuration's `scenario` table (found next to the
     list, or `config`), then the scenario file, then the command-line options (each later source wins, key by
     key; a `[drive]` table as a whole). Each source is validated on its own, so errors name it."""
@@ -64,7 +73,7 @@ def scenario_input(file: Path, scenario: Path | None, options: dict, config: Pat
         resolved = load_file(config) if config else discover(file)
     except ConfigError as exc:
         raise ScenarioError(str(exc)) from None
-    base = dict(resolved.settings.scenario)
+    base: dict[str, object] = dict(resolved.settings.scenario)
     if base:
         parse_input(base, f"{resolved.path}: [scenario]")
     from_file = read_toml(scenario, "scenario", ScenarioError) if scenario else {}
@@ -80,7 +89,7 @@ def scenario_input(file: Path, scenario: Path | None, options: dict, config: Pat
 def prepare(
     data: bytes,
     name: str,
-    given=None,
+    given: ScenarioInput | None = None,
     *,
     gear: int = 0,
     cycle_time_us: int = 1000,
@@ -88,7 +97,7 @@ def prepare(
 ) -> Simulator:
     values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
-    if getattr(given, "drive", None) is not None and strategy.controlled_by != "drive":
+    if given is not None and given.drive is not None and strategy.controlled_by != "drive":
         raise ScenarioError(
             f"scenario: the [drive] table describes drive-controlled homing, but {name} homes "
             f"{strategy.title} (homing type {values.homing_type}): remove the [drive] table"
@@ -118,7 +127,7 @@ def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None
 def dry_run(
     data: bytes,
     name: str,
-    given=None,
+    given: ScenarioInput | None = None,
     *,
     gear: int = 0,
     cycle_time_us: int = 1000,
@@ -156,12 +165,12 @@ def annotate(simulator: Simulator, trace: Trace) -> None:
         )
 
 
-def _plain(value) -> str:
-    return str(int(value)) if isinstance(value, bool) else str(value)
+def _plain(value: Value | None) -> str:
+    return str(plain(value))
 
 
-def _finite(value):
-    """The document with every non-finite float replaced by None (strict JSON parsers reject NaN)."""
+def _finite(value: object) -> object:
+    """The value with every non-finite float replaced by None (strict JSON parsers reject NaN)."""
     if isinstance(value, float):
         return value if math.isfinite(value) else None
     if isinstance(value, dict):
@@ -171,15 +180,20 @@ def _finite(value):
     return value
 
 
-def _round(value):
+def _finite_document(document: dict[str, Any]) -> dict[str, Any]:
+    return {key: _finite(value) for key, value in document.items()}
+
+
+def _round(value: float | None) -> float | None:
     return None if value is None or not math.isfinite(value) else round(value, 9)
 
 
-def trace_json(run: DryRun) -> dict:
+def trace_json(run: DryRun) -> dict[str, Any]:
+    """The dry-run as JSON (the schema is in the module docstring)."""
     trace = run.trace
     values = run.values
     r = _round  # keep JSON free of float noise
-    return _finite(
+    return _finite_document(
         {
             "version": 1,
             "units": {
@@ -274,7 +288,7 @@ def header_lines(run: DryRun) -> list[str]:
     return lines
 
 
-def render(run: DryRun, console) -> None:
+def render(run: DryRun, console: Console) -> None:
     from rich import box
     from rich.table import Table
     from rich.text import Text
@@ -360,7 +374,7 @@ def render(run: DryRun, console) -> None:
 GEOMETRY = ("cam", "zero_pulse_period", "zero_pulse_phase", "limit_switches")
 
 
-def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
+def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict[str, Any]:
     """Simulate many start positions and cam jitters; count the outcomes with their reasons and summarise the
     spread of the reference. Start positions are drawn between the limit switches, or over one revolution on a
     modulo axis without them."""
@@ -374,8 +388,8 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
         low, high = scenario.start_position - 100.0, scenario.start_position + 100.0
     jitter = scenario.cam_jitter
     references: list[float] = []
-    outcomes: Counter = Counter()
-    reasons: Counter = Counter()
+    outcomes: Counter[str] = Counter()
+    reasons: Counter[tuple[str, str]] = Counter()
     for _ in range(runs):
         start = rng.uniform(low, high)
         shift = rng.uniform(-jitter, jitter) if jitter else 0.0
@@ -394,7 +408,7 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
         for name in GEOMETRY
         if name in scenario.assumed and not (name == "limit_switches" and scenario.modulo is not None)
     ]
-    summary = {
+    summary: dict[str, Any] = {
         "runs": runs,
         "outcomes": dict(outcomes),
         "unit": simulator.unit,
@@ -418,10 +432,10 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict:
                 "one_revolution_jumps": len(references) - usual,
             }
         )
-    return _finite(summary)
+    return _finite_document(summary)
 
 
-def sweep_words(summary: dict) -> str:
+def sweep_words(summary: dict[str, Any]) -> str:
     """The sweep in words: counts per outcome with the reasons, the spread, and a loud note on assumed geometry."""
     unit = summary["unit"]
     lines = []

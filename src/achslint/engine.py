@@ -23,14 +23,26 @@ value `pos_refpkt` (or `torq_homing_position`).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, TypedDict
 
 from .homing import POSITION, VELOCITY, HomingStrategy
 from .resolved import ResolvedAxis
 from .scenario import Scenario
 
+if TYPE_CHECKING:
+    from .scenario_input import DriveInput, SearchInput
+
 INF = math.inf
 __all__ = ["POSITION", "VELOCITY", "Simulator", "Trace"]
+
+# Where the cam signal is active: is(x) active, and the distance from x in direction s to where it
+# becomes active (`entry`) or stops being active (`exit`).
+Active = Callable[[float], bool]
+Crossing = Callable[[float, int], float]
+# A drive search's trigger: the distance from x in direction s to its next edge (active at the start or not).
+TriggerEdge = Callable[[float, int, bool], float]
 
 
 @dataclass(slots=True)
@@ -71,6 +83,21 @@ class Event:
     kind: str
 
 
+class ReferenceEvent(TypedDict):
+    """The reference event: its kind, where it happened (scenario frame), the value set there (homed frame)
+    and the speed the axis had."""
+
+    kind: str
+    position: float
+    value: float
+    speed: float
+
+
+class TraceWarning(TypedDict):
+    code: str | None  # the rule the finding belongs to (LIS317, LIS402, LIS405), None for a note
+    message: str
+
+
 @dataclass
 class Trace:
     strategy: HomingStrategy
@@ -80,11 +107,11 @@ class Trace:
     acceleration_source: str = ""
     phases: list[PhaseRecord] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
-    reference: dict | None = None  # kind, position (scenario frame), value (homed frame)
+    reference: ReferenceEvent | None = None
     final_position: float | None = None  # homed frame
     outcome: str = "homed"
     failure: str | None = None
-    warnings: list[dict] = field(default_factory=list)
+    warnings: list[TraceWarning] = field(default_factory=list)
     ends_moving: bool = False  # flying spindle homing: the trace ends at the reference, still turning
 
     @property
@@ -104,7 +131,7 @@ class _Ramp:
 
     __slots__ = ("a", "d_acc", "s", "t0", "t_acc", "v", "x0")
 
-    def __init__(self, t0: float, x0: float, s: int, v: float, a: float):
+    def __init__(self, t0: float, x0: float, s: int, v: float, a: float) -> None:
         self.t0, self.x0, self.s, self.v, self.a = t0, x0, s, v, a
         self.t_acc = v / a
         self.d_acc = v * v / (2 * a)
@@ -134,7 +161,7 @@ class _Ramp:
     def stop(self, t_brake: float) -> tuple[list[Segment], float, float]:
         """Brake from time t0 + t_brake; returns the segments, the end time and the end position."""
         s, a, t0, x0 = self.s, self.a, self.t0, self.x0
-        segments = []
+        segments: list[Segment] = []
         accel_end = min(t_brake, self.t_acc)
         segments.append(Segment(t0, t0 + accel_end, x0, 0.0, s * a))
         if t_brake > self.t_acc:
@@ -149,7 +176,7 @@ class _Ramp:
 class Simulator:
     """Simulates one axis's configured homing in a scenario."""
 
-    def __init__(self, values: ResolvedAxis, strategy: HomingStrategy, scenario: Scenario):
+    def __init__(self, values: ResolvedAxis, strategy: HomingStrategy, scenario: Scenario) -> None:
         # Every value comes from the strategy's homing setup: after the CNC's corrections, in mm and seconds.
         setup = strategy.setup
         self.values = values
@@ -173,8 +200,16 @@ class Simulator:
         self.revolution = self.modulo[1] - self.modulo[0] if self.modulo else 0.0
         self.start = scenario.start_position  # path monitoring counts from here (set by run)
 
+    @property
+    def ramp_acceleration(self) -> float:
+        """The acceleration of the moves. Only drive-controlled homing without a [drive] table has none, and
+        that strategy stands still."""
+        if self.acceleration is None:
+            raise AssertionError("no acceleration for a move: the strategy does not move the axis")
+        return self.acceleration
+
     # -- helpers -----------------------------------------------------------------------------
-    def _active(self, lo: float, hi: float):
+    def _active(self, lo: float, hi: float) -> tuple[Active, Crossing, Crossing]:
         """Membership and crossing distances of the region where the cam signal is active.
 
         On a modulo axis (spindle, rotary axis with MODULO) the cam recurs every revolution: the zone is
@@ -206,7 +241,7 @@ class Simulator:
 
         return active, entry, exit_
 
-    def _active_modulo(self, lo: float, hi: float, inside_cam: bool):
+    def _active_modulo(self, lo: float, hi: float, inside_cam: bool) -> tuple[Active, Crossing, Crossing]:
         period, width = self.revolution, hi - lo
 
         def offset(x: float) -> float:  # where x lies past the cam's start, within one revolution
@@ -249,7 +284,7 @@ class Simulator:
         must be found "within a distance from the homing start position"), not the path length travelled, so
         moving back and forth across the cam does not use it up."""
         switches = self.scenario.limit_switches
-        bounds = []
+        bounds: list[tuple[float, str]] = []
         if switches is not None:
             switch = switches[1] - x if s > 0 else x - switches[0]
             bounds.append((max(switch, 0.0), "limit switch reached"))
@@ -293,7 +328,7 @@ class Simulator:
 
         Returns (end position, end time, detection position or None when a bound stopped the move).
         """
-        ramp = _Ramp(t, x, s, speed, self.acceleration)
+        ramp = _Ramp(t, x, s, speed, self.ramp_acceleration)
         bound, reason = self._bound(x, s, travelled, search_max + before_bound if search_max < INF else INF)
         if distance > bound:
             segments, t_end, x_end = ramp.stop(ramp.time_to(bound))
@@ -328,11 +363,13 @@ class Simulator:
 
     def _reference(
         self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float
-    ) -> None:
+    ) -> float:
+        """Record the reference event; returns the position after homing (homed frame)."""
         trace.events.append(Event(time, position, kind))
         speed = abs(trace.phases[-1].segments[-1].v0)  # the braking segment starts at the event
         trace.reference = {"kind": kind, "position": self.wrap(position), "value": value, "speed": speed}
-        trace.final_position = self.wrap(value + (x_end - position))
+        final = trace.final_position = self.wrap(value + (x_end - position))
+        return final
 
     # -- strategies --------------------------------------------------------------------------
     def run(self, start: float | None = None, cam_shift: float = 0.0) -> Trace:
@@ -453,7 +490,7 @@ class Simulator:
             self._move(trace, name, x, t, s, speed, cam_distance, False, "", travelled)
             return trace
         # The cam edge is sampled; the zero-pulse logic starts `shift` later; the pulse itself may be latched.
-        ramp = _Ramp(t, x, s, speed, self.acceleration)
+        ramp = _Ramp(t, x, s, speed, self.ramp_acceleration)
         t_cam = self._sample(ramp, cam_distance, False)
         x_cam = x + s * ramp.distance_at(t_cam)
         activation = x_cam + s * self.shift
@@ -542,7 +579,7 @@ class Simulator:
                 trace.outcome = "failed"
                 trace.failure = (
                     f"the axis braked through the cam (braking distance "
-                    f"{fast * fast / (2 * self.acceleration):.4g} {self.unit} is longer than the cam)"
+                    f"{fast * fast / (2 * self.ramp_acceleration):.4g} {self.unit} is longer than the cam)"
                 )
                 return trace
         speed = fast if self.fast_from_cam else slow
@@ -566,7 +603,7 @@ class Simulator:
             trace, "onto the cam and reference", x, t, s, slow, entry(x, s), travelled
         )
 
-    def _one_phase(self, trace: Trace, x: float, s: int, active, entry) -> Trace:
+    def _one_phase(self, trace: Trace, x: float, s: int, active: Active, entry: Crossing) -> Trace:
         """Homing without reversal: flying spindle homing at vb_reflow; otherwise the cam is approached at
         vb_refmax and the reference is its edge (type I) or the next zero pulse, searched at vb_reflow (type III)."""
         if self.strategy.setup.spindle:
@@ -613,7 +650,7 @@ class Simulator:
         has: the trace ends at the reference event, moving."""
         s, speed = self.direction, self.slow
         scenario = self.scenario
-        ramp = _Ramp(0.0, x, s, speed, self.acceleration)
+        ramp = _Ramp(0.0, x, s, speed, self.ramp_acceleration)
         name = "reference on the fly"
         t_edge = None
         if self.strategy.with_cam:
@@ -733,7 +770,7 @@ class Simulator:
     def simulated(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         s = self.direction
         speed = self.slow
-        distance = abs(self.values.get("antr.simu.rpf_weg_bis_nip")) * POSITION
+        distance = abs(self.values.number("antr.simu.rpf_weg_bis_nip")) * POSITION
         x_end, _t_end, x_ref = self._move(
             trace,
             "to the simulated zero pulse",
@@ -755,8 +792,8 @@ class Simulator:
     def fixed_stop(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         values, gear = self.values, self.strategy.gear
         s = 1 if values.get("kenngr.homing.torq_homing_dir") else -1
-        speed = values.get(f"getriebe[{gear}].homing.torq_move_velocity") * VELOCITY
-        acceleration = values.get(f"getriebe[{gear}].homing.torq_move_acceleration")
+        speed = values.number(f"getriebe[{gear}].homing.torq_move_velocity") * VELOCITY
+        acceleration = values.number(f"getriebe[{gear}].homing.torq_move_acceleration")
         if speed <= 0 or acceleration <= 0:
             missing = "torq_move_velocity" if speed <= 0 else "torq_move_acceleration"
             trace.outcome, trace.failure = (
@@ -765,12 +802,12 @@ class Simulator:
             )
             return trace
         if self.strategy.setup.simulated:
-            stop = x + s * values.get("kenngr.homing.torq_distance_to_block") * POSITION
+            stop: float | None = x + s * values.number("kenngr.homing.torq_distance_to_block") * POSITION
         else:
             stop = self.scenario.fixed_stop
-        reach = (stop - x) * s
-        min_distance = values.get("kenngr.homing.torq_min_distance") * POSITION
-        max_distance = values.get("kenngr.homing.torq_max_distance") * POSITION
+        reach = (stop - x) * s if stop is not None else 0.0
+        min_distance = values.number("kenngr.homing.torq_min_distance") * POSITION
+        max_distance = values.number("kenngr.homing.torq_max_distance") * POSITION
         ramp = _Ramp(0.0, x, s, speed, float(acceleration))
         if stop is None or reach <= 0 or (max_distance > 0 and reach > max_distance):
             limit = max_distance if max_distance > 0 else self._bound(x, s, 0.0)[0]
@@ -816,7 +853,7 @@ class Simulator:
                 ),
             )
             return trace
-        detect = values.get("kenngr.homing.torq_detect_time") * 1e-6
+        detect = values.number("kenngr.homing.torq_detect_time") * 1e-6
         t_detect = t_contact + detect
         segments.append(Segment(t_contact, t_detect, stop, 0.0, 0.0))
         trace.phases.append(
@@ -833,8 +870,8 @@ class Simulator:
             )
         )
         trace.events.append(Event(t_contact, stop, "fixed stop reached"))
-        value = values.get("kenngr.homing.torq_homing_position") * POSITION
-        retraction = values.get("kenngr.homing.torq_retraction_distance") * POSITION
+        value = values.number("kenngr.homing.torq_homing_position") * POSITION
+        retraction = values.number("kenngr.homing.torq_retraction_distance") * POSITION
         trace.events.append(Event(t_detect, stop, "fixed stop detected"))
         trace.reference = {"kind": "fixed stop", "position": stop, "value": value, "speed": 0.0}
         x_end, t_end = _point_to_point(
@@ -846,7 +883,7 @@ class Simulator:
     # -- drive-side homing (Triamec drive homing methods) -------------------------------------
     EARLY_TRIGGER = 0.005  # s: a search whose trigger comes sooner is refused by the drive
 
-    def _drive(self, trace: Trace, x: float, drive, cam_shift: float) -> Trace:
+    def _drive(self, trace: Trace, x: float, drive: DriveInput, cam_shift: float) -> Trace:
         values = self.values
         reference = drive.reference_position
         if reference is None:
@@ -871,8 +908,11 @@ class Simulator:
             return trace
         if drive.method == "nc":
             return self._nc_reference(trace, x, drive, reference, cam_shift)
+        first_search, second_search = drive.first_search, drive.second_search
+        if first_search is None or second_search is None:  # refused by DriveInput for the standard method
+            raise AssertionError("the standard drive method needs a first and a second search")
         t = 0.0
-        x, t, first = self._drive_search(trace, "first search", x, t, drive, drive.first_search, cam_shift)
+        x, t, first = self._drive_search(trace, "first search", x, t, drive, first_search, cam_shift)
         if first is None:
             return trace
         if drive.relocate_distance:
@@ -888,21 +928,18 @@ class Simulator:
                 abs(drive.relocate_distance),
                 "relocation distance travelled",
             )
-        x_end, t, event = self._drive_search(
-            trace, "second search", x, t, drive, drive.second_search, cam_shift
-        )
+        x_end, t, event = self._drive_search(trace, "second search", x, t, drive, second_search, cam_shift)
         if event is None:
             return trace
-        self._reference(
+        homed_now = self._reference(
             trace,
-            f"{drive.second_search.trigger.replace('_', ' ')} (drive)",
+            f"{second_search.trigger.replace('_', ' ')} (drive)",
             event,
             trace.phases[-1].segments[-1].t0,
             reference,
             x_end,
         )
         if drive.home_position is not None:
-            homed_now = trace.final_position
             distance = drive.home_position - homed_now
             if distance:
                 s = 1 if distance > 0 else -1
@@ -920,7 +957,9 @@ class Simulator:
                 trace.final_position = homed_now + (x_home - x_end)
         return trace
 
-    def _nc_reference(self, trace: Trace, x: float, drive, reference: float, cam_shift: float) -> Trace:
+    def _nc_reference(
+        self, trace: Trace, x: float, drive: DriveInput, reference: float, cam_shift: float
+    ) -> Trace:
         """TwinCAT NC / AX5000 homing: to the cam, off its falling edge, then the event of the reference mode."""
         scenario = self.scenario
         if scenario.cam is None:
@@ -1007,7 +1046,16 @@ class Simulator:
         finally:
             self.acceleration, self.cam_level = saved
 
-    def _drive_search(self, trace: Trace, name: str, x: float, t: float, drive, search, cam_shift: float):
+    def _drive_search(
+        self,
+        trace: Trace,
+        name: str,
+        x: float,
+        t: float,
+        drive: DriveInput,
+        search: SearchInput,
+        cam_shift: float,
+    ) -> tuple[float, float, float | None]:
         """A search move: direction from the sign of SignedMaxDistance, reversed when the trigger is already active."""
         speed = drive.velocity * search.dynamic_reduction
         sign = 1 if search.signed_max_distance > 0 else -1
@@ -1067,7 +1115,7 @@ class Simulator:
         trace.events.append(Event(t + t_event, x_event, f"{name}: {search.trigger.replace('_', ' ')} edge"))
         return x_end, t_end, x_event
 
-    def _trigger(self, search, cam_shift: float):
+    def _trigger(self, search: SearchInput, cam_shift: float) -> tuple[Active, TriggerEdge]:
         """(is the trigger active at x, distance to its next edge in direction s)."""
         scenario = self.scenario
         if search.trigger == "zero_pulse":
@@ -1079,7 +1127,7 @@ class Simulator:
                 else list(scenario.limit_switches or ())
             )
 
-            def to_point(x, s, initially):
+            def to_point(x: float, s: int, initially: bool) -> float:
                 ahead = [(p - x) * s for p in points if p is not None and (p - x) * s >= 0]
                 return min(ahead) if ahead else INF
 
@@ -1089,10 +1137,10 @@ class Simulator:
         lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
         low = search.active_low
 
-        def active(x):
+        def active(x: float) -> bool:
             return (lo <= x <= hi) != low
 
-        def edge(x, s, initially):
+        def edge(x: float, s: int, initially: bool) -> float:
             inside = lo <= x <= hi
             if inside:
                 return hi - x if s > 0 else x - lo
@@ -1113,7 +1161,7 @@ def _point_to_point(
     a: float,
     distance: float,
     ended_by: str = "retraction distance travelled",
-):
+) -> tuple[float, float]:
     """A move of a known length from rest to rest (triangular when too short to reach the speed)."""
     if distance <= 0:
         return x, t

@@ -8,17 +8,128 @@ under the strategy, with the reason.
 
 from __future__ import annotations
 
-from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue
+from typing import TYPE_CHECKING, TypedDict
+
+from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, Scalar, Value, catalogue
 from .homing import HOMING_PARAMETERS, classify, effect, homing_parameter_paths, strategies_reading
-from .resolved import resolve_bytes
+from .resolved import CorrectionData, plain, resolve_bytes
 from .rules import registry
 from .units import describe, to_human, unit_label
 
+if TYPE_CHECKING:
+    from rich.console import Console
 
-def _plain(value):
-    if isinstance(value, bool):
-        return int(value)
-    return value
+    from .homing import HomingStrategy
+    from .resolved import ResolvedAxis
+
+# The JSON documents of `achslint explain --format json` (a list, or a parameter card).
+
+
+class AxisInfo(TypedDict):
+    name: Value | None
+    number: Value | None
+    axis_type: str
+    drive_type: int
+    drive: str
+    drive_type_set: bool
+    homing_type: str
+    homing_type_set: bool
+
+
+class AccelerationInfo(TypedDict):
+    value: float
+    source: str
+
+
+class StrategyInfo(TypedDict):
+    id: str
+    title: str
+    description: str
+    controlled_by: str
+    manual_type: str | None
+    variants: list[str]
+    ends_with_braking: bool
+    acceleration: AccelerationInfo | None
+
+
+class PhaseInfo(TypedDict):
+    number: int
+    name: str
+    direction: str | None
+    velocity_parameter: str | None
+    velocity: float | None
+    velocity_human: str | None
+    ends_when: str
+    note: str
+    text: str
+
+
+class SourceInfo(TypedDict):
+    kind: str
+    line: int | None
+
+
+class ParameterRow(TypedDict):
+    parameter: str
+    p_axis: str
+    value: int | float | str | None
+    written: int | float | str | None
+    correction: str | None
+    unit: str | None
+    human: str | None
+    source: SourceInfo
+    effective: bool
+    reason: str
+
+
+class ListReport(TypedDict):
+    version: int
+    file: str
+    gear: int
+    axis: AxisInfo
+    strategy: StrategyInfo
+    phases: list[PhaseInfo]
+    corrections: list[CorrectionData]
+    parameters: list[ParameterRow]
+
+
+class AliasInfo(TypedDict):
+    path: str
+    kind: str
+
+
+class RangeInfo(TypedDict):
+    min: float | None
+    max: float | None
+
+
+class StrategyUse(TypedDict):
+    id: str
+    title: str
+    example: str
+
+
+class ParameterCard(TypedDict):
+    p_axis: str
+    path: str
+    aliases: list[AliasInfo]
+    type: str
+    range: str | None
+    checked_range: RangeInfo | None
+    accepted_values: list[int] | None
+    symbols: list[str] | None
+    max_length: int | None
+    default: Scalar
+    units: dict[str, str] | None
+    index_bounds: list[list[int]] | None
+    drive_types: list[str] | None
+    axis_types: list[str] | None
+    restart_required: bool
+    description: str
+    manual_title: str | None
+    manual: str | None
+    strategies: list[StrategyUse] | None
+    rules: list[str]
 
 
 def _speed_words(value: float | None, axis_type: str) -> str:
@@ -28,12 +139,12 @@ def _speed_words(value: float | None, axis_type: str) -> str:
     return describe(value, unit)
 
 
-def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> dict:
+def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
     """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs, after its corrections."""
     values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
     axis_type = values.axis_type
-    phases = []
+    phases: list[PhaseInfo] = []
     for number, phase in enumerate(strategy.phases, 1):
         speed = _speed_words(phase.velocity, axis_type)
         where = phase.velocity_parameter or ""
@@ -96,7 +207,7 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
     }
 
 
-def parameter_row(values, strategy, path: str) -> dict:
+def parameter_row(values: ResolvedAxis, strategy: HomingStrategy, path: str) -> ParameterRow:
     """One parameter of the axis (canonical path): value, unit, human unit, source, correction and effect."""
     parameter = values.parameter(path)
     value = values.get(path)
@@ -107,8 +218,8 @@ def parameter_row(values, strategy, path: str) -> dict:
     return {
         "parameter": path,
         "p_axis": parameter.id,
-        "value": _plain(value),
-        "written": _plain(correction.written) if correction else None,
+        "value": plain(value),
+        "written": plain(correction.written) if correction else None,
         "correction": correction.error if correction else None,
         "unit": unit_label(unit) or None,
         "human": to_human(value, unit)
@@ -120,7 +231,7 @@ def parameter_row(values, strategy, path: str) -> dict:
     }
 
 
-def render_list(report: dict, console) -> None:
+def render_list(report: ListReport, console: Console) -> None:
     from rich.table import Table
     from rich.text import Text
 
@@ -181,7 +292,7 @@ def render_list(report: dict, console) -> None:
 # --- parameter cards --------------------------------------------------------------------------
 
 
-def strategies_using(parameter: Parameter) -> list[dict] | None:
+def strategies_using(parameter: Parameter) -> list[StrategyUse] | None:
     """The registered strategies that read a homing parameter (title and example); None for other parameters."""
     generic = parameter.path.replace("lr_hw[i]", "lr_hw[0]")
     if generic not in HOMING_PARAMETERS:
@@ -190,7 +301,7 @@ def strategies_using(parameter: Parameter) -> list[dict] | None:
 
 
 def rules_checking(parameter: Parameter) -> list[str]:
-    codes = []
+    codes: list[str] = []
     kind = parameter.kind
     if kind in (BOOL, INTEGER, REAL, SYMBOL):
         codes.append("LIS201")
@@ -208,7 +319,7 @@ def rules_checking(parameter: Parameter) -> list[str]:
     return codes
 
 
-def parameter_card(parameter: Parameter) -> dict:
+def parameter_card(parameter: Parameter) -> ParameterCard:
     low, high = parameter.limits
     drives = catalogue().drive_type_names
     return {
@@ -221,7 +332,7 @@ def parameter_card(parameter: Parameter) -> dict:
         "accepted_values": list(parameter.allowed) or None,
         "symbols": list(parameter.symbols) or None,
         "max_length": parameter.max_length,
-        "default": _plain(parameter.typed_default)
+        "default": plain(parameter.typed_default)
         if parameter.typed_default is not None
         else parameter.default,
         "units": {AXIS_TYPE_NAMES[k]: unit_label(v) for k, v in parameter.units.items() if v} or None,
@@ -237,7 +348,7 @@ def parameter_card(parameter: Parameter) -> dict:
     }
 
 
-def render_card(card: dict, console) -> None:
+def render_card(card: ParameterCard, console: Console) -> None:
     from rich.text import Text
 
     console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))

@@ -112,6 +112,14 @@ class OutOfRange(ValueFact):
     high: float | None
     unit: str | None
 
+    @property
+    def bound(self) -> float:
+        """The bound that was crossed."""
+        bound = self.low if self.low is not None else self.high
+        if bound is None:
+            raise ValueError("an OutOfRange fact names the bound the number crosses")
+        return bound
+
 
 # Symbols, strings, references ----------------------------------------------------------------------------
 

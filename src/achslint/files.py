@@ -27,6 +27,7 @@ import errno
 import os
 import stat
 import tempfile
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -52,7 +53,8 @@ class Refused(OSError):
 
 def reason(exc: OSError) -> str:
     """A short phrase for why a file system call failed."""
-    return _REASONS.get(exc.errno, exc.strerror or str(exc))
+    found = _REASONS.get(exc.errno) if exc.errno is not None else None
+    return found or exc.strerror or str(exc)
 
 
 def real_path(path: Path) -> Path:
@@ -127,7 +129,7 @@ class Scope:
     roots: tuple[Path, ...]
 
     @classmethod
-    def of(cls, paths) -> Scope:
+    def of(cls, paths: Iterable[str | Path]) -> Scope:
         return cls(tuple(real_path(Path(p)) for p in paths if p != "-"))
 
     def contains(self, path: Path) -> bool:

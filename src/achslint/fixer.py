@@ -18,10 +18,12 @@ then takes effect with another value, fails that test and becomes unsafe.
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from .decode import SourceText, decode
-from .linter import FileResult, FileSettings, check_bytes
+from .diagnostics import Diagnostic, Fix
+from .linter import FileResult, FileSettings, lint_file
 from .syntax import parse_text
 
 MAX_ROUNDS = 10
@@ -39,12 +41,12 @@ def _offsets(text: str) -> list[int]:
     return parse_text(text).offsets()
 
 
-def apply_edits(source: SourceText, fixes) -> tuple[SourceText, int]:
+def apply_edits(source: SourceText, fixes: Iterable[Fix]) -> tuple[SourceText, int]:
     """Apply non-overlapping fixes; returns the new source and how many fixes went in."""
     text = source.text
     starts = _offsets(text)
     bom = source.bom
-    spans = []
+    spans: list[tuple[int, int, str]] = []
     applied = 0
     for fix in fixes:
         if fix.remove_bom:
@@ -73,13 +75,17 @@ def behaviour(data: bytes, name: str) -> dict[str, str]:
     return {path: repr(axis.get(path)) for path in axis.set_paths()}
 
 
-def keeps_behaviour(data: bytes, name: str, settings, diagnostic, before) -> bool:
+def keeps_behaviour(
+    data: bytes, name: str, settings: FileSettings | None, diagnostic: Diagnostic, before: FileResult
+) -> bool:
     """Whether `diagnostic`'s fix changes nothing but the corrected finding (see the module docstring)."""
+    if diagnostic.fix is None:
+        return False
     source, applied = apply_edits(decode(data), [diagnostic.fix])
     if not applied:
         return False
     new_data = source.encode()
-    after = check_bytes(new_data, name, settings)
+    after = lint_file(new_data, name, settings)
     if after.error:
         return False
     old = Counter((d.code, d.parameter) for d in before.diagnostics)
@@ -99,6 +105,8 @@ def _demoted(result: FileResult, unsafe: set[int]) -> None:
     """Mark the fixes that failed the behaviour test as unsafe in what is reported."""
     for index in unsafe:
         d = result.diagnostics[index]
+        if d.fix is None:
+            continue
         d.fix = replace(
             d.fix, applicability="unsafe", description=d.fix.description + " (changes what the CNC does)"
         )
@@ -109,7 +117,7 @@ def fix_bytes(
 ) -> FixOutcome:
     """Fix what can be fixed; the result holds the diagnostics that remain."""
     fixed = 0
-    result = check_bytes(data, name, settings)
+    result = lint_file(data, name, settings)
     for _ in range(MAX_ROUNDS):
         if result.error:
             break
@@ -132,7 +140,7 @@ def fix_bytes(
             break
         fixed += applied
         data = new_data
-        result = check_bytes(data, name, settings)
+        result = lint_file(data, name, settings)
     if not result.error:
         _demoted(
             result,

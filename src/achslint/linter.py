@@ -7,15 +7,20 @@ parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import machine, suppression
-from .context import Context, Options
+from .config import Settings
+from .context import Context
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .rules import matches, registry
-from .syntax import ASSIGNMENT, END, parse_bytes
+from .syntax import ASSIGNMENT, END, ListFile, parse_bytes
 from .xmlinput import is_xml
+
+if TYPE_CHECKING:
+    from .machine import Member, Summary
+    from .xmlinput import EmbeddedList
 
 
 @dataclass
@@ -35,17 +40,36 @@ class Selection:
 
 @dataclass
 class FileSettings:
-    """Everything that decides what is reported for one file."""
+    """Everything that decides what is reported for one file: its settings (configuration nearest the file
+    with the command line applied), the codes `per-file-ignores` ignores for it, and what to keep."""
 
-    selection: Selection = field(default_factory=Selection)
-    options: Options = field(default_factory=Options)
-    severity: dict[str, str] = field(default_factory=dict)  # code -> severity override
+    settings: Settings = field(default_factory=Settings)
+    ignored_here: list[str] = field(default_factory=list)  # per-file-ignores matching this file
     keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
     keep_context: bool = False  # keep the rules' Context on the result (the language server reuses it)
-    fail_on: str = "error"  # lowest severity that fails the run (from the configuration nearest the file)
     machine_in_file: bool = (
         True  # check the lists of one XML file as a machine (off: the caller groups files)
     )
+
+    @classmethod
+    def of(
+        cls, select: list[str] | None = None, ignore: list[str] | None = None, *, keep_source: bool = True
+    ) -> FileSettings:
+        """Settings that run the rules `select` (default: all) minus `ignore`."""
+        return cls(Settings(select=select, ignore=list(ignore or [])), keep_source=keep_source)
+
+    @property
+    def selection(self) -> Selection:
+        s = self.settings
+        return Selection(s.select, list(s.extend_select), [*s.ignore, *self.ignored_here])
+
+    @property
+    def severity(self) -> dict[str, str]:
+        return dict(self.settings.severity)
+
+    @property
+    def fail_on(self) -> str:
+        return self.settings.fail_on
 
 
 @dataclass
@@ -57,9 +81,9 @@ class FileResult:
     fixed: int = 0  # diagnostics fixed by --fix
     diff: str = ""  # what --fix --diff would change
     fixed_data: bytes | None = None  # the fixed content (standard input only)
-    summary: dict | None = None  # what the machine-level rules need (machine.summary)
+    summary: Summary | None = None  # what the machine-level rules need (machine.summary)
     context: Context | None = None  # with FileSettings.keep_context: the parsed, resolved list
-    summaries: list[dict] = field(default_factory=list)  # the same, one per list, for an XML file
+    summaries: list[Summary] = field(default_factory=list)  # the same, one per list, for an XML file
     note: str | None = None  # skipped on purpose (XML without an axis list): said once, not an error
     fail_on: str = "error"  # lowest severity that fails the run for this file (its configuration's fail-on)
 
@@ -70,7 +94,7 @@ class FileResult:
         return any(d.severity.rank >= threshold for d in self.diagnostics)
 
 
-def check_bytes(
+def lint_file(
     data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None
 ) -> FileResult:
     """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`.
@@ -90,8 +114,10 @@ def check_bytes(
     return _check_file(file, name, settings, default_file=default_file)
 
 
-def check_parsed(file, name: str, settings: FileSettings | None = None, default_file=None) -> FileResult:
-    """`check_bytes` for a list that is already parsed (the language server parses edited lines only)."""
+def lint_parsed(
+    file: ListFile, name: str, settings: FileSettings | None = None, default_file: ListFile | None = None
+) -> FileResult:
+    """`lint_file` for a list that is already parsed (the language server parses edited lines only)."""
     settings = settings or FileSettings()
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
@@ -104,7 +130,7 @@ NOT_A_LIST = (
 )
 
 
-def looks_like_a_list(file) -> bool:
+def looks_like_a_list(file: ListFile) -> bool:
     """Whether a file is an axis list at all: some line assigns a well-formed name, or it has the end marker.
 
     Anything else (a password file, the process environment, a binary) is reported once instead of line by
@@ -118,8 +144,14 @@ def looks_like_a_list(file) -> bool:
     return not content
 
 
-def _check_file(file, name: str, settings: FileSettings, embedded=None, default_file=None) -> FileResult:
-    ctx = Context(name, file, settings.options, embedded=embedded, default_file=default_file)
+def _check_file(
+    file: ListFile,
+    name: str,
+    settings: FileSettings,
+    embedded: EmbeddedList | None = None,
+    default_file: ListFile | None = None,
+) -> FileResult:
+    ctx = Context(name, file, settings.settings, embedded=embedded, default_file=default_file)
     enabled = settings.selection.enabled
     rules = registry()
     diagnostics: list[Diagnostic] = []
@@ -136,10 +168,7 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
         override = settings.severity.get(diagnostic.code)
         if override:
             diagnostic.severity = Severity(override)
-    # One file: sort by position and code. An int key is a third the size of a tuple key, which
-    # matters for lists with a million findings.
-    ranks = {code: rank for rank, code in enumerate(rules)}
-    diagnostics.sort(key=lambda d: ((d.line << 24) + d.column << 8) + ranks.get(d.code, 255))
+    diagnostics.sort(key=Diagnostic.sort_key)
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
     return FileResult(
         name,
@@ -151,7 +180,7 @@ def _check_file(file, name: str, settings: FileSettings, embedded=None, default_
     )
 
 
-def _mapped_summary(summary: dict, embedded) -> dict:
+def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
     """A list's machine summary with its positions moved into the XML file."""
     mapped = dict(summary)
     for key, value in summary.items():
@@ -177,10 +206,10 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     except UnreadableInput as exc:
         return FileResult(name, [], str(exc))
     diagnostics: list[Diagnostic] = []
-    members: list[tuple[str, dict]] = []
+    members: list[Member] = []
     for embedded in lists:
         result = _check_file(parse_text(embedded.text, name), name, settings, embedded)
-        members.append((name, _mapped_summary(result.summary, embedded)))
+        members.append((name, _mapped_summary(result.summary or {}, embedded)))
         for d in result.diagnostics:
             d.line, d.column = embedded.position(d.line, d.column)
             d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
@@ -205,18 +234,9 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])
 
 
-def lint_bytes(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
+def findings(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
     """Diagnostics for the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
-    result = check_bytes(data, name, settings)
+    result = lint_file(data, name, settings)
     if result.error or result.note:
         raise UnreadableInput(result.error or result.note)
     return result.diagnostics
-
-
-def lint_path(path: Path, name: str | None = None, settings: FileSettings | None = None) -> FileResult:
-    display = name or str(path)
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        return FileResult(display, [], f"cannot read {display}: {exc.strerror or exc}")
-    return check_bytes(data, display, settings)

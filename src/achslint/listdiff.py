@@ -9,22 +9,60 @@ with units.
 
 from __future__ import annotations
 
-from .resolved import ResolvedAxis, resolve_bytes
+from typing import TYPE_CHECKING, TypedDict
+
+from .resolved import ResolvedAxis, plain, resolve_bytes
 from .units import to_human, unit_label
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+
+class Difference(TypedDict):
+    """A parameter whose effective value differs (`a`, `b`: the values, booleans as 0/1)."""
+
+    parameter: str
+    p_axis: str
+    a: int | float | str | None
+    b: int | float | str | None
+    unit: str | None
+    a_human: str | None
+    b_human: str | None
+    a_source: str
+    b_source: str
+
+
+class UnknownDifference(TypedDict):
+    """A parameter the catalogue does not know, written differently (None: not written in that list)."""
+
+    parameter: str
+    a: str | None
+    b: str | None
+
+
+class DiffReport(TypedDict):
+    """What `achslint diff --format json` prints."""
+
+    version: int
+    a: str
+    b: str
+    differences: list[Difference]
+    unknown_parameters: list[UnknownDifference]
 
 
 def _values(data: bytes, name: str, defaults: bytes | None) -> ResolvedAxis:
     return resolve_bytes(data, name, defaults)
 
 
-def _plain(value):
-    return int(value) if isinstance(value, bool) else value
+def _unknown(axis: ResolvedAxis) -> dict[str, str]:
+    """The written value of each parameter the catalogue does not know, by its name as written."""
+    return {s.line.path: s.line.value or "" for s in axis.analysis.settings if not s.known and s.line.path}
 
 
-def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | None = None) -> dict:
+def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | None = None) -> DiffReport:
     left, right = _values(a, a_name, defaults), _values(b, b_name, defaults)
     paths = sorted(set(left.set_paths()) | set(right.set_paths()))
-    rows = []
+    rows: list[Difference] = []
     for path in paths:
         before, after = left.get(path), right.get(path)
         if before == after:
@@ -35,8 +73,8 @@ def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | N
             {
                 "parameter": path,
                 "p_axis": parameter.id,
-                "a": _plain(before),
-                "b": _plain(after),
+                "a": plain(before),
+                "b": plain(after),
                 "unit": unit_label(unit) or None,
                 "a_human": to_human(before, unit)
                 if isinstance(before, (int, float)) and not isinstance(before, bool)
@@ -48,9 +86,8 @@ def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | N
                 "b_source": str(right.origin(path)),
             }
         )
-    unknown_a = {s.line.path: s.line.value or "" for s in left.analysis.settings if not s.known}
-    unknown_b = {s.line.path: s.line.value or "" for s in right.analysis.settings if not s.known}
-    unknown = [
+    unknown_a, unknown_b = _unknown(left), _unknown(right)
+    unknown: list[UnknownDifference] = [
         {"parameter": path, "a": unknown_a.get(path), "b": unknown_b.get(path)}
         for path in sorted(set(unknown_a) | set(unknown_b))
         if unknown_a.get(path) != unknown_b.get(path)
@@ -58,7 +95,7 @@ def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | N
     return {"version": 1, "a": a_name, "b": b_name, "differences": rows, "unknown_parameters": unknown}
 
 
-def render(report: dict, console) -> None:
+def render(report: DiffReport, console: Console) -> None:
     from rich.table import Table
 
     if not report["differences"] and not report["unknown_parameters"]:
@@ -80,5 +117,5 @@ def render(report: dict, console) -> None:
             row["b_source"],
         )
     console.print(table)
-    for row in report["unknown_parameters"]:
-        console.print(f"unknown parameter {row['parameter']}: {row['a']!r} → {row['b']!r}")
+    for unknown in report["unknown_parameters"]:
+        console.print(f"unknown parameter {unknown['parameter']}: {unknown['a']!r} → {unknown['b']!r}")

@@ -13,14 +13,24 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from .diagnostics import Diagnostic, Related, Severity
 from .files import Scope, inside, not_a_list_file, read_list
 
+if TYPE_CHECKING:
+    from .context import Context
+
 STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
-_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds")
+
+# What the machine-level rules know of one axis list (`summary`): a plain dict, so it pickles cheaply
+# between worker processes. A member of a machine is (list name, summary).
+Summary = dict[str, Any]
+Member = tuple[str, Summary]
+_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds|sda_mds\[[0-9]+\]|default_sda_mds")
 
 
 @dataclass
@@ -41,6 +51,8 @@ class Startup:
     axes: list[StartupEntry] = field(default_factory=list)
     root: Path | None = None  # the CNC working directory the entries are resolved against
     root_origin: str = ""  # how the root was chosen, in words (for LIS504)
+    channels: list[StartupEntry] = field(default_factory=list)  # channel lists, sda_mds[i]
+    default_channel: StartupEntry | None = None  # default_sda_mds
 
 
 def is_startup_list(path: Path) -> bool:
@@ -136,32 +148,36 @@ def read_startup(
     """
     from .syntax import parse_bytes
 
-    lines = [
-        line
+    entries = [
+        (line.path, line.value, line)
         for line in parse_bytes(read_list(path), str(path)).assignments()
-        if line.path_ok and line.value is not None and _ENTRY.fullmatch(line.path)
+        if line.path_ok and line.path and line.value is not None and _ENTRY.fullmatch(line.path)
     ]
     given = cnc_root is not None
     if cnc_root is None:
-        cnc_root = find_cnc_root(path, [line.value for line in lines])
+        cnc_root = find_cnc_root(path, [value for _, value, _ in entries])
         root_origin = "found from the entries; --cnc-root sets it"
     root = Path(os.path.abspath(cnc_root))
     startup = Startup(path, root=root, root_origin=root_origin)
-    for line in lines:
-        found, refused, looked = _resolve(line.value, path, root, given, scope)
-        entry = StartupEntry(line.path, line.value, line.number, line.value_column, found, refused, looked)
+    for key, value, line in entries:
+        found, refused, looked = _resolve(value, path, root, given, scope)
+        entry = StartupEntry(key, value, line.number, line.value_column, found, refused, looked)
         if entry.key == "default_achs_mds":
             startup.default = entry
+        elif entry.key == "default_sda_mds":
+            startup.default_channel = entry
+        elif entry.key.startswith("sda_mds"):
+            startup.channels.append(entry)
         else:
             startup.axes.append(entry)
     return startup
 
 
-def summary(ctx) -> dict:
+def summary(ctx: Context) -> Summary:
     """What the machine checks need from one axis list (small and picklable)."""
     values = ctx.values
 
-    def at(path):
+    def at(path: str) -> tuple[int, int] | None:
         setting = values.in_list(path)
         return (setting.line.number, setting.line.path_column) if setting else None
 
@@ -181,7 +197,7 @@ def summary(ctx) -> dict:
 
 def diagnostic(
     code: str,
-    member: tuple[str, dict],
+    member: Member,
     where: str,
     message: str,
     severity: Severity,
@@ -195,14 +211,14 @@ def diagnostic(
     )
 
 
-def unset_note(member: tuple[str, dict], where: str) -> str:
+def unset_note(member: Member, where: str) -> str:
     """` (not written in this list: the default)` when the value comes from a default, else nothing."""
     return "" if member[1].get(where) else " (not written in this list, so the default applies)"
 
 
-def first_uses(members: list[tuple[str, dict]], key: str):
+def first_uses(members: list[Member], key: str) -> Iterator[tuple[Member, Member]]:
     """(member, first member with the same value) for every repeated value of `key`."""
-    first: dict = {}
+    first: dict[object, Member] = {}
     for member in members:
         value = member[1][key]
         if value in (None, "", 0):
@@ -211,3 +227,27 @@ def first_uses(members: list[tuple[str, dict]], key: str):
             yield member, first[value]
         else:
             first[value] = member
+
+
+def check_machines(
+    groups: dict[str, list[Member]], startups: list[Startup]
+) -> Iterator[tuple[str, Diagnostic]]:
+    """Every machine-level rule over every machine, as (code, finding).
+
+    `groups` holds each machine's members (list name, `summary`) by machine key: the path of the start-up
+    list that names them, or their folder. A start-up list none of whose axis lists was read is still
+    checked on its own (its entries may all be missing).
+    """
+    from .rules import registry
+
+    rules = [(code, rule.check_machine) for code, rule in registry().items() if rule.check_machine]
+    for key, members in groups.items():
+        own = [startup for startup in startups if str(startup.path) == key]
+        for code, check in rules:
+            for found in check(members, own):
+                yield code, found
+    for startup in startups:
+        if str(startup.path) not in groups:
+            for code, check in rules:
+                for found in check([], [startup]):
+                    yield code, found

@@ -26,13 +26,17 @@ from __future__ import annotations
 
 import keyword
 import re
-from typing import Any
+from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING, Any
 
 from pydantic import BaseModel, ValidationError
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from .catalogue import catalogue
 from .model_base import DEFAULT, AxisBase, Source
+
+if TYPE_CHECKING:
+    from .diagnostics import Diagnostic
 
 __all__ = [
     "DEFAULT",
@@ -61,7 +65,7 @@ def axis_model() -> type[AxisBase]:
     return AxisParameters
 
 
-def json_schema() -> dict:
+def json_schema() -> dict[str, Any]:
     schema = axis_model().model_json_schema(by_alias=True)
     schema["title"] = "AxisParameters"
     schema["description"] = (
@@ -80,7 +84,12 @@ def _parts(path: str) -> list[tuple[str, str]]:
     return re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", path)
 
 
-def _nested_set(target: dict, path: str, value: Any) -> None:
+# Values by model path, nested as the model is: member names map to groups or values, and an array's
+# indices to its elements (turned into full lists by `_materialise`).
+_Nested = dict[str | int, Any]
+
+
+def _nested_set(target: _Nested, path: str, value: Any) -> None:
     parts = _parts(path)
     node = target
     for position, (name, index) in enumerate(parts):
@@ -97,16 +106,18 @@ def _nested_set(target: dict, path: str, value: Any) -> None:
             node = node.setdefault(name, {})
 
 
-def _materialise(model: type[BaseModel], data: dict) -> dict:
+def _materialise(model: type[BaseModel], data: _Nested) -> dict[str, Any]:
     """Turn {index: ...} maps into full lists, filling untouched elements with defaults."""
-    result: dict = {}
+    result: dict[str, Any] = {}
     for key, value in data.items():
+        if not isinstance(key, str):
+            continue  # indices are only keys of an array's map, handled below
         info = model.model_fields.get(field_name(key))
         if info is None:
             continue
         field_key = field_name(key)
         if isinstance(value, dict) and all(isinstance(k, int) for k in value):
-            default_list = info.default_factory()
+            default_list = info.get_default(call_default_factory=True)
             inner = _list_item_model(info.annotation)
             items = []
             for i in range(len(default_list)):
@@ -117,10 +128,17 @@ def _materialise(model: type[BaseModel], data: dict) -> dict:
                     items.append(default_list[i])
             result[field_key] = items
         elif isinstance(value, dict):
-            result[field_key] = _materialise(info.annotation, value)
+            result[field_key] = _materialise(_group_model(info.annotation), value)
         else:
             result[field_key] = value
     return result
+
+
+def _group_model(annotation: Any) -> type[BaseModel]:
+    """The model class of a group field (`kenngr`, `kenngr.homing`)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    raise TypeError(f"not a group of the model: {annotation!r}")
 
 
 def _list_item_model(annotation: Any) -> type[BaseModel] | None:
@@ -130,7 +148,7 @@ def _list_item_model(annotation: Any) -> type[BaseModel] | None:
     return None
 
 
-def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None = None):
+def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None = None) -> AxisBase:
     """The typed model of an axis list (on top of an optional default list), built from its resolved axis."""
     from .resolved import resolve_bytes
 
@@ -153,7 +171,7 @@ def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None =
             )
     unknown = {s.line.path: s.line.value or "" for s in axis.analysis.settings if not s.known}
     model = axis_model()  # also records the joined groups _nested_set needs
-    nested: dict = {}
+    nested: _Nested = {}
     for path, value in values.items():
         _nested_set(nested, path, value)
     result = model.model_validate(
@@ -168,7 +186,7 @@ def _is_plain(value: Any) -> bool:
     return isinstance(value, (bool, int, float, str))
 
 
-def rule_errors(diagnostics) -> ValidationError:
+def rule_errors(diagnostics: Iterable[Diagnostic]) -> ValidationError:
     """One ValidationError with an entry per finding: its code, the parameter path and the message."""
     details = [
         InitErrorDetails(
@@ -183,8 +201,8 @@ def rule_errors(diagnostics) -> ValidationError:
     return ValidationError.from_exception_data("AxisParameters", details)
 
 
-def _loc(path: str) -> tuple:
-    loc: list = []
+def _loc(path: str) -> tuple[str | int, ...]:
+    loc: list[str | int] = []
     for name, index in _parts(path):
         loc.append(name)
         if index:
@@ -192,11 +210,11 @@ def _loc(path: str) -> tuple:
     return tuple(loc)
 
 
-def _rule_findings(text: str) -> list:
-    from .linter import FileSettings, Selection, lint_bytes
+def _rule_findings(text: str) -> list[Diagnostic]:
+    from .linter import FileSettings, findings
 
-    settings = FileSettings(Selection(["LIS3", "LIS4"]), keep_source=False)
-    return lint_bytes(text.encode("utf-8"), "<model>", settings)
+    settings = FileSettings.of(["LIS3", "LIS4"], keep_source=False)
+    return findings(text.encode("utf-8"), "<model>", settings)
 
 
 def dumps(axis: BaseModel) -> str:
@@ -205,7 +223,7 @@ def dumps(axis: BaseModel) -> str:
     return "\n".join([*lines, "Ende", ""])
 
 
-def _changed(node: BaseModel, prefix: str):
+def _changed(node: BaseModel, prefix: str) -> Iterator[tuple[str, Any]]:
     for name, info in type(node).model_fields.items():
         if name == "unknown":
             continue

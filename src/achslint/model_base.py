@@ -7,9 +7,13 @@ from, the CNC's corrections and the rules' findings, and runs the cross-paramete
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationInfo, model_validator
+
+if TYPE_CHECKING:
+    from .diagnostics import Diagnostic
+    from .resolved import Correction
 
 
 @dataclass(frozen=True, slots=True)
@@ -38,21 +42,21 @@ class AxisBase(BaseModel):
         default_factory=dict, description="Parameters the catalogue does not know, as written."
     )
     _sources: dict[str, Source] = PrivateAttr(default_factory=dict)
-    _corrections: list = PrivateAttr(default_factory=list)
-    _findings: list = PrivateAttr(default_factory=list)
+    _corrections: list[Correction] = PrivateAttr(default_factory=list)
+    _findings: list[Diagnostic] = PrivateAttr(default_factory=list)
 
     @property
-    def corrections(self) -> list:
+    def corrections(self) -> list[Correction]:
         """The CNC's load-time corrections (`resolved.Correction`) behind the values of this model."""
         return list(self._corrections)
 
     @property
-    def findings(self) -> list:
+    def findings(self) -> list[Diagnostic]:
         """The diagnostics `achslint lint` reports for the list this model was loaded from."""
         return list(self._findings)
 
     @model_validator(mode="after")
-    def _cross_rules(self, info: ValidationInfo):
+    def _cross_rules(self, info: ValidationInfo) -> AxisBase:
         """The cross-parameter rules, run by the same rule code as `achslint lint` on the axis the data describes."""
         if info.context and info.context.get("lenient"):
             return self

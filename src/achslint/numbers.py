@@ -105,11 +105,12 @@ def parse_reference(text: str) -> Reference | NumberProblem:
     problem = _too_long(number, MAX_ID_DIGITS)
     if problem is not None:
         return NumberProblem("digits", problem.digits, " in the parameter id (ids have five)")
-    position = None
+    position: int | None = None
     if index is not None:
-        position = parse_int(index)
-        if isinstance(position, NumberProblem):
-            return NumberProblem("digits", position.digits, " in the index")
+        parsed = parse_int(index)
+        if isinstance(parsed, NumberProblem):
+            return NumberProblem("digits", parsed.digits, " in the index")
+        position = parsed
     return Reference(f"P-AXIS-{int(number):05d}", position)
 
 

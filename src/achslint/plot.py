@@ -10,8 +10,16 @@ found. `build_figure` returns the figure (tests read its data series); `plot_tra
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING, Literal
 
-from .engine import Trace
+from .engine import Event, Trace
+
+if TYPE_CHECKING:
+    from matplotlib.artist import Artist
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+_LineStyle = Literal["-", "--"]
 
 # One colour per phase (colour-blind friendly qualitative palette), repeated for long sequences.
 PHASE_COLOURS = ("#4477aa", "#ee6677", "#228833", "#ccbb44", "#66ccee", "#aa3377", "#bbbbbb")
@@ -23,7 +31,9 @@ class PlotUnavailable(Exception):
 
 
 def samples(trace: Trace, per_segment: int = 40) -> tuple[list[float], list[float], list[float]]:
-    times, positions, velocities = [], [], []
+    times: list[float] = []
+    positions: list[float] = []
+    velocities: list[float] = []
     for phase in trace.phases:
         for segment in phase.segments:
             steps = per_segment if segment.t1 > segment.t0 else 1
@@ -35,15 +45,15 @@ def samples(trace: Trace, per_segment: int = 40) -> tuple[list[float], list[floa
     return times, positions, velocities
 
 
-def _pyplot():
+def _use_matplotlib() -> None:
+    """Load matplotlib with its file-only backend (Agg); PlotUnavailable when it is not installed."""
     try:
         import matplotlib
 
         matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        import matplotlib.pyplot  # imported here so that a broken installation is reported
     except ImportError:
         raise PlotUnavailable("--plot needs matplotlib: pip install 'achslint[plot]'") from None
-    return plt
 
 
 def _fmt(value: float) -> str:
@@ -61,9 +71,11 @@ def _soft_limits_in_trace_frame(trace: Trace) -> tuple[float, float] | None:
     return low - offset, high - offset
 
 
-def build_figure(trace: Trace):
-    """The figure for a trace (matplotlib Figure); the caller saves or closes it."""
-    plt = _pyplot()
+def build_figure(trace: Trace) -> Figure:
+    """The figure for a trace; the caller saves or closes it."""
+    _use_matplotlib()
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     times, positions, velocities = samples(trace)
@@ -79,7 +91,7 @@ def build_figure(trace: Trace):
     bottom.set_xlabel("time [s]")
     bottom.axhline(0.0, color="grey", linewidth=0.6)
 
-    handles = []
+    handles: list[Artist] = []
     for number, phase in enumerate(trace.phases, 1):
         colour = PHASE_COLOURS[(number - 1) % len(PHASE_COLOURS)]
         for axis in (top, bottom):
@@ -148,18 +160,18 @@ def build_figure(trace: Trace):
                 gid="zero_pulses",
             )
             handles.append(
-                plt.Line2D(
+                Line2D(
                     [], [], color="#882255", linewidth=1.5, label=f"zero pulses (every {_fmt(period)} {unit})"
                 )
             )
-    lines = []
+    lines: list[tuple[float, str, str, _LineStyle]] = []
     if scenario.limit_switches:
         lines += [(value, "limit switch", "#cc3311", "-") for value in scenario.limit_switches]
     soft = _soft_limits_in_trace_frame(trace)
     if soft:
         lines += [(value, "software limit (after homing)", "#ee7733", "--") for value in soft]
     labels: dict[str, list[str]] = {}
-    styles: dict[str, tuple[str, str]] = {}
+    styles: dict[str, tuple[str, _LineStyle]] = {}
     for value, name, colour, style in lines:
         top.axhline(value, color=colour, linestyle=style, linewidth=1.0, gid=name)
         labels.setdefault(name, []).append(_fmt(value))
@@ -169,7 +181,7 @@ def build_figure(trace: Trace):
     for name, values in labels.items():
         colour, style = styles[name]
         handles.append(
-            plt.Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}")
+            Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}")
         )
     top.set_ylim(y_low - 0.02 * span, y_high + 0.02 * span)
 
@@ -193,7 +205,7 @@ def build_figure(trace: Trace):
             zorder=5,
         )
         handles.append(
-            plt.Line2D(
+            Line2D(
                 [],
                 [],
                 marker="*",
@@ -206,10 +218,10 @@ def build_figure(trace: Trace):
             )
         )
     if trace.final_position is not None and trace.phases:
-        last = trace.phases[-1]
+        last_phase = trace.phases[-1]
         top.plot(
-            [last.end_time],
-            [last.end_position],
+            [last_phase.end_time],
+            [last_phase.end_position],
             marker="s",
             markersize=8,
             color="white",
@@ -220,7 +232,7 @@ def build_figure(trace: Trace):
         )
         moving = " (still turning)" if trace.ends_moving else ""
         handles.append(
-            plt.Line2D(
+            Line2D(
                 [],
                 [],
                 marker="s",
@@ -246,7 +258,7 @@ def build_figure(trace: Trace):
         kinds = list(dict.fromkeys(e.kind for e in trace.events if e is not reference_event))
         if kinds:
             handles.append(
-                plt.Line2D(
+                Line2D(
                     [],
                     [],
                     marker="o",
@@ -269,7 +281,7 @@ def build_figure(trace: Trace):
             zorder=6,
         )
         handles.append(
-            plt.Line2D(
+            Line2D(
                 [],
                 [],
                 marker="X",
@@ -307,14 +319,14 @@ def build_figure(trace: Trace):
     return figure
 
 
-def _inset(figure, top, trace: Trace, event) -> None:
+def _inset(figure: Figure, top: Axes, trace: Trace, event: Event) -> None:
     """A zoom on the moments around the reference event (the phase where it is found is often a sliver)."""
     phase = next((p for p in trace.phases if p.start_time <= event.time <= p.end_time), trace.phases[-1])
     window = max(min(phase.end_time - phase.start_time, 0.5), 1e-3)
     t0, t1 = max(phase.start_time, event.time - window / 2), min(phase.end_time, event.time + window / 2)
     if t1 - t0 < 1e-9:
         t0, t1 = event.time - window / 2, event.time + window / 2
-    inset = figure.add_axes([0.74, 0.1, 0.22, 0.26])
+    inset = figure.add_axes((0.74, 0.1, 0.22, 0.26))
     times, positions, _ = samples(trace, per_segment=400)
     pairs = [(t, x) for t, x in zip(times, positions, strict=False) if t0 <= t <= t1]
     if pairs:
@@ -363,8 +375,9 @@ def _wrap(text: str, width: int) -> str:
 def plot_trace(trace: Trace, target: str) -> None:
     if not target.lower().endswith((".png", ".svg")):
         raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
-    plt = _pyplot()
     figure = build_figure(trace)
+    import matplotlib.pyplot as plt
+
     try:
         figure.savefig(target, dpi=100)
     finally:

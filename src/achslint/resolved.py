@@ -20,9 +20,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import IntEnum
+from typing import TypedDict
 
 from .analysis import Analysis, Reference, Setting
-from .catalogue import AXIS_TYPE_CODES, Catalogue, Parameter, catalogue, fill_indices
+from .catalogue import AXIS_TYPE_CODES, Catalogue, Parameter, Value, catalogue, fill_indices
 from .syntax import path_pattern
 
 
@@ -44,23 +45,35 @@ class Origin:
 DEFAULT_ORIGIN = Origin("default")
 
 
+class CorrectionData(TypedDict):
+    """A correction as JSON (`explain --format json`, `dry-run --format json`)."""
+
+    parameter: str
+    written: int | float | str | None
+    used: int | float | str | None
+    error: str
+    reason: str
+    source: str
+    line: int | None
+
+
 @dataclass(frozen=True, slots=True)
 class Correction:
     """A value the CNC replaces while it loads the list, and the message it gives."""
 
     parameter: str  # canonical path
-    written: object  # the value of the layers (references resolved)
-    used: object  # the value the CNC runs with
+    written: Value | None  # the value of the layers (references resolved)
+    used: Value  # the value the CNC runs with
     error: str  # the CNC message id, e.g. P-ERR-110421
     reason: str  # why, in our words
     origin: Origin = DEFAULT_ORIGIN
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> CorrectionData:
         setting = self.origin.setting
         return {
             "parameter": self.parameter,
-            "written": _plain(self.written),
-            "used": _plain(self.used),
+            "written": plain(self.written),
+            "used": plain(self.used),
             "error": self.error,
             "reason": self.reason,
             "source": self.origin.kind,
@@ -68,8 +81,20 @@ class Correction:
         }
 
 
-def _plain(value):
+def plain(value: Value | None) -> int | float | str | None:
+    """A value for JSON and tables: booleans as 0 and 1, as lists write them."""
     return int(value) if isinstance(value, bool) else value
+
+
+def numeric(value: Value | None, path: str) -> float:
+    """A numeric parameter's value as stored (int, float, or a bool as 0/1); TypeError for anything else.
+
+    Every numeric parameter has a number: a converted value or its catalogue default. A parameter without
+    one (no default, or a symbol without a code) is a catalogue error, not a list error.
+    """
+    if isinstance(value, (int, float)):
+        return value
+    raise TypeError(f"{path} has no numeric value ({value!r})")
 
 
 class DriveType(IntEnum):
@@ -100,19 +125,22 @@ SERCOS, SIMULATION, LIGHTBUS, CANOPEN = (
 class ResolvedAxis:
     """Typed values of one axis by canonical concrete path, after layering, references and corrections."""
 
-    def __init__(self, analysis: Analysis, defaults: Analysis | None = None, cat: Catalogue | None = None):
+    def __init__(
+        self, analysis: Analysis, defaults: Analysis | None = None, cat: Catalogue | None = None
+    ) -> None:
         self.catalogue = cat or catalogue()
         self.analysis = analysis
-        self._values: dict[str, object] = {}
+        self._values: dict[str, Value | Reference] = {}
         self._origins: dict[str, Origin] = {}
         self._stages: dict[str, set[int]] | None = None
         self._corrected: dict[str, Correction] = {}
         layers = [(defaults, "default list"), (analysis, "list")] if defaults else [(analysis, "list")]
         for layer, kind in layers:
             for setting in layer.settings:
-                if setting.known and not setting.problems and setting.value is not None:
-                    self._values[setting.canonical] = setting.value
-                    self._origins[setting.canonical] = Origin(kind, setting, layer.file.name)
+                path = setting.canonical  # not None for known settings
+                if path is not None and not setting.problems and setting.value is not None:
+                    self._values[path] = setting.value
+                    self._origins[path] = Origin(kind, setting, layer.file.name)
         from .corrections import apply
 
         apply(self)
@@ -125,14 +153,22 @@ class ResolvedAxis:
             raise KeyError(f"not a catalogue parameter: {path} ({pattern})")
         return resolved.parameter
 
-    def get(self, path: str):
+    def get(self, path: str) -> Value | None:
         """The value the CNC uses (typed): corrected, references followed, the default when unset."""
         correction = self._corrected.get(path)
         if correction is not None:
             return correction.used
         return self.written(path)
 
-    def written(self, path: str, _depth: int = 0):
+    def number(self, path: str) -> float:
+        """The value the CNC uses of a numeric parameter (see `numeric`)."""
+        return numeric(self.get(path), path)
+
+    def written_number(self, path: str) -> float:
+        """The value of a numeric parameter before the CNC's corrections (see `numeric`)."""
+        return numeric(self.written(path), path)
+
+    def written(self, path: str, _depth: int = 0) -> Value | None:
         """The value before the CNC's corrections (references followed, the default when unset)."""
         value = self._values.get(path)
         if isinstance(value, Reference):
@@ -156,7 +192,7 @@ class ResolvedAxis:
             indices = ()
         return fill_indices(target.path, indices)
 
-    def _follow(self, path: str, reference: Reference, depth: int):
+    def _follow(self, path: str, reference: Reference, depth: int) -> Value | None:
         if depth > 8:  # a reference cycle; LIS205 reports self-references
             return self.parameter(path).typed_default
         concrete = self.referenced(path, reference)
@@ -196,7 +232,7 @@ class ResolvedAxis:
         return sorted(stages)
 
     # -- corrections ---------------------------------------------------------------------------
-    def correct(self, path: str, used, error: str, reason: str) -> None:
+    def correct(self, path: str, used: Value, error: str, reason: str) -> None:
         """Record a load-time correction of the CNC (called by `corrections.apply`)."""
         self._corrected[path] = Correction(path, self.written(path), used, error, reason, self.origin(path))
 
@@ -211,13 +247,13 @@ class ResolvedAxis:
     @property
     def axis_type(self) -> str:
         """ "T" (linear), "R" (rotary) or "S" (spindle); the CNC assumes linear when unset."""
-        value = self.get("kenngr.achs_typ")
-        codes = self.parameter("kenngr.achs_typ").symbol_codes
-        return AXIS_TYPE_CODES.get(codes.get(value, value), "T")
+        value = self.get("kenngr.achs_typ")  # a symbol (ACHSTYP_ROTATOR)
+        code = self.parameter("kenngr.achs_typ").symbol_codes.get(value) if isinstance(value, str) else value
+        return AXIS_TYPE_CODES.get(code, "T") if isinstance(code, int) else "T"
 
     @property
     def drive_type(self) -> int:
-        return int(self.get("kenngr.antr_typ"))
+        return int(self.number("kenngr.antr_typ"))
 
     @property
     def drive_type_known(self) -> bool:
@@ -231,9 +267,9 @@ class ResolvedAxis:
     def homing_type(self) -> str:
         """The homing type in force: as set (after corrections), or the drive type's default (P-AXIS-00299 table)."""
         value = self.get("kenngr.homing.homing_type")
-        if value in (None, "DRIVE_DEFAULT"):
+        if value is None or value == "DRIVE_DEFAULT":
             return default_homing_type(self.drive_type)
-        return value
+        return str(value)  # a symbol
 
     @property
     def homing_type_is_default(self) -> bool:

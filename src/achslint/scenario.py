@@ -29,12 +29,19 @@ latch).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
-from functools import lru_cache
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 
 from .tomlfile import read_toml
+
+if TYPE_CHECKING:
+    from pydantic import BaseModel
+
+    from .homing import HomingStrategy
+    from .scenario_input import DriveInput, ScenarioInput, SearchInput
+
+__all__ = ["DriveInput", "Scenario", "ScenarioError", "ScenarioInput", "SearchInput"]
 
 
 class ScenarioError(Exception):
@@ -50,104 +57,18 @@ CYCLE_MS = (0.05, 100.0)
 MAX_RATE = 1e9  # velocities and accelerations per second
 
 
-@lru_cache(maxsize=1)
-def _models() -> dict:
-    """The pydantic models that validate scenario input (built on first use: lint does not need them).
+_T = TypeVar("_T")
 
-    Every number must be finite (`nan` and `inf` are refused) and plausible; see the bounds above."""
-    from typing import Annotated
-
-    from pydantic import BaseModel, ConfigDict, Field, model_validator
-
-    Position = Annotated[float, Field(ge=-ANY_POSITION, le=ANY_POSITION)]
-    Rate = Annotated[float, Field(gt=0, le=MAX_RATE)]
-    strict = ConfigDict(extra="forbid", allow_inf_nan=False)
-
-    class SearchInput(BaseModel):
-        """One search move of the drive's "Standard" method (Triamec FirstSearchMove / SecondSearchMove)."""
-
-        model_config = strict
-
-        trigger: Literal["cam", "zero_pulse", "fixed_stop", "limit_switch"] = "cam"
-        signed_max_distance: Position
-        active_low: bool = False
-        dynamic_reduction: float = Field(1.0, gt=0, le=1)
-
-        @model_validator(mode="after")
-        def _moves(self):
-            if self.signed_max_distance == 0:
-                raise ValueError("signed_max_distance must not be 0: its sign gives the search direction")
-            return self
-
-    class DriveInput(BaseModel):
-        """The drive's own homing method, for drive-controlled homing (Triamec drive homing)."""
-
-        model_config = strict
-
-        method: Literal["standard", "immediate", "at-position", "absolute-encoder", "nc"]
-        velocity: Rate = 10.0
-        acceleration: Rate = 100.0
-        reference_position: Position | None = None
-        home_position: Position | None = None
-        encoder_offset: Position = 0.0
-        first_search: SearchInput | None = None
-        relocate_distance: Position = 0.0
-        second_search: SearchInput | None = None
-        # method "nc": TwinCAT NC / AX5000 reference modes
-        reference_mode: Literal[
-            "plc-cam", "hardware-sync", "software-sync", "hardware-latch-pos", "hardware-latch-neg"
-        ] = "plc-cam"
-        invert_cam_search: bool = False
-        invert_sync_search: bool = False
-        velocity_sync: Rate | None = None
-        reference_mask_period: float | None = Field(None, ge=MIN_PERIOD, le=ANY_POSITION)
-        latch_position: Position | None = None
-
-        @model_validator(mode="after")
-        def _searches(self):
-            if self.method == "standard" and (self.first_search is None or self.second_search is None):
-                raise ValueError("the standard method needs [drive.first_search] and [drive.second_search]")
-            return self
-
-    class ScenarioInput(BaseModel):
-        """What a scenario file may contain. Every key is optional."""
-
-        model_config = strict
-
-        start_position: Position | None = None
-        cam: tuple[Position, Position] | None = None
-        zero_pulse_period: float | None = Field(None, ge=MIN_PERIOD, le=ANY_POSITION)
-        zero_pulse_phase: Position | None = None
-        hardware_latch: bool | None = None
-        cycle_time_ms: float | None = Field(None, ge=CYCLE_MS[0], le=CYCLE_MS[1])
-        limit_switches: tuple[Position, Position] | None = None
-        fixed_stop: Position | None = None
-        cam_jitter: float | None = Field(None, ge=0, le=ANY_POSITION)
-        drive: DriveInput | None = None
-
-        @model_validator(mode="after")
-        def _ordered(self):
-            for name in ("cam", "limit_switches"):
-                pair = getattr(self, name)
-                if pair is not None and pair[0] >= pair[1]:
-                    raise ValueError(f"{name} must be [low, high] with low < high, got {list(pair)}")
-            if (
-                self.cam_jitter is not None
-                and self.zero_pulse_period is not None
-                and self.cam_jitter >= self.zero_pulse_period
-            ):
-                raise ValueError(
-                    f"cam_jitter ({self.cam_jitter:g}) must be smaller than zero_pulse_period "
-                    f"({self.zero_pulse_period:g})"
-                )
-            return self
-
-    return {"SearchInput": SearchInput, "DriveInput": DriveInput, "ScenarioInput": ScenarioInput}
+# The input models live in scenario_input.py, imported on first use (linting never needs pydantic).
+_MODELS = ("SearchInput", "DriveInput", "ScenarioInput")
 
 
-def __getattr__(name: str):
-    if name in ("SearchInput", "DriveInput", "ScenarioInput"):
-        return _models()[name]
+def __getattr__(name: str) -> type[BaseModel]:
+    if name in _MODELS:
+        from . import scenario_input
+
+        model: type[BaseModel] = getattr(scenario_input, name)
+        return model
     raise AttributeError(name)
 
 
@@ -164,44 +85,68 @@ class Scenario:
     limit_switches: tuple[float, float] | None  # None: none (modulo axes unless the scenario names them)
     fixed_stop: float | None
     cam_jitter: float = 0.0
-    drive: object = None  # DriveInput
+    drive: DriveInput | None = None
     assumed: list[str] = field(default_factory=list)
     modulo: tuple[float, float] | None = (
         None  # positions recur every revolution (spindles, modulo rotary axes)
     )
 
-    def as_dict(self) -> dict:
-        data = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "assumed"}
-        data["cycle_time_ms"] = data.pop("cycle_time") * 1000
-        data["cam"] = list(self.cam) if self.cam else None
-        data["limit_switches"] = list(self.limit_switches) if self.limit_switches else None
-        data["modulo"] = list(self.modulo) if self.modulo else None
-        data["assumed"] = list(self.assumed)
-        data["drive"] = self.drive.model_dump() if self.drive else None
-        return data
+    def as_dict(self) -> ScenarioData:
+        return {
+            "start_position": self.start_position,
+            "cam": list(self.cam) if self.cam else None,
+            "zero_pulse_period": self.zero_pulse_period,
+            "zero_pulse_phase": self.zero_pulse_phase,
+            "hardware_latch": self.hardware_latch,
+            "limit_switches": list(self.limit_switches) if self.limit_switches else None,
+            "fixed_stop": self.fixed_stop,
+            "cam_jitter": self.cam_jitter,
+            "drive": self.drive.model_dump() if self.drive else None,
+            "modulo": list(self.modulo) if self.modulo else None,
+            "cycle_time_ms": self.cycle_time * 1000,
+            "assumed": list(self.assumed),
+        }
 
 
-def read_scenario(path: Path):
+class ScenarioData(TypedDict):
+    """A scenario as JSON (`dry-run --format json`), in the order of the fields, the cycle time in ms."""
+
+    start_position: float
+    cam: list[float] | None
+    zero_pulse_period: float
+    zero_pulse_phase: float
+    hardware_latch: bool
+    limit_switches: list[float] | None
+    fixed_stop: float | None
+    cam_jitter: float
+    drive: dict[str, Any] | None
+    modulo: list[float] | None
+    cycle_time_ms: float
+    assumed: list[str]
+
+
+def read_scenario(path: Path) -> ScenarioInput:
     return parse_input(read_toml(path, "scenario", ScenarioError), str(path))
 
 
-def parse_input(data: dict, where: str = "scenario"):
+def parse_input(data: object, where: str = "scenario") -> ScenarioInput:
     """A validated ScenarioInput; any problem is a ScenarioError naming the key (nested keys in full)."""
     from pydantic import ValidationError
 
-    models = _models()
-    levels = {
-        (): models["ScenarioInput"],
-        ("drive",): models["DriveInput"],
-        ("drive", "first_search"): models["SearchInput"],
-        ("drive", "second_search"): models["SearchInput"],
+    from .scenario_input import DriveInput, ScenarioInput, SearchInput
+
+    levels: dict[tuple[str, ...], type[BaseModel]] = {
+        (): ScenarioInput,
+        ("drive",): DriveInput,
+        ("drive", "first_search"): SearchInput,
+        ("drive", "second_search"): SearchInput,
     }
     if not isinstance(data, dict):
         raise ScenarioError(f"{where}: a scenario is a table of keys, not {type(data).__name__}")
     try:
-        return models["ScenarioInput"].model_validate(data)
+        return ScenarioInput.model_validate(data)
     except ValidationError as exc:
-        problems = []
+        problems: list[str] = []
         for item in exc.errors():
             loc = tuple(str(p) for p in item["loc"])
             key = ".".join(loc) or "(scenario)"
@@ -215,7 +160,9 @@ def parse_input(data: dict, where: str = "scenario"):
         raise ScenarioError(f"{where}: " + "; ".join(problems).replace("\n", " ")) from None
 
 
-def default_scenario(strategy, given=None, cycle_time_us: int = 1000) -> Scenario:
+def default_scenario(
+    strategy: HomingStrategy, given: ScenarioInput | None = None, cycle_time_us: int = 1000
+) -> Scenario:
     """The scenario completed with the documented default geometry for the strategy's axis."""
     setup = strategy.setup
     direction = setup.torq_direction if strategy.id == "fixed_stop" else setup.direction
@@ -235,7 +182,7 @@ def default_scenario(strategy, given=None, cycle_time_us: int = 1000) -> Scenari
 
 
 def complete(
-    given,
+    given: ScenarioInput | None,
     *,
     direction: int,
     rotary: bool,
@@ -257,8 +204,8 @@ def complete(
     revolution = modulo[1] - modulo[0] if modulo else 0.0
     assumed: list[str] = []
 
-    def pick(name, default):
-        value = getattr(given, name, None)
+    def pick(name: str, default: _T) -> _T:
+        value: _T | None = getattr(given, name, None)
         if value is None:
             assumed.append(name)
             return default
@@ -316,15 +263,15 @@ def complete(
     )
 
 
-def _check_bounds(given, unit: str) -> None:
+def _check_bounds(given: ScenarioInput | None, unit: str) -> None:
     """Positions and distances within ±1e6 mm (±1e9 °): beyond that the arithmetic loses the micrometre."""
     if given is None:
         return
     bound = POSITION_BOUND[unit]
     data = given.model_dump(exclude_none=True)
-    found = []
+    found: list[str] = []
 
-    def walk(prefix: str, value) -> None:
+    def walk(prefix: str, value: object) -> None:
         if isinstance(value, dict):
             for key, item in value.items():
                 walk(f"{prefix}.{key}" if prefix else key, item)

@@ -12,7 +12,12 @@ from __future__ import annotations
 
 import contextlib
 import signal
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from types import FrameType
+
+# What `signal.signal` returns and accepts: a handler, SIG_DFL / SIG_IGN, or None (set outside Python).
+Handler = Callable[[int, FrameType | None], object] | int | signal.Handlers | None
 
 NAMES = {"SIGINT": "interrupted", "SIGTERM": "terminated", "SIGHUP": "hung up"}
 
@@ -20,7 +25,7 @@ NAMES = {"SIGINT": "interrupted", "SIGTERM": "terminated", "SIGHUP": "hung up"}
 class Stopped(BaseException):
     """The run was stopped by a signal. A BaseException, so that no `except Exception` swallows it."""
 
-    def __init__(self, signum: int):
+    def __init__(self, signum: int) -> None:
         super().__init__(signum)
         self.signum = signum
 
@@ -33,13 +38,13 @@ class Stopped(BaseException):
         return NAMES.get(signal.Signals(self.signum).name, f"stopped by signal {self.signum}")
 
 
-def _stop(signum, _frame) -> None:
+def _stop(signum: int, _frame: FrameType | None) -> None:
     raise Stopped(signum)
 
 
-def install() -> dict:
+def install() -> dict[int, Handler]:
     """Make SIGINT, SIGTERM and SIGHUP raise `Stopped` in this process; returns the handlers they had."""
-    previous = {}
+    previous: dict[int, Handler] = {}
     for name in NAMES:
         number = getattr(signal, name, None)
         if number is not None:
@@ -50,7 +55,7 @@ def install() -> dict:
 
 
 @contextmanager
-def stopping_on_signals():
+def stopping_on_signals() -> Iterator[None]:
     """`install` for the duration of a block (the command line), then the earlier handlers again."""
     previous = install()
     try:

@@ -16,6 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from . import syntax
+from .diagnostics import Diagnostic
 
 # A code is letters and a digit, then letters or digits: `LIS3O2` (a letter O) is read whole and reported
 # as an unknown code (LIS009), not as `LIS3` followed by text.
@@ -38,13 +39,13 @@ class Directive:
         return self.codes is None or code in self.codes
 
 
-def _codes(match: re.Match) -> list[str] | None:
+def _codes(match: re.Match[str]) -> list[str] | None:
     text = match.group("codes")
     return None if text is None else [c.strip().upper() for c in text.split(",")]
 
 
 def directives(file: syntax.ListFile) -> list[Directive]:
-    found = []
+    found: list[Directive] = []
     for line in file.lines:
         if line.kind == syntax.COMMENT:
             match = FILE_NOQA.match((line.comment or "").strip())
@@ -55,8 +56,8 @@ def directives(file: syntax.ListFile) -> list[Directive]:
         if line.kind == syntax.ASSIGNMENT:
             if line.rest is not None:
                 trailing = line.rest
-            elif (line.value or "").startswith(("#", "(")):  # a suppression comment where the value would be
-                trailing = line.value + line.sep2
+            elif line.value is not None and line.value.startswith(("#", "(")):
+                trailing = line.value + line.sep2  # a suppression comment where the value would be
             else:
                 continue
             match = LINE_NOQA.search(trailing)
@@ -66,14 +67,14 @@ def directives(file: syntax.ListFile) -> list[Directive]:
     return found
 
 
-def apply(diagnostics: list, found: list[Directive]) -> list:
+def apply(diagnostics: list[Diagnostic], found: list[Directive]) -> list[Diagnostic]:
     """Drop suppressed diagnostics, recording on each directive which codes it used."""
     by_line: dict[int, list[Directive]] = {}
     file_level = [d for d in found if d.file_level]
     for directive in found:
         if not directive.file_level:
             by_line.setdefault(directive.line.number, []).append(directive)
-    kept = []
+    kept: list[Diagnostic] = []
     for diagnostic in diagnostics:
         suppressor = next((d for d in by_line.get(diagnostic.line, ()) if d.covers(diagnostic.code)), None)
         if suppressor is None:

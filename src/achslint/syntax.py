@@ -11,12 +11,16 @@ from __future__ import annotations
 
 import re
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, cast
 
 from .numbers import parse_int
+
+if TYPE_CHECKING:
+    from lark import Lark, Token
 
 BLANK = "blank"
 COMMENT = "comment"
@@ -33,7 +37,6 @@ INT, HEX, REAL, REFERENCE, STRING, BAD_STRING, SYMBOL = (
     "bad_string",
     "symbol",
 )
-NUMERIC_KINDS = frozenset({INT, HEX, REAL})
 
 GRAMMAR_NAME = "achsmds.lark"
 
@@ -104,7 +107,8 @@ class ListFile:
 
     def offsets(self) -> list[int]:
         """Character offset of the start of every line."""
-        result, offset = [], 0
+        result: list[int] = []
+        offset = 0
         for line in self.lines:
             result.append(offset)
             offset += len(line.body) + len(line.newline)
@@ -127,17 +131,27 @@ def _grammar_text() -> str:
     return (here.parents[1] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
 
 
+# A value alternative reduced: (kind, blanks before the value, value text).
+_ValueParts = tuple[str, str, str]
+
+
+def _value(kind: str) -> Callable[[_Builder, list[Token]], _ValueParts]:
+    """The builder method of one value alternative."""
+
+    def build(self: _Builder, children: list[Token]) -> _ValueParts:
+        text = str(children[0])
+        value = text.lstrip(" \t")
+        return (kind, _intern(text[: len(text) - len(value)]), value)
+
+    return build
+
+
 class _Builder:
-    """Inline transformer: builds `Line` objects while Lark reduces the rules."""
+    """Inline transformer: builds `Line` objects while Lark reduces the rules.
 
-    # Value alternatives all become (kind, blanks before the value, value text).
-    def _value(kind: str):
-        def build(self, children):
-            text = str(children[0])
-            value = text.lstrip(" \t")
-            return (kind, _intern(text[: len(text) - len(value)]), value)
-
-        return build
+    The rules that combine reduced parts (`assignment`, `line`, `body`) receive children of mixed kinds
+    (tokens, the tuples and lines built here), hence their `list[Any]`.
+    """
 
     int = _value(INT)
     hex = _value(HEX)
@@ -146,19 +160,18 @@ class _Builder:
     string = _value(STRING)
     bad_string = _value(BAD_STRING)
     symbol = _value(SYMBOL)
-    del _value
 
-    def valid_path(self, children):
+    def valid_path(self, children: list[Token]) -> tuple[bool, str]:
         return (True, _intern(str(children[0])))
 
-    def bad_path(self, children):
+    def bad_path(self, children: list[Token]) -> tuple[bool, str]:
         return (False, str(children[0]))
 
-    def comment(self, children):
+    def comment(self, children: list[Token]) -> Line:
         return Line(COMMENT, comment=str(children[0]))
 
     @staticmethod
-    def _trailer(line: Line, token) -> None:
+    def _trailer(line: Line, token: Token) -> None:
         """Split a trailer token into the blanks (sep2 or sep) and the text after them (rest)."""
         text = str(token)
         rest = text.lstrip(" \t")
@@ -170,7 +183,7 @@ class _Builder:
         if rest:
             line.rest = rest
 
-    def end_marker(self, children):
+    def end_marker(self, children: list[Token]) -> Line:
         line = Line(END, path=str(children[0]))
         if len(children) > 1:
             text = str(children[1])
@@ -179,7 +192,7 @@ class _Builder:
             line.rest = rest or None
         return line
 
-    def assignment(self, children):
+    def assignment(self, children: list[Any]) -> Line:
         ok, path = children[0]
         line = Line(ASSIGNMENT, path=path, path_ok=ok)
         for child in children[1:]:
@@ -189,7 +202,7 @@ class _Builder:
                 self._trailer(line, child)
         return line
 
-    def line(self, children):
+    def line(self, children: list[Any]) -> Line:
         if not children:
             return Line(BLANK)
         first = children[0]
@@ -198,19 +211,20 @@ class _Builder:
         indent = _intern(str(first))
         if len(children) == 1:
             return Line(BLANK, indent=indent)
-        stmt = children[1]
+        stmt: Line = children[1]
         stmt.indent = indent
         return stmt
 
-    def body(self, children):
+    def body(self, children: list[Any]) -> list[Line]:
         if len(children) == 1:
             return [children[0]]
-        lines, newline, line = children
+        lines: list[Line] = children[0]
+        newline, line = children[1], children[2]
         lines[-1].newline = _intern(str(newline))
         lines.append(line)
         return lines
 
-    def start(self, children):
+    def start(self, children: list[list[Line]]) -> list[Line]:
         return children[0]
 
 
@@ -237,7 +251,7 @@ def _cache_file(grammar: str) -> str | bool:
 
 
 @lru_cache(maxsize=1)
-def parser():
+def parser() -> Lark:
     """The Lark LALR parser, built once per process (the analysed grammar is cached on disk)."""
     from lark import Lark
 
@@ -254,7 +268,8 @@ def parser():
 
 def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bom: bool = False) -> ListFile:
     """Parse list text (already decoded, without BOM) into a `ListFile`."""
-    lines: list[Line] = parser().parse(text)
+    # The inline transformer builds the result while parsing: `_Builder.start` returns the lines.
+    lines = cast("list[Line]", parser().parse(text))
     end_index = None
     for index, line in enumerate(lines):
         line.number = index + 1
@@ -289,7 +304,7 @@ _SEGMENT = re.compile(r"([A-Za-z_][A-Za-z0-9_\-]*)((?:\[[0-9]+\])*)")
 
 def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
     """Split a valid path into (member, indices) pairs: `a[1].b` -> [("a", (1,)), ("b", ())]."""
-    parts = []
+    parts: list[tuple[str, tuple[int, ...]]] = []
     for segment in path.split("."):
         match = _SEGMENT.fullmatch(segment)
         if match is None:
@@ -315,7 +330,7 @@ def path_pattern(path: str) -> tuple[str, tuple[int, ...]]:
     """Replace every index by `[i]`: `getriebe[2].vb_reflow` -> (`getriebe[i].vb_reflow`, (2,))."""
     indices: list[int] = []
 
-    def repl(match: re.Match) -> str:
+    def repl(match: re.Match[str]) -> str:
         indices.append(whole_number(match.group(1)))
         return "[i]"
 

@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import re
+import sys
 from pathlib import Path
+from typing import Any
 
-try:
+if sys.version_info >= (3, 11):
     import tomllib
-except ModuleNotFoundError:  # Python 3.10
+else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 
-def read_toml(path: Path, what: str, error: type[Exception]) -> dict:
+def read_toml(path: Path, what: str, error: type[Exception]) -> dict[str, Any]:
     """The parsed file; any problem becomes `error` with a one-line message naming the file (and, for
     broken TOML, the line and column as `file:line:col:`, which editors and terminals can jump to)."""
     try:

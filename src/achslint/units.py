@@ -52,8 +52,8 @@ def _number(value: float) -> str:
     return f"{number:.4g}" if abs(number) < 1e6 else f"{number:.6g}"
 
 
-def to_human(value: float, unit: str | None) -> str | None:
-    """`20000, "um/s"` -> `20 mm/s = 1.2 m/min`; None when there is nothing to add."""
+def to_human(value: object, unit: str | None) -> str | None:
+    """`20000, "um/s"` -> `20 mm/s = 1.2 m/min`; None when there is nothing to add (not a number, no unit)."""
     if unit not in _UNITS or not isinstance(value, (int, float)) or isinstance(value, bool):
         return None
     label, factor, human = _UNITS[unit]
@@ -71,8 +71,8 @@ def to_human(value: float, unit: str | None) -> str | None:
     return text
 
 
-def describe(value: float, unit: str | None) -> str:
-    """A value with its list unit and, where useful, its human form.
+def describe(value: object, unit: str | None) -> str:
+    """A value with its list unit and, where useful, its human form (anything but a number as `str` shows it).
 
     `20000, "um/s"` -> `20000 µm/s (= 20 mm/s = 1.2 m/min)`;
     `1500, "0.1%"` -> `1500 [0.1 %] (= 150 %)`.

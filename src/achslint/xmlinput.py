@@ -21,12 +21,17 @@ import re
 from bisect import bisect_right
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 from xml.sax import SAXException
 from xml.sax.handler import ContentHandler
 
 from .decode import UnreadableInput
 from .numbers import parse_int
 from .syntax import split_lines
+
+if TYPE_CHECKING:
+    from xml.sax.expatreader import ExpatParser
+    from xml.sax.xmlreader import AttributesImpl
 
 XML_SUFFIXES = (".xml", ".xti", ".tsproj")
 _ISG_ELEMENT = re.compile(r"(P-AXIS-[0-9]+)((?:\.[0-9]+)*)")
@@ -128,11 +133,12 @@ def _local(name: str) -> str:
 class _Collector(ContentHandler):
     """Gathers the axis lists while expat reads the file once."""
 
-    def __init__(self, locator):
+    def __init__(self, locator: ExpatParser) -> None:
         super().__init__()
         self.locator = locator
         self.twincat: list[EmbeddedList] = []
-        self.isg: list[tuple[EmbeddedList, list[str]]] = []
+        # ISG lists: the list, its lines, and the XML (line, column) of each line (the list's line_map)
+        self.isg: list[tuple[EmbeddedList, list[str], list[tuple[int, int]]]] = []
         self.isg_depth = 0  # how many <AX_MDS> elements we are inside
         self.axis_defs: list[list[EmbeddedList]] = []  # the <IsgAxisDef> elements we are inside
         self.current: EmbeddedList | None = None  # the <AchsMds> being read
@@ -140,12 +146,12 @@ class _Collector(ContentHandler):
         self.offset = 0
         self.field: tuple[str, int] | None = None  # <DriveType> / <Spindle> being read, with its line
         self.field_text: list[str] = []
-        self.axis_fields: list[dict] = []
+        self.axis_fields: list[dict[str, tuple[str, int]]] = []  # DriveType / Spindle: (text, line)
 
     def _here(self) -> tuple[int, int]:
-        return self.locator.getLineNumber(), self.locator.getColumnNumber() + 1
+        return self.locator.getLineNumber(), (self.locator.getColumnNumber() or 0) + 1
 
-    def startElement(self, name, attrs):
+    def startElement(self, name: str, attrs: AttributesImpl) -> None:
         local = _local(name)
         line, column = self._here()
         if local == "IsgAxisDef":
@@ -159,11 +165,12 @@ class _Collector(ContentHandler):
         elif local == "AX_MDS":
             self.isg_depth += 1
             if self.isg_depth == 1:
-                self.isg.append((EmbeddedList("", "AX_MDS", line, column, line_map=[]), []))
-        elif self.isg_depth and _ISG_ELEMENT.fullmatch(local):
-            self._isg_line(local, attrs.get("Value", ""), (line, column))
+                line_map: list[tuple[int, int]] = []
+                self.isg.append((EmbeddedList("", "AX_MDS", line, column, line_map=line_map), [], line_map))
+        elif self.isg_depth and (element := _ISG_ELEMENT.fullmatch(local)):
+            self._isg_line(element, attrs.get("Value", ""), (line, column))
 
-    def characters(self, content):
+    def characters(self, content: str) -> None:
         if self.current is not None:
             self.current.pieces.append(self.offset)
             self.current.piece_positions.append(self._here())
@@ -172,7 +179,7 @@ class _Collector(ContentHandler):
         elif self.field is not None:
             self.field_text.append(content)
 
-    def endElement(self, name):
+    def endElement(self, name: str) -> None:
         local = _local(name)
         if local == "AchsMds" and self.current is not None:
             self.current.text = "".join(self.chunks)
@@ -188,12 +195,12 @@ class _Collector(ContentHandler):
         elif local == "AX_MDS" and self.isg_depth:
             self.isg_depth -= 1
             if not self.isg_depth:
-                embedded, lines = self.isg[-1]
+                _, lines, line_map = self.isg[-1]
                 lines.append("Ende")
-                embedded.line_map.append(self._here())
+                line_map.append(self._here())
 
     @staticmethod
-    def _describe(lists: list[EmbeddedList], fields: dict) -> None:
+    def _describe(lists: list[EmbeddedList], fields: dict[str, tuple[str, int]]) -> None:
         """Give the lists of one <IsgAxisDef> its drive type and spindle flag."""
         for embedded in lists:
             if "DriveType" in fields:
@@ -204,13 +211,12 @@ class _Collector(ContentHandler):
                 embedded.spindle = fields["Spindle"][0].lower() == "true"
                 embedded.spindle_line = fields["Spindle"][1]
 
-    def _isg_line(self, element: str, value: str, where: tuple[int, int]) -> None:
-        """One `<P-AXIS-nnnnn.i Value="..."/>` element as a list line."""
+    def _isg_line(self, element: re.Match[str], value: str, where: tuple[int, int]) -> None:
+        """One `<P-AXIS-nnnnn.i Value="..."/>` element (its name matched by `_ISG_ELEMENT`) as a list line."""
         from .catalogue import catalogue, fill_indices
 
-        embedded, lines = self.isg[-1]
-        match = _ISG_ELEMENT.fullmatch(element)
-        pid, written = match.group(1), match.group(2)
+        _, lines, line_map = self.isg[-1]
+        pid, written = element.group(1), element.group(2)
         indices = tuple(written.split(".")[1:])
         parameter = catalogue().by_id.get(pid)
         if parameter is None:
@@ -222,7 +228,7 @@ class _Collector(ContentHandler):
         if value and (re.search(r"[ \t(]", value) or value.startswith('"')):
             value = '"' + value.strip('"') + '"'
         lines.append(f"{path} {value}".rstrip(" \t"))
-        embedded.line_map.append(where)
+        line_map.append(where)
 
 
 def _parse(data: bytes, name: str) -> _Collector:
@@ -263,7 +269,7 @@ def extract(data: bytes, name: str) -> list[EmbeddedList]:
     collected = _parse(data, name)
     found = list(collected.twincat)
     if not found:
-        for embedded, lines in collected.isg:
+        for embedded, lines, _ in collected.isg:
             embedded.text = "\n".join(lines) + "\n"
             found.append(embedded)
     if not found:

@@ -9,8 +9,12 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from ..engine import Simulator, Trace
     from ..resolved import ResolvedAxis
     from .setup import HomingSetup
+
+    # simulate(simulator, trace, start position, cam shift) -> trace: the engine sequence of a strategy
+    Simulate = Callable[[Simulator, Trace, float, float], Trace]
 
 POSITIVE, NEGATIVE = "positive", "negative"
 
@@ -61,8 +65,8 @@ class StrategyDef:
         True  # the axis brakes beyond the reference (not for retraction / flying homing)
     )
     variants: Callable[[HomingSetup], list[str]] = lambda setup: []
-    # simulate(simulator, trace, start, cam_shift) -> trace: which engine sequence runs this strategy
-    simulate: Callable = lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped")
+    # which engine sequence runs this strategy
+    simulate: Simulate = lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped")
 
 
 @dataclass

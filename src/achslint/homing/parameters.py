@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..resolved import DriveType
+from ..resolved import DriveType, ResolvedAxis
 from .base import Use
 
 # In the manual's order: system parameters, then sequence parameters (§3.1, §3.2), then the special methods.
@@ -63,23 +63,23 @@ SELECTORS = frozenset(
 )
 
 
-def _gantry_slave(axis) -> bool:
+def _gantry_slave(axis: ResolvedAxis) -> bool:
     return bool(axis.get("kenngr.gantry_ax_nr"))
 
 
-def _sercos(axis) -> bool:
+def _sercos(axis: ResolvedAxis) -> bool:
     return axis.drive_type == DriveType.SERCOS
 
 
-def _latch_on(axis) -> bool:
+def _latch_on(axis: ResolvedAxis) -> bool:
     return axis.drive_type == DriveType.SERCOS and bool(axis.get("antr.sercos.drive_supports_cnc_homing"))
 
 
-def _non_linear_slope(axis) -> bool:
+def _non_linear_slope(axis: ResolvedAxis) -> bool:
     return axis.get("getriebe[0].slope_type") != 0
 
 
-def _overflow(axis) -> bool:
+def _overflow(axis: ResolvedAxis) -> bool:
     return bool(axis.get("kenngr.homing_overflow_evaluation"))
 
 

@@ -27,7 +27,7 @@ class Acceleration:
 class HomingSetup:
     """The homing-relevant values of one axis for one gear stage."""
 
-    def __init__(self, axis: ResolvedAxis, gear: int = 0):
+    def __init__(self, axis: ResolvedAxis, gear: int = 0) -> None:
         self.axis = axis
         self.gear = gear
         self.axis_type = axis.axis_type
@@ -41,7 +41,7 @@ class HomingSetup:
 
     def speed(self, member: str) -> float:
         """A speed of this gear stage in list units, after the CNC's caps."""
-        return self.axis.get(self.stage(member))
+        return self.axis.number(self.stage(member))
 
     # -- what selects the sequence ---------------------------------------------------------------
     @cached_property
@@ -113,12 +113,12 @@ class HomingSetup:
     def acceleration(self) -> Acceleration:
         """P-AXIS-00285, or min(P-AXIS-00005, P-AXIS-00006) when 0 (§3.2.4); spindles use their default ramps (§2.3.2.1)."""
         fallback = min(
-            self.axis.get(self.stage("lslope_profil.a_grenz_stufe_1")),
-            self.axis.get(self.stage("lslope_profil.a_grenz_stufe_2")),
+            self.axis.number(self.stage("lslope_profil.a_grenz_stufe_1")),
+            self.axis.number(self.stage("lslope_profil.a_grenz_stufe_2")),
         )
         if self.spindle:
             return Acceleration(float(fallback), "default ramps")
-        own = self.axis.get(self.stage("a_ref"))
+        own = self.axis.number(self.stage("a_ref"))
         if own:
             return Acceleration(float(own), "a_ref")
         return Acceleration(float(fallback), "fallback")
@@ -132,32 +132,32 @@ class HomingSetup:
         (MODULO_LINEAR conveyors are not simulated modulo)."""
         if not self.rotary:
             return None
-        if not self.spindle and not int(self.axis.get("kenngr.achs_mode")) & 0x4:
+        if not self.spindle and not int(self.axis.number("kenngr.achs_mode")) & 0x4:
             return None
-        low = self.axis.get(self.stage("modulou")) * POSITION
-        high = self.axis.get(self.stage("moduloo")) * POSITION
+        low = self.axis.number(self.stage("modulou")) * POSITION
+        high = self.axis.number(self.stage("moduloo")) * POSITION
         return (low, high) if high > low else None
 
     @cached_property
     def shift(self) -> float:
-        return self.axis.get("kenngr.shift_offset_zero_pulse_activation") * POSITION
+        return self.axis.number("kenngr.shift_offset_zero_pulse_activation") * POSITION
 
     @cached_property
     def zero_pulse_search_max(self) -> float:
-        return self.axis.get("lr_hw[0].zero_pulse_search_max_dist") * POSITION
+        return self.axis.number("lr_hw[0].zero_pulse_search_max_dist") * POSITION
 
     @cached_property
     def path_limit(self) -> float:
         """homing_max_movement_dist (0 = off; the CNC sets it to 0 on linear axes)."""
-        return self.axis.get("kenngr.homing_max_movement_dist") * POSITION
+        return self.axis.number("kenngr.homing_max_movement_dist") * POSITION
 
     @cached_property
     def reference_position(self) -> float:
-        return self.axis.get(self.stage("pos_refpkt")) * POSITION
+        return self.axis.number(self.stage("pos_refpkt")) * POSITION
 
     @cached_property
     def soft_limits(self) -> tuple[float, float]:
-        return self.axis.get("kenngr.swe_neg") * POSITION, self.axis.get("kenngr.swe_pos") * POSITION
+        return self.axis.number("kenngr.swe_neg") * POSITION, self.axis.number("kenngr.swe_pos") * POSITION
 
     @cached_property
     def overflow_period(self) -> float | None:
@@ -167,11 +167,11 @@ class HomingSetup:
 
     @cached_property
     def overflow_offset(self) -> float:
-        return self.axis.get("antr.encoder_overflow_offset") * POSITION
+        return self.axis.number("antr.encoder_overflow_offset") * POSITION
 
     @cached_property
     def simulated_distance(self) -> float:
-        return abs(self.axis.get("antr.simu.rpf_weg_bis_nip")) * POSITION
+        return abs(self.axis.number("antr.simu.rpf_weg_bis_nip")) * POSITION
 
     # -- fixed stop (TORQ) ---------------------------------------------------------------------------
     @cached_property
@@ -184,4 +184,4 @@ class HomingSetup:
 
     def distance(self, path: str) -> float:
         """A length parameter in mm (degrees)."""
-        return self.axis.get(path) * POSITION
+        return self.axis.number(path) * POSITION

@@ -11,8 +11,10 @@ from __future__ import annotations
 import difflib
 import os
 import re
+from collections.abc import Callable, Sequence
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from lsprotocol import types as lsp
 
@@ -25,11 +27,18 @@ from ..catalogue import (
     catalogue,
     fill_indices,
 )
-from ..diagnostics import Diagnostic, Severity
+from ..diagnostics import Diagnostic, Fix, Severity
 from ..numbers import Reference
 from ..rules import registry
 from ..units import describe, unit_label
 from .documents import Document, units
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..context import Context
+    from ..machine import StartupEntry
+    from ..resolved import ResolvedAxis
+    from .session import Snapshot
 
 SEVERITY = {
     Severity.ERROR: lsp.DiagnosticSeverity.Error,
@@ -116,7 +125,9 @@ def to_lsp_diagnostic(document: Document, d: Diagnostic) -> lsp.Diagnostic:
     )
 
 
-def publishable(document: Document, snapshot, found: list[Diagnostic]) -> list[lsp.Diagnostic]:
+def publishable(
+    document: Document, snapshot: Snapshot | None, found: list[Diagnostic]
+) -> list[lsp.Diagnostic]:
     out = [to_lsp_diagnostic(document, d) for d in found]
     start = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1))
     if snapshot is not None and snapshot.result.error:
@@ -166,7 +177,7 @@ def code_at(text: str, index: int) -> str | None:
     return None
 
 
-def setting_of(context, line: syntax.Line):
+def setting_of(context: Context | None, line: syntax.Line) -> Setting | None:
     if context is None:
         return None
     for setting in context.analysis.settings:
@@ -212,7 +223,7 @@ def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
     return out
 
 
-def value_words(values, path: str) -> str:
+def value_words(values: ResolvedAxis, path: str) -> str:
     parameter = values.parameter(path)
     unit = parameter.unit(values.axis_type)
     value = values.get(path)
@@ -223,7 +234,7 @@ def value_words(values, path: str) -> str:
     return "(empty)" if value in ("", None) else str(value)
 
 
-def axis_lines(context, path: str, markdown: bool = True) -> list[str]:
+def axis_lines(context: Context, path: str, markdown: bool = True) -> list[str]:
     """This list's value of a parameter: human units, where it comes from, correction, effect."""
     from ..explain import parameter_row
     from ..homing.registry import is_homing_parameter
@@ -248,7 +259,13 @@ def axis_lines(context, path: str, markdown: bool = True) -> list[str]:
     return out
 
 
-def hover_text(context, file, line_number: int, column: int, markdown: bool = True) -> str | None:
+def hover_text(
+    context: Context | None,
+    file: syntax.ListFile | None,
+    line_number: int,
+    column: int,
+    markdown: bool = True,
+) -> str | None:
     """The hover text at a 1-based (line, column) of a parsed list with its context."""
     if file is None or not 1 <= line_number <= len(file.lines):
         return None
@@ -290,7 +307,7 @@ def hover_text(context, file, line_number: int, column: int, markdown: bool = Tr
         return None
     values = context.values
     unit = parameter.unit(values.axis_type)
-    written = setting.value
+    written = setting.value if setting is not None else None
     if isinstance(written, Reference):
         target = values.referenced(canonical, written)
         referenced = values.parameter(target)
@@ -342,7 +359,7 @@ _VALUE_PREFIX = re.compile(r"^[ \t]*([A-Za-z_][A-Za-z0-9_\-.\[\]]*)[ \t]+(\S*)$"
 _NOQA_PREFIX = re.compile(r"noqa:[ \t]*(?:[A-Za-z0-9]+[ \t]*,[ \t]*)*([A-Za-z0-9]*)$", re.IGNORECASE)
 
 
-def _applies(parameter: Parameter, context) -> bool:
+def _applies(parameter: Parameter, context: Context | None) -> bool:
     """Whether a parameter takes effect for the list's drive and axis type (as LIS105 judges it)."""
     if context is None:
         return True
@@ -358,7 +375,9 @@ def _applies(parameter: Parameter, context) -> bool:
     )
 
 
-def _snippet_path(pattern: str, typed: tuple[int, ...], bounds, snippets: bool) -> str:
+def _snippet_path(
+    pattern: str, typed: tuple[int, ...], bounds: tuple[tuple[int, int], ...], snippets: bool
+) -> str:
     """A catalogue pattern with the typed indices filled in and the others as snippet placeholders."""
     text = fill_indices(pattern, typed)
     number = 0
@@ -375,7 +394,7 @@ def _snippet_path(pattern: str, typed: tuple[int, ...], bounds, snippets: bool) 
 
 def complete(
     document: Document,
-    snapshot,
+    snapshot: Snapshot | None,
     line_number: int,
     column: int,
     snippets: bool = True,
@@ -412,7 +431,9 @@ def _edit(document: Document, line: int, start: int, end: int, text: str) -> lsp
     return lsp.TextEdit(lsp_range(document, line, start, line, end), text)
 
 
-def _path_items(context, typed, snippets, where: lsp.Range | None) -> list[lsp.CompletionItem]:
+def _path_items(
+    context: Context | None, typed: str, snippets: bool, where: lsp.Range | None
+) -> list[lsp.CompletionItem]:
     """Paths that take effect for the list's drive and axis type; old names marked deprecated. Items carry
     no documentation: `completionItem/resolve` adds the card of the one the user looks at."""
     pattern, indices = syntax.path_pattern(typed)
@@ -453,7 +474,9 @@ def _path_items(context, typed, snippets, where: lsp.Range | None) -> list[lsp.C
     return items
 
 
-def _value_items(document, context, line, start, end, path, typed) -> list[lsp.CompletionItem]:
+def _value_items(
+    document: Document, context: Context | None, line: int, start: int, end: int, path: str, typed: str
+) -> list[lsp.CompletionItem]:
     resolution = catalogue().resolve(path)
     if resolution is None:
         return []
@@ -499,7 +522,9 @@ def _value_items(document, context, line, start, end, path, typed) -> list[lsp.C
     return items
 
 
-def _code_items(document, snapshot, line, start, end) -> list[lsp.CompletionItem]:
+def _code_items(
+    document: Document, snapshot: Snapshot | None, line: int, start: int, end: int
+) -> list[lsp.CompletionItem]:
     here = set()
     if snapshot is not None:
         here = {d.code for d in snapshot.result.diagnostics if d.line == line}
@@ -532,7 +557,7 @@ def resolve_item(item: lsp.CompletionItem, markdown: bool = True) -> lsp.Complet
 # -- code actions ----------------------------------------------------------------------------------
 
 
-def text_edits(document: Document, fix) -> list[lsp.TextEdit]:
+def text_edits(document: Document, fix: Fix) -> list[lsp.TextEdit]:
     edits = [
         lsp.TextEdit(lsp_range(document, e.line, e.column, e.end_line, e.end_column), e.content)
         for e in fix.edits
@@ -567,7 +592,7 @@ def _line_start(document: Document, old: list[str], index: int) -> lsp.Position:
     return lsp.Position(len(old) - 1, units(old[-1], document.encoding))
 
 
-def noqa_edit(document: Document, file, d: Diagnostic) -> lsp.TextEdit | None:
+def noqa_edit(document: Document, file: syntax.ListFile | None, d: Diagnostic) -> lsp.TextEdit | None:
     """Where `noqa: CODE` goes: into the line's trailing comment, else a new comment after the value
     (`#` after a number or reference, `(` after text, where only `(` starts a comment)."""
     from ..suppression import LINE_NOQA
@@ -596,19 +621,20 @@ def noqa_edit(document: Document, file, d: Diagnostic) -> lsp.TextEdit | None:
 
 def code_actions(
     document: Document,
-    snapshot,
+    snapshot: Snapshot | None,
     found: list[Diagnostic],
     request: lsp.Range,
-    only: list[str] | None,
-    fix_all_edits,
+    only: Sequence[str] | None,
+    fix_all_edits: Callable[[], list[lsp.TextEdit]],
 ) -> list[lsp.CodeAction]:
     start_line, end_line = request.start.line + 1, request.end.line + 1
 
-    def wanted(kind):
+    def wanted(kind: str) -> bool:
         return not only or any(kind == k or kind.startswith(k + ".") for k in only)
 
     actions = []
-    xml = snapshot is None or snapshot.file is None
+    file = snapshot.file if snapshot is not None else None
+    xml = file is None
     if wanted(lsp.CodeActionKind.QuickFix):
         for d in found:
             if not (d.line <= end_line and d.end_line >= start_line):
@@ -627,7 +653,7 @@ def code_actions(
                     )
                 )
             if not xml and d.path == document.name:
-                edit = noqa_edit(document, snapshot.file, d)
+                edit = noqa_edit(document, file, d)
                 if edit is not None:
                     whole_file = edit.new_text.startswith("# achslint: noqa")
                     actions.append(
@@ -670,14 +696,14 @@ def code_actions(
 # -- formatting ------------------------------------------------------------------------------------
 
 
-def format_document(document: Document, file) -> list[lsp.TextEdit]:
+def format_document(document: Document, file: syntax.ListFile) -> list[lsp.TextEdit]:
     from ..fmt import format_file
 
     formatted = format_file(file)
     return diff_edits(document, ("\ufeff" if document.bom else "") + formatted)
 
 
-def format_range(document: Document, file, request: lsp.Range) -> list[lsp.TextEdit]:
+def format_range(document: Document, file: syntax.ListFile, request: lsp.Range) -> list[lsp.TextEdit]:
     from ..fmt import formatted_lines
 
     bodies = formatted_lines(file)
@@ -695,7 +721,7 @@ def format_range(document: Document, file, request: lsp.Range) -> list[lsp.TextE
 # -- outline and definitions ---------------------------------------------------------------------------
 
 
-def document_symbols(document: Document, file) -> list[lsp.DocumentSymbol]:
+def document_symbols(document: Document, file: syntax.ListFile) -> list[lsp.DocumentSymbol]:
     groups: dict[str, list[lsp.DocumentSymbol]] = {}
     out: list[lsp.DocumentSymbol] = []
     for line in file.lines:
@@ -735,10 +761,14 @@ def document_symbols(document: Document, file) -> list[lsp.DocumentSymbol]:
 
 
 def definition(
-    document: Document, snapshot, line_number: int, column: int, startup_entries
+    document: Document,
+    snapshot: Snapshot | None,
+    line_number: int,
+    column: int,
+    startup_entries: Callable[[], list[StartupEntry]],
 ) -> list[lsp.Location]:
     file = snapshot.file if snapshot is not None else None
-    if file is None or not 1 <= line_number <= len(file.lines):
+    if snapshot is None or file is None or not 1 <= line_number <= len(file.lines):
         return []
     line = file.lines[line_number - 1]
     if part_at(line, column) != "value":
@@ -751,12 +781,17 @@ def definition(
         return []
     context = snapshot.context
     setting = setting_of(context, line)
-    if setting is None or not isinstance(setting.value, Reference) or setting.canonical is None:
+    if (
+        context is None
+        or setting is None
+        or not isinstance(setting.value, Reference)
+        or setting.canonical is None
+    ):
         return []
     values = context.values
     target = values.referenced(setting.canonical, setting.value)
     origin = values.origin(target)
-    if origin.setting is None:
+    if origin.setting is None or origin.file is None:  # set together for a value from a list
         return []
     found = origin.setting.line
     if origin.kind == "list":
@@ -781,7 +816,7 @@ def definition(
     ]
 
 
-def inlay_hints(document: Document, snapshot, request: lsp.Range) -> list[lsp.InlayHint]:
+def inlay_hints(document: Document, snapshot: Snapshot | None, request: lsp.Range) -> list[lsp.InlayHint]:
     """Human units after raw numeric values (`20000` → `= 20 mm/s = 1.2 m/min`)."""
     from ..units import to_human
 

@@ -11,7 +11,9 @@ import asyncio
 import functools
 import logging
 import traceback
+from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING, TypeVar
 
 from lsprotocol import types as lsp
 from pygls.lsp.server import LanguageServer
@@ -21,9 +23,15 @@ from .. import __version__
 from ..xmlinput import is_xml
 from . import features
 from .documents import Document
-from .session import ClientSettings, Session
+from .session import ClientSettings, Session, Snapshot
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..machine import StartupEntry
+    from ..syntax import ListFile
 
 log = logging.getLogger("achslint.lsp")
+_Params = TypeVar("_Params")  # the parameters of a request or notification
 
 
 class AchslintServer(LanguageServer):
@@ -35,35 +43,44 @@ class AchslintServer(LanguageServer):
         self._timers: dict[str, asyncio.TimerHandle] = {}
 
     # -- client capabilities -------------------------------------------------------------------
+    def _text_capabilities(self) -> lsp.TextDocumentClientCapabilities | None:
+        try:
+            return self.client_capabilities.text_document
+        except AttributeError:  # no client capabilities yet (before initialize)
+            return None
+
+    def _completion_capabilities(self) -> lsp.CompletionClientCapabilities | None:
+        text = self._text_capabilities()
+        return text.completion if text is not None else None
+
     @property
     def markdown(self) -> bool:
-        try:
-            formats = self.client_capabilities.text_document.hover.content_format
-        except AttributeError:
-            return True
+        text = self._text_capabilities()
+        hover = text.hover if text is not None else None
+        formats = hover.content_format if hover is not None else None
         return not formats or lsp.MarkupKind.Markdown in formats
 
     @property
     def snippets(self) -> bool:
-        try:
-            return bool(self.client_capabilities.text_document.completion.completion_item.snippet_support)
-        except AttributeError:
-            return False
+        completion = self._completion_capabilities()
+        item = completion.completion_item if completion is not None else None
+        return item is not None and bool(item.snippet_support)
 
     @property
     def edit_range_default(self) -> bool:
-        try:
-            defaults = self.client_capabilities.text_document.completion.completion_list.item_defaults
-        except AttributeError:
-            return False
-        return bool(defaults) and "editRange" in defaults
+        completion = self._completion_capabilities()
+        completion_list = completion.completion_list if completion is not None else None
+        defaults = completion_list.item_defaults if completion_list is not None else None
+        return defaults is not None and "editRange" in defaults
 
     @property
     def encoding(self) -> str:
         encoding = self.workspace.position_encoding if self.workspace is not None else None
-        return {lsp.PositionEncodingKind.Utf8: "utf-8", lsp.PositionEncodingKind.Utf32: "utf-32"}.get(
-            encoding, "utf-16"
-        )
+        names: dict[str, str] = {
+            lsp.PositionEncodingKind.Utf8: "utf-8",
+            lsp.PositionEncodingKind.Utf32: "utf-32",
+        }
+        return names.get(encoding or "", "utf-16")
 
     # -- diagnostics -----------------------------------------------------------------------------
     def publish(self, uri: str) -> None:
@@ -110,21 +127,33 @@ class AchslintServer(LanguageServer):
 server = AchslintServer()
 
 
-def guarded(default=None):
-    """Answer `default` instead of failing when a handler meets something unexpected (logged on stderr)."""
+def guarded(
+    default: Callable[[], object] | None = None,
+) -> Callable[[Callable[[AchslintServer, _Params], object]], Callable[[AchslintServer, _Params], object]]:
+    """Answer `default()` (or None) instead of failing when a handler meets something unexpected (logged on
+    stderr)."""
 
-    def wrap(handler):
+    def wrap(
+        handler: Callable[[AchslintServer, _Params], object],
+    ) -> Callable[[AchslintServer, _Params], object]:
         @functools.wraps(handler)
-        def run(ls, params):
+        def run(ls: AchslintServer, params: _Params) -> object:
             try:
                 return handler(ls, params)
             except Exception as exc:
                 log.error("achslint: %s failed: %s\n%s", handler.__name__, exc, traceback.format_exc())
-                return default() if callable(default) else default
+                return default() if default is not None else None
 
         return run
 
     return wrap
+
+
+def _take_settings(ls: AchslintServer, raw: object) -> None:
+    """Use the editor's settings; codes that pick no rule are told to the user (and not used)."""
+    ls.session.settings = ClientSettings.from_dict(raw)
+    for problem in ls.session.settings.problems:
+        ls.window_show_message(lsp.ShowMessageParams(lsp.MessageType.Warning, problem))
 
 
 def _path(uri: str) -> Path | None:
@@ -137,8 +166,8 @@ def _path(uri: str) -> Path | None:
 
 @server.feature(lsp.INITIALIZE)
 @guarded()
-def initialize(ls: AchslintServer, params: lsp.InitializeParams):
-    ls.session.settings = ClientSettings.from_dict(params.initialization_options or {})
+def initialize(ls: AchslintServer, params: lsp.InitializeParams) -> None:
+    _take_settings(ls, params.initialization_options or {})
     folders = params.workspace_folders or []
     root = _path(folders[0].uri) if folders else (_path(params.root_uri) if params.root_uri else None)
     ls.session.root = root
@@ -146,7 +175,7 @@ def initialize(ls: AchslintServer, params: lsp.InitializeParams):
 
 @server.feature(lsp.TEXT_DOCUMENT_DID_OPEN)
 @guarded()
-def did_open(ls: AchslintServer, params: lsp.DidOpenTextDocumentParams):
+def did_open(ls: AchslintServer, params: lsp.DidOpenTextDocumentParams) -> None:
     item = params.text_document
     ls.session.open(Document(item.uri, _path(item.uri), item.text, item.version, ls.encoding))
     ls.publish(item.uri)
@@ -154,7 +183,7 @@ def did_open(ls: AchslintServer, params: lsp.DidOpenTextDocumentParams):
 
 @server.feature(lsp.TEXT_DOCUMENT_DID_CHANGE)
 @guarded()
-def did_change(ls: AchslintServer, params: lsp.DidChangeTextDocumentParams):
+def did_change(ls: AchslintServer, params: lsp.DidChangeTextDocumentParams) -> None:
     document = ls.session.documents.get(params.text_document.uri)
     if document is None:
         return
@@ -170,7 +199,7 @@ def did_change(ls: AchslintServer, params: lsp.DidChangeTextDocumentParams):
 
 @server.feature(lsp.TEXT_DOCUMENT_DID_SAVE)
 @guarded()
-def did_save(ls: AchslintServer, params: lsp.DidSaveTextDocumentParams):
+def did_save(ls: AchslintServer, params: lsp.DidSaveTextDocumentParams) -> None:
     uri = params.text_document.uri
     if uri.endswith(".toml"):
         ls.session.forget_disk()
@@ -182,7 +211,7 @@ def did_save(ls: AchslintServer, params: lsp.DidSaveTextDocumentParams):
 
 @server.feature(lsp.TEXT_DOCUMENT_DID_CLOSE)
 @guarded()
-def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams):
+def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams) -> None:
     uri = params.text_document.uri
     timer = ls._timers.pop(uri, None)
     if timer is not None:
@@ -201,16 +230,16 @@ def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams):
 
 @server.feature(lsp.WORKSPACE_DID_CHANGE_CONFIGURATION)
 @guarded()
-def did_change_configuration(ls: AchslintServer, params: lsp.DidChangeConfigurationParams):
+def did_change_configuration(ls: AchslintServer, params: lsp.DidChangeConfigurationParams) -> None:
     if isinstance(params.settings, dict) and params.settings:
-        ls.session.settings = ClientSettings.from_dict(params.settings)
+        _take_settings(ls, params.settings)
     ls.session.forget_disk()
     ls.publish_all()
 
 
 @server.feature(lsp.WORKSPACE_DID_CHANGE_WATCHED_FILES)
 @guarded()
-def did_change_watched_files(ls: AchslintServer, params: lsp.DidChangeWatchedFilesParams):
+def did_change_watched_files(ls: AchslintServer, params: lsp.DidChangeWatchedFilesParams) -> None:
     ls.session.forget_disk()
     ls.publish_all()
 
@@ -218,7 +247,9 @@ def did_change_watched_files(ls: AchslintServer, params: lsp.DidChangeWatchedFil
 # -- requests ---------------------------------------------------------------------------------------
 
 
-def _where(ls: AchslintServer, uri: str, position: lsp.Position):
+def _where(
+    ls: AchslintServer, uri: str, position: lsp.Position
+) -> tuple[Document | None, Snapshot | None, int, int]:
     document = ls.session.documents.get(uri)
     if document is None:
         return None, None, 0, 0
@@ -226,10 +257,12 @@ def _where(ls: AchslintServer, uri: str, position: lsp.Position):
     return document, ls.session.snapshot(uri), line, column
 
 
-def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
+def _xml_target(
+    ls: AchslintServer, document: Document, line: int, column: int
+) -> tuple[Context | None, ListFile, int, int] | None:
     """The embedded list, its context and the list position under an XML position (TwinCAT CDATA, ISG XML)."""
     from ..decode import UnreadableInput
-    from ..linter import check_parsed
+    from ..linter import lint_parsed
     from ..syntax import parse_text
     from ..xmlinput import extract
     from .session import xml_bytes
@@ -246,7 +279,7 @@ def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
                 continue
             file = parse_text(embedded.text, document.name)
             config, _ = ls.session.config_for(document)
-            result = check_parsed(
+            result = lint_parsed(
                 file, document.name, ls.session.file_settings(config, document.path, document.name)
             )
             list_column = 1 if embedded.line_map is not None else column - xml_column + 1
@@ -256,10 +289,12 @@ def _xml_target(ls: AchslintServer, document: Document, line: int, column: int):
 
 @server.feature(lsp.TEXT_DOCUMENT_HOVER)
 @guarded()
-def hover(ls: AchslintServer, params: lsp.HoverParams):
+def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None:
     document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
     if document is None or snapshot is None:
         return None
+    context: Context | None
+    file: ListFile | None
     if is_xml(document.name):
         found = _xml_target(ls, document, line, column)
         if found is None:
@@ -279,7 +314,7 @@ def hover(ls: AchslintServer, params: lsp.HoverParams):
     lsp.CompletionOptions(trigger_characters=[".", "[", " ", ":", ","], resolve_provider=True),
 )
 @guarded()
-def completion(ls: AchslintServer, params: lsp.CompletionParams):
+def completion(ls: AchslintServer, params: lsp.CompletionParams) -> lsp.CompletionList | None:
     document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
     if document is None or is_xml(document.name):
         return None
@@ -288,7 +323,7 @@ def completion(ls: AchslintServer, params: lsp.CompletionParams):
 
 @server.feature(lsp.COMPLETION_ITEM_RESOLVE)
 @guarded(default=None)
-def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem):
+def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem) -> lsp.CompletionItem:
     return features.resolve_item(item, ls.markdown)
 
 
@@ -299,14 +334,14 @@ def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem):
     ),
 )
 @guarded(default=list)
-def code_action(ls: AchslintServer, params: lsp.CodeActionParams):
+def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]:
     uri = params.text_document.uri
     document = ls.session.documents.get(uri)
     if document is None:
         return []
     snapshot, found, _ = ls.session.diagnostics(uri)
 
-    def fix_all():
+    def fix_all() -> list[lsp.TextEdit]:
         from ..fixer import fix_bytes
 
         config, _ = ls.session.config_for(document)
@@ -321,47 +356,50 @@ def code_action(ls: AchslintServer, params: lsp.CodeActionParams):
     return features.code_actions(document, snapshot, found, params.range, params.context.only, fix_all)
 
 
-def _list_file(ls: AchslintServer, uri: str):
+def _list_file(ls: AchslintServer, uri: str) -> tuple[Document, ListFile] | None:
+    """An open axis list (not XML) and its parse."""
     document = ls.session.documents.get(uri)
     if document is None or is_xml(document.name):
-        return None, None
+        return None
     snapshot = ls.session.snapshot(uri)
-    return document, snapshot.file if snapshot is not None else None
+    return (document, snapshot.file) if snapshot is not None and snapshot.file is not None else None
 
 
 @server.feature(lsp.TEXT_DOCUMENT_FORMATTING)
 @guarded(default=list)
-def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams):
-    document, file = _list_file(ls, params.text_document.uri)
-    return features.format_document(document, file) if file is not None else []
+def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
+    found = _list_file(ls, params.text_document.uri)
+    return features.format_document(*found) if found is not None else []
 
 
 @server.feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
 @guarded(default=list)
-def range_formatting(ls: AchslintServer, params: lsp.DocumentRangeFormattingParams):
-    document, file = _list_file(ls, params.text_document.uri)
-    return features.format_range(document, file, params.range) if file is not None else []
+def range_formatting(ls: AchslintServer, params: lsp.DocumentRangeFormattingParams) -> list[lsp.TextEdit]:
+    found = _list_file(ls, params.text_document.uri)
+    return features.format_range(*found, params.range) if found is not None else []
 
 
 @server.feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
 @guarded(default=list)
-def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams):
-    document, file = _list_file(ls, params.text_document.uri)
-    return features.document_symbols(document, file) if file is not None else []
+def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams) -> list[lsp.DocumentSymbol]:
+    found = _list_file(ls, params.text_document.uri)
+    return features.document_symbols(*found) if found is not None else []
 
 
 @server.feature(lsp.TEXT_DOCUMENT_DEFINITION)
 @guarded(default=list)
-def definition(ls: AchslintServer, params: lsp.DefinitionParams):
+def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[lsp.Location]:
     document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
     if document is None or is_xml(document.name):
         return []
     if snapshot is not None and snapshot.startup and snapshot.file is None:
         snapshot.file = document.parse()
 
-    def entries():
+    def entries() -> list[StartupEntry]:
         from ..machine import read_startup
 
+        if document.path is None:  # not a file: no start-up list
+            return []
         startup = read_startup(document.path)
         return ([startup.default] if startup.default else []) + startup.axes
 
@@ -370,7 +408,7 @@ def definition(ls: AchslintServer, params: lsp.DefinitionParams):
 
 @server.feature(lsp.TEXT_DOCUMENT_INLAY_HINT)
 @guarded(default=list)
-def inlay_hint(ls: AchslintServer, params: lsp.InlayHintParams):
+def inlay_hint(ls: AchslintServer, params: lsp.InlayHintParams) -> list[lsp.InlayHint]:
     if not ls.session.settings.inlay_hints:
         return []
     document = ls.session.documents.get(params.text_document.uri)

@@ -1,9 +1,9 @@
 """What the language server knows about the open documents, computed by achslint's own API.
 
 Nothing here decides what a finding is: the file-level findings come from the linter
-(`linter.check_parsed` / `check_bytes`, the same path as `achslint lint`), the settings from
+(`linter.lint_parsed` / `lint_file`, the same path as `achslint lint`), the settings from
 the nearest configuration (`config.discover`, `api.file_settings`), and the machine-level
-findings from `api.Linter`'s machine step, fed with the lists of the document's folder (or
+findings from `api.LintRun`'s machine step, fed with the lists of the document's folder (or
 of the start-up list that names it) as the editor has them: open buffers, else the files.
 
 This module does not import pygls: the benchmarks time it directly.
@@ -15,8 +15,9 @@ import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
-from ..api import Linter, LintRequest, Target, file_settings
+from ..api import LintRequest, LintRun, Target, file_settings
 from ..config import (
     ConfigError,
     Overrides,
@@ -24,15 +25,19 @@ from ..config import (
     Settings,
     discover,
     matches_glob,
+    parse_codes,
 )
 from ..decode import UnreadableInput
-from ..diagnostics import Diagnostic
+from ..diagnostics import Diagnostic, Severity
 from ..files import not_a_list_file, read_list
-from ..linter import FileResult, check_bytes, check_parsed
-from ..machine import is_startup_list, read_startup
-from ..syntax import parse_bytes
+from ..linter import FileResult, FileSettings, lint_file, lint_parsed
+from ..machine import Startup, is_startup_list, read_startup
+from ..syntax import ListFile, parse_bytes
 from ..xmlinput import is_xml
 from .documents import Document
+
+if TYPE_CHECKING:
+    from ..context import Context
 
 
 @dataclass
@@ -46,20 +51,28 @@ class ClientSettings:
     ignore: list[str] = field(default_factory=list)
     inlay_hints: bool = False
     debounce_ms: int = 200
+    problems: list[str] = field(default_factory=list)  # codes that pick no rule (shown to the user, not used)
 
     @classmethod
-    def from_dict(cls, raw) -> ClientSettings:
-        if not isinstance(raw, dict):
+    def from_dict(cls, given: object) -> ClientSettings:
+        if not isinstance(given, dict):
             return cls()
-        raw = raw.get("achslint", raw) if isinstance(raw.get("achslint"), dict) else raw
+        raw: dict[str, Any] = given["achslint"] if isinstance(given.get("achslint"), dict) else given
+        problems: list[str] = []
 
-        def codes(key):
+        def codes(key: str) -> list[str] | None:
             value = raw.get(key)
             if isinstance(value, str):
                 value = value.split(",")
             if not isinstance(value, list):
                 return None
-            return [str(c).strip().upper() for c in value if str(c).strip()]
+            chosen = []
+            for code in value:  # the same check as --select and the configuration file
+                try:
+                    chosen.extend(parse_codes([str(code)]))
+                except ValueError as exc:
+                    problems.append(f"achslint.{key}: {exc}")
+            return chosen
 
         debounce = raw.get("debounceMs", raw.get("debounce_ms", 200))
         return cls(
@@ -68,6 +81,7 @@ class ClientSettings:
             ignore=codes("ignore") or [],
             inlay_hints=bool(raw.get("inlayHints", raw.get("inlay_hints", False))),
             debounce_ms=debounce if isinstance(debounce, int) and 0 <= debounce <= 5000 else 200,
+            problems=problems,
         )
 
     @property
@@ -82,8 +96,8 @@ class Snapshot:
     version: int | None
     text: str
     result: FileResult
-    file: object = None  # syntax.ListFile (lists only)
-    context: object = None  # context.Context (lists only)
+    file: ListFile | None = None  # lists only
+    context: Context | None = None  # lists only
     config_error: str | None = None
     startup: bool = False  # a start-up list: only its entries are checked (LIS504), as in `achslint lint`
 
@@ -93,7 +107,7 @@ class Machine:
     """The lists that form a machine with a document, as `achslint lint` would group them."""
 
     targets: list[Target]
-    startups: list
+    startups: list[Startup]
     defaults: Path | None = None  # the default list loaded under the document (start-up list)
 
 
@@ -128,17 +142,17 @@ def _real(path: Path | str) -> str:
 
 
 class Session:
-    def __init__(self, root: Path | None = None):
+    def __init__(self, root: Path | None = None) -> None:
         self.root = root
         self.settings = ClientSettings()
         self.documents: dict[str, Document] = {}
-        self._snapshots: dict[str, Snapshot] = {}
-        self._disk: dict[tuple, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
+        self._snapshots: dict[str, Snapshot | None] = {}  # None: to be linted again
+        self._disk: dict[_DiskKey, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
         self._by_real: dict[str, Document] = {}  # open files by real path
         self._machines: dict[
             str, Machine | None
         ] = {}  # real path of a list -> its machine (until forget_disk)
-        self._machine_found: dict[str, list] = {}  # uri -> the machine findings last reported for it
+        self._machine_found: dict[str, list[_Found]] = {}  # uri -> the machine findings last reported for it
 
     # -- documents ---------------------------------------------------------------------------
     def open(self, document: Document) -> None:
@@ -172,9 +186,8 @@ class Session:
         _REAL.clear()
         self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
         for uri in list(self._snapshots):
-            self._snapshots[uri] = None  # type: ignore[assignment]
-        config._config_in.cache_clear()
-        config._load_cached.cache_clear()
+            self._snapshots[uri] = None
+        config.forget_cached()
 
     # -- configuration -------------------------------------------------------------------------
     def config_for(self, document: Document) -> tuple[ResolvedConfig, str | None]:
@@ -184,7 +197,7 @@ class Session:
         except ConfigError as exc:
             return ResolvedConfig(Settings()), str(exc)
 
-    def file_settings(self, config: ResolvedConfig, path: Path | None, name: str):
+    def file_settings(self, config: ResolvedConfig, path: Path | None, name: str) -> FileSettings:
         settings = file_settings(config, self.settings.overrides, path or Path(name), keep_source=False)
         settings.keep_context = True
         return settings
@@ -210,7 +223,7 @@ class Session:
                 document.version, document.text, FileResult(name, []), config_error=config_error, startup=True
             )
         if is_xml(name):
-            result = check_bytes(xml_bytes(document.text), name, settings)
+            result = lint_file(xml_bytes(document.text), name, settings)
             return Snapshot(document.version, document.text, result, config_error=config_error)
         default_file = None
         machine = self.machine(document)
@@ -220,7 +233,7 @@ class Session:
             except (OSError, UnreadableInput):
                 default_file = None  # the start-up list's LIS504 says why
         file = document.parse()
-        result = check_parsed(file, name, settings, default_file)
+        result = lint_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
 
     def diagnostics(self, uri: str) -> tuple[Snapshot | None, list[Diagnostic], list[str]]:
@@ -292,7 +305,7 @@ class Session:
         return Machine(targets, [startup], defaults)
 
     @staticmethod
-    def _read_startup(path: Path):
+    def _read_startup(path: Path) -> Startup:
         """A start-up list's entries, as saved on disk (the CNC and `achslint lint` read the file too)."""
         return read_startup(path)
 
@@ -322,18 +335,20 @@ class Session:
             ):
                 continue
             targets.append(Target(str(candidate), candidate, self._config(candidate), machine=str(folder)))
-        if not any(_real(t.path) == _real(path) for t in targets):
+        if not any(_real(t.path or t.name) == _real(path) for t in targets):
             return None  # not a list `lint FOLDER` would take: no machine rules, as on the command line
         return Machine(targets, [])
 
     def _summary_result(self, target: Target) -> FileResult:
         """A member's result (its summary is what the machine rules compare): open buffer or file."""
-        document = self.by_path(target.path)
-        if document is not None and not is_startup_list(target.path):
+        path = target.path or Path(target.name)  # the lists of a machine are files
+        document = self.by_path(path)
+        if document is not None and not is_startup_list(path):
             snapshot = self.snapshot(document.uri)
-            return FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
+            if snapshot is not None:  # an open document always has one
+                return FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
         try:
-            info = os.stat(target.path)
+            info = os.stat(path)
             stamp = (info.st_mtime_ns, info.st_size)
             defaults_stamp = None
             if target.defaults is not None:
@@ -341,36 +356,36 @@ class Session:
                 defaults_stamp = (str(target.defaults), default_info.st_mtime_ns, default_info.st_size)
         except OSError as exc:
             return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
-        key = (_real(target.path), stamp, defaults_stamp, repr(self.settings.overrides))
+        key = (_real(path), stamp, defaults_stamp, repr(self.settings.overrides))
         cached = self._disk.get(key)
         if cached is None:
             try:
-                data = read_list(target.path)
+                data = read_list(path)
                 defaults = self.text_of(target.defaults) if target.defaults is not None else None
             except OSError as exc:
                 return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
-            settings = file_settings(target.config, self.settings.overrides, target.path, keep_source=False)
-            full = check_bytes(data, target.name, settings, defaults)
+            settings = file_settings(target.config, self.settings.overrides, path, keep_source=False)
+            full = lint_file(data, target.name, settings, defaults)
             cached = self._disk[key] = FileResult(target.name, [], full.error, summary=full.summary)
         return FileResult(target.name, [], cached.error, summary=cached.summary)
 
     def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> dict[str, list[Diagnostic]]:
         """The machine-level findings of every list of the document's machine, by real path."""
         machine = self.machine(document)
-        if machine is None:
+        if machine is None or document.path is None:
             return {}
         real = _real(document.path)
-        results = []
+        results: list[FileResult] = []
         for target in machine.targets:
-            if _real(target.path) == real and not snapshot.startup:
+            if _real(target.path or target.name) == real and not snapshot.startup:
                 results.append(
                     FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
                 )
             else:
                 results.append(self._summary_result(target))
-        linter = Linter(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
+        linter = LintRun(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
         linter.startups = machine.startups
-        extra = linter._machine_level(machine.targets, results)
+        extra = linter.machine_level(machine.targets, results)
         found: dict[str, list[Diagnostic]] = {}
         for result in results + extra:
             found.setdefault(_real(result.name), []).extend(result.diagnostics)
@@ -381,5 +396,9 @@ class Session:
         return found
 
 
-def _key(d: Diagnostic) -> tuple:
+_Found = tuple[int, int, str, str, Severity]  # what tells two findings apart (for `peers`)
+_DiskKey = tuple[str, tuple[int, int], tuple[str, int, int] | None, str]
+
+
+def _key(d: Diagnostic) -> _Found:
     return (d.line, d.column, d.code, d.message, d.severity)

@@ -7,26 +7,66 @@ use only the standard library and never colour their output.
 from __future__ import annotations
 
 import importlib
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Protocol, TextIO
+
+
+@dataclass(frozen=True)
+class Reporter:
+    """An output format: the module with its `report` function, and what the report needs."""
+
+    module: str
+    text: bool = False  # for people: `--statistics` replaces it, the closing summary lines follow it
+    needs_source: bool = False  # shows the lines of the list (the linter keeps them only when asked)
+
+
+if TYPE_CHECKING:
+    from ..diagnostics import Diagnostic
+
+
+class LintResult(Protocol):
+    """What a reporter reads of one file's result (`linter.FileResult`)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def diagnostics(self) -> list[Diagnostic]: ...
+    @property
+    def error(self) -> str | None: ...  # the file could not be read at all
+    @property
+    def source_lines(self) -> list[str]: ...
+    @property
+    def fail_on(self) -> str: ...  # the lowest severity that fails the run for this file
+
+
+class ReportFunction(Protocol):
+    """`report(results, stream, **options)`: the options a format does not use are ignored (`color`,
+    `sources` for code frames, `docs_url`)."""
+
+    def __call__(self, results: Sequence[LintResult], stream: TextIO, **options: Any) -> None: ...
+
 
 REPORTERS = {
-    "full": "full",
-    "concise": "concise",
-    "json": "json_format",
-    "sarif": "sarif",
-    "github": "github",
-    "gitlab": "gitlab",
-    "junit": "junit",
+    "full": Reporter("full", text=True, needs_source=True),
+    "concise": Reporter("concise", text=True),
+    "json": Reporter("json_format"),
+    "sarif": Reporter("sarif"),
+    "github": Reporter("github"),
+    "gitlab": Reporter("gitlab", needs_source=True),
+    "junit": Reporter("junit"),
 }
 
 
-def write_json(document, stream) -> None:
+def write_json(document: object, stream: TextIO) -> None:
     """The machine formats that are JSON (json, sarif, gitlab) write through here: strict JSON, one document."""
     from ..display import json_text
 
     stream.write(json_text(document) + "\n")
 
 
-def get(name: str):
+def get(name: str) -> ReportFunction:
     """The `report(results, stream, **options)` function of a format."""
-    module = importlib.import_module(f"{__name__}.{REPORTERS[name]}")
-    return module.report
+    module = importlib.import_module(f"{__name__}.{REPORTERS[name].module}")
+    report: ReportFunction = module.report
+    return report

@@ -2,10 +2,16 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TextIO
+
 from ..display import printable
 
+if TYPE_CHECKING:
+    from . import LintResult
 
-def report(results, stream, **_options) -> None:
+
+def report(results: Sequence[LintResult], stream: TextIO, **_options: object) -> None:
     for result in results:
         if result.error:
             continue

@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
-from ..diagnostics import Severity
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TextIO
+
+from ..diagnostics import Diagnostic, Severity
 from ..display import printable
+
+if TYPE_CHECKING:
+    from . import LintResult
 
 _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
 
 
-def _frame(lines: list[str], d) -> list[tuple[str, str]]:
+def _frame(lines: list[str], d: Diagnostic) -> list[tuple[str, str]]:
     """(gutter, text) rows: the faulty line and one line of context before it."""
-    rows = []
+    rows: list[tuple[str, str]] = []
     first = max(d.line - 1, 1)
     width = len(str(d.line))
     for number in range(first, d.line + 1):
@@ -19,7 +25,7 @@ def _frame(lines: list[str], d) -> list[tuple[str, str]]:
     return rows
 
 
-def _caret(line: str, d) -> str:
+def _caret(line: str, d: Diagnostic) -> str:
     """Carets under the faulty span, placed by what is shown (escapes are wider than the character)."""
     shown = line.expandtabs(1)  # a tab is one column in positions and one blank on screen
     end = d.end_column if d.end_line == d.line else len(shown) + 1
@@ -29,7 +35,12 @@ def _caret(line: str, d) -> str:
 
 
 def report(
-    results, stream, *, color: bool = False, sources: dict[str, list[str]] | None = None, **_options
+    results: Sequence[LintResult],
+    stream: TextIO,
+    *,
+    color: bool = False,
+    sources: dict[str, list[str]] | None = None,
+    **_options: object,
 ) -> None:
     from rich.console import Console
     from rich.text import Text

@@ -2,8 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TextIO
+
 from ..diagnostics import Severity
 from ..display import printable
+
+if TYPE_CHECKING:
+    from . import LintResult
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
 
@@ -17,7 +23,7 @@ def _property(text: str) -> str:
     return _data(text).replace(":", "%3A").replace(",", "%2C")
 
 
-def report(results, stream, **_options) -> None:
+def report(results: Sequence[LintResult], stream: TextIO, **_options: object) -> None:
     for result in results:
         if result.error:
             stream.write(f"::error file={_property(result.name)}::{_data(result.error)}\n")

@@ -3,9 +3,14 @@
 from __future__ import annotations
 
 import hashlib
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TextIO, TypedDict
 
 from ..diagnostics import Severity
 from . import write_json
+
+if TYPE_CHECKING:
+    from . import LintResult
 
 SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
 
@@ -17,10 +22,32 @@ def fingerprint(path: str, code: str, anchor: str, occurrence: int) -> str:
     return hashlib.sha256(key.encode("utf-8", "surrogatepass")).hexdigest()  # names need not be UTF-8
 
 
-def issues(results) -> list[dict]:
-    found = []
+class Lines(TypedDict):
+    begin: int
+    end: int
+
+
+class Location(TypedDict):
+    path: str
+    lines: Lines
+
+
+class Issue(TypedDict):
+    """One entry of the report (GitLab's Code Quality format)."""
+
+    type: str
+    check_name: str
+    description: str
+    categories: list[str]
+    severity: str
+    fingerprint: str
+    location: Location
+
+
+def issues(results: Sequence[LintResult]) -> list[Issue]:
+    found: list[Issue] = []
     for result in results:
-        seen: dict[tuple, int] = {}
+        seen: dict[tuple[str, str, str], int] = {}
         for d in result.diagnostics:
             source = result.source_lines[d.line - 1].strip() if d.line - 1 < len(result.source_lines) else ""
             anchor = d.parameter or source
@@ -40,5 +67,5 @@ def issues(results) -> list[dict]:
     return found
 
 
-def report(results, stream, **_options) -> None:
+def report(results: Sequence[LintResult], stream: TextIO, **_options: object) -> None:
     write_json(issues(results), stream)

@@ -2,20 +2,88 @@
 
 from __future__ import annotations
 
-from dataclasses import asdict
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TextIO, TypedDict
 
 from ..diagnostics import Diagnostic, rule_url
 from . import write_json
 
+if TYPE_CHECKING:
+    from . import LintResult
 
-def diagnostic_dict(d: Diagnostic, docs_url: str | None = None) -> dict:
-    fix = None
+# The document, as `SCHEMA` below describes it.
+
+
+class EditData(TypedDict):
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+    content: str
+
+
+class FixData(TypedDict):
+    applicability: str
+    description: str
+    remove_bom: bool
+    edits: list[EditData]
+
+
+class RelatedData(TypedDict):
+    path: str
+    line: int
+    column: int
+    parameter: str | None
+    message: str
+
+
+class DiagnosticData(TypedDict):
+    path: str
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+    code: str
+    severity: str
+    message: str
+    parameter: str | None
+    p_axis: str | None
+    related: list[RelatedData]
+    fix: FixData | None
+    url: str
+
+
+class Summary(TypedDict):
+    files: int
+    errors: int
+    warnings: int
+    infos: int
+    unreadable: list[str]
+
+
+class LintDocument(TypedDict):
+    version: int
+    diagnostics: list[DiagnosticData]
+    summary: Summary
+
+
+def diagnostic_dict(d: Diagnostic, docs_url: str | None = None) -> DiagnosticData:
+    fix: FixData | None = None
     if d.fix is not None:
         fix = {
             "applicability": d.fix.applicability,
             "description": d.fix.description,
             "remove_bom": d.fix.remove_bom,
-            "edits": [asdict(edit) for edit in d.fix.edits],
+            "edits": [
+                {
+                    "line": edit.line,
+                    "column": edit.column,
+                    "end_line": edit.end_line,
+                    "end_column": edit.end_column,
+                    "content": edit.content,
+                }
+                for edit in d.fix.edits
+            ],
         }
     return {
         "path": d.path,
@@ -43,7 +111,7 @@ def diagnostic_dict(d: Diagnostic, docs_url: str | None = None) -> dict:
     }
 
 
-def document(results, docs_url: str | None = None) -> dict:
+def document(results: Sequence[LintResult], docs_url: str | None = None) -> LintDocument:
     diagnostics = [d for result in results for d in result.diagnostics]
     counts = {"error": 0, "warning": 0, "info": 0}
     for d in diagnostics:
@@ -61,7 +129,9 @@ def document(results, docs_url: str | None = None) -> dict:
     }
 
 
-def report(results, stream, docs_url: str | None = None, **_options) -> None:
+def report(
+    results: Sequence[LintResult], stream: TextIO, docs_url: str | None = None, **_options: object
+) -> None:
     write_json(document(results, docs_url), stream)
 
 

@@ -8,12 +8,17 @@ unstable by Jenkins.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TextIO
 
 from ..diagnostics import Severity
 from ..display import printable
 
+if TYPE_CHECKING:
+    from . import LintResult
 
-def document(results) -> ET.Element:
+
+def document(results: Sequence[LintResult]) -> ET.Element:
     root = ET.Element("testsuites", name="achslint")
     total = failures = 0
     for result in results:
@@ -56,7 +61,7 @@ def document(results) -> ET.Element:
     return root
 
 
-def report(results, stream, **_options) -> None:
+def report(results: Sequence[LintResult], stream: TextIO, **_options: object) -> None:
     root = document(results)
     ET.indent(root)
     stream.write('<?xml version="1.0" encoding="UTF-8"?>\n')

@@ -3,12 +3,21 @@
 from __future__ import annotations
 
 import hashlib
+from collections.abc import Mapping, Sequence
 from pathlib import Path, PurePosixPath
+from typing import TYPE_CHECKING, Any, TextIO
 from urllib.parse import quote
 
 from .. import __version__
-from ..diagnostics import Severity, rule_url
+from ..diagnostics import Diagnostic, Severity, rule_url
 from . import write_json
+
+if TYPE_CHECKING:
+    from ..rules import Rule
+    from . import LintResult
+
+# The document follows the SARIF 2.1.0 schema (the tests validate it); its parts are plain JSON objects.
+JsonObject = dict[str, Any]
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
@@ -25,7 +34,7 @@ def artifact_uri(path: str) -> str:
     return quote(PurePosixPath(*candidate.parts).as_posix(), safe="/", errors="surrogateescape")
 
 
-def _region(line: int, column: int, end_line: int, end_column: int) -> dict:
+def _region(line: int, column: int, end_line: int, end_column: int) -> JsonObject:
     return {
         "startLine": line,
         "startColumn": column,
@@ -34,7 +43,7 @@ def _region(line: int, column: int, end_line: int, end_column: int) -> dict:
     }
 
 
-def _fingerprint(d) -> str:
+def _fingerprint(d: Diagnostic) -> str:
     """Stable across runs and line shifts: the rule, the file and what the finding is about."""
     subject = d.parameter or d.message
     return hashlib.sha256(f"{d.code}\0{d.path}\0{subject}".encode("utf-8", "backslashreplace")).hexdigest()[
@@ -42,12 +51,12 @@ def _fingerprint(d) -> str:
     ]
 
 
-def _rules(docs_url: str | None) -> list[dict]:
+def _rules(docs_url: str | None, chosen: Mapping[str, Rule] | None) -> list[JsonObject]:
     from ..docs import rule_text
     from ..rules import registry
 
-    rules = []
-    for rule in registry().values():
+    rules: list[JsonObject] = []
+    for rule in (registry() if chosen is None else chosen).values():
         rules.append(
             {
                 "id": rule.code,
@@ -63,13 +72,16 @@ def _rules(docs_url: str | None) -> list[dict]:
     return rules
 
 
-def document(results, docs_url: str | None = None) -> dict:
-    rules = _rules(docs_url)
-    index = {rule["id"]: position for position, rule in enumerate(rules)}
-    sarif_results = []
+def document(
+    results: Sequence[LintResult], docs_url: str | None = None, rules: Mapping[str, Rule] | None = None
+) -> JsonObject:
+    """The SARIF log; `rules` (default: every registered rule) are the rules its driver describes."""
+    described = _rules(docs_url, rules)
+    index = {rule["id"]: position for position, rule in enumerate(described)}
+    sarif_results: list[JsonObject] = []
     for result in results:
         for d in result.diagnostics:
-            entry = {
+            entry: JsonObject = {
                 "ruleId": d.code,
                 "ruleIndex": index.get(d.code, -1),
                 "level": LEVELS[d.severity],
@@ -104,7 +116,7 @@ def document(results, docs_url: str | None = None) -> dict:
             if d.p_axis:
                 entry["properties"] = {"p_axis": d.p_axis}
             sarif_results.append(entry)
-    invocation = {"executionSuccessful": not any(r.error for r in results)}
+    invocation: JsonObject = {"executionSuccessful": not any(r.error for r in results)}
     notifications = [{"level": "error", "message": {"text": r.error}} for r in results if r.error]
     if notifications:
         invocation["toolExecutionNotifications"] = notifications
@@ -118,7 +130,7 @@ def document(results, docs_url: str | None = None) -> dict:
                         "name": "achslint",
                         "version": __version__,
                         "informationUri": rule_url("index", docs_url).split("#", 1)[0],
-                        "rules": rules,
+                        "rules": described,
                     }
                 },
                 "invocations": [invocation],
@@ -128,5 +140,7 @@ def document(results, docs_url: str | None = None) -> dict:
     }
 
 
-def report(results, stream, docs_url: str | None = None, **_options) -> None:
+def report(
+    results: Sequence[LintResult], stream: TextIO, docs_url: str | None = None, **_options: object
+) -> None:
     write_json(document(results, docs_url), stream)

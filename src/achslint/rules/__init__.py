@@ -7,7 +7,9 @@ of diagnostics — or, for rules about the other rules' results (LIS009), a
 `check_after(ctx, directives, enabled)` generator that runs after
 suppressions were applied, or — for machine-level rules (LIS5xx) — a
 `check_machine(members, startups)` generator over the summaries of a machine's
-axis lists. `achslint rule CODE` prints that docstring.
+axis lists, or — for homing-program rules (LIS6xx) — a `check_program(program,
+machine)` generator over a program read against a machine (`programlint`).
+`achslint rule CODE` prints that docstring.
 """
 
 from __future__ import annotations
@@ -18,8 +20,23 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from types import ModuleType
+from typing import TYPE_CHECKING, Any
 
-from ..diagnostics import Severity
+from ..diagnostics import Diagnostic, Severity
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..machine import Startup
+    from ..machinemodel import Machine, Program
+    from ..suppression import Directive
+
+# A list of a machine for the machine-level rules: its name and what `machine.summary` took from it.
+MachineMember = tuple[str, dict[str, Any]]
+# The kinds of rule function (see the module docstring).
+Check = Callable[["Context"], Iterable[Diagnostic]]
+CheckAfter = Callable[["Context", "list[Directive]", Callable[[str], bool]], Iterable[Diagnostic]]
+CheckMachine = Callable[[list[MachineMember], "list[Startup]"], Iterable[Diagnostic]]
+CheckProgram = Callable[["Program", "Machine"], Iterable[Diagnostic]]
 
 RULE_MODULES = (
     "lis001_syntax_error",
@@ -76,6 +93,13 @@ RULE_MODULES = (
     "lis503_gantry_master_missing",
     "lis504_missing_list",
     "lis505_xml_axis_definition",
+    "lis601_program_text",
+    "lis602_unknown_axis",
+    "lis603_axis_twice_in_g74",
+    "lis604_disabled_axis_homed",
+    "lis605_gantry_slave_alone",
+    "lis606_move_before_homing",
+    "lis607_ignored_axis_beside_moving_axes",
 )
 
 SECTIONS = ("What", "Why", "Example", "Use instead", "Reference")
@@ -89,11 +113,12 @@ class Rule:
     fix: str
     summary: str
     doc: str
-    check: Callable | None
+    check: Check | None
     module: ModuleType
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
-    check_after: Callable | None = None
-    check_machine: Callable | None = None
+    check_after: CheckAfter | None = None
+    check_machine: CheckMachine | None = None
+    check_program: CheckProgram | None = None  # LIS6xx: check_program(program, machine), see programlint
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
 
     def section(self, title: str) -> str:
@@ -119,6 +144,7 @@ def registry() -> dict[str, Rule]:
             parameters=tuple(getattr(module, "PARAMETERS", ())),
             check_after=getattr(module, "check_after", None),
             check_machine=getattr(module, "check_machine", None),
+            check_program=getattr(module, "check_program", None),
             produced_by=getattr(module, "PRODUCED_BY", "lint"),
         )
     return rules

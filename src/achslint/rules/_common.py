@@ -2,26 +2,44 @@
 
 from __future__ import annotations
 
-from ..catalogue import BOOL, INTEGER, REAL, SYMBOL
-from ..diagnostics import Edit, Fix
+from collections.abc import Callable, Iterable, Iterator
+from typing import TYPE_CHECKING, TypeVar
+
+from ..catalogue import BOOL, INTEGER, REAL, SYMBOL, Parameter
+from ..diagnostics import Diagnostic, Edit, Fix
+from ..facts import ValueFact
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..context import Context
+    from ..syntax import Line
+
+F = TypeVar("F", bound=ValueFact)
+
+
+def known_settings(settings: Iterable[Setting]) -> Iterator[tuple[Setting, Parameter, str]]:
+    """The assignments of catalogue parameters (not misspelt), each with its parameter and canonical path."""
+    for setting in settings:
+        if setting.canonical is not None and setting.resolution is not None:
+            yield setting, setting.resolution.parameter, setting.canonical
 
 
 def value_facts(
-    ctx,
+    ctx: Context,
     code: str,
-    kinds: tuple[type, ...],
-    message,
-    replacement=None,
+    kinds: tuple[type[F], ...],
+    message: Callable[[F, Setting, Parameter], str],
+    replacement: Callable[[F], str | None] | None = None,
     applicability: str = "safe",
     to_line_end: bool = False,
-):
+) -> Iterator[Diagnostic]:
     """Report every fact of the given kinds that the conversion stage recorded for a value.
 
-    `message(fact, setting)` words the finding; `replacement(fact)`, when given and not None, is a value
-    written in place of the old one as a fix of the given applicability. With `to_line_end` the finding
-    reaches from the fact's start to the end of the line.
+    `message(fact, setting, parameter)` words the finding; `replacement(fact)`, when given and not None,
+    is a value written in place of the old one as a fix of the given applicability. With `to_line_end` the
+    finding reaches from the fact's start to the end of the line.
     """
-    for setting in ctx.settings:
+    for setting, parameter, _ in known_settings(ctx.settings):  # facts are only made for known parameters
         for fact in setting.problems:
             if not isinstance(fact, kinds):
                 continue
@@ -38,11 +56,17 @@ def value_facts(
                     (Edit(line.number, start, line.number, start + len(line.value), new),),
                 )
             yield ctx.report(
-                code, line, message(fact, setting), column=start, end_column=end, setting=setting, fix=fix
+                code,
+                line,
+                message(fact, setting, parameter),
+                column=start,
+                end_column=end,
+                setting=setting,
+                fix=fix,
             )
 
 
-def expected(parameter) -> str:
+def expected(parameter: Parameter) -> str:
     """What a value of the parameter looks like, for messages."""
     kind = parameter.kind
     if kind == BOOL:
@@ -56,10 +80,11 @@ def expected(parameter) -> str:
     return "a string"
 
 
-def replace_path_fix(line, new_path: str, applicability: str) -> Fix:
+def replace_path_fix(line: Line, new_path: str, applicability: str) -> Fix:
     start = line.path_column
+    path = line.path or ""
     return Fix(
         applicability,
-        f"rename `{line.path}` to `{new_path}`",
-        (Edit(line.number, start, line.number, start + len(line.path), new_path),),
+        f"rename `{path}` to `{new_path}`",
+        (Edit(line.number, start, line.number, start + len(path), new_path),),
     )

@@ -37,8 +37,14 @@ list format facts §2 and §5.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from .. import syntax
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS001"
 NAME = "syntax-error"
@@ -73,7 +79,7 @@ def explain_bad_path(path: str) -> str:
     return "not a valid parameter path"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     lines = ctx.file.lines
     stop = ctx.file.end_index if ctx.file.end_index is not None else len(lines)
     for line in lines[:stop]:
@@ -81,14 +87,15 @@ def check(ctx):
             continue
         if not line.path_ok:
             start, end = ctx.path_span(line)
+            path = line.path or ""
             yield ctx.report(
                 CODE,
                 line,
-                f"syntax error in `{line.path}`: {explain_bad_path(line.path)}",
+                f"syntax error in `{path}`: {explain_bad_path(path)}",
                 column=start,
                 end_column=end,
             )
-        elif line.value_kind == syntax.BAD_STRING:
+        elif line.value_kind == syntax.BAD_STRING and line.value is not None:
             start = line.value_column
             closing = line.value.find('"', 1)
             if closing < 0:

@@ -32,8 +32,14 @@ List format facts §4: every real list ends with `Ende`.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from .. import syntax
-from ..diagnostics import Edit, Fix
+from ..diagnostics import Diagnostic, Edit, Fix
+
+if TYPE_CHECKING:
+    from ..context import Context
 
 CODE = "LIS002"
 NAME = "missing-end-marker"
@@ -42,7 +48,7 @@ FIX = "safe"
 SUMMARY = "List does not end with `Ende`"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     lines = ctx.file.lines
     if ctx.file.end_index is not None or any(syntax.is_misspelt_end(line) for line in lines):
         return

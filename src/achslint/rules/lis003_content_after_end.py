@@ -32,8 +32,14 @@ List format facts §4 (end marker; content after it is ignored).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from .. import syntax
-from ..diagnostics import Related
+from ..diagnostics import Diagnostic, Related
+
+if TYPE_CHECKING:
+    from ..context import Context
 
 CODE = "LIS003"
 NAME = "content-after-end"
@@ -42,7 +48,7 @@ FIX = "none"
 SUMMARY = "Parameter lines after `Ende` are ignored by the CNC"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     end = ctx.file.end_index
     if end is None:
         return

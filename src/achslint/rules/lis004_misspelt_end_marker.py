@@ -31,8 +31,14 @@ Documented inconsistency E.46 (end marker); list format facts §4.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from .. import syntax
-from ..diagnostics import Edit, Fix
+from ..diagnostics import Diagnostic, Edit, Fix
+
+if TYPE_CHECKING:
+    from ..context import Context
 
 CODE = "LIS004"
 NAME = "misspelt-end-marker"
@@ -41,7 +47,7 @@ FIX = "safe"
 SUMMARY = "`End` written instead of the end marker `Ende`"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     stop = ctx.file.end_index if ctx.file.end_index is not None else len(ctx.file.lines)
     for line in ctx.file.lines[:stop]:
         if syntax.is_misspelt_end(line):

@@ -34,6 +34,13 @@ List format facts §7 (repetition); SDK message 2056 "parameter already has a va
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS005"
 NAME = "duplicate-parameter"
 SEVERITY = "warning"
@@ -41,7 +48,7 @@ FIX = "none"
 SUMMARY = "Parameter assigned more than once"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     for canonical, group in ctx.analysis.by_canonical().items():
         if len(group) < 2:
             continue

@@ -36,7 +36,13 @@ CNC error 21798 (UTF byte-order mark found; save the file as ASCII); list format
 
 from __future__ import annotations
 
-from ..diagnostics import Fix
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic, Fix
+
+if TYPE_CHECKING:
+    from ..context import Context
 
 CODE = "LIS006"
 NAME = "byte-order-mark"
@@ -45,7 +51,7 @@ FIX = "safe"
 SUMMARY = "UTF-8 byte-order mark at the start of the file"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     if ctx.file.bom:
         first = ctx.file.lines[0]
         yield ctx.report(

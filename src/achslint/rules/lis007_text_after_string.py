@@ -32,8 +32,17 @@ documented inconsistency E.49.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..facts import CommentReadAsValue, TextAfterString
 from ._common import value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS007"
 NAME = "text-after-string"
@@ -41,10 +50,11 @@ SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Text after a string value that is not a `(` comment"
 
-FACTS = (CommentReadAsValue, TextAfterString)
+Fact = CommentReadAsValue | TextAfterString
+FACTS: tuple[type[Fact], ...] = (CommentReadAsValue, TextAfterString)
 
 
-def message(fact, setting) -> str:
+def message(fact: Fact, setting: Setting, parameter: Parameter) -> str:
     name = setting.canonical
     if isinstance(fact, CommentReadAsValue):
         return (
@@ -58,5 +68,5 @@ def message(fact, setting) -> str:
     )
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message, to_line_end=True)

@@ -40,8 +40,14 @@ List format facts §2 and §8.
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from .. import syntax
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS008"
 NAME = "mixed-style"
@@ -52,7 +58,7 @@ SUMMARY = "Mixed line endings or tab/space separators"
 _NAMES = {"\r\n": "CRLF", "\n": "LF", "\r": "CR"}
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     lines = ctx.file.lines
     endings = Counter(line.newline for line in lines if line.newline)
     if len(endings) > 1:
@@ -79,6 +85,6 @@ def check(ctx):
             odd,
             f"{len(styles['tab'])} lines separate name and value with tabs, {len(styles['space'])} with spaces; "
             f"this line uses {kind}",
-            column=odd.path_column + len(odd.path),
+            column=odd.path_column + len(odd.path or ""),
             end_column=odd.value_column,
         )

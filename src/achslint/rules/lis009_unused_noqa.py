@@ -32,6 +32,14 @@ achslint suppression comments (README, Suppressions).
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+    from ..suppression import Directive
+
 CODE = "LIS009"
 NAME = "unused-noqa"
 SEVERITY = "warning"
@@ -39,7 +47,9 @@ FIX = "none"
 SUMMARY = "Suppression comment that suppresses nothing"
 
 
-def check_after(ctx, directives, enabled):
+def check_after(
+    ctx: Context, directives: list[Directive], enabled: Callable[[str], bool]
+) -> Iterator[Diagnostic]:
     """Runs after the other rules and the suppressions, with every `noqa` directive of the file."""
     from . import known_codes, selector_problem
 
@@ -72,5 +82,5 @@ def check_after(ctx, directives, enabled):
             )
 
 
-def _report(ctx, directive, message):
+def _report(ctx: Context, directive: Directive, message: str) -> Diagnostic:
     return ctx.report(CODE, directive.line, message, column=directive.column, end_column=directive.end_column)

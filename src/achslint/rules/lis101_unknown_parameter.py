@@ -37,11 +37,17 @@ Parameter catalogue (P-AXIS ids and paths); documented inconsistencies A.1–A.9
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from .. import syntax
 from ..catalogue import fill_indices
-from ..diagnostics import Severity
+from ..diagnostics import Diagnostic, Severity
 from ._common import replace_path_fix
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..context import Context
 
 CODE = "LIS101"
 NAME = "unknown-parameter"
@@ -58,12 +64,12 @@ def _with_indices(pattern: str, indices: tuple[int, ...]) -> tuple[str, bool]:
     return fill_indices(pattern, (0,) * count), False
 
 
-def _diagnose(ctx, setting):
+def _diagnose(ctx: Context, setting: Setting) -> tuple[str, str | None, str | None]:
     """(message, suggestion, fix applicability or None) for an unknown path."""
-    path = setting.line.path
+    path = setting.line.path or ""
     cat = ctx.catalogue
     pattern, indices = syntax.path_pattern(path)
-    if setting.misspelt:
+    if setting.misspelt and setting.resolution is not None:
         target = setting.resolution.canonical
         return (
             f"unknown parameter `{path}` (a spelling found in manuals); the CNC name is `{target}`",
@@ -97,7 +103,7 @@ def _diagnose(ctx, setting):
     return message, best, "safe" if unambiguous else None
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     mode = ctx.options.unknown_parameters
     if mode == "ignore":
         return

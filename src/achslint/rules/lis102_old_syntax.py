@@ -29,7 +29,14 @@ P-AXIS-00299 (footnote on the older notation); documented inconsistency A.2.
 
 from __future__ import annotations
 
-from ._common import replace_path_fix
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ._common import known_settings, replace_path_fix
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS102"
 NAME = "old-syntax"
@@ -38,18 +45,18 @@ FIX = "safe"
 SUMMARY = "Old parameter name (still accepted)"
 
 
-def check(ctx):
-    for setting in ctx.settings:
-        if setting.known and setting.spelling == "old":
+def check(ctx: Context) -> Iterator[Diagnostic]:
+    for setting, parameter, canonical in known_settings(ctx.settings):
+        if setting.spelling == "old":
             line = setting.line
             start, end = ctx.path_span(line)
             yield ctx.report(
                 CODE,
                 line,
-                f"`{line.path}` is the old name of {setting.parameter.id} `{setting.canonical}`; "
+                f"`{line.path}` is the old name of {parameter.id} `{canonical}`; "
                 f"it still works, but prefer the current name",
                 column=start,
                 end_column=end,
                 setting=setting,
-                fix=replace_path_fix(line, setting.canonical, "safe"),
+                fix=replace_path_fix(line, canonical, "safe"),
             )

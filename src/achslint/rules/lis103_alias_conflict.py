@@ -33,6 +33,13 @@ Documented inconsistency A.2 (both spellings accepted; conflicting values are an
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS103"
 NAME = "alias-conflict"
 SEVERITY = "error"
@@ -40,7 +47,7 @@ FIX = "none"
 SUMMARY = "Parameter and its old name set with different values"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     for canonical, group in ctx.analysis.by_canonical().items():
         spellings = {s.spelling for s in group}
         if "old" not in spellings or len(spellings) < 2:
@@ -54,7 +61,7 @@ def check(ctx):
                 CODE,
                 setting.line,
                 f"`{setting.line.path}` = `{setting.written_value}` contradicts `{first.line.path}` = "
-                f"`{first.written_value}` on line {first.line.number}; both set {setting.parameter.id} "
+                f"`{first.written_value}` on line {first.line.number}; both set {ctx.values.parameter(canonical).id} "
                 f"`{canonical}`, keep one",
                 column=start,
                 end_column=end,

@@ -28,8 +28,17 @@ Array bounds of the parameter metadata (catalogue `index_bounds`).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..facts import IndexOutOfBounds
 from ._common import value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS104"
 NAME = "index-out-of-bounds"
@@ -40,13 +49,13 @@ SUMMARY = "Array index out of bounds"
 FACTS = (IndexOutOfBounds,)
 
 
-def message(fact: IndexOutOfBounds, setting) -> str:
+def message(fact: IndexOutOfBounds, setting: Setting, parameter: Parameter) -> str:
     shown = fact.index if fact.index is not None else f"`{fact.written}`"
     return (
-        f"index {shown} of `{fact.array}` in `{setting.line.path}` is out of bounds: {setting.parameter.id} allows "
+        f"index {shown} of `{fact.array}` in `{setting.line.path}` is out of bounds: {parameter.id} allows "
         f"{fact.array}[{fact.low}]..{fact.array}[{fact.high}] (indices are zero-based)"
     )
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message)

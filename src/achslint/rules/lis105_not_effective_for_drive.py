@@ -41,7 +41,15 @@ homing parameters matter for the configured strategy is LIS401's job.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..catalogue import AXIS_TYPE_NAMES
+from ._common import known_settings
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS105"
 NAME = "not-effective-for-drive"
@@ -55,18 +63,17 @@ _DEFINING = {"P-AXIS-00018", "P-AXIS-00020"}
 _REPORTED_ELSEWHERE = {"P-AXIS-00074"}
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     analysis = ctx.analysis
     drive = analysis.drive_type
     names = ctx.catalogue.drive_type_names
-    for setting in ctx.settings:
-        if not setting.known or setting.problems or setting.parameter.id in _DEFINING | _REPORTED_ELSEWHERE:
+    for setting, parameter, canonical in known_settings(ctx.settings):
+        if setting.problems or parameter.id in _DEFINING | _REPORTED_ELSEWHERE:
             continue  # a rejected value is reported by the value rules
-        if ctx.values.correction(setting.canonical) is not None:
+        if ctx.values.correction(canonical) is not None:
             continue  # the CNC corrects it at load: the rule reporting the correction says more
-        if setting.value is not None and setting.value == setting.parameter.typed_default:
+        if setting.value is not None and setting.value == parameter.typed_default:
             continue  # writing the default changes nothing, effective or not
-        parameter = setting.parameter
         line = setting.line
         start, end = ctx.path_span(line)
         if drive is not None and parameter.drive_group and drive not in parameter.drive_group:

@@ -34,8 +34,17 @@ Data types of the catalogue (P-AXIS parameter pages); BOOLEAN is 0/1 (axis param
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..facts import MissingValue, NotBoolean, RealForInteger, TextForNumber
 from ._common import expected, value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS201"
 NAME = "wrong-type"
@@ -43,11 +52,12 @@ SEVERITY = "error"
 FIX = "sometimes"
 SUMMARY = "Value of the wrong data type"
 
-FACTS = (MissingValue, NotBoolean, RealForInteger, TextForNumber)
+Fact = MissingValue | NotBoolean | RealForInteger | TextForNumber
+FACTS: tuple[type[Fact], ...] = (MissingValue, NotBoolean, RealForInteger, TextForNumber)
 
 
-def message(fact, setting) -> str:
-    name, parameter = setting.canonical, setting.parameter
+def message(fact: Fact, setting: Setting, parameter: Parameter) -> str:
+    name = setting.canonical
     if isinstance(fact, MissingValue):
         starts = f" (`{fact.comment}` starts a comment)" if fact.comment else ""
         return f"`{name}` has no value{starts}; {expected(parameter)} is expected"
@@ -59,9 +69,9 @@ def message(fact, setting) -> str:
     return f"`{name}` expects {expected(parameter)}, not the text `{fact.text}`"
 
 
-def replacement(fact) -> str | None:
-    return getattr(fact, "replacement", None)
+def replacement(fact: Fact) -> str | None:
+    return fact.replacement if isinstance(fact, (NotBoolean, RealForInteger)) else None
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message, replacement, applicability="unsafe")

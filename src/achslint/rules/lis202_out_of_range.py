@@ -38,9 +38,18 @@ Value ranges of the P-AXIS parameter pages (catalogue `range`); P-AXIS-00355, P-
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..facts import NotAccepted, NotPositive, OutOfRange, UnusableNumber
 from ..units import describe
 from ._common import expected, value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS202"
 NAME = "out-of-range"
@@ -48,11 +57,12 @@ SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Value outside the parameter's range"
 
-FACTS = (UnusableNumber, NotAccepted, NotPositive, OutOfRange)
+Fact = UnusableNumber | NotAccepted | NotPositive | OutOfRange
+FACTS: tuple[type[Fact], ...] = (UnusableNumber, NotAccepted, NotPositive, OutOfRange)
 
 
-def message(fact, setting) -> str:
-    name, parameter = setting.canonical, setting.parameter
+def message(fact: Fact, setting: Setting, parameter: Parameter) -> str:
+    name = setting.canonical
     if isinstance(fact, UnusableNumber):
         holds = f", far more than a {parameter.type} holds" if fact.problem.reason == "digits" else ""
         return f"`{name}` = `{fact.text}` {fact.problem}{holds}; {expected(parameter)} is expected"
@@ -60,14 +70,12 @@ def message(fact, setting) -> str:
         return f"`{name}` = {fact.number} is not an accepted value; accepted: {', '.join(map(str, fact.accepted))}"
     if isinstance(fact, NotPositive):
         return f"`{name}` = {describe(fact.number, fact.unit)} must be greater than 0"
-    side, bound, least = (
-        ("below the minimum", fact.low, "at least")
-        if fact.low is not None
-        else ("above the maximum", fact.high, "at most")
+    side, least = (
+        ("below the minimum", "at least") if fact.low is not None else ("above the maximum", "at most")
     )
     return (
-        f"`{name}` = {describe(fact.number, fact.unit)} is {side} {describe(bound, fact.unit)}"
-        f"{_range_hint(parameter)}; use a value of {least} {_plain(bound)}"
+        f"`{name}` = {describe(fact.number, fact.unit)} is {side} {describe(fact.bound, fact.unit)}"
+        f"{_range_hint(parameter)}; use a value of {least} {_plain(fact.bound)}"
     )
 
 
@@ -75,12 +83,12 @@ def _plain(value: float) -> str:
     return str(int(value)) if float(value).is_integer() else f"{value:g}"
 
 
-def _range_hint(parameter) -> str:
+def _range_hint(parameter: Parameter) -> str:
     text = parameter.range_text.split(";")[0].strip()
     if not text or text.startswith("("):
         return f" of {parameter.type}"
     return f" (manual range: {text})"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message)

@@ -32,9 +32,18 @@ P-AXIS-00299 value table; documented inconsistency B.14 (`DRIVE_CONROLLED` is a 
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterator
+from functools import lru_cache
+from typing import TYPE_CHECKING
 
 from ..facts import UnknownSymbol
 from ._common import value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS203"
 NAME = "unknown-symbol"
@@ -45,23 +54,37 @@ SUMMARY = "Unknown symbol for an enumerated parameter"
 FACTS = (UnknownSymbol,)
 
 
+@lru_cache(maxsize=1024)
+def _similar(text: str, accepted: tuple[str, ...]) -> tuple[tuple[float, str], ...]:
+    """(similarity, symbol) of the accepted symbols at least 0.6 alike, most alike first: computed once per
+    written word (the message and the fix both use it; a list repeats the same typo on many lines)."""
+    matcher = difflib.SequenceMatcher()
+    matcher.set_seq2(text)
+    scored = []
+    for symbol in accepted:
+        matcher.set_seq1(symbol)
+        if matcher.real_quick_ratio() >= 0.6 and matcher.quick_ratio() >= 0.6 and matcher.ratio() >= 0.6:
+            scored.append((matcher.ratio(), symbol))
+    return tuple(sorted(scored, reverse=True))
+
+
 def _closest(fact: UnknownSymbol) -> str | None:
     """The accepted symbol the written word most likely meant, for the message."""
-    match = difflib.get_close_matches(fact.text, fact.accepted, n=1, cutoff=0.6)
-    if match:
-        return match[0]
+    similar = _similar(fact.text, tuple(fact.accepted))
+    if similar:
+        return similar[0][1]
     return fact.text.upper() if fact.text.upper() in fact.accepted else None
 
 
 def replacement(fact: UnknownSymbol) -> str | None:
     """A fix only for an unambiguous, close match (or the same word in capitals)."""
-    strong = difflib.get_close_matches(fact.text, fact.accepted, n=2, cutoff=0.8)
+    strong = [symbol for score, symbol in _similar(fact.text, tuple(fact.accepted))[:2] if score >= 0.8]
     if not strong and _closest(fact) == fact.text.upper():
         return fact.text.upper()
     return strong[0] if len(strong) == 1 else None
 
 
-def message(fact: UnknownSymbol, setting) -> str:
+def message(fact: UnknownSymbol, setting: Setting, parameter: Parameter) -> str:
     text = f"`{fact.text}` is not a value of `{setting.canonical}`"
     closest = _closest(fact)
     if closest:
@@ -72,5 +95,5 @@ def message(fact: UnknownSymbol, setting) -> str:
     return text
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message, replacement, applicability="safe")

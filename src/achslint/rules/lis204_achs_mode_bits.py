@@ -38,6 +38,15 @@ P-AXIS-00015 bit table and note (1) in the TF5200 homing manual §4 (axis mode).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ._common import known_settings
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS204"
 NAME = "achs-mode-bits"
 SEVERITY = "error"
@@ -47,13 +56,13 @@ SUMMARY = "Invalid combination of `kenngr.achs_mode` bits"
 LINEAR, MODULO, MODULO_LINEAR = 0x1, 0x4, 0x400
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     bits = ctx.catalogue.bitfields.get("P-AXIS-00015", {})
     known = 0
     for bit in bits:
         known |= bit
-    for setting in ctx.settings:
-        if not setting.known or setting.parameter.id != "P-AXIS-00015" or not isinstance(setting.value, int):
+    for setting, parameter, _ in known_settings(ctx.settings):
+        if parameter.id != "P-AXIS-00015" or not isinstance(setting.value, int):
             continue
         value = setting.value
         problems = []

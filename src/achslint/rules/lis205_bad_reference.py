@@ -32,9 +32,18 @@ List format facts §6 (parameter references and their loader errors).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..facts import BadReference
 from ..units import unit_label
 from ._common import value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS205"
 NAME = "bad-reference"
@@ -45,8 +54,8 @@ SUMMARY = "Parameter reference that cannot be resolved"
 FACTS = (BadReference,)
 
 
-def message(fact: BadReference, setting) -> str:
-    name, parameter, reference = setting.canonical, setting.parameter, fact.reference
+def message(fact: BadReference, setting: Setting, parameter: Parameter) -> str:
+    name, reference = setting.canonical, fact.reference
     target = reference.target if reference is not None else ""
     if fact.reason == "unreadable":
         return f"`{name}` refers to `{fact.written}`, which {fact.problem}"
@@ -67,5 +76,5 @@ def message(fact: BadReference, setting) -> str:
     return f"`{name}` refers to {reference}, but {target} has indices {fact.low}..{fact.high} only"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message)

@@ -28,8 +28,17 @@ Maximum string lengths of the parameter metadata (e.g. P-AXIS-00297: 15 characte
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..facts import TooLong
 from ._common import value_facts
+
+if TYPE_CHECKING:
+    from ..analysis import Setting
+    from ..catalogue import Parameter
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS206"
 NAME = "string-too-long"
@@ -40,12 +49,12 @@ SUMMARY = "String longer than the parameter allows"
 FACTS = (TooLong,)
 
 
-def message(fact: TooLong, setting) -> str:
+def message(fact: TooLong, setting: Setting, parameter: Parameter) -> str:
     return (
         f"`{setting.canonical}` is {fact.length} characters long; the CNC stores at most "
         f"{fact.max_length} characters for this parameter, shorten the value"
     )
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     yield from value_facts(ctx, CODE, FACTS, message)

@@ -34,6 +34,13 @@ TF5200 homing manual §2.3.2 (table of homing types) and P-AXIS-00156 / P-AXIS-0
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS301"
 NAME = "cam-free-needs-one-phase"
 SEVERITY = "error"
@@ -42,7 +49,7 @@ PARAMETERS = ("kenngr.ref_ohne_nocken", "kenngr.ref_ohne_rev")  # parameters thi
 SUMMARY = "`ref_ohne_nocken = 1` requires `ref_ohne_rev = 1`"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     paths = ("kenngr.ref_ohne_nocken", "kenngr.ref_ohne_rev")
     if values.get(paths[0]) and not values.get(paths[1]) and ctx.effective(*paths):

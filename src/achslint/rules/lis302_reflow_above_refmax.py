@@ -36,6 +36,13 @@ TF5200 homing manual §3.2.3; ranges of P-AXIS-00218 (1 ≤ vb_reflow ≤ P-AXIS
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS302"
 NAME = "reflow-above-refmax"
 SEVERITY = "error"
@@ -44,11 +51,11 @@ PARAMETERS = ("getriebe[i].vb_reflow", "getriebe[i].vb_refmax")  # parameters th
 SUMMARY = "`vb_reflow` higher than `vb_refmax` in a gear stage"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     for gear in values.gear_stages_set("vb_reflow", "vb_refmax"):
         slow, fast = f"getriebe[{gear}].vb_reflow", f"getriebe[{gear}].vb_refmax"
-        if values.get(slow) > values.get(fast) and ctx.effective(slow, fast):
+        if values.number(slow) > values.number(fast) and ctx.effective(slow, fast):
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: slow homing speed {ctx.show(slow)} is higher than the fast one {ctx.show(fast)}; "

@@ -39,7 +39,14 @@ P-ERR-110148, P-ERR-110421, P-ERR-110422, P-ERR-110413.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..corrections import CAPPED_SPEEDS
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS303"
 NAME = "refmax-above-limits"
@@ -60,13 +67,13 @@ _ABOVE_MAX = (
 )
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     for gear in values.gear_stages_set("vb_refmax", "vb_reflow", "dynamik.vb_max"):
         vmax = f"getriebe[{gear}].dynamik.vb_max"
         for member, words, error in _ABOVE_MAX:
             path = f"getriebe[{gear}].{member}"
-            if values.written(path) > values.get(vmax) and ctx.effective(path):
+            if values.written_number(path) > values.number(vmax) and ctx.effective(path):
                 yield ctx.cross(
                     CODE,
                     f"gear stage {gear}: {words} {ctx.show(path)} is above the maximum axis speed {ctx.show(vmax)} "
@@ -78,7 +85,7 @@ def check(ctx):
         for member, _ in CAPPED_SPEEDS:
             path = f"getriebe[{gear}].{member}"
             correction = ctx.correction(path)
-            if correction is not None and values.written(path) <= values.get(
+            if correction is not None and values.written_number(path) <= values.number(
                 f"getriebe[{gear}].dynamik.vb_max"
             ):
                 yield ctx.report_correction(

@@ -42,6 +42,13 @@ P-AXIS-00344 range (0 ≤ torq_min_distance ≤ P-AXIS-00345); TF5200 homing man
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS304"
 NAME = "torq-distances"
 SEVERITY = "error"
@@ -55,11 +62,11 @@ SUMMARY = "`torq_min_distance` not below `torq_max_distance`"
 MIN, MAX = "kenngr.homing.torq_min_distance", "kenngr.homing.torq_max_distance"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if not (values.is_set(MIN) or values.is_set(MAX)) or not ctx.effective(MIN, MAX):
         return  # only fixed-stop homing reads them
-    low, high = values.get(MIN), values.get(MAX)
+    low, high = values.number(MIN), values.number(MAX)
     if (low or high) and low >= high:
         yield ctx.cross(
             CODE,

@@ -34,6 +34,13 @@ P-AXIS-00299 (table of homing types per drive type; unsupported type corrected t
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS305"
 NAME = "homing-type-vs-drive"
 SEVERITY = "error"
@@ -44,7 +51,7 @@ SUMMARY = "Homing type not supported by the drive type (the CNC replaces it)"
 TYPE = "kenngr.homing.homing_type"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     correction = ctx.correction(TYPE)
     if correction is None:
         return

@@ -34,7 +34,14 @@ TF5200 homing manual §2.3.3.4 (only SERCOS and CANopen; P-ERR-110371) and §2.3
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..resolved import DriveType
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS306"
 NAME = "torq-drive-type"
@@ -46,7 +53,7 @@ SUMMARY = "`TORQ` homing on a drive type without fixed-stop homing"
 TORQ_DRIVES = {DriveType.SERCOS, DriveType.SIMULATION, DriveType.CANOPEN, DriveType.GENERIC, DriveType.DSE}
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.homing_type == "TORQ" and values.drive_type not in TORQ_DRIVES:
         yield ctx.cross(

@@ -31,6 +31,13 @@ P-AXIS-00299 (IGNORE_ABS_POS only with P-AXIS-00014 = 1; P-ERR-110584).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS307"
 NAME = "ignore-abs-pos-incremental"
 SEVERITY = "error"
@@ -39,7 +46,7 @@ PARAMETERS = ("kenngr.homing.homing_type", "kenngr.abs_pos_gueltig")  # paramete
 SUMMARY = "`IGNORE_ABS_POS` without an absolute measuring system"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.homing_type == "IGNORE_ABS_POS" and not values.get("kenngr.abs_pos_gueltig"):
         yield ctx.cross(

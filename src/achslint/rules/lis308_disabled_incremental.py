@@ -30,6 +30,13 @@ P-AXIS-00299 (DISABLED: only for axes with P-AXIS-00014 = 1; CNC errors P-ERR-50
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS308"
 NAME = "disabled-incremental"
 SEVERITY = "warning"
@@ -38,7 +45,7 @@ PARAMETERS = ("kenngr.homing.homing_type", "kenngr.abs_pos_gueltig")  # paramete
 SUMMARY = "`DISABLED` homing on an incremental axis"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.homing_type == "DISABLED" and not values.get("kenngr.abs_pos_gueltig"):
         yield ctx.cross(

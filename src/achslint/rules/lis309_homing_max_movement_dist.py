@@ -36,6 +36,13 @@ P-AXIS-00412 (axis types R, S; set at least to the modulo range); CNC messages P
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS309"
 NAME = "homing-max-movement-dist"
 SEVERITY = "error"
@@ -51,7 +58,7 @@ SUMMARY = "Homing path monitoring on a linear axis or shorter than the modulo ra
 DIST = "kenngr.homing_max_movement_dist"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     correction = ctx.correction(DIST)
     if correction is not None:
@@ -62,12 +69,12 @@ def check(ctx):
             CODE, correction, f"{ctx.show(DIST)} on a linear axis{assumed}", [DIST, "kenngr.achs_typ"]
         )
         return
-    limit = values.get(DIST)
+    limit = values.number(DIST)
     if not limit or values.axis_type == "T" or not ctx.effective(DIST):
         return
     for gear in sorted(set(values.gear_stages_set("moduloo", "modulou")) | {0}):
         upper, lower = f"getriebe[{gear}].moduloo", f"getriebe[{gear}].modulou"
-        span = values.get(upper) - values.get(lower)
+        span = values.number(upper) - values.number(lower)
         if limit < span:
             yield ctx.cross(
                 CODE,

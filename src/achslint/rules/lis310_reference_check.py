@@ -37,6 +37,14 @@ TF5200 homing manual §2.5.1; P-AXIS-00425, P-AXIS-00426; CNC messages P-ERR-110
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ._common import known_settings
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS310"
 NAME = "reference-check"
@@ -53,26 +61,22 @@ NAME_PATH, BIT_PATH = "antr.reference_check.element_name", "antr.reference_check
 STATUS_WORD = "S-0-0135"
 
 
-def _element_bytes(ctx, element: str) -> int | None:
+def _element_bytes(ctx: Context, element: str) -> int | None:
     """Length in bytes of the telegram element that carries the signal, if the list says."""
     if element.upper().replace("_", "-") == STATUS_WORD:
         return 2
     values = ctx.values
-    for setting in ctx.settings:
-        if (
-            setting.known
-            and re.fullmatch(r"antr\.sercos\.at\[\d+\]\.nc_ref", setting.canonical or "")
-            and setting.value == element
-        ):
-            length_path = setting.canonical.replace(".nc_ref", ".ident_len")
-            return int(values.get(length_path)) or None
+    for setting, _, canonical in known_settings(ctx.settings):
+        if re.fullmatch(r"antr\.sercos\.at\[\d+\]\.nc_ref", canonical) and setting.value == element:
+            length_path = canonical.replace(".nc_ref", ".ident_len")
+            return int(values.number(length_path)) or None
     return None
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
-    element = values.written(NAME_PATH) or ""
-    bit = values.get(BIT_PATH)
+    element = str(values.written(NAME_PATH) or "")  # a string parameter
+    bit = values.number(BIT_PATH)
     if not element and bit == -1:
         return
     paths = [NAME_PATH, BIT_PATH]

@@ -42,6 +42,13 @@ TF5200 homing manual §3.1.1.2 (CNC-controlled at encoder overflow); P-AXIS-0029
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS311"
 NAME = "encoder-overflow"
 SEVERITY = "error"
@@ -58,7 +65,7 @@ SELECT, NO_PULSE = "kenngr.homing_overflow_evaluation", "kenngr.homing_without_z
 BITS, OFFSET = "antr.encoder_bit_range", "antr.encoder_overflow_offset"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     switched_off = ctx.correction(SELECT)
     if switched_off is not None:

@@ -42,6 +42,13 @@ TF5200 homing manual §3.1.1.2 and §3.6.3; P-AXIS-00386 (P-ERR-110522), P-AXIS-
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS312"
 NAME = "sercos-drive-latch"
 SEVERITY = "error"
@@ -60,7 +67,7 @@ LATCH, ENCODER, LAYOUT = (
 )
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     spindle = ctx.correction(LATCH)
     if spindle is not None:

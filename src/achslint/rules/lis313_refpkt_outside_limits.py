@@ -34,6 +34,13 @@ P-AXIS-00152 range (swe_neg < pos_refpkt < swe_pos); TF5200 homing manual §2 (s
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS313"
 NAME = "refpkt-outside-limits"
 SEVERITY = "error"
@@ -44,17 +51,17 @@ SUMMARY = "`pos_refpkt` not between the software limits"
 NEG, POS = "kenngr.swe_neg", "kenngr.swe_pos"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.axis_type == "S":
         return
     stages = values.gear_stages_set("pos_refpkt")
     if values.is_set(NEG) or values.is_set(POS):
         stages = sorted(set(stages) | {0})
-    low, high = values.get(NEG), values.get(POS)
+    low, high = values.number(NEG), values.number(POS)
     for gear in stages:
         path = f"getriebe[{gear}].pos_refpkt"
-        position = values.get(path)
+        position = values.number(path)
         if not low < position < high and ctx.effective(path):
             side = NEG if position <= low else POS
             yield ctx.cross(

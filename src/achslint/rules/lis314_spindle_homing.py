@@ -34,6 +34,13 @@ TF5200 homing manual §3.1.1.1 (simulation axis) and §2.3.2 / "Homing with SERC
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS314"
 NAME = "spindle-homing"
 SEVERITY = "error"
@@ -49,7 +56,7 @@ SUMMARY = "Spindle homing without the settings a spindle needs"
 KEINE_AUTO_RPF = 0x100
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.axis_type != "S":
         return

@@ -47,6 +47,14 @@ and §2.3.3.4.4 (P-AXIS-00822 for simulation); ranges of P-AXIS-00333 and P-AXIS
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..catalogue import Value
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS315"
 NAME = "fixed-stop-setup"
 SEVERITY = "error"
@@ -75,15 +83,15 @@ GENERAL = [
 ]
 
 
-def _active(path: str, value) -> bool:
-    if value is None:
-        return False
+def _active(path: str, value: Value | None) -> bool:
+    if not isinstance(value, (int, float)):
+        return False  # no value
     if path.endswith("detect.detect_velocity_limit"):
         return value < 1000  # 1000 = not active
     return value > 0
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.homing_type != "TORQ":
         return
@@ -124,7 +132,7 @@ def check(ctx):
             (speed, vmax, "speed", "P-AXIS-00333"),
             (accel, amax, "acceleration", "P-AXIS-00334"),
         ):
-            value = values.written(path)
+            value = values.written_number(path)
             if not value:
                 if gear == 0 or values.is_set(path):
                     yield ctx.cross(
@@ -133,7 +141,7 @@ def check(ctx):
                         f"of at least 1 ({pid}); without it the axis does not move",
                         [path],
                     )
-            elif value > values.get(limit):
+            elif value > values.number(limit):
                 yield ctx.cross(
                     CODE,
                     f"gear stage {gear}: {ctx.show(path)} must not exceed {ctx.show(limit)} (§2.3.3.5)",

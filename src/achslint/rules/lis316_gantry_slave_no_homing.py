@@ -40,9 +40,16 @@ P-AXIS-00074 (axis types T, R; not supported for spindles); TF5200 homing manual
 
 from __future__ import annotations
 
-from ..diagnostics import Related, Severity
-from ..machine import diagnostic
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from ..diagnostics import Diagnostic, Related, Severity
+from ..machine import Startup, diagnostic
 from ..units import describe
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from . import MachineMember
 
 CODE = "LIS316"
 NAME = "gantry-slave-no-homing"
@@ -56,7 +63,7 @@ PARAMETERS = (
 SUMMARY = "Gantry slave homing suppression on a spindle"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if values.get("kenngr.gantry_slave_no_homing") and values.axis_type == "S":
         yield ctx.cross(
@@ -66,7 +73,7 @@ def check(ctx):
         )
 
 
-def check_machine(members, startups):
+def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
     by_number = {info["achs_nr"]: (name, info) for name, info in members}
     for name, info in members:
         master = by_number.get(info["gantry_ax_nr"]) if info["gantry_ax_nr"] else None
@@ -85,5 +92,5 @@ def check_machine(members, startups):
         )
 
 
-def _length(value, info) -> str:
+def _length(value: object, info: dict[str, Any]) -> str:
     return describe(value, "0.0001deg" if info.get("axis_type", "T") != "T" else "0.1um")

@@ -45,6 +45,13 @@ position; software limits monitored once homing is complete) and §2.3.3.4 (retr
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
 SEVERITY = "warning"
@@ -61,7 +68,7 @@ PARAMETERS = (
 SUMMARY = "Homing ends outside the software limits (braking or retraction)"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     from ..engine import Simulator
     from ..scenario import default_scenario
 
@@ -71,7 +78,7 @@ def check(ctx):
     probe = Simulator(values, strategy, default_scenario(strategy, cycle_time_us=ctx.options.cycle_time_us))
     if strategy.id == "fixed_stop":
         # Only the distances matter: put the stop where detection is certain.
-        low = values.get("kenngr.homing.torq_min_distance") * 1e-4
+        low = values.number("kenngr.homing.torq_min_distance") * 1e-4
         probe.scenario.fixed_stop = probe.scenario.start_position + (
             1 if values.get("kenngr.homing.torq_homing_dir") else -1
         ) * (low + 1.0)

@@ -38,6 +38,13 @@ P-AXIS-00156.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS318"
 NAME = "no-reference-signal"
 SEVERITY = "error"
@@ -48,7 +55,7 @@ SUMMARY = "Neither reference cam nor zero pulse: nothing marks the reference"
 NO_CAM, NO_PULSE = "kenngr.ref_ohne_nocken", "kenngr.homing_without_zero_pulse"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     strategy = ctx.strategy
     if strategy.id == "zero_pulse_only" and not strategy.setup.zero_pulse and ctx.effective(NO_CAM, NO_PULSE):
         yield ctx.cross(

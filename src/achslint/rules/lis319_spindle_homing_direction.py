@@ -44,6 +44,13 @@ P-AXIS-00031, P-AXIS-00224, P-AXIS-00158.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS319"
 NAME = "spindle-homing-direction"
 SEVERITY = "error"
@@ -54,7 +61,7 @@ SUMMARY = "Spindle homing direction against its restricted preferred direction"
 HOMING, PREFERRED, RESTRICTED = "kenngr.ref_richt", "kenngr.beweg_richt", "kenngr.vorz_richtung"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if not ctx.strategy.id.startswith("spindle_flying") or not values.get(RESTRICTED):
         return

@@ -37,6 +37,13 @@ TRUE"); P-AXIS-00157, P-AXIS-00015 (KEINE_AUTO_RPF).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS320"
 NAME = "spindle-homing-with-reversal"
 SEVERITY = "warning"
@@ -47,7 +54,7 @@ SUMMARY = "Spindle homing with reversal cannot start from endless rotation"
 KEINE_AUTO_RPF = 0x100
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values, strategy = ctx.values, ctx.strategy
     if values.axis_type != "S" or strategy.id != "cam_zero_pulse":
         return

@@ -35,6 +35,13 @@ TF5200 homing manual §3.1.2.3 and §3.5; P-AXIS-00036 (not available for TwinCA
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS321"
 NAME = "cam-direct-access"
 SEVERITY = "warning"
@@ -43,7 +50,7 @@ PARAMETERS = ("lr_hw[i].cam_direct_access", "kenngr.ref_ohne_nocken")  # paramet
 SUMMARY = "Cam homing with `cam_direct_access 1` instead of the HLI"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     if not ctx.strategy.with_cam:
         return

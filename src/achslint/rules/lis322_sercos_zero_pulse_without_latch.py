@@ -42,7 +42,14 @@ TF5200 homing manual §2.2 (NC-controlled referencing of SERCOS drives without z
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..resolved import DriveType
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS322"
 NAME = "sercos-zero-pulse-without-latch"
@@ -59,7 +66,7 @@ SUMMARY = "SERCOS CNC-controlled homing on a zero pulse nobody latches"
 PULSE = "kenngr.homing_without_zero_pulse"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values, strategy = ctx.values, ctx.strategy
     setup = strategy.setup
     if (

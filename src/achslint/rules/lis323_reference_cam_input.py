@@ -33,7 +33,14 @@ P-AXIS-00321 (inputs per drive type; real-time status bits only with NC-controll
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..resolved import DriveType
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS323"
 NAME = "reference-cam-input"
@@ -43,7 +50,7 @@ PARAMETERS = ("antr.reference_cam_signal", "kenngr.antr_typ")  # parameters this
 SUMMARY = "Reference cam read from an input the drive type does not have"
 
 SIGNAL = "antr.reference_cam_signal"
-INPUTS = {
+INPUTS: dict[int, tuple[str, ...]] = {
     DriveType.SERCOS: ("PLC", "RT_STATUS_BIT_1", "RT_STATUS_BIT_2"),
     DriveType.CANOPEN: (
         "PLC",
@@ -56,7 +63,7 @@ INPUTS = {
 }
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     value = values.get(SIGNAL)
     allowed = INPUTS.get(values.drive_type, ("PLC",))

@@ -34,6 +34,13 @@ measuring system).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS324"
 NAME = "absolute-flag-drive-type"
 SEVERITY = "warning"
@@ -44,7 +51,7 @@ SUMMARY = "Absolute measuring system declared on a drive type without one"
 FLAG = "kenngr.abs_pos_gueltig"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
     drives = values.parameter(FLAG).drive_types
     if not values.get(FLAG) or not drives or values.drive_type in drives:

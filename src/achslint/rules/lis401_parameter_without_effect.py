@@ -41,7 +41,15 @@ matter), §3.4 (simulation: only P-AXIS-00161).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..homing import HOMING_PARAMETERS, is_homing_parameter
+from ._common import known_settings
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS401"
 NAME = "parameter-without-effect"
@@ -51,15 +59,14 @@ PARAMETERS = tuple(HOMING_PARAMETERS)  # parameters this rule reads
 SUMMARY = "Homing parameter set but without effect under the configured strategy"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
-    for setting in ctx.settings:
-        if not setting.known or setting.problems:
+    for setting, parameter, canonical in known_settings(ctx.settings):
+        if setting.problems:
             continue  # a value the CNC rejects is reported by the value rules
-        canonical = setting.canonical
         if not is_homing_parameter(canonical) or values.in_list(canonical) is not setting:
             continue
-        if setting.value == setting.parameter.typed_default:
+        if setting.value == parameter.typed_default:
             continue
         effect = ctx.effect(canonical)
         if effect.effective or effect.cause != "strategy":

@@ -35,6 +35,13 @@ TF5200 homing manual §2.3.3.2 (notice on referencing in one phase).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS402"
 NAME = "one-phase-with-cam"
 SEVERITY = "warning"
@@ -43,7 +50,7 @@ PARAMETERS = ("kenngr.ref_ohne_rev", "kenngr.ref_ohne_nocken")  # parameters thi
 SUMMARY = "One-phase homing with a cam (advised against by the manual)"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     strategy = ctx.strategy
     if strategy.id.startswith("one_phase"):
         yield ctx.cross(

@@ -42,7 +42,14 @@ TF5200 homing manual §2 (repeatability with referencing: velocity × sampling t
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..units import describe
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
 
 CODE = "LIS403"
 NAME = "cam-edge-repeatability"
@@ -56,7 +63,7 @@ PARAMETERS = (
 SUMMARY = "Cam-edge referencing less repeatable than the tolerance"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     strategy = ctx.strategy
     values = ctx.values
     member = strategy.definition.reference_speed
@@ -73,7 +80,7 @@ def check(ctx):
         path = f"getriebe[{gear}].{member}"
         if not ctx.effective(path):
             continue
-        spread = values.get(path) * cycle / 1e6
+        spread = values.number(path) * cycle / 1e6
         if spread > tolerance:
             best = int(tolerance * 1e6 / cycle)
             yield ctx.cross(

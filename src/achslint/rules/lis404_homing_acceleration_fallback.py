@@ -36,6 +36,13 @@ TF5200 homing manual §3.2.4 (homing acceleration P-AXIS-00285, fallback min(P-A
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS404"
 NAME = "homing-acceleration-fallback"
 SEVERITY = "info"
@@ -48,7 +55,7 @@ PARAMETERS = (
 SUMMARY = "Homing acceleration not set: the CNC's fallback is used"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
     strategy = ctx.strategy
     # Where a_ref takes effect on a real axis: a simulated drive has no mechanics that brake.
     if not strategy.moves or strategy.setup.simulated or not ctx.effective("getriebe[0].a_ref"):

@@ -47,8 +47,14 @@ P-AXIS-00016 (logical axis number, unique per machine).
 
 from __future__ import annotations
 
-from ..diagnostics import Related, Severity
-from ..machine import diagnostic, first_uses, unset_note
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic, Related, Severity
+from ..machine import Startup, diagnostic, first_uses, unset_note
+
+if TYPE_CHECKING:
+    from . import MachineMember
 
 CODE = "LIS501"
 NAME = "duplicate-axis-number"
@@ -58,7 +64,7 @@ PARAMETERS = ("kopf.achs_nr",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same logical axis number"
 
 
-def check_machine(members, startups):
+def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
     for member, other in first_uses(members, "achs_nr"):
         line, column = other[1].get("achs_nr_at") or (1, 1)
         yield diagnostic(

@@ -45,8 +45,14 @@ P-AXIS-00297 (default axis name).
 
 from __future__ import annotations
 
-from ..diagnostics import Related, Severity
-from ..machine import diagnostic, first_uses, unset_note
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic, Related, Severity
+from ..machine import Startup, diagnostic, first_uses, unset_note
+
+if TYPE_CHECKING:
+    from . import MachineMember
 
 CODE = "LIS502"
 NAME = "duplicate-axis-name"
@@ -56,7 +62,7 @@ PARAMETERS = ("kopf.log_achs_name",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same axis name"
 
 
-def check_machine(members, startups):
+def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
     for member, other in first_uses(members, "name"):
         line, column = other[1].get("name_at") or (1, 1)
         yield diagnostic(

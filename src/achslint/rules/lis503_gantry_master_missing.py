@@ -46,8 +46,14 @@ P-AXIS-00070 (axis number of the gantry master), TF5200 gantry manual.
 
 from __future__ import annotations
 
-from ..diagnostics import Severity
-from ..machine import diagnostic
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic, Severity
+from ..machine import Startup, diagnostic
+
+if TYPE_CHECKING:
+    from . import MachineMember
 
 CODE = "LIS503"
 NAME = "gantry-master-missing"
@@ -57,7 +63,7 @@ PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule rea
 SUMMARY = "Gantry slave whose master axis is not in the machine"
 
 
-def check_machine(members, startups):
+def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
     numbers = {info["achs_nr"] for _, info in members}
     for member in members:
         master = member[1]["gantry_ax_nr"]

@@ -50,7 +50,14 @@ P-STUP-00015 (achs_mds[i]) and P-STUP-00035 (default_achs_mds); list format fact
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 from ..diagnostics import Diagnostic, Severity
+
+if TYPE_CHECKING:
+    from ..machine import Startup
+    from . import MachineMember
 
 CODE = "LIS504"
 NAME = "missing-list"
@@ -59,7 +66,7 @@ FIX = "none"
 SUMMARY = "Start-up list names an axis list that does not exist"
 
 
-def check_machine(members, startups):
+def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
     for startup in startups:
         for entry in ([startup.default] if startup.default else []) + startup.axes:
             if entry.refused:

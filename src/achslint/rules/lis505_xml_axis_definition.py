@@ -49,6 +49,13 @@ TwinCAT 3 CNC axis tree item (IsgAxisDef: DriveType, Spindle, AchsMds); P-AXIS-0
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..context import Context
+    from ..diagnostics import Diagnostic
+
 CODE = "LIS505"
 NAME = "xml-axis-definition"
 SEVERITY = "warning"
@@ -57,10 +64,12 @@ PARAMETERS = ("kenngr.antr_typ", "kenngr.achs_typ")  # parameters this rule read
 SUMMARY = "TwinCAT axis definition (DriveType, Spindle) disagrees with the axis list"
 
 
-def check(ctx):
+def check(ctx: Context) -> Iterator[Diagnostic]:
+    from ..xmlinput import EmbeddedList
+
     embedded = ctx.embedded
-    if embedded is None:
-        return
+    if not isinstance(embedded, EmbeddedList):
+        return  # not a list from an XML file
     values = ctx.values
     if (
         embedded.drive_type is not None

@@ -2,20 +2,25 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import NEGATIVE, POSITIVE
 
+if TYPE_CHECKING:
+    from ..setup import HomingSetup
 
-def direction(setup) -> str:
+
+def direction(setup: HomingSetup) -> str:
     return POSITIVE if setup.direction > 0 else NEGATIVE
 
 
-def reference_event(setup) -> str:
+def reference_event(setup: HomingSetup) -> str:
     if setup.overflow:
         return "the encoder overflow"
     return "the next zero pulse" if setup.zero_pulse else "the cam edge"
 
 
-def variants(setup) -> list[str]:
+def variants(setup: HomingSetup) -> list[str]:
     found = []
     if setup.overflow:
         found.append("reference on the encoder overflow instead of the zero pulse (P-AXIS-00294)")

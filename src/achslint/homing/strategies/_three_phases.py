@@ -2,8 +2,14 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import Phase, Use, opposite
 from . import _sequence
+
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
+    from ..setup import HomingSetup
 
 THREE_PHASE_SPEEDS = {
     "getriebe[i].vb_refmax": Use("speed of phase 1 (to the cam), and of phase 2 with fast_from_cam = 1"),
@@ -11,7 +17,7 @@ THREE_PHASE_SPEEDS = {
 }
 
 
-def describe(axis) -> str:
+def describe(axis: ResolvedAxis) -> str:
     from ..setup import HomingSetup
 
     event = _sequence.reference_event(HomingSetup(axis))
@@ -21,7 +27,7 @@ def describe(axis) -> str:
     )
 
 
-def phases(setup) -> list[Phase]:
+def phases(setup: HomingSetup) -> list[Phase]:
     way = _sequence.direction(setup)
     fast, slow = setup.stage("vb_refmax"), setup.stage("vb_reflow")
     off = fast if setup.fast_from_cam else slow

@@ -2,11 +2,16 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import StrategyDef
 from ..parameters import EVERYWHERE
 
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
 
-def _describe(axis) -> str:
+
+def _describe(axis: ResolvedAxis) -> str:
     return (
         "The axis has an absolute measuring system (abs_pos_gueltig = 1): its position is known at power-up, so "
         f"it needs no homing move. Its homing type is {axis.homing_type}, not IGNORE_ABS_POS or DISABLED: a G74 "

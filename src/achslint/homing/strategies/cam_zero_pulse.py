@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import StrategyDef
 from ..parameters import CAM, CAM_AND_ZERO_PULSE, SEQUENCE, ZERO_PULSE
 from . import _sequence
 from ._three_phases import THREE_PHASE_SPEEDS, describe, phases
+
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
 
 STRATEGY = StrategyDef(
     id="cam_zero_pulse",
@@ -26,7 +31,7 @@ STRATEGY = StrategyDef(
 )
 
 
-def _zero_pulse(axis) -> bool:
+def _zero_pulse(axis: ResolvedAxis) -> bool:
     from ..setup import HomingSetup
 
     return HomingSetup(axis).zero_pulse

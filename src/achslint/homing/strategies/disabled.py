@@ -2,11 +2,16 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import StrategyDef
 from ..parameters import EVERYWHERE
 
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
 
-def _describe(axis) -> str:
+
+def _describe(axis: ResolvedAxis) -> str:
     text = (
         "Homing is disabled: a G74 that names this axis ends with an error (P-ERR-50685 / P-ERR-60313). "
         "The setting is meant for axes with an absolute measuring system."

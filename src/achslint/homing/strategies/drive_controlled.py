@@ -2,11 +2,16 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
 
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
 
-def _writes_position(axis) -> bool:
+
+def _writes_position(axis: ResolvedAxis) -> bool:
     return bool(axis.get("kenngr.write_reference_position_to_drive"))
 
 

@@ -2,23 +2,28 @@
 
 from __future__ import annotations
 
-from ...resolved import DriveType
+from typing import TYPE_CHECKING
+
+from ...resolved import DriveType, ResolvedAxis
 from ...units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use, opposite
 from ..parameters import CNC_MOVES
 
+if TYPE_CHECKING:
+    from ..setup import HomingSetup
+
 _MASTER_RETRACTS = "a gantry slave retracts by its master's torq_retraction_distance (§2.3.3.4.5)"
 
 
-def _not_gantry_slave(axis) -> bool:
+def _not_gantry_slave(axis: ResolvedAxis) -> bool:
     return not axis.get("kenngr.gantry_ax_nr")
 
 
-def _simulated(axis) -> bool:
+def _simulated(axis: ResolvedAxis) -> bool:
     return axis.drive_type == DriveType.SIMULATION
 
 
-def _phases(setup) -> list[Phase]:
+def _phases(setup: HomingSetup) -> list[Phase]:
     direction = POSITIVE if setup.torq_direction > 0 else NEGATIVE
     path = setup.stage("homing.torq_move_velocity")
     speed = setup.speed("homing.torq_move_velocity")

@@ -2,11 +2,16 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
 
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
 
-def _matches(axis) -> bool:
+
+def _matches(axis: ResolvedAxis) -> bool:
     return (
         bool(axis.get("kenngr.gantry_ax_nr"))
         and bool(axis.get("kenngr.gantry_slave_no_homing"))

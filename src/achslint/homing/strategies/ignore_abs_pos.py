@@ -2,11 +2,16 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import StrategyDef
 from ..parameters import EVERYWHERE
 
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
 
-def _describe(axis) -> str:
+
+def _describe(axis: ResolvedAxis) -> str:
     text = "G74 skips the axis without an error; its absolute encoder supplies the position."
     if not axis.get("kenngr.abs_pos_gueltig"):
         text += " Without an absolute encoder (abs_pos_gueltig = 0) the CNC warns (P-ERR-110584) and the axis is never homed."

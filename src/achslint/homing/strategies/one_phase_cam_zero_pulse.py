@@ -2,9 +2,15 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import Phase, StrategyDef, Use
 from ..parameters import CAM, CAM_AND_ZERO_PULSE, SEQUENCE, ZERO_PULSE
 from . import _sequence
+
+if TYPE_CHECKING:
+    from ...resolved import ResolvedAxis
+    from ..setup import HomingSetup
 
 _SPEEDS = (
     "the manual marks vb_refmax and vb_reflow effective for this type (§3.5) without naming the phase of "
@@ -12,7 +18,7 @@ _SPEEDS = (
 )
 
 
-def _phases(setup) -> list[Phase]:
+def _phases(setup: HomingSetup) -> list[Phase]:
     way = _sequence.direction(setup)
     return [
         Phase(
@@ -62,7 +68,7 @@ STRATEGY = StrategyDef(
 )
 
 
-def _zero_pulse(axis) -> bool:
+def _zero_pulse(axis: ResolvedAxis) -> bool:
     from ..setup import HomingSetup
 
     return HomingSetup(axis).zero_pulse

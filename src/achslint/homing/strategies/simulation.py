@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ...resolved import DriveType
 from ...units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use
 from ..parameters import CNC_MOVES, SEQUENCE
 
+if TYPE_CHECKING:
+    from ..setup import HomingSetup
 
-def _phases(setup) -> list[Phase]:
+
+def _phases(setup: HomingSetup) -> list[Phase]:
     distance = setup.axis.get("antr.simu.rpf_weg_bis_nip")
     unit = setup.axis.parameter("antr.simu.rpf_weg_bis_nip").unit(setup.axis_type)
     return [

@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import Phase, StrategyDef, Use
 from ..parameters import SEQUENCE
 from . import _sequence
 
+if TYPE_CHECKING:
+    from ..setup import HomingSetup
 
-def _phases(setup) -> list[Phase]:
+
+def _phases(setup: HomingSetup) -> list[Phase]:
     return [
         Phase(
             "reference on the fly",

@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..base import Phase, StrategyDef
 from ..parameters import SEQUENCE, ZERO_PULSE
 from . import _sequence
 
+if TYPE_CHECKING:
+    from ..setup import HomingSetup
 
-def _phases(setup) -> list[Phase]:
+
+def _phases(setup: HomingSetup) -> list[Phase]:
     return [
         Phase(
             "to the zero pulse",
