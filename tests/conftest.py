@@ -1,9 +1,12 @@
 from __future__ import annotations
 
+import functools
 import os
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -18,6 +21,22 @@ THOROUGH = os.environ.get("ACHSLINT_THOROUGH", "") not in ("", "0")
 def examples(full: int, quick: int = 40) -> int:
     """The number of hypothesis examples a property test runs: `full` when thorough, else at most `quick`."""
     return full if THOROUGH else min(full, quick)
+
+
+def jenkins_junit_errors(document: str | ET.Element) -> list[str]:
+    """Why a JUnit document is not what Jenkins reads (tests/schemas/jenkins-junit.xsd, origin in
+    tests/schemas/README.md); empty when it is."""
+    pytest.importorskip("xmlschema")
+    if isinstance(document, str):
+        document = ET.fromstring(document.encode("utf-8"))
+    return [str(error.reason) for error in _jenkins_schema().iter_errors(document)]
+
+
+@functools.cache
+def _jenkins_schema() -> Any:
+    import xmlschema
+
+    return xmlschema.XMLSchema(str(ROOT / "tests" / "schemas" / "jenkins-junit.xsd"))
 
 
 def run_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> subprocess.CompletedProcess:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import io
 import json
 import re
-import xml.etree.ElementTree as ET
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -15,7 +14,7 @@ from achslint.display import printable
 from achslint.linter import FileResult, lint_file
 from achslint.reporters import REPORTERS, get
 
-from .conftest import examples
+from .conftest import examples, jenkins_junit_errors
 
 TEXT_FORMATS = ("concise", "full", "github")
 RAW_CONTROL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
@@ -61,7 +60,7 @@ def assert_valid(fmt: str, out: str) -> None:
     if fmt in ("json", "sarif", "gitlab"):
         json.loads(out)
     elif fmt == "junit":
-        ET.fromstring(out.encode("utf-8"))
+        assert jenkins_junit_errors(out) == []
     else:
         assert not RAW_CONTROL.search(out), repr(out)
 
