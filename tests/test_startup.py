@@ -87,3 +87,49 @@ def test_cnc_root_extends_where_entries_may_be_read(tmp_path):
     result = run_in(tmp_path, "lint", "config/hochlauf.lis", "--format", "json", "--cnc-root", ".")
     names, lis504 = linted(result, tmp_path)
     assert lis504 == [] and "achsmds3.lis" in names
+
+
+EXT_SCHEDULE = FIXTURES / "machines" / "extschedule"  # listen/ExtSchedule/hochlauf.lis names ./listen/*.lis
+
+
+@pytest.mark.parametrize(
+    "where,argument",
+    [
+        ("listen/ExtSchedule", "hochlauf.lis"),  # its own folder: entries are two folders up from here
+        (".", "listen/ExtSchedule/hochlauf.lis"),  # the CNC's working directory
+        ("..", None),  # elsewhere, by absolute path
+    ],
+)
+def test_the_ext_schedule_variant_reads_the_lists_one_folder_up(tmp_path, where, argument):
+    machine = tmp_path / "machine"
+    shutil.copytree(EXT_SCHEDULE, machine)
+    startup = machine / "listen" / "ExtSchedule" / "hochlauf.lis"
+    result = run_in((machine / where).resolve(), "lint", argument or str(startup), "--format", "json")
+    assert result.returncode == 0, result.stderr.decode()
+    document = json.loads(result.stdout)
+    assert [d["message"] for d in document["diagnostics"] if d["code"] == "LIS504"] == []
+    assert document["summary"]["files"] == 2  # achsmds1.lis and achsmds2.lis, read through the entries
+    # Read and compared as one machine: a second axis 1 is found across the two lists.
+    axis2 = machine / "listen" / "achsmds2.lis"
+    axis2.write_text(
+        axis2.read_text().replace("kopf.achs_nr                                    2", "kopf.achs_nr 1")
+    )
+    result = run_in((machine / where).resolve(), "lint", argument or str(startup), "--format", "json")
+    assert "LIS501" in {d["code"] for d in json.loads(result.stdout)["diagnostics"]}
+
+
+def test_only_lists_in_the_folders_above_are_read_not_other_files(tmp_path):
+    machine = tmp_path / "machine"
+    shutil.copytree(EXT_SCHEDULE, machine)
+    (machine / "listen" / "notes.txt").write_text("kopf.achs_nr 9\nEnde\n")
+    (machine / "listen" / "other").mkdir()
+    (machine / "listen" / "other" / "achsmds9.lis").write_text("kopf.achs_nr 9\nEnde\n")
+    startup = machine / "listen" / "ExtSchedule" / "hochlauf.lis"
+    startup.write_text(
+        startup.read_text().replace(
+            "#\nEnde", "achs_mds[2] ./listen/notes.txt\nachs_mds[3] ./listen/other/achsmds9.lis\nEnde"
+        )
+    )
+    result = run_in(machine, "lint", "listen/ExtSchedule/hochlauf.lis", "--format", "json")
+    refused = [d["message"] for d in json.loads(result.stdout)["diagnostics"] if d["code"] == "LIS504"]
+    assert len(refused) == 2 and all("outside the start-up list's folder" in m for m in refused)

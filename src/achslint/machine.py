@@ -106,15 +106,26 @@ def find_cnc_root(startup: Path, entries: list[str]) -> Path:
     return best
 
 
+LIST_SUFFIXES = (".lis", ".xml")
+
+
+def _in_a_folder_above(target: Path, startup: Path, root: Path) -> bool:
+    """Whether `target` is a list file lying directly in a folder that holds the start-up list, below the
+    CNC root: the SDK's `listen/ExtSchedule/hochlauf.lis` names `./listen/achsmds1.lis`, one folder up.
+    Other files there (`.bashrc`) and other folders (`./home/...`) stay out of reach."""
+    folder = target.parent
+    return target.suffix.lower() in LIST_SUFFIXES and inside(startup.parent, folder) and inside(folder, root)
+
+
 def _resolve(
     raw: str, startup: Path, root: Path, root_given: bool, scope: Scope | None
 ) -> tuple[Path | None, str | None, Path]:
     """(file, None, looked) for an entry achslint reads, (None, why, looked) for one it refuses, and
     (None, None, looked) when it is missing.
 
-    The file must lie in the start-up list's folder or below it, under a `cnc-root` the user set, or under a
-    path the user gave: a start-up list cannot make achslint read (and show) `/proc/self/environ` or
-    `../../secret.lis`.
+    The file must lie in the start-up list's folder or below it, be a list directly in a folder above it
+    (up to the CNC root), lie under a `cnc-root` the user set, or under a path the user gave: a start-up
+    list cannot make achslint read (and show) `/proc/self/environ` or `../../secret.lis`.
     """
     target = Path(os.path.normpath(root / _entry_path(raw)))
     problem = not_a_list_file(target)
@@ -126,6 +137,7 @@ def _resolve(
         inside(target, startup.parent)
         or (root_given and inside(target, root))
         or (scope and scope.contains(target))
+        or _in_a_folder_above(target, startup, root)
     )
     if not allowed:
         return (
