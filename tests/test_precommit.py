@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from .conftest import ROOT
+from .conftest import FIXTURES, ROOT
 from .test_strictness import run_in
 
 HOOKS = ROOT / ".pre-commit-hooks.yaml"
@@ -73,6 +73,23 @@ def test_default_lists_are_not_axes_of_the_machine(tmp_path):
     (folder / "default_mds.lis").write_text(axis(1))
     result = run_in(folder, "lint", "default_mds.lis", "achsmds1.lis", "--format", "json")
     assert lis501(result) == []
+
+
+def test_a_default_list_passed_alone_is_not_judged_as_an_axis(tmp_path):
+    """What pre-commit passes when only default_mds.lis changed: values for every axis, no axis itself."""
+    folder = tmp_path / "listen"
+    shutil.copytree(FIXTURES / "machines" / "sdk" / "listen", folder)
+    alone = run_in(folder, "lint", "default_mds.lis", "--format", "json")
+    assert alone.returncode == 0 and json.loads(alone.stdout)["diagnostics"] == []
+    # The same lines as an axis list of their own: homing rules judge the (incomplete) axis.
+    (folder / "achsmds9.lis").write_bytes((folder / "default_mds.lis").read_bytes())
+    as_axis = run_in(folder, "lint", "achsmds9.lis", "--format", "json")
+    assert {d["code"] for d in json.loads(as_axis.stdout)["diagnostics"]} & {"LIS303", "LIS401"}
+    # What concerns the lines themselves is still checked in a default list.
+    default = folder / "default_mds.lis"
+    default.write_text(default.read_text().replace("getriebe[0].vb_reflow", "getriebe[0].vb_reflwo"))
+    broken = run_in(folder, "lint", "default_mds.lis", "--format", "json")
+    assert [d["code"] for d in json.loads(broken.stdout)["diagnostics"]] == ["LIS101"]
 
 
 def _pre_commit() -> list[str]:

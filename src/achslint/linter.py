@@ -7,6 +7,7 @@ parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from . import machine, suppression
@@ -152,8 +153,14 @@ def _check_file(
     default_file: ListFile | None = None,
 ) -> FileResult:
     ctx = Context(name, file, settings.settings, embedded=embedded, default_file=default_file)
-    enabled = settings.selection.enabled
     rules = registry()
+    # A default list (default_mds.lis) only supplies values underneath every axis: alone it is no axis,
+    # so the rules that judge a whole axis do not run on it (they run on the axis lists that load it).
+    partial = embedded is None and machine.is_default_list(Path(name))
+
+    def enabled(code: str) -> bool:
+        return settings.selection.enabled(code) and not (partial and rules[code].needs_whole_axis)
+
     diagnostics: list[Diagnostic] = []
     for code, rule in rules.items():
         if rule.check is not None and enabled(code):

@@ -121,6 +121,12 @@ class Rule:
     check_program: CheckProgram | None = None  # LIS6xx: check_program(program, machine), see programlint
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
 
+    @property
+    def needs_whole_axis(self) -> bool:
+        """Whether the rule judges parameters together, as the CNC resolves a whole axis: such a rule has
+        nothing to judge in a default list on its own."""
+        return bool(self.parameters)
+
     def section(self, title: str) -> str:
         """The text of one docstring section ("What", "Why", ...)."""
         match = re.search(rf"^{re.escape(title)}\n-+\n(.*?)(?=^\S[^\n]*\n-+\n|\Z)", self.doc, re.M | re.S)
