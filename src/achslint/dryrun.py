@@ -30,6 +30,7 @@ import importlib
 import math
 import random
 from collections import Counter
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -61,7 +62,7 @@ class DryRun:
 
 
 def scenario_input(
-    file: Path, scenario: Path | None, options: dict[str, object], config: Path | None = None
+    file: Path, scenario: Path | None, options: Mapping[str, object], config: Path | None = None
 ) -> tuple[ScenarioInput, int]:
     """The scenario a dry run uses and the cycle time: the configuration's `scenario` table (found next to the
     list, or `config`), then the scenario file, then the command-line options (each later source wins, key by
