@@ -471,7 +471,7 @@ class _Runner:
                 break
             record.outcome = "done"
         for record in result.blocks:
-            if record.outcome == "not_run":
+            if record.outcome != "done":
                 for name in record.axes:
                     axis = result.axes.get(name)
                     if axis is not None and axis.outcome == "not_commanded":
