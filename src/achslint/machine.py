@@ -20,7 +20,7 @@ from .diagnostics import Diagnostic, Related, Severity
 from .files import Scope, inside, not_a_list_file, read_list
 
 STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
-_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds")
+_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds|sda_mds\[[0-9]+\]|default_sda_mds")
 
 
 @dataclass
@@ -41,6 +41,8 @@ class Startup:
     axes: list[StartupEntry] = field(default_factory=list)
     root: Path | None = None  # the CNC working directory the entries are resolved against
     root_origin: str = ""  # how the root was chosen, in words (for LIS504)
+    channels: list[StartupEntry] = field(default_factory=list)  # channel lists, sda_mds[i]
+    default_channel: StartupEntry | None = None  # default_sda_mds
 
 
 def is_startup_list(path: Path) -> bool:
@@ -152,6 +154,10 @@ def read_startup(
         entry = StartupEntry(line.path, line.value, line.number, line.value_column, found, refused, looked)
         if entry.key == "default_achs_mds":
             startup.default = entry
+        elif entry.key == "default_sda_mds":
+            startup.default_channel = entry
+        elif entry.key.startswith("sda_mds"):
+            startup.channels.append(entry)
         else:
             startup.axes.append(entry)
     return startup

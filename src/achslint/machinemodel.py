@@ -54,6 +54,13 @@ class Machine:
     axes: dict[str, MachineAxis] = field(default_factory=dict)  # key: programmed name, upper case
     gantry_pairs: list[tuple[str, str]] = field(default_factory=list)  # (master name, slave name)
     notes: list[str] = field(default_factory=list)  # what could not be read or was assumed, in words
+    channel: int | None = (
+        None  # the channel whose names `axes` uses (1-based), when built from a channel list
+    )
+    channel_list: Path | None = None  # that channel's list
+    # Axes of the start-up list that the channel does not name (or whose name was taken): not programmable
+    # in this channel, still part of the machine (shown by `explain`).
+    other_axes: list[MachineAxis] = field(default_factory=list)
 
     def by_number(self, logical_number: int) -> MachineAxis | None:
         return next((a for a in self.axes.values() if a.logical_number == logical_number), None)
