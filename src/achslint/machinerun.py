@@ -35,6 +35,7 @@ import statistics
 from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from .dryrun import DryRunRefused, annotate, refusal
@@ -56,8 +57,8 @@ from .scenario import Scenario, ScenarioError, default_scenario
 VERSION = 1
 DISABLED_ERROR = "P-ERR-50685"
 COLLISION_NOTE = (
-    "stands still while the other axes of its group move (homing type IGNORE_ABS_POS, P-AXIS-00299): "
-    "the CNC does not stop them, so make sure nothing can collide"
+    "stands still (homing type IGNORE_ABS_POS) while the other axes of its group move: the CNC does not "
+    "stop them, so make sure nothing can collide"
 )
 
 
@@ -313,6 +314,41 @@ def run_machine(
     Raises DryRunRefused for a program the CNC would not start (its text problems) and ScenarioError for a
     scenario that does not fit the machine."""
     return MachinePlan(machine, program, scenario, cycle_time_us=cycle_time_us).run()
+
+
+def machine_dry_run(
+    startup: Path,
+    program: Path,
+    scenario: Path | None = None,
+    *,
+    channel: int = 1,
+    config: Path | None = None,
+    sweep_runs: int = 0,
+) -> tuple[MachineRun, dict[str, Any] | None]:
+    """`achslint dry-run hochlauf.lis --program rfp.nc`: build the machine from the start-up list (the
+    configuration's `cnc-root`), read the program and the machine scenario (the configuration's `scenario`
+    table and `cycle-time-us` underneath), run it, and sweep it `sweep_runs` times.
+
+    Raises MachineError (machine or program unreadable), ScenarioError and DryRunRefused, each with a
+    one-line message naming the file."""
+    from .files import reason
+    from .machinebuild import MachineError, build_machine
+    from .machinescenario import machine_scenario_input
+    from .ncprogram import read_program
+
+    given, cycle_time_us, cnc_root = machine_scenario_input(startup, scenario, config)
+    machine = build_machine(startup, cnc_root=cnc_root, channel=channel)
+    if not machine.axes:
+        raise MachineError(
+            "names no axis lists (achs_mds[i]): --program needs the machine's start-up list (hochlauf.lis)",
+            startup,
+        )
+    try:
+        data = program.read_bytes()
+    except OSError as exc:
+        raise MachineError(f"cannot read the homing program: {reason(exc)}", program) from None
+    plan = MachinePlan(machine, read_program(data, str(program)), given, cycle_time_us=cycle_time_us)
+    return plan.run(), (sweep(plan, sweep_runs) if sweep_runs else None)
 
 
 # --- one run ------------------------------------------------------------------------------------
@@ -625,7 +661,7 @@ class _Runner:
                 f"master {plan.master[name]} is, not on its own",
             )
         others_move = bool(group.moving)
-        for name in group.still:
+        for name in group.still if end > t0 else ():
             axes[name].phases.append(
                 AxisPhase(
                     "standing still",

@@ -134,9 +134,10 @@ def read_machine_scenario(path: Path, base: Mapping[str, Any] | None = None) -> 
 
 def machine_scenario_input(
     startup: Path, scenario: Path | None, config: Path | None = None
-) -> tuple[MachineScenario, int]:
-    """The machine scenario and the CNC cycle (µs) for a dry-run of a start-up list: the configuration's
-    `scenario` table (found next to the start-up list, or `config`) as machine-wide defaults, then the file."""
+) -> tuple[MachineScenario, int, Path | None]:
+    """The machine scenario, the CNC cycle (µs) and the configured `cnc-root` for a dry-run of a start-up
+    list: the configuration's `scenario` table (found next to the start-up list, or `config`) as machine-wide
+    defaults, then the file."""
     from .config import ConfigError, discover, load_file
 
     try:
@@ -146,6 +147,7 @@ def machine_scenario_input(
     base = dict(resolved.settings.scenario)
     if base:
         parse_input(base, f"{resolved.path}: [scenario]")
+    cycle, root = resolved.settings.cycle_time_us, resolved.cnc_root()
     if scenario is None:
-        return MachineScenario("scenario", base, {}), resolved.settings.cycle_time_us
-    return read_machine_scenario(scenario, base), resolved.settings.cycle_time_us
+        return MachineScenario(f"{resolved.path}: [scenario]" if base else "scenario", base, {}), cycle, root
+    return read_machine_scenario(scenario, base), cycle, root
