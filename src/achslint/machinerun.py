@@ -533,7 +533,7 @@ class _Runner:
             self.result.failure = MachineFailure(axis, reason, cause or reason, t, index, at, code)
             if axis in self.result.axes:
                 run = self.result.axes[axis]
-                run.outcome, run.failure = "failed", reason
+                run.outcome, run.failure = "failed", reason.removeprefix(f"{axis}: ")
 
     # -- G74 ---------------------------------------------------------------------------------------
     def _homing(self, index: int, block: HomingBlock, t: float) -> float:

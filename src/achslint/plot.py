@@ -416,7 +416,7 @@ def build_machine_figure(run: MachineRun) -> Any:
     )
     panels = [p[0] for p in panels]
     timeline = panels[0]
-    figure.subplots_adjust(left=0.1, right=0.7, top=1 - 0.9 / (1.6 + sum(heights)), bottom=0.06, hspace=0.12)
+    figure.subplots_adjust(left=0.14, right=0.7, top=1 - 0.9 / (1.6 + sum(heights)), bottom=0.06, hspace=0.12)
 
     colours: dict[str, str] = {}
 
@@ -533,6 +533,9 @@ def build_machine_figure(run: MachineRun) -> Any:
                 zorder=5,
                 gid="failure",
             )
+    if run.failure is not None:
+        for panel in panels:
+            panel.axvline(run.failure.time, color=FAILURE_COLOUR, linewidth=1.0, zorder=3, gid="failure time")
     timeline.set_yticks(range(lanes))
     timeline.set_yticklabels(
         [
