@@ -1017,11 +1017,12 @@ def sweep(plan: MachinePlan, runs: int, seed: int = 1) -> dict[str, Any]:
         entry = by_axis.setdefault(axis, {"axis": axis, "failed": 0, "reasons": []})
         entry["failed"] += count
         entry["reasons"].append({"reason": cause, "count": count})
+    homed = {w.name.upper() for b in plan.program.blocks if isinstance(b, HomingBlock) for w in b.words}
+    geometry = ("cam", "zero_pulse_period", "zero_pulse_phase", "limit_switches")
     assumed = {
-        name: [
-            g for g in ("cam", "zero_pulse_period", "zero_pulse_phase", "limit_switches") if g in s.assumed
-        ]
-        for name, s in ((n, p.scenario) for n, p in plan.axes.items())
+        name: [g for g in geometry if g in prepared.scenario.assumed]
+        for name, prepared in plan.axes.items()
+        if name in homed and prepared.strategy.moves
     }
     summary: dict[str, Any] = {
         "runs": runs,
