@@ -10,8 +10,22 @@ from __future__ import annotations
 
 from typing import Any
 
-from .dryrun import _finite, _num, _round
+from . import dryrun
 from .machinerun import AxisPhase, AxisRun, BlockRun, MachineRun
+
+
+def _round(value: float | None) -> float | None:
+    """A number for JSON: 9 decimals, None when missing or not finite."""
+    return dryrun._round(value)  # type: ignore[no-untyped-call,no-any-return]
+
+
+def _num(value: float, digits: int = 4, fixed: bool = False) -> str:
+    return dryrun._num(value, digits, fixed)
+
+
+def _finite(document: dict[str, Any]) -> dict[str, Any]:
+    return dryrun._finite(document)  # type: ignore[no-untyped-call,no-any-return]
+
 
 OUTCOME_WORDS = {
     "homed": "homed",

@@ -256,7 +256,7 @@ class _Axis:
         return self._refused
 
     def speed_limit(self, homed: bool) -> float:
-        return self.vmax if homed else min(self.vmax, self.unreferenced)
+        return float(self.vmax if homed else min(self.vmax, self.unreferenced))
 
 
 class MachinePlan:
@@ -355,16 +355,16 @@ def machine_dry_run(
 
 
 def block_text(block: HomingBlock | MoveBlock | SkippedBlock) -> str:
-    number = f"N{block.number} " if getattr(block, "number", None) is not None else ""
+    if isinstance(block, SkippedBlock):
+        return block.text
+    number = f"N{block.number} " if block.number is not None else ""
     if isinstance(block, HomingBlock):
         return f"{number}G74 " + " ".join(f"{w.name}{int(w.value)}" for w in block.words)
-    if isinstance(block, MoveBlock):
-        words = ["G00" if block.rapid else "G01", "G90" if block.absolute else "G91"]
-        words += [f"{w.name}{_num(w.value)}" for w in block.targets]
-        if not block.rapid and block.feed_mm_min is not None:
-            words.append(f"F{_num(block.feed_mm_min)}")
-        return number + " ".join(words)
-    return block.text
+    words = ["G00" if block.rapid else "G01", "G90" if block.absolute else "G91"]
+    words += [f"{w.name}{_num(w.value)}" for w in block.targets]
+    if not block.rapid and block.feed_mm_min is not None:
+        words.append(f"F{_num(block.feed_mm_min)}")
+    return number + " ".join(words)
 
 
 def _num(value: float) -> str:
@@ -612,19 +612,21 @@ class _Runner:
             legs[name] = self._leg(index, name, t0)
         earliest = min((leg.fail_time for leg in legs.values() if leg.fail_time is not None), default=None)
         for name in after_master:
-            master = legs[plan.master[name]]
-            start = master.phases[-1].end_time if master.phases else t0
+            lead = legs[plan.master[name]]
+            start = lead.phases[-1].end_time if lead.phases else t0
             if earliest is not None and earliest < start:
                 continue
             # It starts where following its master's homing left it.
-            moved = (master.phases[-1].end_position - master.x_start) if master.phases else 0.0
-            legs[name] = self._leg(index, name, start, self.x[name] + moved)
-            if legs[name].fail_time is not None:
-                earliest = min(earliest if earliest is not None else math.inf, legs[name].fail_time)
+            moved = (lead.phases[-1].end_position - lead.x_start) if lead.phases else 0.0
+            leg = self._leg(index, name, start, self.x[name] + moved)
+            legs[name] = leg
+            if leg.fail_time is not None:
+                earliest = leg.fail_time if earliest is None else min(earliest, leg.fail_time)
         # Failure: everything still moving then brakes; the failing axis is the one that failed first.
         if earliest is not None:
             failed = min(
-                (leg for leg in legs.values() if leg.fail_time is not None), key=lambda leg: leg.fail_time
+                (leg for leg in legs.values() if leg.fail_time is not None),
+                key=lambda leg: leg.fail_time if leg.fail_time is not None else math.inf,
             )
             self._fail(
                 index,
