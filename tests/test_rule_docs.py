@@ -5,10 +5,11 @@ A section is turned into input from its ``` code blocks:
 * A block without a file marker is one list, linted on its own with every rule enabled (the rule's code is
   picked from the findings, so a snippet needs no `Ende` line). Every such block of the Example must trigger
   the rule, no block of Use instead may.
-* Blocks whose first line names a file (`# file: achsmds2.lis`, or `<!-- file: Axis_X.xti -->` in XML) are
-  written side by side into an empty folder, which is linted as a machine through the real API: through its
-  start-up list (`hochlauf*.lis`) when it has one, the file itself when there is only one, otherwise the
-  folder. The marker line stays in the file; it is a comment there.
+* Blocks whose first line names a file (`# file: achsmds2.lis`, `; file: rfp.nc` in an NC program, or
+  `<!-- file: Axis_X.xti -->` in XML) are written side by side into an empty folder, which is linted as a
+  machine through the real API: an NC program against the machine of the start-up list (`--machine`),
+  else through its start-up list (`hochlauf*.lis`) when it has one, the file itself when there is only
+  one, otherwise the folder. The marker line stays in the file; it is a comment there.
 """
 
 from __future__ import annotations
@@ -25,7 +26,9 @@ from achslint.diagnostics import Diagnostic, Severity
 from achslint.rules import Rule, registry
 
 BLOCK = re.compile(r"^```[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
-FILE_MARKER = re.compile(r"^(?:#\s*file:\s*(?P<lis>\S+)|<!--\s*file:\s*(?P<xml>\S+)\s*-->)\s*$")
+FILE_MARKER = re.compile(
+    r"^(?:#\s*file:\s*(?P<lis>\S+)|;\s*file:\s*(?P<nc>\S+)|<!--\s*file:\s*(?P<xml>\S+)\s*-->)\s*$"
+)
 
 # What a code block cannot show. A byte-order mark is invisible in a code block, so LIS006's Example says
 # in prose that the list starts with one and the test puts it there.
@@ -42,7 +45,7 @@ def code_blocks(rule: Rule, title: str) -> list[str]:
 
 def file_name(block: str) -> str | None:
     match = FILE_MARKER.match(block.split("\n", 1)[0])
-    return None if match is None else match.group("lis") or match.group("xml")
+    return None if match is None else match.group("lis") or match.group("nc") or match.group("xml")
 
 
 def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
@@ -61,13 +64,17 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="latin-1" if name.endswith(".lis") else "utf-8")
     startup = sorted(tmp_path.glob("hochlauf*.lis"))
-    if startup:
+    programs = sorted(tmp_path.glob("*.nc"))
+    machine = None
+    if programs:  # a homing program (LIS6xx), checked against the machine of the start-up list
+        target, machine = programs[0], str(startup[0])
+    elif startup:
         target = startup[0]
     elif len(files) == 1:
         target = tmp_path / next(iter(files))
     else:
         target = tmp_path
-    outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1))
+    outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1, machine=machine))
     assert not outcome.errors, outcome.errors
     return [[d for result in outcome.results for d in result.diagnostics]]
 

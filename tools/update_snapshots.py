@@ -24,12 +24,21 @@ RULES = ROOT / "fixtures" / "rules"
 
 
 def fixture(rule_dir: Path, kind: str) -> Path:
-    """The `bad` or `good` fixture of a rule: a list (.lis), an XML file, or a machine folder (LIS5xx)."""
-    for suffix in (".lis", ".xml", ""):
+    """The `bad` or `good` fixture of a rule: a list (.lis), an XML file, a machine folder (LIS5xx), or an NC
+    program (.nc, LIS6xx) checked against the machine whose start-up list the rule folder's `machine` file
+    names."""
+    for suffix in (".lis", ".xml", ".nc", ""):
         candidate = rule_dir / f"{kind}{suffix}"
         if candidate.exists():
             return candidate
-    raise FileNotFoundError(f"{rule_dir} has no {kind}.lis, {kind}.xml or {kind}/")
+    raise FileNotFoundError(f"{rule_dir} has no {kind}.lis, {kind}.xml, {kind}.nc or {kind}/")
+
+
+def machine_of(path: Path) -> str | None:
+    """For an NC program fixture: the start-up list named (relative to the rule folder) in `machine`."""
+    if path.suffix != ".nc":
+        return None
+    return str(path.parent / (path.parent / "machine").read_text(encoding="utf-8").strip())
 
 
 def selection(rule_dir: Path) -> list[str]:
@@ -48,7 +57,9 @@ def lint_fixture(path: Path, select: list[str] | None) -> list:
     if path.is_dir():
         startup = sorted(path.glob("hochlauf*.lis"))
         target = startup[0] if startup else path
-    outcome = run_lint(LintRequest([str(target)], Overrides(select=select), jobs=1))
+    request = LintRequest([str(target)], Overrides(select=select), jobs=1, machine=machine_of(path))
+    outcome = run_lint(request)
+    assert not outcome.errors, outcome.errors
     return [d for result in outcome.results for d in result.diagnostics]
 
 

@@ -52,6 +52,8 @@ class LintRequest:
     keep_source: bool = True  # keep line texts for code frames (the full and gitlab formats need them)
     force_exclude: bool = False  # exclude patterns apply to named files too
     respect_gitignore: bool = True  # files git ignores are not searched in folders
+    machine: str | None = None  # start-up list of the machine NC programs (`rfp.nc`) are checked against
+    channel: int = 1  # the channel whose axis names the programs use
 
 
 @dataclass
@@ -521,8 +523,24 @@ def _track(results, progress, total: int):
 
 
 def run_lint(request: LintRequest, stdin=None, progress=None) -> LintOutcome:
-    """Lint what the request names. Raises `ConfigError` for an unusable configuration."""
-    return Linter(request).run(stdin, progress)
+    """Lint what the request names. Raises `ConfigError` for an unusable configuration.
+
+    NC programs (`rfp.nc`) among the paths are checked against the machine of `request.machine` (LIS6xx).
+    """
+    from .programlint import is_program, lint_programs
+
+    programs = [path for path in request.paths if is_program(path)]
+    if not programs:
+        return Linter(request).run(stdin, progress)
+    rest = [path for path in request.paths if not is_program(path)]
+    outcome = Linter(replace(request, paths=rest)).run(stdin, progress) if rest else LintOutcome([], [])
+    linter = Linter(request)
+    results, errors = lint_programs(
+        programs, request, lambda path: linter.settings_for(Target(str(path), path, linter.config_for(path)))
+    )
+    outcome.results.extend(results)
+    outcome.errors.extend(errors)
+    return outcome
 
 
 def _as_bytes(source) -> tuple[bytes, str]:

@@ -249,8 +249,17 @@ def lint(
         metavar="DIR",
         help="The CNC's working directory: start-up list entries (./listen/achsmds1.lis) are resolved against it (default: the nearest folder above the start-up list where they exist).",
     ),
+    machine: str | None = typer.Option(
+        None,
+        "--machine",
+        metavar="STARTUP",
+        help="Start-up list (hochlauf.lis) of the machine the NC programs among PATH (rfp.nc) are checked against (LIS6xx).",
+    ),
+    channel: int = typer.Option(
+        1, "--channel", min=1, max=12, help="With --machine: the channel whose axis names the programs use."
+    ),
 ) -> None:
-    """Lint axis parameter lists."""
+    """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .api import LintRequest, run_lint
     from .config import ConfigError, Overrides
 
@@ -285,6 +294,8 @@ def lint(
         keep_source=fmt in ("full", "gitlab"),
         force_exclude=force_exclude,
         respect_gitignore=respect_gitignore,
+        machine=machine,
+        channel=channel,
     )
     quiet = quiet or silent
     try:
@@ -603,16 +614,33 @@ def explain(
     ),
     gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing speeds are shown."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+    program: str | None = typer.Option(
+        None, "--program", metavar="NC", help="With a start-up list: show the homing order of this program."
+    ),
+    channel: int = typer.Option(
+        1, "--channel", min=1, max=12, help="With a start-up list: the channel whose axis names are shown."
+    ),
+    cnc_root: str | None = typer.Option(
+        None,
+        "--cnc-root",
+        metavar="DIR",
+        help="With a start-up list: the CNC's working directory its entries are resolved against.",
+    ),
 ) -> None:
-    """Explain the homing configuration of a list, or describe one parameter."""
+    """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
     import json
 
     from .explain import explain_list, parameter_card, render_card, render_list
     from .files import not_a_list_file
+    from .machine import is_startup_list
 
     path = Path(target)
     problem = not_a_list_file(path)
-    if problem is None or problem not in NOT_A_FILE:
+    if problem is None and is_startup_list(path):
+        report, render = _machine_report(path, program, channel, cnc_root, gear), _render_machine
+    elif program is not None:
+        _fail("--program goes with a start-up list (hochlauf.lis)")
+    elif problem is None or problem not in NOT_A_FILE:
         report = explain_list(_one_list(path, target), target, gear)
         render = render_list
     else:
@@ -632,6 +660,30 @@ def explain(
         return
     use = _use_color(color, sys.stdout)
     render(report, _console(use))
+
+
+def _machine_report(path: Path, program: str | None, channel: int, cnc_root: str | None, gear: int) -> dict:
+    """`explain hochlauf.lis`: the machine's axes (and a program's homing order), or a one-line failure."""
+    from .files import reason
+    from .machinebuild import MachineError
+    from .machineexplain import explain_startup
+
+    try:
+        root = Path(_folder(cnc_root, "--cnc-root")) if cnc_root is not None else None
+        return explain_startup(
+            path, program=Path(program) if program else None, cnc_root=root, channel=channel, gear=gear
+        )
+    except (MachineError, UsageError) as exc:
+        _fail(str(exc))
+    except OSError as exc:
+        _fail(str(exc) if exc.errno is None else f"cannot read {program}: {reason(exc)}")
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _render_machine(report: dict, console) -> None:
+    from .machineexplain import render_machine
+
+    render_machine(report, console)
 
 
 # Why an argument of explain names no file at all (then it is taken as a parameter name).

@@ -63,12 +63,25 @@ def build_machine(startup: Path, *, cnc_root: Path | None = None, channel: int =
 
 
 def _read_startup(startup: Path, cnc_root: Path | None) -> Startup:
+    """The start-up list's entries; the files they name shown relative to the working directory, like
+    every other path in reports."""
     try:
-        return read_startup(startup, cnc_root=cnc_root, root_origin="given" if cnc_root else "")
+        entries = read_startup(startup, cnc_root=cnc_root, root_origin="given" if cnc_root else "")
     except OSError as exc:
         raise MachineError(f"cannot read the start-up list: {reason(exc)}", startup) from None
     except UnreadableInput as exc:
         raise MachineError(str(exc), startup) from None
+    for entry in [entries.default, entries.default_channel, *entries.axes, *entries.channels]:
+        if entry is not None and entry.path is not None:
+            entry.path = _relative(entry.path)
+    return entries
+
+
+def _relative(path: Path) -> Path:
+    try:
+        return path.relative_to(Path.cwd())
+    except ValueError:
+        return path
 
 
 def _shown(entry: StartupEntry) -> str:

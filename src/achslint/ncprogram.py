@@ -291,7 +291,7 @@ class _Reader:
             axis_words.append(
                 AxisWord(word.address, float(int(value)), self.at(number, word.column, word.end_column))
             )
-        if not words:
+        if not words and keep:  # (a block that cannot be read has its own problem)
             self.problem(
                 number,
                 location.column,
@@ -328,27 +328,17 @@ class _Reader:
 def _junk_message(piece: str) -> str:
     if piece[:1].isalpha() and piece.isascii():
         if re.fullmatch(r"[A-Za-z_]+", piece):
-            return f"`{piece}` has no number after it; the block is not simulated"
-        return f"`{piece}`: the number is too large to use; the block is not simulated"
+            return f"`{piece}` has no number after it, so the block cannot be read"
+        return f"`{piece}`: the number is too large to use, so the block cannot be read"
     shown = piece if piece.isprintable() else repr(piece)
-    return f"`{shown}` is not an NC word (an address followed by a number); the block is not simulated"
+    return f"`{shown}` is not an NC word (an address followed by a number), so the block cannot be read"
 
 
 def read_program(data: bytes, name: str) -> Program:
     """The blocks of a homing program, with the problems of its text. Never raises."""
     reader = _Reader(name)
-    text = _text(data, reader)
+    text = program_text(data)
     if text is None:
-        return reader.program
-    lines = split_lines(text)
-    for number, line in enumerate(lines, 1):
-        reader.line(number, line)
-    return reader.program
-
-
-def _text(data: bytes, reader: _Reader) -> str | None:
-    """The program as text (UTF-8, else Latin-1); None, with a problem, for a binary or UTF-16/32 file."""
-    if data.startswith((b"\xff\xfe", b"\xfe\xff")) or b"\x00" in data:
         reader.problem(
             1,
             1,
@@ -356,6 +346,16 @@ def _text(data: bytes, reader: _Reader) -> str | None:
             "this is not an NC program as text (it holds NUL bytes or is UTF-16/32): "
             "save it as ASCII/Latin-1",
         )
+        return reader.program
+    lines = split_lines(text)
+    for number, line in enumerate(lines, 1):
+        reader.line(number, line)
+    return reader.program
+
+
+def program_text(data: bytes) -> str | None:
+    """The program as text (UTF-8, else Latin-1); None for a binary or UTF-16/32 file."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")) or b"\x00" in data:
         return None
     body = data[3:] if data.startswith(b"\xef\xbb\xbf") else data
     try:

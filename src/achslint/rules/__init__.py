@@ -7,7 +7,9 @@ of diagnostics — or, for rules about the other rules' results (LIS009), a
 `check_after(ctx, directives, enabled)` generator that runs after
 suppressions were applied, or — for machine-level rules (LIS5xx) — a
 `check_machine(members, startups)` generator over the summaries of a machine's
-axis lists. `achslint rule CODE` prints that docstring.
+axis lists, or — for homing-program rules (LIS6xx) — a `check_program(program,
+machine)` generator over a program read against a machine (`programlint`).
+`achslint rule CODE` prints that docstring.
 """
 
 from __future__ import annotations
@@ -76,6 +78,13 @@ RULE_MODULES = (
     "lis503_gantry_master_missing",
     "lis504_missing_list",
     "lis505_xml_axis_definition",
+    "lis601_program_text",
+    "lis602_unknown_axis",
+    "lis603_axis_twice_in_g74",
+    "lis604_disabled_axis_homed",
+    "lis605_gantry_slave_alone",
+    "lis606_move_before_homing",
+    "lis607_ignored_axis_beside_moving_axes",
 )
 
 SECTIONS = ("What", "Why", "Example", "Use instead", "Reference")
@@ -94,6 +103,7 @@ class Rule:
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
     check_after: Callable | None = None
     check_machine: Callable | None = None
+    check_program: Callable | None = None  # LIS6xx: check_program(program, machine), see programlint
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
 
     def section(self, title: str) -> str:
@@ -119,6 +129,7 @@ def registry() -> dict[str, Rule]:
             parameters=tuple(getattr(module, "PARAMETERS", ())),
             check_after=getattr(module, "check_after", None),
             check_machine=getattr(module, "check_machine", None),
+            check_program=getattr(module, "check_program", None),
             produced_by=getattr(module, "PRODUCED_BY", "lint"),
         )
     return rules

@@ -1,0 +1,78 @@
+"""
+What
+----
+A homing program whose text the CNC cannot run as written: a comment opened
+with `(` and not closed on its line, `G74` without an axis, a homing order that
+is not a whole number from 1 up (`X0`, `Y-1`, `Z1.5`, `A99999`), an address
+without a number, a `G01` with no feed rate programmed before it, or a file that
+is not text at all.
+
+Why
+---
+The CNC stops the program at the first block it cannot decode, so the machine
+is left half homed; a typing slip in the homing order is worse, because the axes
+home in an order nobody chose. Every later check of the program (unknown names,
+the homing order) rests on reading the blocks the way the CNC reads them.
+
+Example
+-------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 X0            (the order starts at 1
+N20 M30
+```
+
+Use instead
+-----------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 X1            (the order starts at 1)
+N20 M30
+```
+
+Reference
+---------
+TF5200 homing manual §2.2 (G74: the values after the axis names give the
+homing order; equal values home together).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..diagnostics import Diagnostic, Severity
+from ..machinemodel import Machine, Program
+from ..programlint import diagnostic
+
+CODE = "LIS601"
+NAME = "program-text"
+SEVERITY = "error"
+FIX = "none"
+SUMMARY = "Homing program text the CNC cannot run as written"
+
+
+def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    for problem in program.problems:
+        yield diagnostic(CODE, problem.at, problem.message, Severity.ERROR)

@@ -1,0 +1,110 @@
+"""
+What
+----
+A `G74` or move block names an axis the machine does not have under that name:
+no axis of the channel list (`gruppe[0].achse[i].bezeichnung`,
+`spindel[i].bezeichnung`) — or, without a channel list, no axis list's
+`kopf.log_achs_name` — is called so.
+
+Why
+---
+The CNC rejects the block and stops the homing program there. A homing program
+copied from another machine (`A2 B2` on a machine without rotary axes) or an
+axis renamed in the channel list leaves the machine unhomed at power-up.
+
+Example
+-------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 X1 Y1 A2      (this machine has no A axis)
+N20 M30
+```
+
+Use instead
+-----------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 X1 Y1
+N20 M30
+```
+
+Reference
+---------
+P-CHAN-00006 / P-CHAN-00007 (axis and spindle names in the channel),
+P-CHAN-00035 / P-CHAN-00036 (their logical axis numbers), P-AXIS-00297.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterator
+
+from ..diagnostics import Diagnostic, Severity
+from ..machinemodel import HomingBlock, Machine, MoveBlock, Program
+from ..programlint import diagnostic
+
+CODE = "LIS602"
+NAME = "unknown-axis"
+SEVERITY = "error"
+FIX = "none"
+SUMMARY = "Program names an axis the machine does not have"
+
+
+def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    names = sorted(machine.axes)
+    for block in program.blocks:
+        if isinstance(block, HomingBlock):
+            words = block.words
+        elif isinstance(block, MoveBlock):
+            words = block.targets
+        else:
+            continue
+        for word in words:
+            if word.name in machine.axes:
+                continue
+            close = difflib.get_close_matches(word.name, names, n=2, cutoff=0.5)
+            hint = f"; did you mean {' or '.join(close)}?" if close else ""
+            where = f"channel {machine.channel}" if machine.channel_list else "the machine"
+            yield diagnostic(
+                CODE,
+                word.at,
+                f"{where} has no axis named {word.name} (its axes: {', '.join(names) or 'none'}){hint}; "
+                "the CNC stops the program at this block",
+                Severity.ERROR,
+            )

@@ -1,0 +1,105 @@
+"""
+What
+----
+One `G74` block names the same axis twice (`G74 X1 Y1 X2`).
+
+Why
+---
+An axis is homed once per command; the second mention either repeats the first
+or gives it a second, contradicting place in the homing order. Which one the CNC
+takes is not something to leave to chance on a machine nobody has homed yet.
+
+Example
+-------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 X1 Y1 X2
+N20 M30
+```
+
+Use instead
+-----------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 Y1 X2
+N20 M30
+```
+
+Reference
+---------
+TF5200 homing manual §2.2 (the homing order of G74).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..diagnostics import Diagnostic, Related, Severity
+from ..machinemodel import AxisWord, HomingBlock, Machine, Program
+from ..programlint import diagnostic
+
+CODE = "LIS603"
+NAME = "axis-twice-in-g74"
+SEVERITY = "error"
+FIX = "none"
+SUMMARY = "G74 names the same axis twice"
+
+
+def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    for block in program.blocks:
+        if not isinstance(block, HomingBlock):
+            continue
+        first: dict[str, AxisWord] = {}
+        for word in block.words:
+            earlier = first.setdefault(word.name, word)
+            if earlier is word:
+                continue
+            same = int(earlier.value) == int(word.value)
+            yield diagnostic(
+                CODE,
+                word.at,
+                f"{word.name} is named a second time in this G74 block"
+                + (
+                    ""
+                    if same
+                    else f", with homing order {int(word.value)} after {int(earlier.value)}: name it once"
+                ),
+                Severity.ERROR,
+                (Related(earlier.at.path, earlier.at.line, earlier.at.column, None, "first named here"),),
+            )

@@ -1,0 +1,122 @@
+"""
+What
+----
+A `G74` block homes a gantry slave (an axis list with `kenngr.gantry_ax_nr`, or
+a slave of a coupled pair in the channel list) while its master is not homed
+before it: the master is neither in an earlier G74 block nor earlier (or
+together with it) in the same block.
+
+Why
+---
+The two sides of a gantry are one mechanical unit. With
+`kenngr.gantry_slave_no_homing` the slave takes its reference from the master;
+without it the slave may be homed, but only once the master is referenced. A
+slave homed on its own moves one side of the portal while the other stands,
+which skews the beam and trips the gantry difference monitoring.
+
+Example
+-------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    Y
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y2
+kenngr.gantry_ax_nr   1
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 Y2=1          (the slave side alone)
+N20 G74 Y1
+N30 M30
+```
+
+Use instead
+-----------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    Y
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y2
+kenngr.gantry_ax_nr   1
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 Y1            (the master first)
+N20 G74 Y2=1          (then the slave)
+N30 M30
+```
+
+Reference
+---------
+P-AXIS-00070 (gantry master of a slave), P-AXIS-00074 (slave homed with its
+master); TF5200 homing manual §2.2 and §2.3.3.4.5 (gantry coupling);
+P-CHAN-00037 / P-CHAN-00038 (coupled pairs of the channel).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..diagnostics import Diagnostic, Severity
+from ..machinemodel import HomingBlock, Machine, Program
+from ..programlint import defined, diagnostic, steps
+
+CODE = "LIS605"
+NAME = "gantry-slave-alone"
+SEVERITY = "warning"
+FIX = "none"
+SUMMARY = "Gantry slave homed before its master"
+
+
+def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    for step in steps(program, machine):
+        block = step.block
+        if not isinstance(block, HomingBlock):
+            continue
+        order = {word.name: int(word.value) for word in reversed(block.words)}
+        for word in block.words:
+            axis = machine.axes.get(word.name)
+            master = axis.gantry_master if axis is not None else None
+            if axis is None or master is None or master in step.homed:
+                continue
+            if master in order and order[master] <= int(word.value):
+                continue
+            if master in order:
+                why = (
+                    f"in this block it homes at step {int(word.value)}, before its master {master} "
+                    f"(step {order[master]})"
+                )
+            else:
+                why = f"its master {master} is not homed before it"
+            yield diagnostic(
+                CODE,
+                word.at,
+                f"{word.name} is the gantry slave of {master} and {why}: home the slave together with its "
+                "master or after it, so both sides of the gantry stay aligned",
+                Severity.WARNING,
+                defined(machine.axes[master]),
+            )

@@ -1,0 +1,107 @@
+"""
+What
+----
+A move block (`G00` / `G01`) commands an axis that no earlier `G74` block has
+homed, and whose position is not known from an absolute encoder either.
+
+Why
+---
+Until an axis is homed its position is a guess, and the CNC does not monitor
+its software limit switches. A move such as `G01 G90 Z200` to a safe height then
+goes 200 mm from wherever the axis happens to stand — possibly into the end
+stop or the workpiece.
+
+Example
+-------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Z
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 X1
+N15 G01 G90 Z200 F500  (Z is not homed yet)
+N20 G74 Z1
+N30 M30
+```
+
+Use instead
+-----------
+```
+# file: hochlauf.lis
+achs_mds[0]           achsmds1.lis
+achs_mds[1]           achsmds2.lis
+Ende
+```
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+Ende
+```
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Z
+Ende
+```
+```
+; file: rfp.nc
+N10 G74 Z1
+N15 G01 G90 Z200 F500  (Z is homed: its limits are watched)
+N20 G74 X1
+N30 M30
+```
+
+Reference
+---------
+TF5200 homing manual §2.2 (after homing, axes can be positioned within the
+software limit switches); P-AXIS-00177 / P-AXIS-00178 (software limits),
+P-AXIS-00014 (absolute encoder: no homing needed).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..diagnostics import Diagnostic, Severity
+from ..machinemodel import Machine, MoveBlock, Program
+from ..programlint import diagnostic, steps
+
+CODE = "LIS606"
+NAME = "move-before-homing"
+SEVERITY = "warning"
+FIX = "none"
+SUMMARY = "Move of an axis that is not homed yet"
+
+
+def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    for step in steps(program, machine):
+        block = step.block
+        if not isinstance(block, MoveBlock):
+            continue
+        for word in block.targets:
+            if word.name not in machine.axes or word.name in step.homed:
+                continue
+            kind = "to" if block.absolute else "by"
+            yield diagnostic(
+                CODE,
+                word.at,
+                f"{word.name} is not homed yet when this block moves it {kind} {word.value:g}: its position "
+                "is not known and its software limits are not monitored; home it in an earlier G74 block",
+                Severity.WARNING,
+            )

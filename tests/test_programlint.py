@@ -1,0 +1,167 @@
+"""Homing programs against a machine: LIS6xx through the library, `lint --machine` and `explain`."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from achslint.machinebuild import build_machine
+from achslint.ncprogram import read_program
+from achslint.programlint import check_program
+
+from .conftest import FIXTURES, run_cli
+
+PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
+SDK4 = FIXTURES / "machines" / "sdk4" / "listen" / "hochlauf.lis"
+
+
+@pytest.fixture(scope="module")
+def portal():
+    return build_machine(PORTAL)
+
+
+def cli(*args: str):
+    """The CLI in process, with its output as text."""
+    result = run_cli(*args)
+    result.stdout, result.stderr = result.stdout.decode(), result.stderr.decode()
+    return result
+
+
+def findings(machine, text: str) -> list[tuple[int, int, str]]:
+    return [(d.line, d.column, d.code) for d in check_program(read_program(text.encode(), "p.nc"), machine)]
+
+
+def test_the_portals_own_program_is_clean(portal):
+    assert findings(portal, (FIXTURES / "machines" / "portal" / "rfp.nc").read_text()) == []
+
+
+def test_one_finding_of_each_kind_at_its_word(portal):
+    text = (
+        "N5 G01 G90 Z200 F500\n"  # Z moves before it is homed: LIS606 at Z200 (column 12)
+        "N10 G74 Z1 Q1 Z2\n"  # Q is no axis (LIS602, column 12); Z twice (LIS603, column 15)
+        "N20 G74 X1 B1 C2\n"  # B stands while X moves (LIS607, column 12); C is DISABLED (LIS604, column 15)
+        "N30 G74 Y2=1 Y2\n"  # the slave at step 1, its master at step 2 (LIS605, column 9)
+        "N40 G74 A0\n"  # order 0 (LIS601, column 9)
+    )
+    assert findings(portal, text) == [
+        (1, 12, "LIS606"),
+        (2, 12, "LIS602"),
+        (2, 15, "LIS603"),
+        (3, 12, "LIS607"),
+        (3, 15, "LIS604"),
+        (4, 9, "LIS605"),
+        (5, 9, "LIS601"),
+    ]
+
+
+def test_homing_state_between_blocks(portal):
+    # The slave Y2 is referenced with its master (gantry_slave_no_homing): it may move after N10.
+    # B has an absolute encoder: it may move at once. C is DISABLED: its G74 fails, but it is absolute too.
+    assert findings(portal, "N10 G74 Y1\nN20 G01 G91 Y2=5 B10 F100\nN30 M30\n") == []
+    # A move between two G74 blocks: X homed in N10 may move, A homed only in N30 may not yet.
+    assert findings(portal, "N10 G74 X1\nN20 G00 X5 A10\nN30 G74 A1\n") == [(2, 12, "LIS606")]
+
+
+def test_a_slave_with_its_master_in_the_same_group_is_fine(portal):
+    assert findings(portal, "N10 G74 Y1 Y2=1\n") == []
+    assert findings(portal, "N10 G74 Y2=2 Y1\n") == []  # the master at step 1, the slave at step 2
+
+
+def test_the_manuals_program_on_the_four_axis_machine():
+    machine = build_machine(SDK4)
+    text = "N10 G74 Z1\nN15 G01 G90 Z200 F500\nN20 G74 X1 Y1 A2 B2 S3\nN30 M30\n"
+    assert findings(machine, text) == [(3, 15, "LIS602"), (3, 18, "LIS602")]
+
+
+def test_lint_with_machine_in_the_cli_concise():
+    bad = FIXTURES / "rules" / "LIS604" / "bad.nc"
+    result = cli("lint", str(bad), "--machine", str(PORTAL), "--format", "concise")
+    assert result.returncode == 1, result.stderr
+    assert result.stdout.splitlines()[0].startswith(f"{bad}:3:15: LIS604 [error] C must not be homed")
+
+
+@pytest.mark.parametrize("fmt", ["json", "sarif", "github", "gitlab", "junit", "full"])
+def test_program_findings_in_every_format(fmt):
+    bad = FIXTURES / "rules" / "LIS607" / "bad.nc"
+    result = cli("lint", str(bad), "--machine", str(PORTAL), "--format", fmt, "--exit-zero")
+    assert result.returncode == 0, result.stderr
+    assert "LIS607" in result.stdout
+    if fmt == "json":
+        found = [d for d in json.loads(result.stdout)["diagnostics"] if d["code"] == "LIS607"]
+        assert [(d["line"], d["column"]) for d in found] == [(3, 15)]
+
+
+def test_lists_and_programs_in_one_run():
+    bad = FIXTURES / "rules" / "LIS606" / "bad.nc"
+    listing = FIXTURES / "rules" / "LIS302" / "bad.lis"
+    result = cli("lint", str(bad), str(listing), "--machine", str(PORTAL), "--format", "concise")
+    codes = {line.split(": ")[1].split(" ")[0] for line in result.stdout.splitlines() if ": LIS" in line}
+    assert {"LIS606", "LIS302"} <= codes
+
+
+def test_a_program_without_machine_is_a_usage_error():
+    result = cli("lint", str(FIXTURES / "machines" / "portal" / "rfp.nc"))
+    assert result.returncode == 2
+    assert "give its start-up list with --machine hochlauf.lis" in result.stderr
+    assert "Traceback" not in result.stderr
+
+
+def test_a_machine_that_cannot_be_built_is_one_line(tmp_path):
+    startup = tmp_path / "hochlauf.lis"
+    startup.write_text("achs_mds[0] missing.lis\nEnde\n")
+    result = cli("lint", str(FIXTURES / "machines" / "portal" / "rfp.nc"), "--machine", str(startup))
+    assert result.returncode == 2
+    assert f"--machine: {startup}:1: `achs_mds[0]` names the axis list `missing.lis`" in result.stderr
+    assert "Traceback" not in result.stderr
+
+
+def test_a_program_that_is_missing(tmp_path):
+    result = cli("lint", str(tmp_path / "rfp.nc"), "--machine", str(PORTAL))
+    assert result.returncode == 2
+    assert "rfp.nc: no such file or directory" in result.stderr
+
+
+def test_explain_a_machine_as_json():
+    program = FIXTURES / "machines" / "portal" / "rfp.nc"
+    result = cli("explain", str(PORTAL), "--program", str(program), "--format", "json")
+    assert result.returncode == 0, result.stderr
+    report = json.loads(result.stdout)
+    axes = {row["name"]: row for row in report["axes"]}
+    assert list(axes) == ["X", "Y", "Z", "A", "B", "Y2", "C", "S"]
+    assert axes["Y2"]["gantry"] == {"role": "slave", "master": "Y", "homes_with_master": True}
+    assert axes["Y"]["gantry"] == {"role": "master", "slaves": ["Y2"]}
+    assert axes["C"]["strategy"]["id"] == "disabled" and axes["S"]["axis_type"] == "spindle"
+    assert axes["X"]["drive_type"] == 1 and axes["B"]["drive_type"] == 8
+    # rfp.nc: N10 G74 Z1, N15 G01 G90 Z200 F500, N20 G74 X1 Y1 A2 S3
+    assert axes["Z"]["homed"] == "line 3 (N10), step 1"
+    assert axes["X"]["homed"] == axes["Y"]["homed"] == "line 5 (N20), step 1"
+    assert axes["Y2"]["homed"] == "line 5 (N20), step 1, with its master Y"
+    assert axes["A"]["homed"] == "line 5 (N20), step 2"
+    assert axes["S"]["homed"] == "line 5 (N20), step 3"
+    assert axes["B"]["homed"].startswith("not needed")
+    blocks = report["program"]["blocks"]
+    assert [b["kind"] for b in blocks] == ["homing", "move", "homing"]
+    assert blocks[1]["targets"] == {"Z": 200.0} and blocks[1]["feed_mm_min"] == 500.0
+    assert blocks[2]["groups"] == [
+        {"sequence": 1, "axes": ["X", "Y"]},
+        {"sequence": 2, "axes": ["A"]},
+        {"sequence": 3, "axes": ["S"]},
+    ]
+    assert report["program"]["findings"] == []
+
+
+def test_explain_a_machine_as_text():
+    result = cli("explain", str(SDK4), "--program", str(FIXTURES / "machines" / "sdk4" / "rfp.nc"))
+    assert result.returncode == 0, result.stderr
+    assert "names from channel 1" in result.stdout
+    assert "drive-controlled homing" in result.stdout  # the spindle S
+    assert "line 5 N20: G74 homes X, Y; then S" in result.stdout
+    assert "line 4 N15: G01 F500 G90 Z200" in result.stdout
+
+
+def test_explain_program_needs_a_start_up_list():
+    result = cli(
+        "explain", str(FIXTURES / "machines" / "sdk4" / "listen" / "achsmds1.lis"), "--program", "x.nc"
+    )
+    assert result.returncode == 2 and "--program goes with a start-up list" in result.stderr
