@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from achslint.dryrun import DryRunRefused
 from achslint.machinemodel import (
@@ -241,9 +244,7 @@ def test_ignore_abs_pos_axis_stands_still_in_a_moving_group():
     assert close(w.phases[0].start_time, 0.0) and close(w.phases[0].end_time, 2.98)
     assert w.outcome == "skipped" and w.homed  # the absolute encoder gives its position
     assert run.failure is None
-    assert any(
-        warning["code"] == "P-AXIS-00299" and "collide" in warning["message"] for warning in run.warnings
-    )
+    assert any(warning["code"] == "LIS607" and "collide" in warning["message"] for warning in run.warnings)
 
 
 def test_spindle_in_the_program():
@@ -326,3 +327,38 @@ def test_sweep_counts_failures_per_axis():
     assert times["min"] <= times["median"] <= times["max"]
     # X only homes when Z did: X fails only in runs where Z completed.
     assert summary["start_ranges"]["X"] == [-130.0, 300.0]
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.floats(-130.0, 300.0), min_size=4, max_size=4))
+def test_timeline_invariants_from_any_start(starts):
+    machine = make_machine(
+        make_axis("X", 1, LINEAR),
+        make_axis("Y", 2, LINEAR),
+        make_axis("Z", 3, LINEAR),
+        make_axis("A", 4, HALF_FAST),
+    )
+    program = Program(
+        PROGRAM,
+        [g74(1, 10, ("Z", 1)), g01(2, 15, 3000.0, ("Z", 150.0)), g74(3, 20, ("X", 1), ("Y", 1), ("A", 2))],
+    )
+    run = MachinePlan(machine, program, scenario(limit_switches=[-130.0, 300.0])).run(
+        dict(zip("XYZA", starts, strict=True))
+    )
+    ran = [b for b in run.blocks if b.outcome != "not_run"]
+    for before, after in itertools.pairwise(ran):
+        assert after.start_time == before.end_time  # each block starts when the one before ends
+    for block in ran:
+        for group in block.groups:
+            if group.outcome == "not_run":
+                continue
+            ends = [p.end_time for n in group.moving for p in run.axes[n].phases if p.block == block.index]
+            if ends:  # the group ends with its slowest axis, and no axis of it runs on past that
+                assert math.isclose(max(ends), group.end_time, abs_tol=1e-12)
+    assert all(p.end_time <= run.total_time + 1e-12 for a in run.axes.values() for p in a.phases)
+    if run.failure is None:
+        assert all(run.axes[n].outcome == "homed" for n in "XYZA")
+        assert close(run.axes["Z"].final_position, 150.0)
+    else:
+        assert run.blocks[run.failure.block].outcome == "failed"
+        assert all(b.outcome == "not_run" for b in run.blocks[run.failure.block + 1 :])

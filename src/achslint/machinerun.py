@@ -680,8 +680,8 @@ class _Runner:
             )
             if others_move and plan.axes[name].strategy.id == "ignore_abs_pos":
                 message = f"{name} {COLLISION_NOTE} ({', '.join(group.moving)} moving)"
-                axes[name].warn("P-AXIS-00299", message)
-                self.result.warn("P-AXIS-00299", message, words[0].at)
+                axes[name].warn("LIS607", message)
+                self.result.warn("LIS607", message, words[0].at)
         return end
 
     def _leg(self, index: int, name: str, start: float, x: float | None = None) -> _Leg:
@@ -861,7 +861,7 @@ class _Runner:
                     return t
             if run.offset is None:
                 self.result.warn(
-                    None,
+                    "LIS606",
                     f"{block_text(block)} moves {name} before it is homed: the positions are raw actual values "
                     "and the software limits are not monitored yet",
                     word.at,
