@@ -34,7 +34,7 @@ def run_in(cwd: Path, *args: str) -> subprocess.CompletedProcess:
 @pytest.mark.parametrize("option", ["--select", "--ignore", "--extend-select"])
 @pytest.mark.parametrize(
     "code,hint",
-    [("LIS9999", "did you mean"), ("LIS6", "rule families are LIS0"), ("LIS3O2", "did you mean LIS302?")],
+    [("LIS9999", "did you mean"), ("LIS8", "rule families are LIS0"), ("LIS3O2", "did you mean LIS302?")],
 )
 def test_unknown_codes_on_the_command_line_are_usage_errors(cli, option, code, hint):
     result = cli("lint", str(INFO_ONLY), option, code)
@@ -52,7 +52,7 @@ def test_known_codes_and_prefixes_still_work(cli):
     "text,key",
     [
         ('select = ["LIS9999"]\n', "select"),
-        ('ignore = ["LIS6"]\n', "ignore"),
+        ('ignore = ["LIS8"]\n', "ignore"),
         ('[per-file-ignores]\n"*.lis" = ["LIS77"]\n', "per-file-ignores"),
         ('[severity]\nLIS4 = "error"\n', "severity"),
     ],
