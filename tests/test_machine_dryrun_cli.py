@@ -142,6 +142,8 @@ def test_refusals_are_exit_2(cli, tmp_path):
     assert missing.returncode == 2 and "cannot read the homing program" in missing.stderr.decode()
     axis_list = cli("dry-run", str(FIXTURES / "lists" / "achsmds1.lis"), "--program", PROGRAM)
     assert axis_list.returncode == 2 and "names no axis lists" in axis_list.stderr.decode()
+    channel = cli("dry-run", STARTUP, "--program", PROGRAM, "--channel", "2")
+    assert channel.returncode == 2 and "no channel 2" in channel.stderr.decode()
     single = cli("dry-run", STARTUP, "--program", PROGRAM, "--cam", "1,2")
     assert single.returncode == 2 and "[axes.NAME]" in single.stderr.decode()
 
