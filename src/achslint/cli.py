@@ -772,9 +772,24 @@ def dry_run_command(
         help="Use this configuration file (its scenario table and cycle-time-us) instead of searching for one.",
     ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+    program: str | None = typer.Option(
+        None, "--program", help="Homing program (rfp.nc) to run over the whole machine of a start-up list."
+    ),
+    channel: int = typer.Option(1, "--channel", min=1, help="Channel whose axis names the program uses."),
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
     import json
+
+    if program is not None:
+        single = [start, cam, zero_pulse_period, zero_pulse_phase, latch, cycle_time_ms, limit_switches]
+        if any(v is not None for v in [*single, fixed_stop, cam_jitter]) or gear:
+            _fail(
+                "with --program, give the geometry per axis in the machine scenario (--scenario, [axes.NAME])"
+            )
+        _machine_dry_run(
+            file, program, scenario, config, channel, output_format, plot, color, sweep_runs, allow_failures
+        )
+        return
 
     from .decode import UnreadableInput
     from .dryrun import DryRunRefused, dry_run, render, scenario_input, sweep, sweep_words, trace_json
@@ -828,6 +843,61 @@ def dry_run_command(
         _say(f"wrote {plot}")
     sweep_failed = summary is not None and summary["outcomes"].get("failed", 0) > 0 and not allow_failures
     raise typer.Exit(EXIT_FINDINGS if run.trace.outcome == "failed" or sweep_failed else EXIT_OK)
+
+
+def _machine_dry_run(
+    file: str,
+    program: str,
+    scenario: str | None,
+    config: str | None,
+    channel: int,
+    output_format: ExplainFormat,
+    plot: str | None,
+    color: Color,
+    sweep_runs: int,
+    allow_failures: bool,
+) -> None:
+    """`dry-run hochlauf.lis --program rfp.nc`: the homing program over the whole machine."""
+    import json
+
+    from .dryrun import DryRunRefused
+    from .files import reason
+    from .machinebuild import MachineError
+    from .machinereport import machine_json, render_machine, sweep_words
+    from .machinerun import machine_dry_run
+    from .scenario import ScenarioError
+
+    try:
+        run, summary = machine_dry_run(
+            Path(file),
+            Path(program),
+            Path(scenario) if scenario else None,
+            channel=channel,
+            config=Path(config) if config else None,
+            sweep_runs=sweep_runs,
+        )
+    except (MachineError, ScenarioError, DryRunRefused) as exc:
+        _fail(str(exc))
+    if plot:
+        from .plot import PlotUnavailable, plot_machine
+
+        try:
+            plot_machine(run, plot)
+        except PlotUnavailable as exc:
+            _fail(str(exc))
+        except OSError as exc:
+            _fail(f"cannot write the plot to {plot}: {reason(exc)}")
+    if output_format == ExplainFormat.json:
+        typer.echo(json.dumps(machine_json(run, summary), indent=2, ensure_ascii=False, allow_nan=False))
+    else:
+        console = _console(_use_color(color, sys.stdout))
+        render_machine(run, console)
+        if summary is not None:
+            console.print(sweep_words(summary), markup=False, highlight=False)
+    if plot:
+        _say(f"wrote {plot}")
+    sweep_failed = summary is not None and summary["failed"] > 0 and not allow_failures
+    raise typer.Exit(EXIT_FINDINGS if run.failure or sweep_failed else EXIT_OK)
 
 
 @app.command("diff")
