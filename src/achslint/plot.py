@@ -59,6 +59,18 @@ def _use_matplotlib() -> None:
         raise PlotUnavailable("--plot needs matplotlib: pip install 'achslint[plot]'") from None
 
 
+def _legend(panel: Axes, handles: list[Artist], fontsize: int) -> None:
+    """The legend to the right of a panel, without a frame."""
+    panel.legend(
+        handles=handles,
+        loc="upper left",
+        bbox_to_anchor=(1.01, 1.0),
+        fontsize=fontsize,
+        frameon=False,
+        borderaxespad=0.0,
+    )
+
+
 def _fmt(value: float) -> str:
     text = f"{value:.4f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text.replace("-", "\u2212")
@@ -295,14 +307,7 @@ def build_figure(trace: Trace) -> Figure:
             )
         )
 
-    top.legend(
-        handles=handles,
-        loc="upper left",
-        bbox_to_anchor=(1.01, 1.0),
-        fontsize=8,
-        frameon=False,
-        borderaxespad=0.0,
-    )
+    _legend(top, handles, 8)
     title = f"{trace.strategy.title}: {trace.outcome}"
     if trace.phases:
         title += f" in {_fmt(trace.total_time)} s"
@@ -614,14 +619,7 @@ def build_machine_figure(run: MachineRun) -> Any:
                 label=_wrap(f"FAILED at {_fmt(run.failure.time)} s: {run.failure.reason}", 40),
             )
         )
-    timeline.legend(
-        handles=handles,
-        loc="upper left",
-        bbox_to_anchor=(1.01, 1.0),
-        fontsize=7,
-        frameon=False,
-        borderaxespad=0.0,
-    )
+    _legend(timeline, handles, 7)
     title = f"{run.program.name.replace(chr(92), '/').rsplit('/', 1)[-1]}: " + (
         f"done in {_fmt(run.total_time)} s"
         if run.failure is None
