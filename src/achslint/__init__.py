@@ -26,6 +26,10 @@ __version__ = "0.1.0"
 __all__ = ["__version__", "dry_run", "dumps", "explain", "format_text", "lint", "lint_text", "load", "loads"]
 
 
+if TYPE_CHECKING:
+    from .explain import ListReport
+
+
 def load(
     source: str | PathLike[str] | bytes,
     *,
@@ -75,7 +79,7 @@ def lint_text(
     return _lint_text(text, filename=filename, select=select, ignore=ignore)
 
 
-def explain(source: str | PathLike[str] | bytes, *, gear: int = 0) -> dict[str, Any]:
+def explain(source: str | PathLike[str] | bytes, *, gear: int = 0) -> ListReport:
     """The homing explanation of a list, as `achslint explain FILE --format json` prints it."""
     from .api import explain as _explain
 

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import contextlib
 import os
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
 from .decode import UnreadableInput, decode
@@ -32,6 +34,21 @@ from .linter import (
 from .machine import check_machines, is_default_list, is_startup_list, read_startup
 from .syntax import parse_bytes, split_lines
 from .xmlinput import is_xml, single_list
+
+if TYPE_CHECKING:
+    from .dryrun import DryRun
+    from .explain import ListReport
+    from .machine import Member, Startup
+    from .model_base import AxisBase
+
+# A list given to the library functions: a path (str or PathLike) or the list's bytes.
+Source = str | os.PathLike[str] | bytes
+# What --fix asks for: (fix, unsafe fixes too, show the diff instead of writing).
+FixMode = tuple[bool, bool, bool]
+# One list for a worker process: (name, path, settings, fix mode, default list path).
+WorkItem = tuple[str, str, FileSettings, FixMode, "str | None"]
+# Called with the total number of lists after each list is done.
+Progress = Callable[[int], None]
 
 # Below this many files, starting worker processes costs more than it saves.
 PARALLEL_THRESHOLD = 8
@@ -102,11 +119,12 @@ class Discovery:
     # Lists of the same machine as a named list, read from disk only for the machine-level rules
     # (LIS501-LIS503): pre-commit passes the changed lists alone, their neighbours still count.
     context: list[Target] = field(default_factory=list)
-    _seen: set = field(default_factory=set)
+    _seen: set[object] = field(default_factory=set)
 
     def add(self, target: Target) -> None:
         """Take a target unless the same file is already taken (named twice, or a folder and a file in it)."""
         if target.path is not None:
+            key: object
             try:
                 info = os.stat(target.path)
                 key = (info.st_dev, info.st_ino)
@@ -121,9 +139,9 @@ class Discovery:
 class LintRun:
     """Resolves configuration per file and lints targets, serially or on several cores."""
 
-    def __init__(self, request: LintRequest):
+    def __init__(self, request: LintRequest) -> None:
         self.request = request
-        self.startups = []
+        self.startups: list[Startup] = []
         self.fixed_config = load_file(Path(request.config_file)) if request.config_file else None
 
     def config_for(self, path: Path) -> ResolvedConfig:
@@ -183,6 +201,7 @@ class LintRun:
 
     def _startup_targets(self, path: Path, scope: Scope, found: Discovery) -> None:
         config = self.config_for(path)
+        root: Path | None
         if self.request.overrides.cnc_root is not None:
             root, origin = Path(self.request.overrides.cnc_root), "given by --cnc-root"
         else:
@@ -264,7 +283,10 @@ class LintRun:
         return False
 
     def machine_level(
-        self, targets: list[Target], results: list[FileResult], context: list[tuple[Target, FileResult]] = ()
+        self,
+        targets: list[Target],
+        results: list[FileResult],
+        context: Sequence[tuple[Target, FileResult]] = (),
     ) -> list[FileResult]:
         """Run the machine-level rules per machine; returns results for start-up lists with findings.
 
@@ -273,7 +295,7 @@ class LintRun:
         """
         by_name = {result.name: result for result in results}
         hidden = {result.name for _, result in context}
-        groups: dict[str, list[tuple[str, dict]]] = {}
+        groups: dict[str, list[Member]] = {}
         settings = {}
         pairs = [*context, *zip(targets, results, strict=False)]
         for target, result in pairs:
@@ -316,7 +338,7 @@ class LintRun:
             target.config, self.request.overrides, target.path or Path(target.name), self.request.keep_source
         )
 
-    def run(self, stdin=None, progress=None) -> LintOutcome:
+    def run(self, stdin: BinaryIO | None = None, progress: Progress | None = None) -> LintOutcome:
         found = self.discover()
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
@@ -420,7 +442,7 @@ SKIPPED_KINDS = (
 )
 
 
-def _lint_one(item) -> FileResult:
+def _lint_one(item: WorkItem) -> FileResult:
     name, path, settings, mode, defaults = item
     try:
         data = read_list(Path(path))
@@ -435,7 +457,12 @@ def _lint_one(item) -> FileResult:
 
 
 def _process(
-    data: bytes, name: str, settings: FileSettings, mode, path: Path | None, defaults: bytes | None
+    data: bytes,
+    name: str,
+    settings: FileSettings,
+    mode: FixMode,
+    path: Path | None,
+    defaults: bytes | None,
 ) -> FileResult:
     """Lint one list; with --fix, fix it first (writing the file, or describing the change with --diff)."""
     fix, unsafe, show_diff = mode
@@ -488,7 +515,7 @@ def read_one_list(path: Path, name: str) -> bytes:
     return data
 
 
-def _track(results, progress, total: int):
+def _track(results: Iterable[FileResult], progress: Progress | None, total: int) -> Iterator[FileResult]:
     """Pass results through, advancing a progress callback if there is one."""
     for result in results:
         if progress is not None:
@@ -496,7 +523,9 @@ def _track(results, progress, total: int):
         yield result
 
 
-def run_lint(request: LintRequest, stdin=None, progress=None) -> LintOutcome:
+def run_lint(
+    request: LintRequest, stdin: BinaryIO | None = None, progress: Progress | None = None
+) -> LintOutcome:
     """Lint what the request names. Raises `ConfigError` for an unusable configuration.
 
     NC programs (`rfp.nc`) among the paths are checked against the machine of `request.machine` (LIS6xx).
@@ -550,7 +579,7 @@ class FormatOutcome:
         return sum(result.written for result in self.results)
 
 
-def run_format(request: FormatRequest, stdin=None) -> FormatOutcome:
+def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatOutcome:
     """`achslint fmt`: format every list the paths name, writing (atomically, only if the file did not
     change meanwhile), checking or diffing. Raises `ConfigError`."""
     from .fmt import format_bytes, unified_diff
@@ -567,7 +596,13 @@ def run_format(request: FormatRequest, stdin=None) -> FormatOutcome:
                 outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
             continue
         try:
-            data = stdin.read() if target.path is None else read_list(target.path)
+            if target.path is not None:
+                data = read_list(target.path)
+            elif stdin is not None:
+                data = stdin.read()
+            else:
+                outcome.errors.append(f"{target.name}: no standard input to read")
+                continue
             formatted, differs = format_bytes(data, target.name)
         except OSError as exc:
             outcome.errors.append(f"cannot read {target.name}: {reason(exc)}")
@@ -580,7 +615,7 @@ def run_format(request: FormatRequest, stdin=None) -> FormatOutcome:
             result.diff = unified_diff(data, formatted, target.name) if differs else ""
         elif request.mode == "write" and target.path is None:
             result.output = formatted
-        elif request.mode == "write" and differs:
+        elif request.mode == "write" and differs and target.path is not None:
             try:
                 write_atomically(target.path, formatted, expected=data)
                 result.written = True
@@ -590,7 +625,7 @@ def run_format(request: FormatRequest, stdin=None) -> FormatOutcome:
     return outcome
 
 
-def _as_bytes(source) -> tuple[bytes, str]:
+def _as_bytes(source: Source) -> tuple[bytes, str]:
     """The bytes and display name of a list given as a path (str or Path) or as bytes.
 
     A string is a path (`FileNotFoundError` when there is no such file), never list text: use `lint_text`
@@ -607,20 +642,32 @@ def _as_bytes(source) -> tuple[bytes, str]:
     return read_list(path), str(path)
 
 
-def lint(source, *, select=None, ignore=None, name=None) -> list[Diagnostic]:
+def lint(
+    source: Source,
+    *,
+    select: Iterable[str] | None = None,
+    ignore: Iterable[str] | None = None,
+    name: str | None = None,
+) -> list[Diagnostic]:
     """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files."""
     data, default_name = _as_bytes(source)
     settings = FileSettings.of(list(select) if select else None, list(ignore or []))
     return findings(data, name or default_name, settings)
 
 
-def lint_text(text: str, *, filename: str = "<string>", select=None, ignore=None) -> list[Diagnostic]:
+def lint_text(
+    text: str,
+    *,
+    filename: str = "<string>",
+    select: Iterable[str] | None = None,
+    ignore: Iterable[str] | None = None,
+) -> list[Diagnostic]:
     """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
     settings = FileSettings.of(list(select) if select else None, list(ignore or []))
     return findings(text.encode("utf-8"), filename, settings)
 
 
-def load(source, *, defaults=None, strict: bool = False):
+def load(source: Source, *, defaults: Source | None = None, strict: bool = False) -> AxisBase:
     """The typed model of a list (a path or bytes) on top of an optional default list.
 
     Lenient by default: the findings of `lint` are kept on the model (`model.findings`). With
@@ -634,7 +681,14 @@ def load(source, *, defaults=None, strict: bool = False):
     return _finish(build_model(data, name, default_data), data, name, default_data, strict, rule_errors)
 
 
-def _finish(model, data: bytes, name: str, default_data, strict: bool, rule_errors):
+def _finish(
+    model: AxisBase,
+    data: bytes,
+    name: str,
+    default_data: tuple[bytes, str] | None,
+    strict: bool,
+    rule_errors: Callable[[list[Diagnostic]], Exception],
+) -> AxisBase:
     settings = FileSettings(keep_source=False)
     found = lint_file(data, name, settings, default_data[0] if default_data else None).diagnostics
     model._findings = found
@@ -644,7 +698,9 @@ def _finish(model, data: bytes, name: str, default_data, strict: bool, rule_erro
     return model
 
 
-def loads(text: str, *, defaults: str | None = None, strict: bool = False, filename: str = "<string>"):
+def loads(
+    text: str, *, defaults: str | None = None, strict: bool = False, filename: str = "<string>"
+) -> AxisBase:
     """The typed model of a list's text (see `load`)."""
     from .model import build_model, rule_errors
 
@@ -655,7 +711,7 @@ def loads(text: str, *, defaults: str | None = None, strict: bool = False, filen
     )
 
 
-def dumps(model) -> str:
+def dumps(model: AxisBase) -> str:
     """A list in the canonical layout from a model (for lists generated by configuration tools):
     `loads(dumps(model))` gives an equal model."""
     from .fmt import format_text
@@ -664,7 +720,7 @@ def dumps(model) -> str:
     return format_text(model_dumps(model))
 
 
-def explain(source, *, gear: int = 0, defaults=None) -> dict:
+def explain(source: Source, *, gear: int = 0, defaults: Source | None = None) -> ListReport:
     """What `achslint explain FILE --format json` prints: strategy, phases, corrections, homing parameters."""
     from .explain import explain_list
 
@@ -672,7 +728,7 @@ def explain(source, *, gear: int = 0, defaults=None) -> dict:
     return explain_list(data, name, gear, _as_bytes(defaults)[0] if defaults is not None else None)
 
 
-def dry_run(source, scenario: dict | None = None, *, gear: int = 0):
+def dry_run(source: Source, scenario: dict[str, Any] | None = None, *, gear: int = 0) -> DryRun:
     """Simulate the homing of a list (path or bytes); `scenario` as in a scenario file (mm / degrees,
     seconds). Returns the run: `.trace` holds the phases, events and the outcome."""
     from .dryrun import dry_run as simulate

@@ -9,10 +9,10 @@ from __future__ import annotations
 import contextlib
 import os
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Mapping
 from enum import Enum
 from pathlib import Path
-from typing import TYPE_CHECKING, get_args
+from typing import TYPE_CHECKING, Any, NoReturn, TextIO, TypeVar, get_args
 
 import typer
 
@@ -37,8 +37,17 @@ def _choices(name: str, values: Iterable[str]) -> type[Enum]:
     return Enum(name, {value: value for value in values}, type=str)  # type: ignore[return-value]
 
 
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.progress import Progress, TaskID
+
+    from .api import FormatOutcome
+    from .linter import FileResult
+
 if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
-    OutputFormat = FailOn = UnknownParameters = Enum
+    OutputFormat = Enum
+    FailOn = Enum
+    UnknownParameters = Enum
 else:
     OutputFormat = _choices("OutputFormat", REPORTERS)
     FailOn = _choices("FailOn", get_args(SeverityName))
@@ -64,7 +73,7 @@ def _say(message: str) -> None:
     typer.echo(f"achslint: {printable(message)}", err=True)
 
 
-def _fail(message: str) -> None:
+def _fail(message: str) -> NoReturn:
     _say(message)
     raise typer.Exit(EXIT_ERROR)
 
@@ -87,7 +96,7 @@ def _folder(text: str, option: str) -> str:
     return os.path.abspath(text)
 
 
-def _use_color(choice: Color, stream) -> bool:
+def _use_color(choice: Color, stream: TextIO) -> bool:
     if choice == Color.always:
         return True
     if choice == Color.never or os.environ.get("NO_COLOR"):
@@ -112,7 +121,7 @@ def main_callback(
     """achslint: the linter for CNC axis parameter lists."""
 
 
-def _default_format(stream) -> str:
+def _default_format(stream: TextIO) -> str:
     if os.environ.get("GITHUB_ACTIONS") == "true":
         return "github"
     return "full" if stream.isatty() else "concise"
@@ -338,10 +347,11 @@ def _patterns(values: list[str] | None) -> list[str] | None:
 class _destination:
     """The report stream: --output-file opens a UTF-8 file (never the console's code page), else `stream`."""
 
-    def __init__(self, path: str | None, stream):
-        self.path, self.stream, self.file = path, stream, None
+    def __init__(self, path: str | None, stream: TextIO) -> None:
+        self.path, self.stream = path, stream
+        self.file: TextIO | None = None
 
-    def __enter__(self):
+    def __enter__(self) -> TextIO:
         if self.path is None:
             return self.stream
         try:
@@ -352,13 +362,12 @@ class _destination:
             _fail(f"cannot write {self.path}: {reason(exc)}")
         return self.file
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         if self.file is not None:
             self.file.close()
-        return False
 
 
-def _summary(results, stream, fixing: bool) -> None:
+def _summary(results: list[FileResult], stream: TextIO, fixing: bool) -> None:
     """ruff's closing lines: "All checks passed!", or how many findings a fix would remove."""
     if not any(r.diagnostics for r in results):
         if not any(r.error for r in results):
@@ -413,7 +422,7 @@ def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
             _say(f"note: {message}")
 
 
-def _report_fixes(results, show_diff: bool, quiet: bool):
+def _report_fixes(results: list[FileResult], show_diff: bool, quiet: bool) -> TextIO:
     """Print diffs or fixed standard input; returns where the diagnostics go (stderr when stdout holds content)."""
     stream = sys.stdout
     for result in results:
@@ -439,10 +448,10 @@ class _progress:
 
     def __init__(self, quiet: bool):
         self.enabled = not quiet and sys.stderr.isatty()
-        self.bar = None
-        self.task = None
+        self.bar: Progress | None = None
+        self.task: TaskID | None = None
 
-    def __enter__(self):
+    def __enter__(self) -> Callable[[int], None] | None:
         return self.advance if self.enabled else None
 
     def advance(self, total: int) -> None:
@@ -456,15 +465,15 @@ class _progress:
             self.bar = Progress(console=Console(stderr=True), transient=True)
             self.bar.start()
             self.task = self.bar.add_task("linting", total=total)
-        self.bar.advance(self.task)
+        if self.task is not None:
+            self.bar.advance(self.task)
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         if self.bar is not None:
             self.bar.stop()
-        return False
 
 
-def _print_statistics(results, stream) -> None:
+def _print_statistics(results: list[FileResult], stream: TextIO) -> None:
     from collections import Counter
 
     from .rules import registry
@@ -527,7 +536,7 @@ def fmt(
     raise typer.Exit(EXIT_FINDINGS if outcome.changed and mode != "write" else EXIT_OK)
 
 
-def _format_summary(outcome, mode: str) -> str:
+def _format_summary(outcome: FormatOutcome, mode: str) -> str:
     def files(count: int) -> str:
         return f"{count} file{'s' if count != 1 else ''}"
 
@@ -598,7 +607,6 @@ def explain(
     ),
 ) -> None:
     """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
-    import json
 
     from .explain import explain_list, parameter_card, render_card, render_list
     from .files import not_a_list_file
@@ -606,13 +614,13 @@ def explain(
 
     path = Path(target)
     problem = not_a_list_file(path)
+    as_json = output_format == ExplainFormat.json
     if problem is None and is_startup_list(path):
-        report, render = _machine_report(path, program, channel, cnc_root, gear), _render_machine
+        _show(_machine_report(path, program, channel, cnc_root, gear), _render_machine, as_json, color)
     elif program is not None:
         _fail("--program goes with a start-up list (hochlauf.lis)")
     elif problem is None or problem not in NOT_A_FILE:
-        report = explain_list(_one_list(path, target), target, gear)
-        render = render_list
+        _show(explain_list(_one_list(path, target), target, gear), render_list, as_json, color)
     else:
         from .catalogue import catalogue
 
@@ -623,16 +631,25 @@ def explain(
             if suggestions:
                 hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?"
             _fail(f"{target!r} is neither a file nor a known parameter{hint}")
-        report = parameter_card(parameter)
-        render = render_card
-    if output_format == ExplainFormat.json:
+        _show(parameter_card(parameter), render_card, as_json, color)
+
+
+Report = TypeVar("Report", bound=Mapping[str, Any])
+
+
+def _show(report: Report, render: Callable[[Report, Console], None], as_json: bool, color: Color) -> None:
+    """An explanation as JSON, or rendered for people."""
+    import json
+
+    if as_json:
         typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
-        return
-    use = _use_color(color, sys.stdout)
-    render(report, _console(use))
+    else:
+        render(report, _console(_use_color(color, sys.stdout)))
 
 
-def _machine_report(path: Path, program: str | None, channel: int, cnc_root: str | None, gear: int) -> dict:
+def _machine_report(
+    path: Path, program: str | None, channel: int, cnc_root: str | None, gear: int
+) -> dict[str, Any]:
     """`explain hochlauf.lis`: the machine's axes (and a program's homing order), or a one-line failure."""
     from .files import reason
     from .machinebuild import MachineError
@@ -650,7 +667,7 @@ def _machine_report(path: Path, program: str | None, channel: int, cnc_root: str
     raise AssertionError("unreachable")  # pragma: no cover
 
 
-def _render_machine(report: dict, console) -> None:
+def _render_machine(report: dict[str, Any], console: Console) -> None:
     from .machineexplain import render_machine
 
     render_machine(report, console)
@@ -681,7 +698,7 @@ def _one_list(path: Path, name: str) -> bytes:
         _fail(str(exc))
 
 
-def _console(color: bool):
+def _console(color: bool) -> Console:
     """A rich console for text output; when piped, lines are not wrapped and tables are 160 wide."""
     from rich.console import Console
 
@@ -695,7 +712,7 @@ def _console(color: bool):
     )
 
 
-def _pair(text: str | None, name: str):
+def _pair(text: str | None, name: str) -> tuple[float, float] | None:
     if text is None:
         return None
     try:
@@ -755,9 +772,24 @@ def dry_run_command(
         help="Use this configuration file (its scenario table and cycle-time-us) instead of searching for one.",
     ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+    program: str | None = typer.Option(
+        None, "--program", help="Homing program (rfp.nc) to run over the whole machine of a start-up list."
+    ),
+    channel: int = typer.Option(1, "--channel", min=1, help="Channel whose axis names the program uses."),
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
     import json
+
+    if program is not None:
+        single = [start, cam, zero_pulse_period, zero_pulse_phase, latch, cycle_time_ms, limit_switches]
+        if any(v is not None for v in [*single, fixed_stop, cam_jitter]) or gear:
+            _fail(
+                "with --program, give the geometry per axis in the machine scenario (--scenario, [axes.NAME])"
+            )
+        _machine_dry_run(
+            file, program, scenario, config, channel, output_format, plot, color, sweep_runs, allow_failures
+        )
+        return
 
     from .decode import UnreadableInput
     from .dryrun import DryRunRefused, dry_run, render, scenario_input, sweep, sweep_words, trace_json
@@ -811,6 +843,61 @@ def dry_run_command(
         _say(f"wrote {plot}")
     sweep_failed = summary is not None and summary["outcomes"].get("failed", 0) > 0 and not allow_failures
     raise typer.Exit(EXIT_FINDINGS if run.trace.outcome == "failed" or sweep_failed else EXIT_OK)
+
+
+def _machine_dry_run(
+    file: str,
+    program: str,
+    scenario: str | None,
+    config: str | None,
+    channel: int,
+    output_format: ExplainFormat,
+    plot: str | None,
+    color: Color,
+    sweep_runs: int,
+    allow_failures: bool,
+) -> None:
+    """`dry-run hochlauf.lis --program rfp.nc`: the homing program over the whole machine."""
+    import json
+
+    from .dryrun import DryRunRefused
+    from .files import reason
+    from .machinebuild import MachineError
+    from .machinereport import machine_json, render_machine, sweep_words
+    from .machinerun import machine_dry_run
+    from .scenario import ScenarioError
+
+    try:
+        run, summary = machine_dry_run(
+            Path(file),
+            Path(program),
+            Path(scenario) if scenario else None,
+            channel=channel,
+            config=Path(config) if config else None,
+            sweep_runs=sweep_runs,
+        )
+    except (MachineError, ScenarioError, DryRunRefused) as exc:
+        _fail(str(exc))
+    if plot:
+        from .plot import PlotUnavailable, plot_machine
+
+        try:
+            plot_machine(run, plot)
+        except PlotUnavailable as exc:
+            _fail(str(exc))
+        except OSError as exc:
+            _fail(f"cannot write the plot to {plot}: {reason(exc)}")
+    if output_format == ExplainFormat.json:
+        typer.echo(json.dumps(machine_json(run, summary), indent=2, ensure_ascii=False, allow_nan=False))
+    else:
+        console = _console(_use_color(color, sys.stdout))
+        render_machine(run, console)
+        if summary is not None:
+            console.print(sweep_words(summary), markup=False, highlight=False)
+    if plot:
+        _say(f"wrote {plot}")
+    sweep_failed = summary is not None and summary["failed"] > 0 and not allow_failures
+    raise typer.Exit(EXIT_FINDINGS if run.failure or sweep_failed else EXIT_OK)
 
 
 @app.command("diff")
@@ -929,7 +1016,7 @@ def main(argv: list[str] | None = None) -> int:
     return code if isinstance(code, int) else EXIT_OK
 
 
-def _usage_error(exc) -> int:
+def _usage_error(exc: Any) -> int:  # a click usage error (typer vendors click: no stable type to name)
     """A click/typer usage error as one line: `achslint: error: <what> (see `achslint lint --help`)`."""
     context = getattr(exc, "ctx", None)
     if type(exc).__name__ == "NoArgsIsHelpError":  # `achslint` alone: the help is the answer
@@ -945,4 +1032,4 @@ def _tolerant_streams() -> None:
     """Characters the terminal's encoding cannot show become escapes instead of ending the run."""
     for stream in (sys.stdout, sys.stderr):
         with contextlib.suppress(AttributeError, ValueError, OSError):
-            stream.reconfigure(errors="backslashreplace")
+            stream.reconfigure(errors="backslashreplace")  # type: ignore[union-attr]  # not every stream can

@@ -30,6 +30,7 @@ import importlib
 import math
 import random
 from collections import Counter
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -61,7 +62,7 @@ class DryRun:
 
 
 def scenario_input(
-    file: Path, scenario: Path | None, options: dict[str, object], config: Path | None = None
+    file: Path, scenario: Path | None, options: Mapping[str, object], config: Path | None = None
 ) -> tuple[ScenarioInput, int]:
     """The scenario a dry run uses and the cycle time: the configuration's `scenario` table (found next to the
     list, or `config`), then the scenario file, then the command-line options (each later source wins, key by
@@ -180,11 +181,11 @@ def _finite(value: object) -> object:
     return value
 
 
-def _finite_document(document: dict[str, Any]) -> dict[str, Any]:
+def finite_document(document: dict[str, Any]) -> dict[str, Any]:
     return {key: _finite(value) for key, value in document.items()}
 
 
-def _round(value: float | None) -> float | None:
+def json_number(value: float | None) -> float | None:
     return None if value is None or not math.isfinite(value) else round(value, 9)
 
 
@@ -192,8 +193,8 @@ def trace_json(run: DryRun) -> dict[str, Any]:
     """The dry-run as JSON (the schema is in the module docstring)."""
     trace = run.trace
     values = run.values
-    r = _round  # keep JSON free of float noise
-    return _finite_document(
+    r = json_number  # keep JSON free of float noise
+    return finite_document(
         {
             "version": 1,
             "units": {
@@ -249,7 +250,7 @@ def trace_json(run: DryRun) -> dict[str, Any]:
 # --- text ------------------------------------------------------------------------------------
 
 
-def _num(value: float, digits: int = 4, fixed: bool = False) -> str:
+def number_text(value: float, digits: int = 4, fixed: bool = False) -> str:
     """A number for the text output: `digits` decimals (trailing zeros dropped unless `fixed`, for columns)."""
     text = f"{value:.{digits}f}"
     if text.startswith("-") and float(text) == 0:
@@ -261,19 +262,19 @@ def header_lines(run: DryRun) -> list[str]:
     trace = run.trace
     unit = trace.unit
     scenario = trace.scenario
-    cam = f"[{_num(scenario.cam[0])}, {_num(scenario.cam[1])}]" if scenario.cam else "none"
+    cam = f"[{number_text(scenario.cam[0])}, {number_text(scenario.cam[1])}]" if scenario.cam else "none"
     switches = (
-        f"[{_num(scenario.limit_switches[0])}, {_num(scenario.limit_switches[1])}]"
+        f"[{number_text(scenario.limit_switches[0])}, {number_text(scenario.limit_switches[1])}]"
         if scenario.limit_switches
         else "none"
     )
     lines = [
-        f"Scenario: start {_num(scenario.start_position)} {unit}, cam {cam}, zero pulse every "
-        f"{_num(scenario.zero_pulse_period)} {unit} (one at {_num(scenario.zero_pulse_phase)}), "
-        f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {_num(scenario.cycle_time * 1000)} ms, "
+        f"Scenario: start {number_text(scenario.start_position)} {unit}, cam {cam}, zero pulse every "
+        f"{number_text(scenario.zero_pulse_period)} {unit} (one at {number_text(scenario.zero_pulse_phase)}), "
+        f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {number_text(scenario.cycle_time * 1000)} ms, "
         f"limit switches {switches}"
         + (
-            f", modulo [{_num(scenario.modulo[0])}, {_num(scenario.modulo[1])}) {unit}"
+            f", modulo [{number_text(scenario.modulo[0])}, {number_text(scenario.modulo[1])}) {unit}"
             if scenario.modulo
             else ""
         )
@@ -283,7 +284,7 @@ def header_lines(run: DryRun) -> list[str]:
         lines.append(f"Homing acceleration: {trace.acceleration_source}")
     else:
         lines.append(
-            f"Homing acceleration {_num(trace.acceleration)} {unit}/s² from {trace.acceleration_source}"
+            f"Homing acceleration {number_text(trace.acceleration)} {unit}/s² from {trace.acceleration_source}"
         )
     return lines
 
@@ -319,10 +320,10 @@ def render(run: DryRun, console: Console) -> None:
                 str(number),
                 Text(p.name) + Text(f"\n{p.ended_by}", style="dim"),
                 {"positive": "+", "negative": "-"}.get(p.direction or "", ""),
-                _num(p.velocity, 3),
-                _num(p.start_position, fixed=True),
-                _num(p.end_position, fixed=True),
-                _num(p.end_time, fixed=True),
+                number_text(p.velocity, 3),
+                number_text(p.start_position, fixed=True),
+                number_text(p.end_position, fixed=True),
+                number_text(p.end_time, fixed=True),
             )
         console.print(table)
     if trace.events:
@@ -331,26 +332,26 @@ def render(run: DryRun, console: Console) -> None:
         events.add_column(f"at {unit}", no_wrap=True, justify="right")
         events.add_column("event", ratio=1, overflow="fold")
         for e in trace.events:
-            events.add_row(_num(e.time, fixed=True), _num(e.position, fixed=True), e.kind)
+            events.add_row(number_text(e.time, fixed=True), number_text(e.position, fixed=True), e.kind)
         console.print(events)
     if trace.reference:
         ref = trace.reference
         console.print(
             Text(
-                f"Reference: {ref['kind']} at {_num(ref['position'])} {unit} (actual value before "
-                f"homing) becomes {_num(ref['value'])} {unit}"
+                f"Reference: {ref['kind']} at {number_text(ref['position'])} {unit} (actual value before "
+                f"homing) becomes {number_text(ref['value'])} {unit}"
             )
         )
     if trace.final_position is not None:
         where = (
-            "the spindle turns on at " + _num(trace.reference["speed"], 3) + f" {unit}/s"
+            "the spindle turns on at " + number_text(trace.reference["speed"], 3) + f" {unit}/s"
             if trace.ends_moving and trace.reference
             else "at standstill"
         )
         console.print(
             Text(
-                f"Final position: {_num(trace.final_position)} {unit} (homed, {where}); total "
-                f"{_num(trace.total_time, 3)} s, {_num(trace.total_distance, 3)} {unit} travelled"
+                f"Final position: {number_text(trace.final_position)} {unit} (homed, {where}); total "
+                f"{number_text(trace.total_time, 3)} s, {number_text(trace.total_distance, 3)} {unit} travelled"
             )
         )
     style = {"homed": "green", "failed": "red"}.get(trace.outcome, "yellow")
@@ -432,7 +433,7 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict[str, Any]:
                 "one_revolution_jumps": len(references) - usual,
             }
         )
-    return _finite_document(summary)
+    return finite_document(summary)
 
 
 def sweep_words(summary: dict[str, Any]) -> str:
@@ -448,13 +449,13 @@ def sweep_words(summary: dict[str, Any]) -> str:
     low, high = summary["start_range"]
     outcomes = ", ".join(f"{name} ×{count}" for name, count in sorted(summary["outcomes"].items()))
     lines.append(
-        f"Sweep of {summary['runs']} runs (start between {_num(low)} and {_num(high)} {unit}): {outcomes}."
+        f"Sweep of {summary['runs']} runs (start between {number_text(low)} and {number_text(high)} {unit}): {outcomes}."
     )
     for item in summary["reasons"]:
         lines.append(f"  {item['outcome']}: {item['reason']} ×{item['count']}")
     if "spread" in summary:
         lines.append(
-            f"Reference between {_num(summary['reference_min'])} and {_num(summary['reference_max'])} "
+            f"Reference between {number_text(summary['reference_min'])} and {number_text(summary['reference_max'])} "
             f"{unit} (spread {summary['spread']:.4g} {unit}); {summary['distinct_pulses']} distinct zero "
             f"pulse(s), {summary['one_revolution_jumps']} run(s) jumped by one or more encoder revolutions."
         )

@@ -270,9 +270,9 @@ def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
     """Gantry pairs by programmed name: from the slaves' kenngr.gantry_ax_nr, then the channel's pairs."""
     pairs: list[tuple[int, int, str]] = []
     for axis in [*machine.axes.values(), *machine.other_axes]:
-        master = axis.resolved.get("kenngr.gantry_ax_nr")
-        if isinstance(master, int) and master > 0:
-            pairs.append((master, axis.logical_number, f"{_shown_path(axis.list_path)} kenngr.gantry_ax_nr"))
+        number = axis.resolved.get("kenngr.gantry_ax_nr")
+        if isinstance(number, int) and number > 0:
+            pairs.append((number, axis.logical_number, f"{_shown_path(axis.list_path)} kenngr.gantry_ax_nr"))
     for pair in channel_list.pairs if channel_list else []:
         pairs.append((pair.master, pair.slave, f"{pair.at.path}:{pair.at.line} {pair.slot}"))
     for master_number, slave_number, source in pairs:

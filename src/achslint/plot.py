@@ -10,7 +10,7 @@ found. `build_figure` returns the figure (tests read its data series); `plot_tra
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from .engine import Event, Trace
 
@@ -20,6 +20,9 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 _LineStyle = Literal["-", "--"]
+
+if TYPE_CHECKING:
+    from .machinerun import AxisPhase, AxisRun, MachineRun
 
 # One colour per phase (colour-blind friendly qualitative palette), repeated for long sequences.
 PHASE_COLOURS = ("#4477aa", "#ee6677", "#228833", "#ccbb44", "#66ccee", "#aa3377", "#bbbbbb")
@@ -54,6 +57,18 @@ def _use_matplotlib() -> None:
         import matplotlib.pyplot  # imported here so that a broken installation is reported
     except ImportError:
         raise PlotUnavailable("--plot needs matplotlib: pip install 'achslint[plot]'") from None
+
+
+def _legend(panel: Axes, handles: list[Artist], fontsize: int) -> None:
+    """The legend to the right of a panel, without a frame."""
+    panel.legend(
+        handles=handles,
+        loc="upper left",
+        bbox_to_anchor=(1.01, 1.0),
+        fontsize=fontsize,
+        frameon=False,
+        borderaxespad=0.0,
+    )
 
 
 def _fmt(value: float) -> str:
@@ -292,14 +307,7 @@ def build_figure(trace: Trace) -> Figure:
             )
         )
 
-    top.legend(
-        handles=handles,
-        loc="upper left",
-        bbox_to_anchor=(1.01, 1.0),
-        fontsize=8,
-        frameon=False,
-        borderaxespad=0.0,
-    )
+    _legend(top, handles, 8)
     title = f"{trace.strategy.title}: {trace.outcome}"
     if trace.phases:
         title += f" in {_fmt(trace.total_time)} s"
@@ -378,6 +386,265 @@ def plot_trace(trace: Trace, target: str) -> None:
     figure = build_figure(trace)
     import matplotlib.pyplot as plt
 
+    try:
+        figure.savefig(target, dpi=100)
+    finally:
+        plt.close(figure)
+
+
+# --- the machine dry-run ------------------------------------------------------------------------
+
+MOVE_COLOUR = "#999999"
+FAILURE_COLOUR = "#cc3311"
+
+
+def _machine_samples(phases: list[AxisPhase], per_segment: int = 30) -> tuple[list[float], list[float]]:
+    times: list[float] = []
+    positions: list[float] = []
+    for phase in phases:
+        for segment in phase.segments:
+            steps = per_segment if segment.t1 > segment.t0 else 1
+            for k in range(steps + 1):
+                t = segment.t0 + (segment.t1 - segment.t0) * k / steps
+                times.append(t)
+                positions.append(segment.position(t))
+    return times, positions
+
+
+def build_machine_figure(run: MachineRun) -> Any:
+    """The figure of a machine dry-run (a MachineRun): a timeline with one lane per axis (phases coloured by
+    name, moves grey, following hatched, standing still outlined, groups separated by lines and shaded by
+    block, reference events starred, the failure crossed in red), and below it each moving axis's position
+    over time. The caller saves or closes it."""
+    _use_matplotlib()
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    axes_runs = list(run.axes.values())
+    moving = [a for a in axes_runs if any(p.kind != "still" for p in a.phases)]
+    lanes = len(axes_runs)
+    heights = [max(1.2, 0.42 * lanes), *([1.1] * len(moving))]
+    figure, panels = plt.subplots(
+        len(heights),
+        1,
+        sharex=True,
+        figsize=(12, 1.6 + sum(heights)),
+        gridspec_kw={"height_ratios": heights},
+        squeeze=False,
+    )
+    rows: list[Axes] = [p[0] for p in panels]
+    timeline = rows[0]
+    figure.subplots_adjust(left=0.14, right=0.7, top=1 - 0.9 / (1.6 + sum(heights)), bottom=0.06, hspace=0.12)
+
+    colours: dict[str, str] = {}
+
+    def colour_of(name: str) -> str:
+        if name not in colours:
+            colours[name] = PHASE_COLOURS[len(colours) % (len(PHASE_COLOURS) - 1)]
+        return colours[name]
+
+    # Blocks shaded in turn, groups separated by dashed lines and labelled above the timeline.
+    for block in run.blocks:
+        if block.start_time is None or block.end_time is None or block.end_time <= block.start_time:
+            continue
+        if block.index % 2 == 0:
+            for panel in rows:
+                panel.axvspan(block.start_time, block.end_time, color="#eeeeee", zorder=0, linewidth=0)
+        share = (block.end_time - block.start_time) / max(run.total_time, 1e-9)
+        words = block.text.split(" ", 1)
+        label = (
+            block.text
+            if share > 0.25 or len(words) == 1
+            else f"{words[0]}\n{words[1]}"
+            if share > 0.12
+            else words[0]
+        )
+        for panel in rows:
+            panel.axvline(block.start_time, color="#444444", linewidth=0.8, zorder=1)
+        timeline.text(
+            block.start_time,
+            1.01,
+            f" {label}",
+            transform=timeline.get_xaxis_transform(),
+            ha="left",
+            va="bottom",
+            fontsize=7,
+            fontweight="bold",
+        )
+        for number, group in enumerate(block.groups if len(block.groups) > 1 else []):
+            if group.start_time is None:
+                continue
+            if number:
+                for panel in rows:
+                    panel.axvline(group.start_time, color="#444444", linewidth=0.8, linestyle="--", zorder=1)
+            timeline.text(
+                group.start_time,
+                0.99,
+                f" grp {group.sequence}",
+                transform=timeline.get_xaxis_transform(),
+                ha="left",
+                va="top",
+                fontsize=7,
+                color="#444444",
+            )
+    names = [a.name for a in axes_runs]
+    for lane, axis in enumerate(axes_runs):
+        y = lanes - 1 - lane
+        for phase in axis.phases:
+            width = max(phase.end_time - phase.start_time, 0.0)
+            if phase.kind == "still":
+                timeline.broken_barh(
+                    [(phase.start_time, width)],
+                    (y - 0.3, 0.6),
+                    facecolors="white",
+                    edgecolors="#ee7733",
+                    hatch="xx",
+                    linewidth=1.0,
+                    zorder=2,
+                )
+                continue
+            if phase.kind == "move":
+                colour = MOVE_COLOUR
+            else:
+                colour = colour_of(phase.name.split(": ", 1)[1] if phase.kind == "following" else phase.name)
+            timeline.broken_barh(
+                [(phase.start_time, width)],
+                (y - 0.3, 0.6),
+                facecolors=colour,
+                edgecolors="black" if phase.kind != "following" else colour,
+                hatch="//" if phase.kind == "following" else None,
+                alpha=0.55 if phase.kind == "following" else 0.9,
+                linewidth=0.5,
+                zorder=2,
+            )
+        if axis.reference is not None:
+            timeline.plot(
+                [axis.reference["time"]],
+                [y],
+                marker="*",
+                markersize=11,
+                color="#ddaa33",
+                markeredgecolor="black",
+                linestyle="none",
+                zorder=4,
+            )
+        if axis.outcome in ("failed", "aborted") and axis.phases:
+            end = axis.phases[-1].end_time
+            timeline.plot(
+                [run.failure.time if axis.outcome == "failed" and run.failure else end],
+                [y],
+                marker="X",
+                markersize=12 if axis.outcome == "failed" else 8,
+                color=FAILURE_COLOUR,
+                linestyle="none",
+                zorder=5,
+                gid="failure" if axis.outcome == "failed" else None,
+            )
+        elif axis.outcome == "failed" and run.failure is not None:
+            timeline.plot(
+                [run.failure.time],
+                [y],
+                marker="X",
+                markersize=12,
+                color=FAILURE_COLOUR,
+                linestyle="none",
+                zorder=5,
+                gid="failure",
+            )
+    if run.failure is not None:
+        for panel in rows:
+            panel.axvline(run.failure.time, color=FAILURE_COLOUR, linewidth=1.0, zorder=3, gid="failure time")
+    timeline.set_yticks(range(lanes))
+    timeline.set_yticklabels(
+        [
+            f"{n} ({a.outcome.replace('_', ' ')})"
+            for n, a in zip(reversed(names), reversed(axes_runs), strict=True)
+        ],
+        fontsize=8,
+    )
+    timeline.set_ylim(-0.7, lanes - 0.05)
+    for panel, axis in zip(rows[1:], moving, strict=True):
+        times, positions = _machine_samples([p for p in axis.phases if p.kind != "still"])
+        # standing before, between and after its phases
+        times = [0.0, *times, max(run.total_time, times[-1])]
+        positions = [axis.start_position, *positions, positions[-1]]
+        panel.plot(times, positions, color="black", linewidth=1.2, gid=f"position {axis.name}")
+        if axis.reference is not None:
+            panel.plot(
+                [axis.reference["time"]],
+                [
+                    axis.reference["position"]
+                    if not axis.strategy.setup.modulo
+                    else _at(axis, axis.reference["time"])
+                ],
+                marker="*",
+                markersize=10,
+                color="#ddaa33",
+                markeredgecolor="black",
+                linestyle="none",
+            )
+        panel.set_ylabel(f"{axis.name} [{axis.unit}]", fontsize=8)
+        panel.tick_params(labelsize=7)
+    rows[-1].set_xlabel("time [s]")
+    handles: list[Artist] = [
+        Patch(facecolor=c, edgecolor="black", label=_wrap(n, 40)) for n, c in colours.items()
+    ]
+    handles.append(Patch(facecolor=MOVE_COLOUR, edgecolor="black", label="move block (G00/G01)"))
+    handles.append(Patch(facecolor="#bbbbbb", hatch="//", alpha=0.55, label="following its gantry partner"))
+    handles.append(
+        Patch(facecolor="white", edgecolor="#ee7733", hatch="xx", label="standing still (group moves)")
+    )
+    handles.append(
+        Line2D(
+            [],
+            [],
+            marker="*",
+            markersize=10,
+            color="#ddaa33",
+            markeredgecolor="black",
+            linestyle="none",
+            label="reference taken",
+        )
+    )
+    if run.failure is not None:
+        handles.append(
+            Line2D(
+                [],
+                [],
+                marker="X",
+                markersize=11,
+                color=FAILURE_COLOUR,
+                linestyle="none",
+                label=_wrap(f"FAILED at {_fmt(run.failure.time)} s: {run.failure.reason}", 40),
+            )
+        )
+    _legend(timeline, handles, 7)
+    title = f"{run.program.name.replace(chr(92), '/').rsplit('/', 1)[-1]}: " + (
+        f"done in {_fmt(run.total_time)} s"
+        if run.failure is None
+        else f"FAILED at {_fmt(run.failure.time)} s"
+    )
+    figure.suptitle(title, fontsize=11, x=0.4, y=0.995, va="top")
+    return figure
+
+
+def _at(axis: AxisRun, time: float) -> float:
+    for phase in axis.phases:
+        for segment in phase.segments:
+            if segment.t0 <= time <= segment.t1:
+                return segment.position(time)
+    return axis.position
+
+
+def plot_machine(run: MachineRun, target: str) -> None:
+    """Write the machine dry-run's timeline and position plots to a PNG or SVG file."""
+    if not target.lower().endswith((".png", ".svg")):
+        raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
+    _use_matplotlib()
+    import matplotlib.pyplot as plt
+
+    figure = build_machine_figure(run)
     try:
         figure.savefig(target, dpi=100)
     finally:
