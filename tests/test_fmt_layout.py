@@ -299,3 +299,47 @@ def test_a_list_in_one_consistent_layout_is_left_alone(rows, kind, extra):
         + "\n"
     )
     assert format_text(text) == text
+
+
+# -- configuration --------------------------------------------------------------------------------------
+
+
+def test_fmt_follows_the_fmt_table_of_the_nearest_configuration(cli, tmp_path):
+    text = "kopf.achs_nr 1 ( number\nkenngr.achs_typ  20 ( type\nEnde\n"
+    wanted = (
+        right("kopf.achs_nr", "1", 25, "( number", 31)
+        + "\n"
+        + right("kenngr.achs_typ", "20", 25, "( type", 31)
+    )
+    (tmp_path / "a").mkdir()
+    (tmp_path / "a" / ".achslint.toml").write_text(
+        '[fmt]\nvalue-column = 25\ncomment-column = 31\nalign-values = "right"\n'
+    )
+    (tmp_path / "b").mkdir()
+    (tmp_path / "b" / "pyproject.toml").write_text("[tool.achslint.fmt]\nvalue-column = 21\n")
+    for folder in ("a", "b"):
+        (tmp_path / folder / "achsmds1.lis").write_text(text)
+    assert cli("fmt", str(tmp_path / "a"), str(tmp_path / "b")).returncode == 0
+    assert (tmp_path / "a" / "achsmds1.lis").read_text() == wanted + "\nEnde\n"
+    assert (tmp_path / "b" / "achsmds1.lis").read_text() == (
+        left("kopf.achs_nr", "1", 21) + " ( number\n" + left("kenngr.achs_typ", "20", 21) + " ( type\nEnde\n"
+    )
+
+
+@pytest.mark.parametrize(
+    ("table", "message"),
+    [
+        (
+            "value-colum = 30",
+            "unknown key `fmt.value-colum` (known keys: align-values, comment-column, value-column)",
+        ),
+        ("value-column = 0", "value-column must be a column number from 1 up, not 0"),
+        ('align-values = "center"', "key `fmt.align-values`: Input should be 'left', 'right' or 'keep'"),
+    ],
+)
+def test_a_bad_fmt_table_is_a_configuration_error(cli, tmp_path, table, message):
+    (tmp_path / ".achslint.toml").write_text(f"[fmt]\n{table}\n")
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    result = cli("fmt", "--check", str(tmp_path / "achsmds1.lis"))
+    assert result.returncode == 2
+    assert str(tmp_path / ".achslint.toml") in result.stderr.decode() and message in result.stderr.decode()

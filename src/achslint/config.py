@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import fnmatch
 import os
-from dataclasses import MISSING, dataclass, field, fields, replace
+from dataclasses import MISSING, asdict, dataclass, field, fields, is_dataclass, replace
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Literal
 
+from .fmt import FmtOptions
 from .tomlfile import read_toml
 
 if TYPE_CHECKING:
@@ -86,10 +87,18 @@ class Settings:
         None, min_length=1
     )  # the CNC working directory start-up entries resolve against
     docs_url: str | None = _key(None, pattern=r"^https?://\S+$")  # rule documentation links (json, SARIF)
+    fmt: FmtOptions = _key(factory=FmtOptions)  # the [fmt] table: the layout `achslint fmt` keeps or imposes
 
     def as_file_keys(self) -> dict[str, Any]:
         """The settings as a configuration file spells them."""
-        return {file_key(f.name): getattr(self, f.name) for f in fields(self)}
+        return {file_key(f.name): _as_file_value(getattr(self, f.name)) for f in fields(self)}
+
+
+def _as_file_value(value: Any) -> Any:
+    """A setting as the file spells it: a table's keys with dashes."""
+    if is_dataclass(value) and not isinstance(value, type):
+        return {file_key(name): item for name, item in asdict(value).items()}
+    return value
 
 
 def file_key(name: str) -> str:
@@ -130,6 +139,8 @@ def _file_model() -> Any:
         kind: Any = hints[item.name]
         if codes:
             kind = Annotated[kind, AfterValidator(lambda value, how=codes: _check_codes(value, how))]
+        if isinstance(kind, type) and is_dataclass(kind):
+            kind = _table_model(kind)
         default: dict[str, Any] = (
             {"default_factory": item.default_factory}
             if item.default_factory is not MISSING
@@ -139,6 +150,29 @@ def _file_model() -> Any:
     return create_model(
         "SettingsFile", __config__=ConfigDict(extra="forbid", populate_by_name=True), **definitions
     )
+
+
+def _table_model(table: type) -> Any:
+    """A table of the configuration file (`[fmt]`) read into its dataclass: keys with dashes, no unknown
+    keys, and the dataclass's own checks (its `ValueError`s become configuration errors)."""
+    from typing import Annotated, get_type_hints
+
+    from pydantic import AfterValidator, ConfigDict, Field, create_model
+
+    hints = get_type_hints(table)
+    names = [item.name for item in fields(table)]
+    definitions: dict[str, Any] = {
+        item.name: (hints[item.name], Field(alias=file_key(item.name), default=item.default))
+        for item in fields(table)
+    }
+    model = create_model(
+        "table",  # pydantic names it in "should be a valid dictionary or instance of table"
+        __config__=ConfigDict(extra="forbid", populate_by_name=True),
+        **definitions,
+    )
+    return Annotated[
+        model, AfterValidator(lambda read: table(**{name: getattr(read, name) for name in names}))
+    ]
 
 
 @dataclass(frozen=True)
@@ -191,7 +225,10 @@ def _format_error(path: Path, error: ValidationError, model: Any) -> str:
     for item in error.errors():
         key = ".".join(str(part) for part in item["loc"]) or "(top level)"
         if item["type"] == "extra_forbidden":
-            allowed = ", ".join(sorted(f.alias or name for name, f in model.model_fields.items()))
+            table = model
+            for part in item["loc"][:-1]:  # an unknown key inside a table: that table's keys
+                table = next(f.annotation for n, f in table.model_fields.items() if part in (n, f.alias))
+            allowed = ", ".join(sorted(f.alias or name for name, f in table.model_fields.items()))
             problems.append(f"unknown key `{key}` (known keys: {allowed})")
         else:
             problems.append(f"key `{key}`: {item['msg']}")
@@ -216,7 +253,9 @@ def load_file(path: Path) -> ResolvedConfig:
         validated = model.model_validate(data)
     except ValidationError as exc:
         raise ConfigError(_format_error(path, exc, model)) from None
-    return ResolvedConfig(Settings(**validated.model_dump()), path)
+    return ResolvedConfig(
+        Settings(**{item.name: getattr(validated, item.name) for item in fields(Settings)}), path
+    )
 
 
 def _has_table(pyproject: Path) -> bool:

@@ -36,6 +36,7 @@ from .documents import Document, units
 if TYPE_CHECKING:
     from ..analysis import Setting
     from ..context import Context
+    from ..fmt import FmtOptions
     from ..machine import StartupEntry
     from ..resolved import ResolvedAxis
     from .session import Snapshot
@@ -696,17 +697,21 @@ def code_actions(
 # -- formatting ------------------------------------------------------------------------------------
 
 
-def format_document(document: Document, file: syntax.ListFile) -> list[lsp.TextEdit]:
+def format_document(
+    document: Document, file: syntax.ListFile, options: FmtOptions | None = None
+) -> list[lsp.TextEdit]:
     from ..fmt import format_file
 
-    formatted = format_file(file)
+    formatted = format_file(file, options)
     return diff_edits(document, ("\ufeff" if document.bom else "") + formatted)
 
 
-def format_range(document: Document, file: syntax.ListFile, request: lsp.Range) -> list[lsp.TextEdit]:
+def format_range(
+    document: Document, file: syntax.ListFile, request: lsp.Range, options: FmtOptions | None = None
+) -> list[lsp.TextEdit]:
     from ..fmt import formatted_lines
 
-    bodies = formatted_lines(file)
+    bodies = formatted_lines(file, options)
     edits = []
     first, last = request.start.line + 1, request.end.line + (1 if request.end.character else 0)
     for line in file.lines[max(first, 1) - 1 : max(last, first)]:

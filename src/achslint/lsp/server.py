@@ -27,6 +27,7 @@ from .session import ClientSettings, Session, Snapshot
 
 if TYPE_CHECKING:
     from ..context import Context
+    from ..fmt import FmtOptions
     from ..machine import StartupEntry
     from ..syntax import ListFile
 
@@ -369,14 +370,21 @@ def _list_file(ls: AchslintServer, uri: str) -> tuple[Document, ListFile] | None
 @guarded(default=list)
 def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
     found = _list_file(ls, params.text_document.uri)
-    return features.format_document(*found) if found is not None else []
+    return features.format_document(*found, _fmt_options(ls, found[0])) if found is not None else []
 
 
 @server.feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
 @guarded(default=list)
 def range_formatting(ls: AchslintServer, params: lsp.DocumentRangeFormattingParams) -> list[lsp.TextEdit]:
     found = _list_file(ls, params.text_document.uri)
-    return features.format_range(*found, params.range) if found is not None else []
+    return (
+        features.format_range(*found, params.range, _fmt_options(ls, found[0])) if found is not None else []
+    )
+
+
+def _fmt_options(ls: AchslintServer, document: Document) -> FmtOptions:
+    """The `[fmt]` settings of the document's configuration: the editor formats as `achslint fmt` does."""
+    return ls.session.config_for(document)[0].settings.fmt
 
 
 @server.feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
