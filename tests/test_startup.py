@@ -109,6 +109,8 @@ def test_the_ext_schedule_variant_reads_the_lists_one_folder_up(tmp_path, where,
     document = json.loads(result.stdout)
     assert [d["message"] for d in document["diagnostics"] if d["code"] == "LIS504"] == []
     assert document["summary"]["files"] == 2  # achsmds1.lis and achsmds2.lis, read through the entries
+    if where != "listen/ExtSchedule":
+        return
     # Read and compared as one machine: a second axis 1 is found across the two lists.
     axis2 = machine / "listen" / "achsmds2.lis"
     axis2.write_text(
