@@ -533,17 +533,57 @@ def run_lint(
     from .programlint import is_program, lint_programs
 
     programs = [path for path in request.paths if is_program(path)]
-    if not programs:
-        return LintRun(request).run(stdin, progress)
     rest = [path for path in request.paths if not is_program(path)]
-    outcome = LintRun(replace(request, paths=rest)).run(stdin, progress) if rest else LintOutcome([], [])
-    run = LintRun(request)
-    results, errors = lint_programs(
-        programs, request, lambda path: run.settings_for(Target(str(path), path, run.config_for(path)))
-    )
-    outcome.results.extend(results)
-    outcome.errors.extend(errors)
+    run = LintRun(replace(request, paths=rest))
+    outcome = run.run(stdin, progress) if rest or not programs else LintOutcome([], [])
+    if programs:
+        results, errors = lint_programs(
+            programs, request, lambda path: run.settings_for(Target(str(path), path, run.config_for(path)))
+        )
+        outcome.results.extend(results)
+        outcome.errors.extend(errors)
+    _configured_programs(run, {os.path.realpath(path) for path in programs}, outcome)
     return outcome
+
+
+def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> None:
+    """The homing programs the configuration of each linted start-up list names (`homing-programs`),
+    checked against that start-up list's machine."""
+    from .machinebuild import MachineError, build_machine
+    from .programlint import lint_program_on
+
+    given_root = run.request.overrides.cnc_root
+    startups = {os.path.realpath(s.path): (s.path, s.root) for s in run.startups}
+    for raw in run.request.paths:  # start-up lists inside the linted folders
+        if raw != "-" and is_folder(Path(raw)):
+            for path in sorted(Path(raw).rglob("*.lis")):
+                hidden = any(part.startswith(".") for part in path.relative_to(raw).parts)
+                if is_startup_list(path) and not hidden:
+                    root = Path(given_root) if given_root else None
+                    startups.setdefault(os.path.realpath(path), (path, root))
+    for startup, cnc_root in startups.values():
+        config = run.config_for(startup)
+        wanted = [Path(os.path.normpath(config.root / name)) for name in config.settings.homing_programs]
+        todo = [path for path in wanted if os.path.realpath(path) not in done]
+        if not todo:
+            continue
+        try:
+            machine = build_machine(startup, cnc_root=cnc_root)
+        except MachineError as exc:
+            outcome.errors.append(f"{config.path}: homing-programs: {exc}")
+            continue
+        for path in todo:
+            done.add(os.path.realpath(path))
+            if not path.exists():
+                outcome.errors.append(
+                    f"{config.path}: homing-programs names {path.name}, but {_shown(path)} does not exist"
+                )
+                continue
+            settings = run.settings_for(Target(str(path), path, run.config_for(path)))
+            result = lint_program_on(path, machine, name=_shown(path), settings=settings)
+            if result.error:
+                outcome.errors.append(result.error)
+            outcome.results.append(result)
 
 
 @dataclass

@@ -87,6 +87,9 @@ class Settings:
         None, min_length=1
     )  # the CNC working directory start-up entries resolve against
     docs_url: str | None = _key(None, pattern=r"^https?://\S+$")  # rule documentation links (json, SARIF)
+    # NC homing programs (relative to the configuration file's folder) that a lint of the machine's
+    # start-up list also checks against that machine (LIS6xx), as `lint rfp.nc --machine hochlauf.lis` does
+    homing_programs: list[str] = _key(factory=list)
     fmt: FmtOptions = _key(factory=FmtOptions)  # the [fmt] table: the layout `achslint fmt` keeps or imposes
 
     def as_file_keys(self) -> dict[str, Any]:
