@@ -19,6 +19,7 @@ from achslint.docs import rules_markdown
 from achslint.lsp import features
 from achslint.lsp.documents import Document
 from achslint.lsp.session import ClientSettings, Session, Snapshot, xml_bytes
+from achslint.machine import StartupEntry
 
 EVERYWHERE = lsp.Range(lsp.Position(0, 0), lsp.Position(99, 0))
 
@@ -472,7 +473,7 @@ def test_a_start_up_list_shows_only_its_entries(session: Session, tmp_path: Path
     assert snapshot is not None and snapshot.startup and snapshot.file is None
     assert [(d.code, d.line) for d in found] == [("LIS504", 4)]
     snapshot.file = startup.parse()  # as the server's definition request does
-    entries = [type("Entry", (), {"line": 3, "path": None})()]  # an entry whose file was not found
+    entries = [StartupEntry("achs_mds[0]", "./gone.lis", 3, 20, None)]  # an entry whose file was not found
     assert features.definition(startup, snapshot, 3, 20, lambda: entries) == []
     assert features.definition(startup, snapshot, 4, 20, lambda: entries) == []
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import asyncio
 import sys
-from collections.abc import Callable
+from collections.abc import AsyncIterator, Callable
 from pathlib import Path
 
 import pytest
@@ -42,7 +42,7 @@ XML = (
 @pytest_lsp.fixture(
     scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "achslint", "server"])
 )
-async def client(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory):
+async def client(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[None]:
     root = tmp_path_factory.mktemp("plain")
     await lsp_client.initialize_session(
         lsp.InitializeParams(
