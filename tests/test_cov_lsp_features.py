@@ -531,3 +531,33 @@ def test_the_text_of_a_list_is_the_buffer_else_the_file(session: Session, tmp_pa
     assert session.text_of(path) == b"kopf.achs_nr  1\nEnde\n"
     opened(session, path, "kopf.achs_nr  µ\nEnde\n")
     assert session.text_of(path) == "kopf.achs_nr  µ\nEnde\n".encode()
+
+
+def test_closed_lists_of_the_machine_are_read_once_while_unchanged(
+    session: Session, tmp_path: Path, monkeypatch
+):
+    # The neighbour achsmds1.lis is not open: its summary comes from disk and is kept until the file changes.
+    for name in ("achsmds1.lis", "achsmds2.lis"):
+        (tmp_path / name).write_text("kopf.achs_nr 1\nEnde\n", encoding="latin-1")
+    document = opened(session, tmp_path / "achsmds2.lis")  # repeats the number of achsmds1.lis: LIS501
+    import achslint.lsp.session as module
+
+    reads: list[str] = []
+    real = module.lint_file
+
+    def counting(data, name, *args, **kwargs):
+        reads.append(Path(name).name)
+        return real(data, name, *args, **kwargs)
+
+    monkeypatch.setattr(module, "lint_file", counting)
+    for _ in range(3):
+        _, found, _ = session.diagnostics(document.uri)
+        assert "LIS501" in codes(found)
+    assert reads.count("achsmds1.lis") == 1
+
+
+def test_a_document_whose_uri_holds_a_nul_is_checked_as_a_buffer():
+    from achslint.lsp.server import _path
+
+    assert _path("file:///a%00b/achsmds1.lis") is None
+    assert _path("file:///tmp/achsmds1.lis") == Path("/tmp/achsmds1.lis")

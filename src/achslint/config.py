@@ -336,6 +336,10 @@ class Overrides:
             raise AttributeError(name)
         return self.values.get(name)
 
+    def key(self) -> tuple[tuple[str, str], ...]:
+        """A stable, hashable summary of what is overridden (equal overrides give equal keys)."""
+        return tuple(sorted((name, repr(value)) for name, value in self.values.items()))
+
     def apply(self, settings: Settings) -> Settings:
         changes: dict[str, Any] = {}
         for name, value in self.values.items():

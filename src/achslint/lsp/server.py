@@ -62,6 +62,14 @@ class AchslintServer(LanguageServer):
         return not formats or lsp.MarkupKind.Markdown in formats
 
     @property
+    def markdown_in_completion(self) -> bool:
+        """Whether completion documentation may be Markdown (completionItem.documentationFormat)."""
+        completion = self._completion_capabilities()
+        item = completion.completion_item if completion is not None else None
+        formats = item.documentation_format if item is not None else None
+        return not formats or lsp.MarkupKind.Markdown in formats
+
+    @property
     def snippets(self) -> bool:
         completion = self._completion_capabilities()
         item = completion.completion_item if completion is not None else None
@@ -162,7 +170,8 @@ def _path(uri: str) -> Path | None:
         path = to_fs_path(uri)
     except Exception:
         return None
-    return Path(path) if path and uri.startswith("file:") else None
+    # A NUL (file:///a%00b) names no file: the document is checked as an unsaved buffer.
+    return Path(path) if path and uri.startswith("file:") and "\0" not in path else None
 
 
 @server.feature(lsp.INITIALIZE)
@@ -325,7 +334,7 @@ def completion(ls: AchslintServer, params: lsp.CompletionParams) -> lsp.Completi
 @server.feature(lsp.COMPLETION_ITEM_RESOLVE)
 @guarded(default=None)
 def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem) -> lsp.CompletionItem:
-    return features.resolve_item(item, ls.markdown)
+    return features.resolve_item(item, ls.markdown_in_completion)
 
 
 @server.feature(

@@ -277,7 +277,7 @@ class Session:
         for folder in (path.parent, path.parent.parent):
             try:
                 candidates = sorted(p for p in folder.iterdir() if is_startup_list(p))
-            except OSError:
+            except (OSError, ValueError):  # ValueError: a NUL in the name (file:///a%00b/...)
                 continue
             for candidate in candidates:
                 machine = self._startup_machine(candidate, real)
@@ -356,7 +356,7 @@ class Session:
                 defaults_stamp = (str(target.defaults), default_info.st_mtime_ns, default_info.st_size)
         except OSError as exc:
             return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
-        key = (_real(path), stamp, defaults_stamp, repr(self.settings.overrides))
+        key = (_real(path), stamp, defaults_stamp, self.settings.overrides.key())
         cached = self._disk.get(key)
         if cached is None:
             try:
@@ -397,7 +397,7 @@ class Session:
 
 
 _Found = tuple[int, int, str, str, Severity]  # what tells two findings apart (for `peers`)
-_DiskKey = tuple[str, tuple[int, int], tuple[str, int, int] | None, str]
+_DiskKey = tuple[str, tuple[int, int], tuple[str, int, int] | None, tuple[tuple[str, str], ...]]
 
 
 def _key(d: Diagnostic) -> _Found:
