@@ -664,7 +664,6 @@ def _machine_report(
         _fail(str(exc))
     except OSError as exc:
         _fail(str(exc) if exc.errno is None else f"cannot read {program}: {reason(exc)}")
-    raise AssertionError("unreachable")  # pragma: no cover
 
 
 def _render_machine(report: dict[str, Any], console: Console) -> None:
