@@ -293,3 +293,43 @@ def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
             continue
         slave.gantry_master = master.name
         machine.gantry_pairs.append((master.name, slave.name))
+
+
+def rename(machine: Machine, names: dict[str, int], where: str) -> None:
+    """Give axes the programmed names of a machine scenario's [names] table (logical number -> name): the
+    fallback for a machine without a channel list, whose axes otherwise go by kopf.log_achs_name. Raises
+    ValueError (with `where` in its message) when the machine has a channel list or lacks a number."""
+    if not names:
+        return
+    if machine.channel_list is not None:
+        raise ValueError(
+            f"{where}: [names] is for machines without a channel list; this machine's channel list names "
+            "its axes — remove [names]"
+        )
+    everyone = [*machine.axes.values(), *machine.other_axes]
+    by_number = {axis.logical_number: axis for axis in everyone}
+    for name, number in names.items():
+        if number not in by_number:
+            known = ", ".join(str(n) for n in sorted(by_number)) or "none"
+            raise ValueError(
+                f"{where}: [names] {name} = {number}: the machine has no axis {number} (it has {known})"
+            )
+    old_to_new: dict[str, str] = {}
+    for name, number in names.items():
+        axis = by_number[number]
+        old_to_new[axis.name] = name
+        axis.name = name
+    machine.axes = {}
+    machine.other_axes = []
+    for axis in everyone:
+        if axis.name and axis.name not in machine.axes:
+            machine.axes[axis.name] = axis
+        else:
+            machine.other_axes.append(axis)
+    machine.gantry_pairs = [(old_to_new.get(m, m), old_to_new.get(s, s)) for m, s in machine.gantry_pairs]
+    for axis in everyone:
+        if axis.gantry_master is not None:
+            axis.gantry_master = old_to_new.get(axis.gantry_master, axis.gantry_master)
+    machine.notes.append(
+        f"{where}: axis names from [names] ({', '.join(f'{n} = {v}' for n, v in names.items())})"
+    )

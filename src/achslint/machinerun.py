@@ -332,12 +332,17 @@ def machine_dry_run(
     Raises MachineError (machine or program unreadable), ScenarioError and DryRunRefused, each with a
     one-line message naming the file."""
     from .files import reason
-    from .machinebuild import MachineError, build_machine
+    from .machinebuild import MachineError, build_machine, rename
     from .machinescenario import machine_scenario_input
     from .ncprogram import read_program
+    from .scenario import ScenarioError
 
     given, cycle_time_us, cnc_root = machine_scenario_input(startup, scenario, config)
     machine = build_machine(startup, cnc_root=cnc_root, channel=channel)
+    try:
+        rename(machine, given.names, given.where)
+    except ValueError as exc:
+        raise ScenarioError(str(exc)) from None
     if not machine.axes:
         raise MachineError(
             "names no axis lists (achs_mds[i]): --program needs the machine's start-up list (hochlauf.lis)",

@@ -23,6 +23,7 @@ machine does not have is an error with the closest names the machine does have.
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -48,6 +49,8 @@ class MachineScenario:
     where: str = "machine scenario"  # the file (or "command line"), for messages
     defaults: dict[str, Any] = field(default_factory=dict)
     axes: dict[str, dict[str, Any]] = field(default_factory=dict)
+    # [names]: programmed name -> logical axis number, for a machine without a channel list
+    names: dict[str, int] = field(default_factory=dict)
     _parsed: dict[str, Any] = field(default_factory=dict, repr=False)
 
     @property
@@ -90,12 +93,13 @@ def parse_machine_scenario(
     if not isinstance(data, Mapping):
         raise ScenarioError(f"{where}: a machine scenario is a table of keys, not {type(data).__name__}")
     known = scenario_keys()
-    unknown = [key for key in data if key not in known and key != "axes"]
+    unknown = [key for key in data if key not in known and key not in ("axes", "names")]
     if unknown:
         raise ScenarioError(
-            f"{where}: unknown key `{unknown[0]}` (known: {', '.join(known)}, and [axes.NAME] tables)"
+            f"{where}: unknown key `{unknown[0]}` (known: {', '.join(known)}, [names] and [axes.NAME] tables)"
         )
-    defaults = {**(base or {}), **{k: v for k, v in data.items() if k != "axes"}}
+    names = _names(data.get("names", {}), where)
+    defaults = {**(base or {}), **{k: v for k, v in data.items() if k not in ("axes", "names")}}
     if defaults:
         parse_input(defaults, where)
     tables = data.get("axes", {})
@@ -122,10 +126,40 @@ def parse_machine_scenario(
                 )
         parse_input(dict(table), label)
         axes[key] = dict(table)
-    scenario = MachineScenario(where, defaults, axes)
+    scenario = MachineScenario(where, defaults, axes, names)
     for name in axes:
         scenario.given(name)  # the merged table must be valid too (e.g. cam_jitter against the period)
     return scenario
+
+
+AXIS_NAME = re.compile(r"[A-Z][A-Z0-9_]*")
+
+
+def _names(table: object, where: str) -> dict[str, int]:
+    """The [names] table: `X = 1` gives the axis with logical number 1 the programmed name X."""
+    if not isinstance(table, Mapping):
+        raise ScenarioError(
+            f"{where}: `names` maps programmed axis names to logical axis numbers ([names] X = 1), "
+            f"not {type(table).__name__}"
+        )
+    names: dict[str, int] = {}
+    for raw, number in table.items():
+        name = str(raw).upper()
+        if not AXIS_NAME.fullmatch(name):
+            raise ScenarioError(
+                f"{where}: [names] `{raw}` is not an axis name (a letter, then letters or digits)"
+            )
+        if isinstance(number, bool) or not isinstance(number, int) or number < 1:
+            raise ScenarioError(
+                f"{where}: [names] {raw} = {number!r}: give the logical axis number (1, 2, ...)"
+            )
+        if name in names:
+            raise ScenarioError(f"{where}: [names] names {name} twice (names are not case-sensitive)")
+        if number in names.values():
+            other = next(n for n, v in names.items() if v == number)
+            raise ScenarioError(f"{where}: [names] gives logical axis {number} two names, {other} and {name}")
+        names[name] = number
+    return names
 
 
 def read_machine_scenario(path: Path, base: Mapping[str, Any] | None = None) -> MachineScenario:
