@@ -11,8 +11,6 @@ import pytest
 
 from .conftest import FIXTURES, jenkins_junit_errors
 
-jsonschema = pytest.importorskip("jsonschema")
-
 # Every rule's bad and good fixture (lists and XML), plus the machines: findings of every kind.
 EVERYTHING = (
     "lint",
@@ -33,6 +31,9 @@ def output(cli, fmt: str, *extra: str) -> str:
 
 def checked_validator(schema: dict):
     """A validator for the schema's draft whose format checker really checks URIs (else the test proves nothing)."""
+    # Imported here, not at collection: the URI format checker builds its grammars on import (~2.5 s),
+    # which every test worker would pay while collecting.
+    jsonschema = pytest.importorskip("jsonschema")
     cls = jsonschema.validators.validator_for(schema)
     checker = cls.FORMAT_CHECKER
     assert "uri" in checker.checkers, "install jsonschema[format-nongpl]: without it `uri` is not checked"

@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import os
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -13,22 +12,20 @@ import pytest
 from achslint import lint_text
 from achslint.config import ConfigError, discover
 
-from .conftest import FIXTURES, ROOT
+from .conftest import FIXTURES, run_cli
 
 INFO_ONLY = FIXTURES / "lists" / "achsmds4.lis"  # only LIS102 (info): an old parameter name
 
 
 def run_in(cwd: Path, *args: str) -> subprocess.CompletedProcess:
-    """The real entry point started in another working directory (the package found through an absolute path)."""
-    env = {**os.environ, "NO_COLOR": "1", "PYTHONPATH": str(ROOT / "src")}
-    return subprocess.run(
-        [sys.executable, "-m", "achslint", *args],
-        cwd=cwd,
-        capture_output=True,
-        env=env,
-        check=False,
-        timeout=120,
-    )
+    """The CLI's entry point run in another working directory (in this process: the working directory is
+    all that differs between the runs)."""
+    before = os.getcwd()
+    os.chdir(cwd)
+    try:
+        return run_cli(*args)
+    finally:
+        os.chdir(before)
 
 
 @pytest.mark.parametrize("option", ["--select", "--ignore", "--extend-select"])

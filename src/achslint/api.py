@@ -405,7 +405,7 @@ def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
     or without git."""
     import subprocess
 
-    if not files:
+    if not files or not _maybe_in_git_work_tree(folder):
         return files
     try:
         answer = subprocess.run(
@@ -421,6 +421,18 @@ def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
         return files
     ignored = {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
     return [f for f in files if os.path.abspath(f) not in ignored]
+
+
+def _maybe_in_git_work_tree(folder: Path) -> bool:
+    """Whether git could have a say: a `.git` folder or file in the folder or above it, or git pointed
+    elsewhere by GIT_DIR / GIT_WORK_TREE. Saves starting git for every folder outside a repository."""
+    if os.environ.get("GIT_DIR") or os.environ.get("GIT_WORK_TREE"):
+        return True
+    try:
+        start = Path(os.path.abspath(folder))
+        return any(os.path.lexists(candidate / ".git") for candidate in (start, *start.parents))
+    except (OSError, ValueError):
+        return True  # let git decide
 
 
 def _shown(path: Path) -> str:
