@@ -125,3 +125,12 @@ def test_an_internal_error_is_one_line_unless_debugging(cli: Cli, monkeypatch: p
     )
     with pytest.raises(RuntimeError, match="something unexpected"):
         cli("lint", X_AXIS, "--debug")
+
+
+def test_a_folder_given_as_scenario_is_named_as_such(cli, tmp_path):
+    result = cli("dry-run", str(FIXTURES / "lists" / "achsmds1.lis"), "--scenario", str(tmp_path))
+    assert result.returncode == 2
+    assert (
+        result.stderr.decode().strip()
+        == f"achslint: cannot read scenario {tmp_path}: it is a folder, not a file"
+    )

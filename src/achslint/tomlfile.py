@@ -19,7 +19,9 @@ def read_toml(path: Path, what: str, error: type[Exception]) -> dict[str, Any]:
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as exc:
-        raise error(f"cannot read {what} {path}: {exc.strerror or exc}") from None
+        from .files import reason
+
+        raise error(f"cannot read {what} {path}: {reason(exc)}") from None
     except UnicodeDecodeError as exc:
         raise error(f"{path}: {what} is not UTF-8 text (byte {exc.start + 1}); save it as UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
