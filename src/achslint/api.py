@@ -142,6 +142,8 @@ class LintRun:
     def __init__(self, request: LintRequest) -> None:
         self.request = request
         self.startups: list[Startup] = []
+        # start-up lists found in linted folders whose configuration names homing programs
+        self.program_startups: list[Path] = []
         self.fixed_config = load_file(Path(request.config_file)) if request.config_file else None
 
     def config_for(self, path: Path) -> ResolvedConfig:
@@ -152,6 +154,7 @@ class LintRun:
         always linted. Each file is taken once, however often it is reached."""
         found = Discovery()
         self.startups = []
+        self.program_startups = []
         named: dict[str, Path] = {}  # folders of the lists named one by one
         scope = Scope.of(self.request.paths)
         for raw in self.request.paths:
@@ -243,6 +246,8 @@ class LintRun:
             include = self.request.overrides.apply(config.settings).include
             for name in sorted(files):
                 path = Path(root) / name
+                if config.settings.homing_programs and is_startup_list(path):
+                    self.program_startups.append(path)  # its homing programs are checked too
                 xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
                 if not xml and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
                     continue
@@ -542,13 +547,13 @@ def run_lint(
 
     NC programs (`rfp.nc`) among the paths are checked against the machine of `request.machine` (LIS6xx).
     """
-    from .programlint import is_program, lint_programs
-
     programs = [path for path in request.paths if is_program(path)]
     rest = [path for path in request.paths if not is_program(path)]
     run = LintRun(replace(request, paths=rest))
     outcome = run.run(stdin, progress) if rest or not programs else LintOutcome([], [])
     if programs:
+        from .programlint import lint_programs
+
         results, errors = lint_programs(
             programs, request, lambda path: run.settings_for(Target(str(path), path, run.config_for(path)))
         )
@@ -558,27 +563,30 @@ def run_lint(
     return outcome
 
 
+def is_program(path: str) -> bool:
+    """Whether a path names an NC program (`rfp.nc`) rather than a list."""
+    return path.lower().endswith(PROGRAM_SUFFIXES)
+
+
+PROGRAM_SUFFIXES = (".nc",)
+
+
 def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> None:
     """The homing programs the configuration of each linted start-up list names (`homing-programs`),
     checked against that start-up list's machine."""
-    from .machinebuild import MachineError, build_machine
-    from .programlint import lint_program_on
-
-    given_root = run.request.overrides.cnc_root
+    given_root = Path(run.request.overrides.cnc_root) if run.request.overrides.cnc_root else None
     startups = {os.path.realpath(s.path): (s.path, s.root) for s in run.startups}
-    for raw in run.request.paths:  # start-up lists inside the linted folders
-        if raw != "-" and is_folder(Path(raw)):
-            for path in sorted(Path(raw).rglob("*.lis")):
-                hidden = any(part.startswith(".") for part in path.relative_to(raw).parts)
-                if is_startup_list(path) and not hidden:
-                    root = Path(given_root) if given_root else None
-                    startups.setdefault(os.path.realpath(path), (path, root))
+    for path in run.program_startups:  # found in the linted folders
+        startups.setdefault(os.path.realpath(path), (path, given_root))
     for startup, cnc_root in startups.values():
         config = run.config_for(startup)
         wanted = [Path(os.path.normpath(config.root / name)) for name in config.settings.homing_programs]
         todo = [path for path in wanted if os.path.realpath(path) not in done]
         if not todo:
             continue
+        from .machinebuild import MachineError, build_machine  # only for machines with programs
+        from .programlint import lint_program_on
+
         try:
             machine = build_machine(startup, cnc_root=cnc_root)
         except MachineError as exc:

@@ -15,7 +15,7 @@ from .numbers import NumberProblem, Reference
 Span = str | tuple[int, int]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class ValueFact:
     """Base of every fact; `span` is the part of the line at fault."""
 
@@ -27,7 +27,7 @@ class ValueFact:
 # Array indices -------------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class IndexOutOfBounds(ValueFact):
     """A written index outside the array's bounds (`written` as in the list, `index` None if unreadable)."""
 
@@ -46,14 +46,14 @@ class IndexOutOfBounds(ValueFact):
 # Data types ----------------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class MissingValue(ValueFact):
     """Nothing after the name, or only a comment (`comment` is the text that starts it)."""
 
     comment: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class NotBoolean(ValueFact):
     """A BOOLEAN parameter written with something other than 0/1 (`replacement` when a number was written)."""
 
@@ -61,7 +61,7 @@ class NotBoolean(ValueFact):
     replacement: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class RealForInteger(ValueFact):
     """A real number for an integer parameter (`replacement` when it is a whole number)."""
 
@@ -69,7 +69,7 @@ class RealForInteger(ValueFact):
     replacement: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class TextForNumber(ValueFact):
     """Text where a number is expected."""
 
@@ -79,7 +79,7 @@ class TextForNumber(ValueFact):
 # Ranges --------------------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class UnusableNumber(ValueFact):
     """A number that cannot be held at all (too many digits, beyond the float range, hex too long)."""
 
@@ -87,7 +87,7 @@ class UnusableNumber(ValueFact):
     problem: NumberProblem
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class NotAccepted(ValueFact):
     """A number that is not one of the listed codes."""
 
@@ -95,7 +95,7 @@ class NotAccepted(ValueFact):
     accepted: tuple[int, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class NotPositive(ValueFact):
     """Zero or less for a parameter that must be greater than 0."""
 
@@ -103,7 +103,7 @@ class NotPositive(ValueFact):
     unit: str | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class OutOfRange(ValueFact):
     """A number below `low` or above `high` (the bound that was crossed is the one not None)."""
 
@@ -124,7 +124,7 @@ class OutOfRange(ValueFact):
 # Symbols, strings, references ----------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class UnknownSymbol(ValueFact):
     """A word that is not one of the parameter's symbols (`codes`: their numbers, where they have some)."""
 
@@ -133,7 +133,7 @@ class UnknownSymbol(ValueFact):
     codes: tuple[int, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class TooLong(ValueFact):
     """A string longer than the CNC stores for the parameter."""
 
@@ -141,14 +141,14 @@ class TooLong(ValueFact):
     max_length: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class CommentReadAsValue(ValueFact):
     """`name  # text` on a string parameter: the CNC reads the whole rest as the value."""
 
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class TextAfterString(ValueFact):
     """Text after a string value that does not start with `(`."""
 
@@ -159,7 +159,7 @@ class TextAfterString(ValueFact):
         return "rest"
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class BadReference(ValueFact):
     """A `P-AXIS-nnnnn[.i]` value the CNC cannot use.
 

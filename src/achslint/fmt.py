@@ -52,46 +52,13 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from . import syntax
+from .config import KEEP, LEFT, RIGHT, FmtOptions
 from .decode import decode
 
 NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
 BLANKS = " \t"
 TAB_WIDTH = 8
 MIN_BLOCK = 3  # consecutive value lines that make a block alignment of their own
-
-LEFT: Literal["left"] = "left"
-RIGHT: Literal["right"] = "right"
-KEEP: Literal["keep"] = "keep"
-AlignValues = Literal["left", "right", "keep"]
-ALIGN_VALUES: tuple[AlignValues, ...] = (LEFT, RIGHT, KEEP)
-
-
-@dataclass(frozen=True)
-class FmtOptions:
-    """Layout choices that replace what fmt would detect in a file.
-
-    Columns count from 1, as editors show them. `align_values` `"keep"` keeps
-    the file's own alignment; `"left"`/`"right"` put every value in one column
-    of that kind: `value_column`, else the one most values already use, else the
-    canonical one. `value_column` is where values start (left-aligned; also when
-    it is given with `"keep"`) or the column of their last character
-    (right-aligned). `comment_column` is where a comment after a value starts.
-    """
-
-    value_column: int | None = None
-    comment_column: int | None = None
-    align_values: AlignValues = KEEP
-
-    def __post_init__(self) -> None:
-        for name in ("value_column", "comment_column"):
-            column = getattr(self, name)
-            if column is not None and (type(column) is not int or column < 1):
-                raise ValueError(
-                    f"{name.replace('_', '-')} must be a column number from 1 up, not {column!r}"
-                )
-        if self.align_values not in ALIGN_VALUES:
-            choices = ", ".join(f'"{choice}"' for choice in ALIGN_VALUES)
-            raise ValueError(f"align-values must be one of {choices}, not {self.align_values!r}")
 
 
 @dataclass(frozen=True, order=True)

@@ -21,13 +21,6 @@ from .syntax import split_lines
 if TYPE_CHECKING:
     from .api import LintRequest
 
-PROGRAM_SUFFIXES = (".nc",)
-
-
-def is_program(path: str) -> bool:
-    """Whether a path names an NC program (`rfp.nc`) rather than a list."""
-    return path.lower().endswith(PROGRAM_SUFFIXES)
-
 
 def diagnostic(
     code: str,

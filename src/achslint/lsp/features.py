@@ -35,8 +35,8 @@ from .documents import Document, units
 
 if TYPE_CHECKING:
     from ..analysis import Setting
+    from ..config import FmtOptions
     from ..context import Context
-    from ..fmt import FmtOptions
     from ..machine import StartupEntry
     from ..resolved import ResolvedAxis
     from .session import Snapshot

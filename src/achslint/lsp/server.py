@@ -26,8 +26,8 @@ from .documents import Document
 from .session import ClientSettings, Session, Snapshot
 
 if TYPE_CHECKING:
+    from ..config import FmtOptions
     from ..context import Context
-    from ..fmt import FmtOptions
     from ..machine import StartupEntry
     from ..syntax import ListFile
 
