@@ -16,8 +16,6 @@ from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Literal
 
-from .tomlfile import read_toml
-
 if TYPE_CHECKING:
     from pydantic import ValidationError
 
@@ -276,6 +274,8 @@ def load_file(path: Path) -> ResolvedConfig:
     """Read one configuration file (pyproject.toml: its [tool.achslint] table)."""
     from pydantic import ValidationError
 
+    from .tomlfile import read_toml
+
     data = read_toml(path, "configuration", ConfigError)
     if path.name == "pyproject.toml":
         tool = data.get("tool", {})
@@ -301,6 +301,8 @@ def _has_table(pyproject: Path) -> bool:
     A pyproject.toml that is not valid TOML is a configuration error: it may hold our table, and using
     the defaults instead would pass silently what the project meant to fail.
     """
+    from .tomlfile import read_toml
+
     try:
         data = read_toml(pyproject, "configuration", ConfigError)
     except ConfigError as exc:

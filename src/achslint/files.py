@@ -26,7 +26,6 @@ from __future__ import annotations
 import errno
 import os
 import stat
-import tempfile
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -158,6 +157,8 @@ def write_atomically(path: Path, data: bytes, expected: bytes | None = None) -> 
         _write_in_place(target, path, data, expected)
         return
     try:
+        import tempfile  # only when writing (its imports cost more than linting a small list)
+
         handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".achslint", dir=target.parent)
     except PermissionError:  # a writable file in a folder we may not write: the file itself can still change
         _write_in_place(target, path, data, expected)

@@ -33,8 +33,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 
-from .tomlfile import read_toml
-
 if TYPE_CHECKING:
     from pydantic import BaseModel
 
@@ -126,6 +124,8 @@ class ScenarioData(TypedDict):
 
 
 def read_scenario(path: Path) -> ScenarioInput:
+    from .tomlfile import read_toml
+
     return parse_input(read_toml(path, "scenario", ScenarioError), str(path))
 
 

@@ -36,6 +36,8 @@ MachineMember = tuple[str, dict[str, Any]]
 Check = Callable[["Context"], Iterable[Diagnostic]]
 CheckAfter = Callable[["Context", "list[Directive]", Callable[[str], bool]], Iterable[Diagnostic]]
 CheckMachine = Callable[[list[MachineMember], "list[Startup]"], Iterable[Diagnostic]]
+# Program rules (LIS6xx) import the machine and program modules inside check_program: a lint of lists
+# imports every rule module, and should not pay for what only NC programs need.
 CheckProgram = Callable[["Program", "Machine"], Iterable[Diagnostic]]
 
 RULE_MODULES = (

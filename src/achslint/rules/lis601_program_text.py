@@ -61,10 +61,12 @@ homing order; equal values home together).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
-from ..machinemodel import Machine, Program
-from ..programlint import diagnostic
+
+if TYPE_CHECKING:
+    from ..machinemodel import Machine, Program
 
 CODE = "LIS601"
 NAME = "program-text"
@@ -74,5 +76,7 @@ SUMMARY = "Homing program text the CNC cannot run as written"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..programlint import diagnostic
+
     for problem in program.problems:
         yield diagnostic(CODE, problem.at, problem.message, Severity.ERROR)

@@ -74,10 +74,12 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
-from ..machinemodel import HomingBlock, Machine, MoveBlock, Program
-from ..programlint import diagnostic
+
+if TYPE_CHECKING:
+    from ..machinemodel import Machine, Program
 
 CODE = "LIS602"
 NAME = "unknown-axis"
@@ -87,6 +89,9 @@ SUMMARY = "Program names an axis the machine does not have"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..machinemodel import HomingBlock, MoveBlock
+    from ..programlint import diagnostic
+
     names = sorted(machine.axes)
     for block in program.blocks:
         if isinstance(block, HomingBlock):

@@ -69,10 +69,12 @@ TF5200 homing manual §2.2 (the homing order of G74).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Related, Severity
-from ..machinemodel import AxisWord, HomingBlock, Machine, Program
-from ..programlint import diagnostic
+
+if TYPE_CHECKING:
+    from ..machinemodel import AxisWord, Machine, Program
 
 CODE = "LIS603"
 NAME = "axis-twice-in-g74"
@@ -82,6 +84,9 @@ SUMMARY = "G74 names the same axis twice"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..machinemodel import HomingBlock
+    from ..programlint import diagnostic
+
     for block in program.blocks:
         if not isinstance(block, HomingBlock):
             continue

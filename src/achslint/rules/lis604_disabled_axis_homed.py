@@ -81,10 +81,12 @@ IGNORE_ABS_POS), P-AXIS-00014.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Related, Severity
-from ..machinemodel import HomingBlock, Machine, Program
-from ..programlint import diagnostic
+
+if TYPE_CHECKING:
+    from ..machinemodel import Machine, Program
 
 CODE = "LIS604"
 NAME = "disabled-axis-homed"
@@ -94,6 +96,9 @@ SUMMARY = "G74 commands an axis whose homing is DISABLED"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..machinemodel import HomingBlock
+    from ..programlint import diagnostic
+
     for block in program.blocks:
         if not isinstance(block, HomingBlock):
             continue

@@ -80,10 +80,12 @@ P-CHAN-00037 / P-CHAN-00038 (coupled pairs of the channel).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
-from ..machinemodel import HomingBlock, Machine, Program
-from ..programlint import defined, diagnostic, steps
+
+if TYPE_CHECKING:
+    from ..machinemodel import Machine, Program
 
 CODE = "LIS605"
 NAME = "gantry-slave-alone"
@@ -93,6 +95,9 @@ SUMMARY = "Gantry slave homed before its master"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..machinemodel import HomingBlock
+    from ..programlint import defined, diagnostic, steps
+
     for step in steps(program, machine):
         block = step.block
         if not isinstance(block, HomingBlock):

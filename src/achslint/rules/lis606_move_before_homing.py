@@ -77,10 +77,12 @@ P-AXIS-00014 (absolute encoder: no homing needed).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
-from ..machinemodel import Machine, MoveBlock, Program
-from ..programlint import diagnostic, steps
+
+if TYPE_CHECKING:
+    from ..machinemodel import Machine, Program
 
 CODE = "LIS606"
 NAME = "move-before-homing"
@@ -90,6 +92,9 @@ SUMMARY = "Move of an axis that is not homed yet"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..machinemodel import MoveBlock
+    from ..programlint import diagnostic, steps
+
     for step in steps(program, machine):
         block = step.block
         if not isinstance(block, MoveBlock):

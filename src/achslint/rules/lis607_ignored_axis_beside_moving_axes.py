@@ -81,10 +81,12 @@ homing types), P-AXIS-00014.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
-from ..machinemodel import HomingBlock, Machine, Program
-from ..programlint import diagnostic
+
+if TYPE_CHECKING:
+    from ..machinemodel import Machine, Program
 
 CODE = "LIS607"
 NAME = "ignored-axis-beside-moving-axes"
@@ -96,6 +98,9 @@ _STILL = ("IGNORE_ABS_POS", "DISABLED")
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+    from ..machinemodel import HomingBlock
+    from ..programlint import diagnostic
+
     for block in program.blocks:
         if not isinstance(block, HomingBlock):
             continue
