@@ -155,3 +155,23 @@ def test_defaults_match_the_spec():
     settings = Settings()
     assert (settings.fail_on, settings.unknown_parameters, settings.cycle_time_us) == ("error", "warn", 1000)
     assert settings.include == ["achsmds*.lis"]
+
+
+def test_overrides_name_only_settings_and_survive_a_trip_to_a_worker_process():
+    import pickle
+
+    import pytest
+
+    from achslint.config import Overrides, Settings
+
+    given = Overrides(ignore=["LIS101"], extend_exclude=["old/*"], fail_on="warning")
+    assert given.fail_on == "warning" and given.select is None
+    with pytest.raises(AttributeError):
+        given.fail_onn  # noqa: B018  (a misspelt setting is an error, not None)
+    with pytest.raises(TypeError):
+        Overrides(fail_onn="info")
+    copy = pickle.loads(pickle.dumps(given))
+    assert copy.key() == given.key()
+    applied = copy.apply(Settings(ignore=["LIS9"], exclude=["tmp/*"]))
+    assert applied.ignore == ["LIS9", "LIS101"] and applied.exclude == ["tmp/*", "old/*"]
+    assert applied.fail_on == "warning"

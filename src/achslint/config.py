@@ -357,7 +357,8 @@ class Overrides:
     list (`extend_exclude` adds to `exclude`)."""
 
     def __init__(self, **values: Any) -> None:
-        known = {f.name: f for f in fields(Settings)}
+        # how each setting combines with the configuration (plain strings: an Overrides pickles)
+        known = {f.name: str(f.metadata["cli"]) for f in fields(Settings)}
         self.values: dict[str, Any] = {}
         for name, value in values.items():
             target = "exclude" if name == "extend_exclude" else name
@@ -365,10 +366,11 @@ class Overrides:
                 raise TypeError(f"not a setting: {name}")
             if value is not None and value != []:
                 self.values[target] = value
-        self._fields = known
+        self._modes = known
 
     def __getattr__(self, name: str) -> Any:
-        if name.startswith("_") or name == "values":
+        """The overridden value of a setting, None when the command line leaves it to the configuration."""
+        if name.startswith("_") or name == "values" or name not in self._modes:
             raise AttributeError(name)
         return self.values.get(name)
 
@@ -379,7 +381,7 @@ class Overrides:
     def apply(self, settings: Settings) -> Settings:
         changes: dict[str, Any] = {}
         for name, value in self.values.items():
-            if self._fields[name].metadata["cli"] == EXTEND:
+            if self._modes[name] == EXTEND:
                 changes[name] = [*getattr(settings, name), *value]
             else:
                 changes[name] = list(value) if isinstance(value, list) else value
