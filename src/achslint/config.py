@@ -162,14 +162,42 @@ def _check_codes(value: Any, how: str) -> Any:
 def _file_model() -> Any:
     """The pydantic model of a configuration file, derived from `Settings` (built only when a file is
     read: importing pydantic costs more than linting a small list)."""
+    from pydantic import ConfigDict, create_model
+
+    return create_model(
+        "SettingsFile", __config__=ConfigDict(extra="forbid", populate_by_name=True), **_definitions(Settings)
+    )
+
+
+def _table_model(table: type) -> Any:
+    """A table of the configuration file (`[fmt]`) read into its dataclass: keys with dashes, no unknown
+    keys, and the dataclass's own checks (its `ValueError`s become configuration errors)."""
+    from typing import Annotated
+
+    from pydantic import AfterValidator, ConfigDict, create_model
+
+    names = [item.name for item in fields(table)]
+    model = create_model(
+        "table",  # pydantic names it in "should be a valid dictionary or instance of table"
+        __config__=ConfigDict(extra="forbid", populate_by_name=True),
+        **_definitions(table),
+    )
+    return Annotated[
+        model, AfterValidator(lambda read: table(**{name: getattr(read, name) for name in names}))
+    ]
+
+
+def _definitions(settings: type) -> dict[str, Any]:
+    """The pydantic field of every field of a settings dataclass: its type, the file's spelling (dashes),
+    its default and the checks of its metadata (`_key`); a dataclass-typed field is a table of its own."""
     from typing import Annotated, get_type_hints
 
-    from pydantic import AfterValidator, ConfigDict, Field, create_model
+    from pydantic import AfterValidator, Field
 
-    hints = get_type_hints(Settings)
+    hints = get_type_hints(settings)
     definitions: dict[str, Any] = {}
-    for item in fields(Settings):
-        check = dict(item.metadata["check"])
+    for item in fields(settings):
+        check = dict(item.metadata.get("check", {}))
         codes = check.pop("codes", None)
         kind: Any = hints[item.name]
         if codes:
@@ -182,32 +210,7 @@ def _file_model() -> Any:
             else {"default": item.default}
         )
         definitions[item.name] = (kind, Field(alias=file_key(item.name), **default, **check))
-    return create_model(
-        "SettingsFile", __config__=ConfigDict(extra="forbid", populate_by_name=True), **definitions
-    )
-
-
-def _table_model(table: type) -> Any:
-    """A table of the configuration file (`[fmt]`) read into its dataclass: keys with dashes, no unknown
-    keys, and the dataclass's own checks (its `ValueError`s become configuration errors)."""
-    from typing import Annotated, get_type_hints
-
-    from pydantic import AfterValidator, ConfigDict, Field, create_model
-
-    hints = get_type_hints(table)
-    names = [item.name for item in fields(table)]
-    definitions: dict[str, Any] = {
-        item.name: (hints[item.name], Field(alias=file_key(item.name), default=item.default))
-        for item in fields(table)
-    }
-    model = create_model(
-        "table",  # pydantic names it in "should be a valid dictionary or instance of table"
-        __config__=ConfigDict(extra="forbid", populate_by_name=True),
-        **definitions,
-    )
-    return Annotated[
-        model, AfterValidator(lambda read: table(**{name: getattr(read, name) for name in names}))
-    ]
+    return definitions
 
 
 @dataclass(frozen=True)
