@@ -53,3 +53,19 @@ def test_console_script_is_the_same_program():
     module = run_real_cli("rule", "LIS203")
     assert result.returncode == module.returncode == 0
     assert result.stdout == module.stdout
+
+
+def test_run_exits_with_the_code_of_main_after_freezing_the_collector(monkeypatch):
+    # `run` is what the console script and `python -m achslint` call: main's exit code, and the objects
+    # alive at the end handed to gc.freeze so the shutdown collection does not walk them again.
+    import gc
+
+    from achslint import cli
+
+    calls: list[str] = []
+    monkeypatch.setattr(cli, "main", lambda: calls.append("main") or 3)
+    monkeypatch.setattr(gc, "freeze", lambda: calls.append("freeze"))
+    with pytest.raises(SystemExit) as stopped:
+        cli.run()
+    assert stopped.value.code == 3
+    assert calls == ["main", "freeze"]

@@ -17,6 +17,7 @@ from .files import (
     Refused,
     Scope,
     is_folder,
+    is_xml,
     not_a_list_file,
     read_list,
     real_path,
@@ -33,7 +34,6 @@ from .linter import (
 )
 from .machine import check_machines, is_default_list, is_startup_list, read_startup
 from .syntax import parse_bytes, split_lines
-from .xmlinput import is_xml, single_list
 
 if TYPE_CHECKING:
     from .dryrun import DryRun
@@ -526,6 +526,8 @@ def read_one_list(path: Path, name: str) -> bytes:
         raise Refused(f"{name}: {problem}")
     data = read_list(path)
     if is_xml(name):
+        from .xmlinput import single_list
+
         return single_list(data, name)
     if not looks_like_a_list(parse_bytes(data, name)):
         raise UnreadableInput(f"{name}: {NOT_A_LIST}")

@@ -7,6 +7,7 @@ that `--help` and `--version` stay fast.
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
 import sys
 from collections.abc import Callable, Iterable, Mapping
@@ -1013,6 +1014,20 @@ def main(argv: list[str] | None = None) -> int:
         _say(f"internal error: {type(exc).__name__}: {exc} (run with --debug for details)")
         return EXIT_ERROR
     return code if isinstance(code, int) else EXIT_OK
+
+
+def run() -> NoReturn:
+    """The console script and `python -m achslint`: `main()`, then exit.
+
+    Before exiting, every object still alive is moved out of the garbage collector's reach
+    (`gc.freeze`): the interpreter's last collection at shutdown would otherwise walk the whole parser,
+    catalogue and command tree once more, about 30 ms of a 170 ms run (benchmarks/run --only cold).
+    Buffers are still flushed and exit handlers still run. Not done in `main()`, which tests and the
+    language server call in a process that goes on.
+    """
+    code = main()
+    gc.freeze()
+    sys.exit(code)
 
 
 def _usage_error(exc: Any) -> int:  # a click usage error (typer vendors click: no stable type to name)

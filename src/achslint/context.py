@@ -17,6 +17,7 @@ if TYPE_CHECKING:
     from .facts import Span
     from .homing import Effect, HomingStrategy
     from .resolved import Correction, ResolvedAxis
+    from .xmlinput import EmbeddedList
 
 
 @dataclass
@@ -25,7 +26,7 @@ class Context:
     file: syntax.ListFile
     options: Settings = field(default_factory=Settings)  # what rules read: unknown-parameters, cycle time …
     catalogue: Catalogue = field(default_factory=catalogue)
-    embedded: object = None  # xmlinput.EmbeddedList when the list came from an XML file
+    embedded: EmbeddedList | None = None  # when the list came from an XML file
     default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
 
     @cached_property

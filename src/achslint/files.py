@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 KERNEL_FILE_SYSTEMS = ("/proc", "/sys", "/dev")
+XML_SUFFIXES = (".xml", ".xti", ".tsproj")  # TwinCAT exports and ISG XML lists (xmlinput.py)
 
 _REASONS = {
     errno.ENOENT: "no such file or directory",
@@ -102,6 +103,11 @@ def not_a_list_file(path: Path) -> str | None:
     if any(inside(path, Path(root)) for root in KERNEL_FILE_SYSTEMS):
         return "a file of the operating system (/proc, /sys, /dev), not an axis list"
     return None
+
+
+def is_xml(name: str) -> bool:
+    """Whether a file name is one of the XML forms an axis list comes in (read by `xmlinput`)."""
+    return name.lower().endswith(XML_SUFFIXES)
 
 
 def is_folder(path: Path) -> bool:

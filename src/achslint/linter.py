@@ -15,9 +15,9 @@ from .config import Settings
 from .context import Context
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
+from .files import is_xml
 from .rules import matches, registry
 from .syntax import ASSIGNMENT, END, ListFile, parse_bytes
-from .xmlinput import is_xml
 
 if TYPE_CHECKING:
     from .machine import Member, Summary

@@ -33,7 +33,6 @@ if TYPE_CHECKING:
     from xml.sax.expatreader import ExpatParser
     from xml.sax.xmlreader import AttributesImpl
 
-XML_SUFFIXES = (".xml", ".xti", ".tsproj")
 _ISG_ELEMENT = re.compile(r"(P-AXIS-[0-9]+)((?:\.[0-9]+)*)")
 
 
@@ -83,10 +82,6 @@ class EmbeddedList:
 
 class NoAxisList(UnreadableInput):
     """Well-formed XML that holds no axis list (a channel list, zero offsets, tools, ...)."""
-
-
-def is_xml(name: str) -> bool:
-    return name.lower().endswith(XML_SUFFIXES)
 
 
 _MARKERS = tuple(

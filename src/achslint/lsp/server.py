@@ -20,7 +20,7 @@ from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
 from .. import __version__
-from ..xmlinput import is_xml
+from ..files import is_xml
 from . import features
 from .documents import Document
 from .session import ClientSettings, Session, Snapshot

@@ -29,11 +29,10 @@ from ..config import (
 )
 from ..decode import UnreadableInput
 from ..diagnostics import Diagnostic, Severity
-from ..files import not_a_list_file, read_list
+from ..files import is_xml, not_a_list_file, read_list
 from ..linter import FileResult, FileSettings, lint_file, lint_parsed
 from ..machine import Startup, is_startup_list, read_startup
 from ..syntax import ListFile, parse_bytes
-from ..xmlinput import is_xml
 from .documents import Document
 
 if TYPE_CHECKING:

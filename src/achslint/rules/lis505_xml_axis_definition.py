@@ -65,10 +65,8 @@ SUMMARY = "TwinCAT axis definition (DriveType, Spindle) disagrees with the axis 
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    from ..xmlinput import EmbeddedList
-
     embedded = ctx.embedded
-    if not isinstance(embedded, EmbeddedList):
+    if embedded is None:
         return  # not a list from an XML file
     values = ctx.values
     if (
