@@ -50,8 +50,11 @@ WorkItem = tuple[str, str, FileSettings, FixMode, "str | None"]
 # Called with the total number of lists after each list is done.
 Progress = Callable[[int], None]
 
-# Below this many files, starting worker processes costs more than it saves.
+# Below this many files, starting worker processes costs more than it saves; and unless --jobs asks for
+# processes, also below this much text: on two cores 148 small lists (100 KB) took 0.47 s serially and
+# 0.51 s on two processes, ten lists of 306 KB 255 ms serially and 238 ms on two (2026-11-21).
 PARALLEL_THRESHOLD = 8
+PARALLEL_MIN_BYTES = 256 * 1024
 
 
 @dataclass
@@ -353,7 +356,7 @@ class LintRun:
             for t in targets
             if t.path
         ]
-        if jobs > 1 and len(work) >= PARALLEL_THRESHOLD:
+        if jobs > 1 and len(work) >= PARALLEL_THRESHOLD and (self.request.jobs or _enough_text(work)):
             from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
 
             from .signals import install
@@ -532,6 +535,17 @@ def read_one_list(path: Path, name: str) -> bytes:
     if not looks_like_a_list(parse_bytes(data, name)):
         raise UnreadableInput(f"{name}: {NOT_A_LIST}")
     return data
+
+
+def _enough_text(work: Sequence[tuple[Any, ...]]) -> bool:
+    """Whether the files of `work` (path second) hold enough text to share out between processes."""
+    total = 0
+    for item in work:
+        with contextlib.suppress(OSError, ValueError):  # the lint itself reports an unreadable file
+            total += os.stat(item[1]).st_size
+        if total >= PARALLEL_MIN_BYTES:
+            return True
+    return False
 
 
 def _track(results: Iterable[FileResult], progress: Progress | None, total: int) -> Iterator[FileResult]:

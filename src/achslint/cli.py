@@ -7,6 +7,7 @@ that `--help` and `--version` stay fast.
 from __future__ import annotations
 
 import contextlib
+import functools
 import gc
 import os
 import sys
@@ -218,7 +219,7 @@ def lint(
         help="Name to report (and to find the configuration) for input read from -.",
     ),
     jobs: int | None = typer.Option(
-        None, "--jobs", "-j", metavar="N", min=1, help="Worker processes (default: all cores)."
+        None, "--jobs", "-j", metavar="N", min=1, help="Worker processes (default: all cores for large runs)."
     ),
     color: Color = typer.Option(
         Color.auto, "--color", help="Colour the full output (honours NO_COLOR and FORCE_COLOR)."
@@ -999,7 +1000,7 @@ def main(argv: list[str] | None = None) -> int:
     _tolerant_streams()
     try:
         with stopping_on_signals():
-            code = app(args=args, prog_name="achslint", standalone_mode=False)
+            code = _command().main(args=args, prog_name="achslint", standalone_mode=False)
     except Stopped as stop:
         _say(stop.words)
         return stop.exit_code
@@ -1014,6 +1015,13 @@ def main(argv: list[str] | None = None) -> int:
         _say(f"internal error: {type(exc).__name__}: {exc} (run with --debug for details)")
         return EXIT_ERROR
     return code if isinstance(code, int) else EXIT_OK
+
+
+@functools.cache
+def _command() -> Any:  # a click command (typer vendors click: no stable type to name)
+    """The command tree of `app`, built once per process: typer would rebuild it from every command's
+    signature on each call, which an editor or a test that runs many commands in one process pays for."""
+    return typer.main.get_command(app)
 
 
 def run() -> NoReturn:

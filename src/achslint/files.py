@@ -24,6 +24,7 @@ Writing (`fmt`, `lint --fix`) keeps the file what it was:
 from __future__ import annotations
 
 import errno
+import functools
 import os
 import stat
 from collections.abc import Iterable
@@ -87,6 +88,11 @@ def _kind(mode: int) -> str | None:
     return "not a regular file"
 
 
+@functools.cache
+def _kernel_file_systems() -> tuple[Path, ...]:
+    return tuple(real_path(Path(root)) for root in KERNEL_FILE_SYSTEMS)
+
+
 def not_a_list_file(path: Path) -> str | None:
     """Why `path` cannot be read as a list (missing, a loop, a FIFO, ...); None when it is a regular file."""
     try:
@@ -100,7 +106,8 @@ def not_a_list_file(path: Path) -> str | None:
     kind = _kind(info.st_mode)
     if kind is not None:
         return f"{kind}, not a regular file"
-    if any(inside(path, Path(root)) for root in KERNEL_FILE_SYSTEMS):
+    target = real_path(path)
+    if any(target == root or root in target.parents for root in _kernel_file_systems()):
         return "a file of the operating system (/proc, /sys, /dev), not an axis list"
     return None
 
