@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from achslint import syntax
 from achslint.fmt import FmtOptions, canonical_text, changed_lines, detect_style, format_bytes, format_text
 
-from .conftest import FIXTURES
+from .conftest import FIXTURES, examples
 from .test_fmt import PIECES, tokens
 
 
@@ -260,7 +260,7 @@ def sections(draw: st.DrawFn) -> str:
     return "\n".join([*out, "Ende"]) + "\n"
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(sections(), OPTIONS)
 def test_formatting_keeps_the_detected_layout_and_is_idempotent(text, options):
     style = detect_style(syntax.parse_text(text), options)
@@ -271,7 +271,7 @@ def test_formatting_keeps_the_detected_layout_and_is_idempotent(text, options):
         assert detect_style(syntax.parse_text(once), options) == style
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(st.lists(PIECES, max_size=40).map("".join), OPTIONS)
 def test_any_text_any_options_idempotent_and_whitespace_only(text, options):
     data = text.encode("latin-1")
@@ -280,7 +280,7 @@ def test_any_text_any_options_idempotent_and_whitespace_only(text, options):
     assert format_bytes(once, options=options) == (once, False)
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(
     st.lists(
         st.tuples(st.sampled_from(NAMES), st.sampled_from(VALUES), st.sampled_from(TRAILERS[:3])), min_size=2

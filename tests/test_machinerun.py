@@ -26,6 +26,8 @@ from achslint.machinescenario import parse_machine_scenario
 from achslint.resolved import resolve_bytes
 from achslint.scenario import ScenarioError
 
+from .conftest import examples
+
 # A linear axis homed in three phases (cam, zero pulse), as in tests/test_engine.py: fast 100 mm/s,
 # slow 10 mm/s, a_ref 500 mm/s², reference position 0.1 mm, software limits ±1000 mm.
 LINEAR = (
@@ -329,7 +331,7 @@ def test_sweep_counts_failures_per_axis():
     assert summary["start_ranges"]["X"] == [-130.0, 300.0]
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(st.lists(st.floats(-130.0, 300.0), min_size=4, max_size=4))
 def test_timeline_invariants_from_any_start(starts):
     machine = make_machine(

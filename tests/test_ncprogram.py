@@ -8,6 +8,8 @@ from hypothesis import strategies as st
 from achslint.machinemodel import HomingBlock, Location, MoveBlock, SkippedBlock
 from achslint.ncprogram import read_program
 
+from .conftest import examples
+
 MANUAL = b"""%RPF.NC
 N10 G74 Z1 (optional: move Z to safety height)
 N15 G01 G90 Z200 F500
@@ -158,7 +160,7 @@ def check_positions(program, lines: list[str]) -> None:
         assert at.end_column is None or at.end_column >= at.column
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(st.binary(max_size=300))
 def test_random_bytes_never_crash(data):
     program = read_program(data, "random.nc")
@@ -173,7 +175,7 @@ WORDS = st.sampled_from(
 LINES = st.lists(st.lists(WORDS, max_size=8).map(" ".join), max_size=12).map("\n".join)
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(LINES)
 def test_generated_programs_never_crash_and_keep_their_places(text):
     program = read_program(text.encode(), "gen.nc")

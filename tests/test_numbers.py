@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.catalogue import catalogue
@@ -18,6 +18,8 @@ from achslint.numbers import (
     parse_reference,
 )
 from achslint.units import describe, to_human
+
+from .conftest import examples
 
 
 def test_integers_within_the_digit_limit_are_values():
@@ -55,6 +57,7 @@ def test_references_normalise_the_id_and_limit_the_digits():
     assert parse_reference("P-AXIS-00212." + "1" * 5000).digits == 5000
 
 
+@settings(max_examples=examples(100))
 @given(st.text(max_size=60))
 def test_no_text_makes_a_parser_raise(text):
     for parse in (parse_int, parse_hex, parse_real, parse_reference):

@@ -453,6 +453,29 @@ def test_12_the_closest_name_is_searched_once_per_distinct_name(monkeypatch):
     catalogue()._suggestions.clear()
 
 
+def test_12_a_name_too_long_for_any_match_skips_the_search_with_the_same_answer(monkeypatch):
+    # Past 7/3 of the longest known name no candidate can reach difflib's 0.6 cutoff: the search is left
+    # out, and the suggestions are what the full search gives (the same member in another group, or none).
+    import difflib
+
+    cat = catalogue()
+    longest = cat._longest
+    names = [
+        "kenngr." + "q" * (longest * 7 // 3 + 1),  # just too long: no fuzzy match, no member
+        "x" * (longest * 3) + ".vb_reflow",  # too long, but a known member name
+        "kenngr.vb_reflowx",  # ordinary: searched
+    ]
+    calls: list[str] = []
+    real = difflib.get_close_matches
+    monkeypatch.setattr(difflib, "get_close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    shortcut = [cat._suggest(name, 3) for name in names]
+    assert calls == ["kenngr.vb_reflowx"]
+    monkeypatch.setitem(cat.__dict__, "_longest", 10**9)  # no name is too long: the full search everywhere
+    assert [cat._suggest(name, 3) for name in names] == shortcut
+    assert calls == ["kenngr.vb_reflowx", *names]
+    assert shortcut[0] == [] and "getriebe[i].vb_reflow" in shortcut[1] and shortcut[2]
+
+
 # -- 13. output ------------------------------------------------------------------------------------------
 
 

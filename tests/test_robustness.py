@@ -59,7 +59,7 @@ def test_huge_integer_is_reported_by_its_digit_count_not_converted():
 
 
 def test_a_flood_of_duplicates_is_reported_once_per_repetition():
-    count = 20_000
+    count = 5_000  # real lists have a few hundred lines; growth with size is benchmarks/run's business
     result = lint_file(b"kopf.achs_nr 1\n" * count + b"Ende\n", "achsmds1.lis")
     duplicates = [d for d in result.diagnostics if d.code == "LIS005"]
     assert len(duplicates) == count - 1
@@ -67,9 +67,9 @@ def test_a_flood_of_duplicates_is_reported_once_per_repetition():
 
 
 def test_many_lines_after_the_end_marker_are_one_finding():
-    result = lint_file(b"Ende\n" + b"kopf.achs_nr 1\n" * 50_000, "achsmds1.lis")
+    result = lint_file(b"Ende\n" + b"kopf.achs_nr 1\n" * 10_000, "achsmds1.lis")
     assert [d.code for d in result.diagnostics] == ["LIS003"]
-    assert "50000 parameter lines" in result.diagnostics[0].message
+    assert "10000 parameter lines" in result.diagnostics[0].message
 
 
 def write_lists(folder: Path, count: int) -> list[Path]:

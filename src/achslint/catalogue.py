@@ -79,7 +79,7 @@ class Parameter:
     description: str = ""
     source: str = ""
 
-    @property
+    @cached_property
     def kind(self) -> str:
         if self.type == "BOOLEAN":
             return BOOL
@@ -136,7 +136,7 @@ class Parameter:
     def strict_positive_real(self) -> bool:
         return self.kind == REAL and self.min == 0 and self.min_strict
 
-    @property
+    @cached_property
     def typed_default(self) -> Value | None:
         """The built-in default as a Python value of the parameter's kind, or None."""
         value = self.default
@@ -274,6 +274,10 @@ class Catalogue:
         return list(self.by_pattern)
 
     @cached_property
+    def _longest(self) -> int:
+        return max(map(len, self._candidates))
+
+    @cached_property
     def _by_member(self) -> dict[str, list[str]]:
         table: dict[str, list[str]] = {}
         for parameter in self.parameters:
@@ -302,8 +306,11 @@ class Catalogue:
         lowered = pattern.lower()
         if lowered in self.by_pattern:
             return [lowered]
-        # One search at the loose cutoff; the close matches are the best of those.
-        loose = difflib.get_close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
+        # One search at the loose cutoff; the close matches are the best of those. A name more than 7/3 as
+        # long as every known one cannot reach 0.6 (difflib's ratio is at most 2*short/(short+long)), so a
+        # pathological name is not indexed for nothing.
+        too_long = 3 * len(pattern) > 7 * self._longest
+        loose = [] if too_long else difflib.get_close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
         close = [c for c in loose if difflib.SequenceMatcher(None, c, pattern).ratio() >= 0.75]
         if close:
             return close

@@ -57,13 +57,14 @@ def _rules(docs_url: str | None, chosen: Mapping[str, Rule] | None) -> list[Json
 
     rules: list[JsonObject] = []
     for rule in (registry() if chosen is None else chosen).values():
+        text = rule_text(rule)
         rules.append(
             {
                 "id": rule.code,
                 "name": rule.name,
                 "shortDescription": {"text": rule.summary},
                 "fullDescription": {"text": rule.section("What") or rule.summary},
-                "help": {"text": rule_text(rule), "markdown": rule_text(rule)},
+                "help": {"text": text, "markdown": text},
                 "helpUri": rule_url(rule.code, docs_url),
                 "defaultConfiguration": {"level": LEVELS[rule.severity]},
                 "properties": {"fix": rule.fix},

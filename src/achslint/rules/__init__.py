@@ -18,7 +18,7 @@ import importlib
 import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
@@ -130,9 +130,16 @@ class Rule:
         return bool(self.parameters)
 
     def section(self, title: str) -> str:
-        """The text of one docstring section ("What", "Why", ...)."""
-        match = re.search(rf"^{re.escape(title)}\n-+\n(.*?)(?=^\S[^\n]*\n-+\n|\Z)", self.doc, re.M | re.S)
-        return match.group(1).strip() if match else ""
+        """The text of one docstring section (one of SECTIONS: "What", "Why", ...); empty when missing."""
+        return self._sections.get(title, "")
+
+    @cached_property
+    def _sections(self) -> dict[str, str]:  # read once: SARIF and the editor show every rule's sections
+        texts = {}
+        for title in SECTIONS:
+            match = re.search(rf"^{re.escape(title)}\n-+\n(.*?)(?=^\S[^\n]*\n-+\n|\Z)", self.doc, re.M | re.S)
+            texts[title] = match.group(1).strip() if match else ""
+        return texts
 
 
 @lru_cache(maxsize=1)
