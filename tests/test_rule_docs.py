@@ -9,7 +9,8 @@ A section is turned into input from its ``` code blocks:
   `<!-- file: Axis_X.xti -->` in XML) are written side by side into an empty folder, which is linted as a
   machine through the real API: an NC program against the machine of the start-up list (`--machine`),
   else through its start-up list (`hochlauf*.lis`) when it has one, the file itself when there is only
-  one, otherwise the folder. The marker line stays in the file; it is a comment there.
+  one, otherwise the folder. The marker line stays in the file; it is a comment there. *Use instead* may
+  show only the files that change: the files it does not name are those of the Example.
 """
 
 from __future__ import annotations
@@ -61,6 +62,9 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     assert len(files) == len(blocks), (
         f"{rule.code} '{title}': name the file of every block (each once), or of none"
     )
+    if title == "Use instead":  # the same machine as the Example, with the files shown here changed
+        example = code_blocks(rule, "Example")
+        files = {**{file_name(block): block for block in example if file_name(block)}, **files}
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="latin-1" if name.endswith(".lis") else "utf-8")
     startup = sorted(tmp_path.glob("hochlauf*.lis"))

@@ -1065,54 +1065,30 @@ class Simulator:
         distance = crossing(x, s, initially)
         limit = abs(search.signed_max_distance)
         ramp = _Ramp(t, x, s, speed, drive.acceleration)
+        trigger = search.trigger.replace("_", " ")
+
+        def stop_at(t_stop: float, note: str) -> tuple[float, float]:
+            """Brake from the time `t_stop` after the start; the phase is recorded. Returns (x_end, t_end)."""
+            segments, t_end, x_end = ramp.stop(t_stop)
+            trace.phases.append(PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, note, segments))
+            return x_end, t_end
+
         if distance > limit:
-            segments, t_end, x_end = ramp.stop(ramp.time_to(limit))
-            trace.phases.append(
-                PhaseRecord(
-                    name,
-                    _dir(s),
-                    speed,
-                    x,
-                    x_end,
-                    t,
-                    t_end,
-                    "SignedMaxDistance travelled without a trigger",
-                    segments,
-                )
-            )
-            trace.outcome, trace.failure = (
-                "failed",
-                f"{name}: no {search.trigger.replace('_', ' ')} within {limit:g} {self.unit}",
-            )
+            x_end, t_end = stop_at(ramp.time_to(limit), "SignedMaxDistance travelled without a trigger")
+            trace.outcome, trace.failure = "failed", f"{name}: no {trigger} within {limit:g} {self.unit}"
             return x_end, t_end, None
         t_event = ramp.time_to(distance)
         if t_event < self.EARLY_TRIGGER:
-            segments, t_end, x_end = ramp.stop(t_event)
-            trace.phases.append(
-                PhaseRecord(name, _dir(s), speed, x, x_end, t, t_end, "early trigger", segments)
-            )
+            x_end, t_end = stop_at(t_event, "early trigger")
             trace.outcome = "failed"
             trace.failure = (
                 f"{name}: the trigger came {t_event * 1000:.3g} ms after the start, within the drive's "
                 f"5 ms early-trigger window; start farther from it"
             )
             return x_end, t_end, None
-        segments, t_end, x_end = ramp.stop(t_event)
+        x_end, t_end = stop_at(t_event, f"{trigger} {'left' if initially else 'found'}")
         x_event = x + s * distance
-        trace.phases.append(
-            PhaseRecord(
-                name,
-                _dir(s),
-                speed,
-                x,
-                x_end,
-                t,
-                t_end,
-                f"{search.trigger.replace('_', ' ')} {'left' if initially else 'found'}",
-                segments,
-            )
-        )
-        trace.events.append(Event(t + t_event, x_event, f"{name}: {search.trigger.replace('_', ' ')} edge"))
+        trace.events.append(Event(t + t_event, x_event, f"{name}: {trigger} edge"))
         return x_end, t_end, x_event
 
     def _trigger(self, search: SearchInput, cam_shift: float) -> tuple[Active, TriggerEdge]:

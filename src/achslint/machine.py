@@ -13,7 +13,7 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -223,22 +223,33 @@ def diagnostic(
     )
 
 
-def unset_note(member: Member, where: str) -> str:
-    """` (not written in this list: the default)` when the value comes from a default, else nothing."""
-    return "" if member[1].get(where) else " (not written in this list, so the default applies)"
+def repeated_values(
+    code: str, members: list[Member], key: str, parameter: str, says: Callable[[str, str, str], str]
+) -> Iterator[Diagnostic]:
+    """A warning for every member that repeats a value of `key` an earlier member set (LIS501, LIS502).
 
-
-def first_uses(members: list[Member], key: str) -> Iterator[tuple[Member, Member]]:
-    """(member, first member with the same value) for every repeated value of `key`."""
+    `says(value, note, first)` words it: the value, a note when the member's value is the default, and the
+    list that used it first, which the finding also points at.
+    """
     first: dict[object, Member] = {}
     for member in members:
         value = member[1][key]
         if value in (None, "", 0):
             continue
-        if value in first:
-            yield member, first[value]
-        else:
+        if value not in first:
             first[value] = member
+            continue
+        earlier, where = first[value], f"{key}_at"
+        line, column = earlier[1].get(where) or (1, 1)
+        note = "" if member[1].get(where) else " (not written in this list, so the default applies)"
+        yield diagnostic(
+            code,
+            member,
+            where,
+            says(str(value), note, earlier[0]),
+            Severity.WARNING,
+            [Related(earlier[0], line, column, parameter, "first use")],
+        )
 
 
 def check_machines(

@@ -58,7 +58,7 @@ def _axis_json(axis: AxisRun) -> dict[str, Any]:
         "scenario": axis.scenario.as_dict(),
         "start_position": r(axis.start_position),
         "position": r(axis.position),
-        "final_position": r(axis.final_position) if axis.final_position is not None else None,
+        "final_position": r(axis.final_position),
         "homed": axis.homed,
         "ends_moving": axis.ends_moving,
         "outcome": axis.outcome,
@@ -85,8 +85,8 @@ def _block_json(block: BlockRun) -> dict[str, Any]:
         "kind": block.kind,
         "text": block.text,
         "axes": block.axes,
-        "start_time": r(block.start_time) if block.start_time is not None else None,
-        "end_time": r(block.end_time) if block.end_time is not None else None,
+        "start_time": r(block.start_time),
+        "end_time": r(block.end_time),
         "outcome": block.outcome,
         "note": block.note,
         "groups": [
@@ -96,8 +96,8 @@ def _block_json(block: BlockRun) -> dict[str, Any]:
                 "moving": g.moving,
                 "still": g.still,
                 "following": g.following,
-                "start_time": r(g.start_time) if g.start_time is not None else None,
-                "end_time": r(g.end_time) if g.end_time is not None else None,
+                "start_time": r(g.start_time),
+                "end_time": r(g.end_time),
                 "outcome": g.outcome,
             }
             for g in block.groups

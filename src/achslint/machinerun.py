@@ -540,6 +540,16 @@ class _Runner:
                 run = self.result.axes[axis]
                 run.outcome, run.failure = "failed", reason.removeprefix(f"{axis}: ")
 
+    def _known(self, index: int, word: AxisWord, t: float, doing: str) -> bool:
+        """Whether a word names an axis of the machine; if not, the program fails here (`doing` begins the
+        reason: "G74 names A")."""
+        if word.name.upper() in self.plan.axes:
+            return True
+        known = ", ".join(sorted(self.plan.axes)) or "none"
+        reason = f"{doing}, which is not an axis of the machine (its axes: {known})"
+        self._fail(index, word.at, word.name.upper(), reason, t, "unknown axis name")
+        return False
+
     # -- G74 ---------------------------------------------------------------------------------------
     def _homing(self, index: int, block: HomingBlock, t: float) -> float:
         record = self.result.blocks[index]
@@ -560,16 +570,7 @@ class _Runner:
         plan = self.plan
         for word in words:
             name = word.name.upper()
-            if name not in plan.axes:
-                known = ", ".join(sorted(plan.axes)) or "none"
-                self._fail(
-                    index,
-                    word.at,
-                    name,
-                    f"G74 names {name}, which is not an axis of the machine (its axes: {known})",
-                    t,
-                    "unknown axis name",
-                )
+            if not self._known(index, word, t, f"G74 names {name}"):
                 return False
             if name in seen:
                 self._fail(index, word.at, name, f"G74 names {name} twice", t, "axis named twice")
@@ -819,16 +820,7 @@ class _Runner:
         targets: dict[str, float] = {}
         for word in block.targets:
             name = word.name.upper()
-            if name not in plan.axes:
-                known = ", ".join(sorted(plan.axes)) or "none"
-                self._fail(
-                    index,
-                    word.at,
-                    name,
-                    f"the block moves {name}, which is not an axis of the machine (its axes: {known})",
-                    t,
-                    "unknown axis name",
-                )
+            if not self._known(index, word, t, f"the block moves {name}"):
                 return t
             prepared = plan.axes[name]
             if prepared.spindle:

@@ -444,6 +444,23 @@ def build_machine_figure(run: MachineRun) -> Any:
             colours[name] = PHASE_COLOURS[len(colours) % (len(PHASE_COLOURS) - 1)]
         return colours[name]
 
+    def mark(time: float, text: str, line: str | None, above: bool, **style: Any) -> None:
+        """A vertical line through every panel at `time` (`line`: its style, None for none) and a label
+        at the top of the timeline, just above it or just below its upper edge."""
+        if line is not None:
+            for panel in rows:
+                panel.axvline(time, color="#444444", linewidth=0.8, linestyle=line, zorder=1)
+        timeline.text(
+            time,
+            1.01 if above else 0.99,
+            f" {text}",
+            transform=timeline.get_xaxis_transform(),
+            ha="left",
+            va="bottom" if above else "top",
+            fontsize=7,
+            **style,
+        )
+
     # Blocks shaded in turn, groups separated by dashed lines and labelled above the timeline.
     for block in run.blocks:
         if block.start_time is None or block.end_time is None or block.end_time <= block.start_time:
@@ -460,34 +477,16 @@ def build_machine_figure(run: MachineRun) -> Any:
             if share > 0.12
             else words[0]
         )
-        for panel in rows:
-            panel.axvline(block.start_time, color="#444444", linewidth=0.8, zorder=1)
-        timeline.text(
-            block.start_time,
-            1.01,
-            f" {label}",
-            transform=timeline.get_xaxis_transform(),
-            ha="left",
-            va="bottom",
-            fontsize=7,
-            fontweight="bold",
-        )
+        mark(block.start_time, label, "-", True, fontweight="bold")
         for number, group in enumerate(block.groups if len(block.groups) > 1 else []):
-            if group.start_time is None:
-                continue
-            if number:
-                for panel in rows:
-                    panel.axvline(group.start_time, color="#444444", linewidth=0.8, linestyle="--", zorder=1)
-            timeline.text(
-                group.start_time,
-                0.99,
-                f" grp {group.sequence}",
-                transform=timeline.get_xaxis_transform(),
-                ha="left",
-                va="top",
-                fontsize=7,
-                color="#444444",
-            )
+            if group.start_time is not None:  # the first group starts with its block: no second line
+                mark(
+                    group.start_time,
+                    f"grp {group.sequence}",
+                    "--" if number else None,
+                    False,
+                    color="#444444",
+                )
     names = [a.name for a in axes_runs]
     for lane, axis in enumerate(axes_runs):
         y = lanes - 1 - lane

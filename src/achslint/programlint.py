@@ -46,6 +46,11 @@ def defined(axis: MachineAxis) -> tuple[Related, ...]:
     return (Related(at.path, at.line, at.column, None, f"{axis.name} is defined here"),)
 
 
+def homing_blocks(program: Program) -> Iterator[HomingBlock]:
+    """The G74 blocks of a program, in order."""
+    return (block for block in program.blocks if isinstance(block, HomingBlock))
+
+
 # -- the homing state before each block ---------------------------------------------------------------
 
 

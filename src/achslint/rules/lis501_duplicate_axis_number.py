@@ -28,11 +28,7 @@ kopf.log_achs_name    Y
 
 Use instead
 -----------
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X
-```
+With achsmds1.lis as it is, give achsmds2.lis its own number:
 
 ```
 # file: achsmds2.lis
@@ -50,8 +46,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Related, Severity
-from ..machine import Startup, diagnostic, first_uses, unset_note
+from ..diagnostics import Diagnostic
+from ..machine import Startup, repeated_values
 
 if TYPE_CHECKING:
     from . import MachineMember
@@ -65,14 +61,13 @@ SUMMARY = "Two axis lists of a machine with the same logical axis number"
 
 
 def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
-    for member, other in first_uses(members, "achs_nr"):
-        line, column = other[1].get("achs_nr_at") or (1, 1)
-        yield diagnostic(
-            CODE,
-            member,
-            "achs_nr_at",
-            f"logical axis number kopf.achs_nr {member[1]['achs_nr']}{unset_note(member, 'achs_nr_at')} is also used by {other[0]}; "
-            "every axis of a machine needs its own",
-            Severity.WARNING,
-            [Related(other[0], line, column, "kopf.achs_nr", "first use")],
-        )
+    yield from repeated_values(
+        CODE,
+        members,
+        "achs_nr",
+        "kopf.achs_nr",
+        lambda number, note, first: (
+            f"logical axis number kopf.achs_nr {number}{note} is also used by {first}; "
+            "every axis of a machine needs its own"
+        ),
+    )

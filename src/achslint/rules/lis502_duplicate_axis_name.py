@@ -26,11 +26,7 @@ kopf.log_achs_name    X          ( copied from achsmds1.lis
 
 Use instead
 -----------
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X
-```
+With achsmds1.lis as it is, give achsmds3.lis its own name:
 
 ```
 # file: achsmds3.lis
@@ -48,8 +44,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Related, Severity
-from ..machine import Startup, diagnostic, first_uses, unset_note
+from ..diagnostics import Diagnostic
+from ..machine import Startup, repeated_values
 
 if TYPE_CHECKING:
     from . import MachineMember
@@ -63,14 +59,12 @@ SUMMARY = "Two axis lists of a machine with the same axis name"
 
 
 def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
-    for member, other in first_uses(members, "name"):
-        line, column = other[1].get("name_at") or (1, 1)
-        yield diagnostic(
-            CODE,
-            member,
-            "name_at",
-            f"axis name kopf.log_achs_name `{member[1]['name']}`{unset_note(member, 'name_at')} is also used by {other[0]}; give each "
-            "axis its own name",
-            Severity.WARNING,
-            [Related(other[0], line, column, "kopf.log_achs_name", "first use")],
-        )
+    yield from repeated_values(
+        CODE,
+        members,
+        "name",
+        "kopf.log_achs_name",
+        lambda name, note, first: (
+            f"axis name kopf.log_achs_name `{name}`{note} is also used by {first}; give each axis its own name"
+        ),
+    )

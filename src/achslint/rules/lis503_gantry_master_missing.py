@@ -26,11 +26,7 @@ kenngr.gantry_ax_nr   7          ( no list of this machine has kopf.achs_nr 7
 
 Use instead
 -----------
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X1
-```
+With achsmds1.lis as it is, name the master's logical axis number:
 
 ```
 # file: achsmds2.lis

@@ -30,17 +30,12 @@ kopf.achs_nr         1
 
 Use instead
 -----------
-Fix the path, add the list, or remove the entry (and lower `zahl_mds`):
+Fix the path, add the list, or remove the entry (and lower `zahl_mds`); achsmds1.lis stays as it is:
 
 ```
 # file: hochlauf.lis
 zahl_mds             1
 achs_mds[0]          ./achsmds1.lis
-```
-
-```
-# file: achsmds1.lis
-kopf.achs_nr         1
 ```
 
 Reference

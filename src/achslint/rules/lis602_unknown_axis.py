@@ -40,24 +40,7 @@ N20 M30
 
 Use instead
 -----------
-```
-# file: hochlauf.lis
-achs_mds[0]           achsmds1.lis
-achs_mds[1]           achsmds2.lis
-Ende
-```
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X
-Ende
-```
-```
-# file: achsmds2.lis
-kopf.achs_nr          2
-kopf.log_achs_name    Y
-Ende
-```
+On the same machine, this program:
 ```
 ; file: rfp.nc
 N10 G74 X1 Y1

@@ -37,24 +37,7 @@ N20 M30
 
 Use instead
 -----------
-```
-# file: hochlauf.lis
-achs_mds[0]           achsmds1.lis
-achs_mds[1]           achsmds2.lis
-Ende
-```
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X
-Ende
-```
-```
-# file: achsmds2.lis
-kopf.achs_nr          2
-kopf.log_achs_name    Y
-Ende
-```
+On the same machine, this program:
 ```
 ; file: rfp.nc
 N10 G74 Y1 X2
@@ -84,12 +67,9 @@ SUMMARY = "G74 names the same axis twice"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..machinemodel import HomingBlock
-    from ..programlint import diagnostic
+    from ..programlint import diagnostic, homing_blocks
 
-    for block in program.blocks:
-        if not isinstance(block, HomingBlock):
-            continue
+    for block in homing_blocks(program):
         first: dict[str, AxisWord] = {}
         for word in block.words:
             earlier = first.setdefault(word.name, word)

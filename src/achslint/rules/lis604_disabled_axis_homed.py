@@ -44,28 +44,7 @@ N20 M30
 
 Use instead
 -----------
-```
-# file: hochlauf.lis
-achs_mds[0]           achsmds1.lis
-achs_mds[1]           achsmds2.lis
-Ende
-```
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X
-Ende
-```
-```
-# file: achsmds2.lis
-kopf.achs_nr                 2
-kopf.log_achs_name           C
-kenngr.achs_typ              2
-kenngr.antr_typ              8
-kenngr.abs_pos_gueltig       1
-kenngr.homing.homing_type    DISABLED
-Ende
-```
+On the same machine, this program:
 ```
 ; file: rfp.nc
 N10 G74 X1            (C has an absolute encoder and is not homed)
@@ -96,12 +75,9 @@ SUMMARY = "G74 commands an axis whose homing is DISABLED"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..machinemodel import HomingBlock
-    from ..programlint import diagnostic
+    from ..programlint import diagnostic, homing_blocks
 
-    for block in program.blocks:
-        if not isinstance(block, HomingBlock):
-            continue
+    for block in homing_blocks(program):
         for word in block.words:
             axis = machine.axes.get(word.name)
             if axis is None or axis.resolved.homing_type != "DISABLED":

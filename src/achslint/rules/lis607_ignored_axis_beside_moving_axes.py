@@ -44,28 +44,7 @@ N20 M30
 
 Use instead
 -----------
-```
-# file: hochlauf.lis
-achs_mds[0]           achsmds1.lis
-achs_mds[1]           achsmds2.lis
-Ende
-```
-```
-# file: achsmds1.lis
-kopf.achs_nr          1
-kopf.log_achs_name    X
-Ende
-```
-```
-# file: achsmds2.lis
-kopf.achs_nr                 2
-kopf.log_achs_name           B
-kenngr.achs_typ              2
-kenngr.antr_typ              8
-kenngr.abs_pos_gueltig       1
-kenngr.homing.homing_type    IGNORE_ABS_POS
-Ende
-```
+On the same machine, this program:
 ```
 ; file: rfp.nc
 N10 G74 X1            (B has an absolute encoder: it needs no G74)
@@ -98,12 +77,9 @@ _STILL = ("IGNORE_ABS_POS", "DISABLED")
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..machinemodel import HomingBlock
-    from ..programlint import diagnostic
+    from ..programlint import diagnostic, homing_blocks
 
-    for block in program.blocks:
-        if not isinstance(block, HomingBlock):
-            continue
+    for block in homing_blocks(program):
         named = [(word, machine.axes.get(word.name)) for word in block.words]
         moving = sorted(
             {axis.name for _, axis in named if axis is not None and axis.resolved.homing_type not in _STILL}
