@@ -165,3 +165,33 @@ def test_explain_program_needs_a_start_up_list():
         "explain", str(FIXTURES / "machines" / "sdk4" / "listen" / "achsmds1.lis"), "--program", "x.nc"
     )
     assert result.returncode == 2 and "--program goes with a start-up list" in result.stderr
+
+
+def test_noqa_in_program_comments(tmp_path):
+    # One LIS606 per line below; `noqa` in a comment of the line (either comment form) suppresses it, a
+    # noqa naming another code does not, and a comment line `; achslint: noqa: CODE` covers the program.
+    body = (
+        "N10 G01 G90 Z200 F500 (noqa: LIS606)\n"
+        "N20 G01 G90 Z210 F500 ; lift first, noqa: LIS606\n"
+        "N30 G01 G90 Z220 F500 (noqa: LIS602)\n"
+        "N40 G01 G90 Z230 F500 (noqa)\n"
+        "N50 G01 G90 Z240 F500\n"
+        "N60 G74 Z1\n"
+        "N70 M30\n"
+    )
+    program = tmp_path / "rfp.nc"
+
+    def reported(text: str) -> list[tuple[int, str]]:
+        program.write_text(text)
+        result = cli("lint", str(program), "--machine", str(PORTAL), "--format", "json", "--exit-zero")
+        return [(d["line"], d["code"]) for d in json.loads(result.stdout)["diagnostics"]]
+
+    assert reported(body.replace(" (noqa: LIS606)", "").replace(" ; lift first, noqa: LIS606", "")) == [
+        (1, "LIS606"),
+        (2, "LIS606"),
+        (3, "LIS606"),
+        (5, "LIS606"),
+    ]  # without the directives (line 4's bare noqa stays): every move of Z before N60
+    assert reported(body) == [(3, "LIS606"), (5, "LIS606")]
+    assert reported("; achslint: noqa: LIS606\n" + body) == []
+    assert reported("(achslint: noqa: LIS602)\n" + body) == [(4, "LIS606"), (6, "LIS606")]

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from .diagnostics import Diagnostic, Related, Severity
 from .linter import FileResult, FileSettings
 from .machinemodel import HomingBlock, Location, Machine, MachineAxis, MoveBlock, Program
+from .suppression import apply_in_program
 from .syntax import split_lines
 
 if TYPE_CHECKING:
@@ -159,7 +160,9 @@ def lint_program_on(
         return FileResult(shown, [], f"cannot read {shown}: {reason(exc)}")
     program = read_program(data, shown)
     found = check_program(program, machine, settings)
-    lines = split_lines(program_text(data) or "") if found and settings.keep_source else []
+    text = split_lines(program_text(data) or "") if found else []
+    found = apply_in_program(found, text)
+    lines = text if found and settings.keep_source else []
     return FileResult(shown, found, None, lines, fail_on=settings.fail_on)
 
 

@@ -1,13 +1,16 @@
-"""`# noqa` suppressions in lists.
+"""`# noqa` suppressions in lists, and in the comments of NC homing programs.
 
 * End of line: `# noqa: LIS302` or `# noqa: LIS302, LIS303` after a value, also
   inside a `(` comment (`( fast cam search  noqa: LIS303`); a bare `noqa`
   suppresses every diagnostic on that line.
 * File level: a comment line `# achslint: noqa: LIS401` suppresses the codes in
   the whole file; `# achslint: noqa` alone suppresses everything.
+* NC programs (LIS6xx): the same words inside the block's comment,
+  `N20 G01 Z5 (noqa: LIS606)` or `N20 G01 Z5 ; noqa: LIS606`, and a comment line
+  `; achslint: noqa: LIS606` (or `(achslint: noqa: LIS606)`) for the whole program.
 
-Each directive remembers what it suppressed, so directives that suppress
-nothing can be reported (LIS009).
+Each directive in a list remembers what it suppressed, so directives that
+suppress nothing can be reported (LIS009); in programs they are not checked.
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ _CODE = r"[A-Za-z]+[0-9][A-Za-z0-9]*"
 _CODES = rf"(?P<codes>{_CODE}(?:\s*,\s*{_CODE})*)"
 LINE_NOQA = re.compile(rf"(?<![\w:])noqa(?::\s*{_CODES})?", re.IGNORECASE)
 FILE_NOQA = re.compile(rf"^#\s*achslint:\s*noqa(?::\s*{_CODES})?\s*$", re.IGNORECASE)
+PROGRAM_FILE_NOQA = re.compile(rf"^(?:;|\()\s*achslint:\s*noqa(?::\s*{_CODES})?\s*\)?\s*$", re.IGNORECASE)
 
 
 @dataclass
@@ -84,3 +88,24 @@ def apply(diagnostics: list[Diagnostic], found: list[Directive]) -> list[Diagnos
         else:
             suppressor.used.add(diagnostic.code)
     return kept
+
+
+def apply_in_program(diagnostics: list[Diagnostic], lines: list[str]) -> list[Diagnostic]:
+    """Drop the findings of an NC program (`lines`: its text) that a `noqa` in a comment suppresses."""
+    whole: list[list[str] | None] = []  # codes of the file-level directives (None: every code)
+    on_line: dict[int, list[str] | None] = {}
+    for number, text in enumerate(lines, 1):
+        match = PROGRAM_FILE_NOQA.match(text.strip())
+        if match:
+            whole.append(_codes(match))
+            continue
+        starts = [at for at in (text.find("("), text.find(";")) if at >= 0]
+        found = LINE_NOQA.search(text, min(starts)) if starts else None
+        if found:
+            on_line[number] = _codes(found)
+
+    def suppressed(diagnostic: Diagnostic) -> bool:
+        directives = [*whole, *([on_line[diagnostic.line]] if diagnostic.line in on_line else [])]
+        return any(codes is None or diagnostic.code in codes for codes in directives)
+
+    return [diagnostic for diagnostic in diagnostics if not suppressed(diagnostic)]
