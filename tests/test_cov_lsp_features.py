@@ -287,6 +287,28 @@ def test_noqa_edit_after_a_comment_and_never_into_a_bare_noqa(session: Session, 
     assert features.noqa_edit(document, file, finding(9)) is None  # no such line
 
 
+def test_a_byte_order_mark_is_lis006_in_the_editor_as_on_the_command_line(
+    session: Session, tmp_path: Path
+) -> None:
+    # The CLI reports LIS006 for a list saved "UTF-8 with BOM"; so must the editor, whether it keeps the
+    # mark as a character of the text or (like VS Code) hides it and writes it back on save. Only a mark in
+    # the text can be removed by a quick fix.
+    body = "kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n"
+    path = tmp_path / "achsmds1.lis"
+
+    def lis006(text: str) -> tuple[bool, list[str]]:
+        document = opened(session, path, text)
+        snapshot, found, _ = session.diagnostics(document.uri)
+        actions = features.code_actions(document, snapshot, found, EVERYWHERE, None, list)
+        return "LIS006" in codes(found), [a.title for a in actions if a.title.startswith("LIS006")]
+
+    path.write_bytes(body.encode())
+    assert lis006(body) == (False, [])
+    assert lis006("\ufeff" + body) == (True, ["LIS006: remove the byte-order mark"])
+    path.write_bytes(b"\xef\xbb\xbf" + body.encode())
+    assert lis006(body) == (True, [])  # hidden by the editor: reported, no edit that could remove it
+
+
 def test_a_bare_noqa_that_suppresses_nothing_gets_no_noqa_action(session: Session, tmp_path: Path) -> None:
     document = opened(session, tmp_path / "achsmds1.lis", "kopf.achs_nr  1  # noqa\nEnde\n")
     snapshot, found, _ = session.diagnostics(document.uri)

@@ -168,8 +168,8 @@ def test_explain_program_needs_a_start_up_list():
 
 
 def test_noqa_in_program_comments(tmp_path):
-    # One LIS606 per line below; `noqa` in a comment of the line (either comment form) suppresses it, a
-    # noqa naming another code does not, and a comment line `; achslint: noqa: CODE` covers the program.
+    # One LIS606 per line below; a `noqa` in a comment of the line (either comment form) suppresses it,
+    # one that names another code does not, and a comment line `; achslint: noqa: CODE` covers the program.
     body = (
         "N10 G01 G90 Z200 F500 (noqa: LIS606)\n"
         "N20 G01 G90 Z210 F500 ; lift first, noqa: LIS606\n"

@@ -112,6 +112,18 @@ def not_a_list_file(path: Path) -> str | None:
     return None
 
 
+def starts_with_bom(path: Path) -> bool:
+    """Whether a regular file begins with the UTF-8 byte-order mark (False for anything unreadable)."""
+    if not_a_list_file(path) is not None:
+        return False
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(fd, "rb") as stream:
+            return stream.read(3) == b"\xef\xbb\xbf"
+    except OSError:
+        return False
+
+
 def is_xml(name: str) -> bool:
     """Whether a file name is one of the XML forms an axis list comes in (read by `xmlinput`)."""
     return name.lower().endswith(XML_SUFFIXES)

@@ -12,7 +12,7 @@ LSP positions are 0-based and count UTF-16 code units unless the client agreed o
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..syntax import BLANK, END, Line, ListFile, parse_text, split_lines
@@ -176,8 +176,8 @@ class Document:
         self._lines = self._raw = None
 
     def parse(self) -> ListFile:
-        if self.bom:
-            return self.cache.parse(self.body, self.name)
+        if self.bom:  # read without the mark, and known to have one (LIS006)
+            return replace(self.cache.parse(self.body, self.name), bom=True)
         return self.cache.parse(self.text, self.name, self.raw_lines)
 
 

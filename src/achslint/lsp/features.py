@@ -641,7 +641,7 @@ def code_actions(
             if not (d.line <= end_line and d.end_line >= start_line):
                 continue
             diagnostic = to_lsp_diagnostic(document, d)
-            if (d.fix is not None and d.fix.edits) or (d.fix is not None and d.fix.remove_bom):
+            if d.fix is not None and (d.fix.edits or (d.fix.remove_bom and document.bom)):
                 unsafe = d.fix.applicability != "safe"
                 actions.append(
                     lsp.CodeAction(

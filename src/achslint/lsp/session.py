@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -29,7 +29,7 @@ from ..config import (
 )
 from ..decode import UnreadableInput
 from ..diagnostics import Diagnostic, Severity
-from ..files import is_xml, not_a_list_file, read_list
+from ..files import is_xml, not_a_list_file, read_list, starts_with_bom
 from ..linter import FileResult, FileSettings, lint_file, lint_parsed
 from ..machine import Startup, is_startup_list, read_startup
 from ..syntax import ListFile, parse_bytes
@@ -232,6 +232,10 @@ class Session:
             except (OSError, UnreadableInput):
                 default_file = None  # the start-up list's LIS504 says why
         file = document.parse()
+        if not file.bom and document.path is not None and starts_with_bom(document.path):
+            # The editor keeps the mark out of the text (VS Code: "UTF-8 with BOM") and writes it back on
+            # save, so the file the CNC reads has it: LIS006 as on the command line.
+            file = replace(file, bom=True)
         result = lint_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
 
