@@ -97,3 +97,18 @@ def test_lis203_similarity_is_what_difflib_would_choose():
         for n, cutoff in ((1, 0.6), (2, 0.8)):
             expected = difflib.get_close_matches(text, chosen, n=n, cutoff=cutoff)
             assert [s for score, s in _similar(text, chosen) if score >= cutoff][:n] == expected
+
+
+@pytest.mark.parametrize(
+    ("name", "number", "expected"),
+    [
+        ("default_mds.lis", "0", []),  # what the CNC requires of a default list (P-ERR-110300)
+        ("default_mds.lis", "-1", [("LIS506", "error")]),  # one finding: LIS202 leaves it to LIS506
+        ("default_mds.lis", "7", [("LIS506", "error")]),
+        ("achsmds1.lis", "0", [("LIS202", "error")]),  # an axis needs a logical number of at least 1
+        ("achsmds1.lis", "7", []),
+    ],
+)
+def test_the_logical_axis_number_of_a_default_list_and_of_an_axis(name, number, expected):
+    found = lint(f"kopf.achs_nr  {number}\nEnde\n".encode(), name=name)
+    assert [(d.code, d.severity.value) for d in found if d.code in ("LIS202", "LIS506")] == expected

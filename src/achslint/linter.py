@@ -152,11 +152,13 @@ def _check_file(
     embedded: EmbeddedList | None = None,
     default_file: ListFile | None = None,
 ) -> FileResult:
-    ctx = Context(name, file, settings.settings, embedded=embedded, default_file=default_file)
-    rules = registry()
     # A default list (default_mds.lis) only supplies values underneath every axis: alone it is no axis,
     # so the rules that judge a whole axis do not run on it (they run on the axis lists that load it).
     partial = embedded is None and machine.is_default_list(Path(name))
+    ctx = Context(
+        name, file, settings.settings, embedded=embedded, default_file=default_file, default_list=partial
+    )
+    rules = registry()
 
     def enabled(code: str) -> bool:
         return settings.selection.enabled(code) and not (partial and rules[code].needs_whole_axis)

@@ -95,6 +95,7 @@ RULE_MODULES = (
     "lis503_gantry_master_missing",
     "lis504_missing_list",
     "lis505_xml_axis_definition",
+    "lis506_default_list_axis_number",
     "lis601_program_text",
     "lis602_unknown_axis",
     "lis603_axis_twice_in_g74",

@@ -32,16 +32,18 @@ def value_facts(
     replacement: Callable[[F], str | None] | None = None,
     applicability: str = "safe",
     to_line_end: bool = False,
+    skip: Callable[[F, Setting], bool] | None = None,
 ) -> Iterator[Diagnostic]:
     """Report every fact of the given kinds that the conversion stage recorded for a value.
 
     `message(fact, setting, parameter)` words the finding; `replacement(fact)`, when given and not None,
     is a value written in place of the old one as a fix of the given applicability. With `to_line_end` the
-    finding reaches from the fact's start to the end of the line.
+    finding reaches from the fact's start to the end of the line. `skip(fact, setting)` leaves out facts
+    another rule judges.
     """
     for setting, parameter, _ in known_settings(ctx.settings):  # facts are only made for known parameters
         for fact in setting.problems:
-            if not isinstance(fact, kinds):
+            if not isinstance(fact, kinds) or (skip is not None and skip(fact, setting)):
                 continue
             line = setting.line
             start, end = ctx.problem_span(line, fact.span)

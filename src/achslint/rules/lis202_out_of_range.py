@@ -90,5 +90,11 @@ def _range_hint(parameter: Parameter) -> str:
     return f" (manual range: {text})"
 
 
+def _judged_by_lis506(fact: Fact, setting: Setting) -> bool:
+    """In a default axis list `kopf.achs_nr` must be 0 (P-ERR-110300), which is outside its range for an
+    axis: there LIS506 says what is wrong with a number (a value that is no number stays LIS202's)."""
+    return setting.canonical == "kopf.achs_nr" and not isinstance(fact, UnusableNumber)
+
+
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    yield from value_facts(ctx, CODE, FACTS, message)
+    yield from value_facts(ctx, CODE, FACTS, message, skip=_judged_by_lis506 if ctx.default_list else None)
