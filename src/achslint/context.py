@@ -28,9 +28,7 @@ class Context:
     catalogue: Catalogue = field(default_factory=catalogue)
     embedded: EmbeddedList | None = None  # when the list came from an XML file
     default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
-    default_list: bool = (
-        False  # this list is itself a default axis list (default_mds.lis): no axis of its own
-    )
+    default_list: bool = False  # the list is itself a default axis list: no axis of its own
 
     @cached_property
     def analysis(self) -> Analysis:

@@ -1,9 +1,9 @@
 """
 What
 ----
-A default axis list (`default_mds.lis`, the list a start-up list names as
-`default_sda_mds`) that gives a logical axis number `kopf.achs_nr` other
-than 0.
+A default axis list (a list named `default*mds*.lis`, like the
+`default_mds.lis` a start-up list loads as `default_sda_mds`) that gives a
+logical axis number `kopf.achs_nr` other than 0.
 
 Why
 ---
