@@ -44,6 +44,7 @@ if TYPE_CHECKING:
     from rich.console import Console
 
     from .catalogue import Value
+    from .context import Context
     from .scenario_input import ScenarioInput
 
 # Rules whose finding means the CNC does not run the homing at all: the dry-run refuses with their text.
@@ -96,7 +97,12 @@ def prepare(
     cycle_time_us: int = 1000,
     defaults: bytes | None = None,
 ) -> Simulator:
-    values = resolve_bytes(data, name, defaults)
+    return _simulator(resolve_bytes(data, name, defaults), name, given, gear, cycle_time_us)
+
+
+def _simulator(
+    values: ResolvedAxis, name: str, given: ScenarioInput | None, gear: int, cycle_time_us: int
+) -> Simulator:
     strategy = classify(values, gear)
     if given is not None and given.drive is not None and strategy.controlled_by != "drive":
         raise ScenarioError(
@@ -108,19 +114,28 @@ def prepare(
 
 def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None:
     """The lint finding that makes the CNC refuse this homing (drive type, spindle direction), if any."""
+    return _refused(_context(data, name, defaults))
+
+
+def _context(data: bytes, name: str, defaults: bytes | None) -> Context:
+    """The list read once, as the rules see it; its `values` are the resolved axis (as resolve_bytes)."""
     from .context import Context
     from .syntax import parse_bytes
 
-    context = Context(
+    return Context(
         name,
         parse_bytes(data, name),
         default_file=parse_bytes(defaults, "default list") if defaults is not None else None,
     )
+
+
+def _refused(context: Context) -> str | None:
     for module in REFUSING_RULES:
         rule = importlib.import_module(f"{__package__}.rules.{module}")
         for diagnostic in rule.check(context):
             return (
-                f"{name}: dry-run refused, the CNC does not run this homing: {rule.CODE} {diagnostic.message}"
+                f"{context.name}: dry-run refused, the CNC does not run this homing: "
+                f"{rule.CODE} {diagnostic.message}"
             )
     return None
 
@@ -134,8 +149,9 @@ def dry_run(
     cycle_time_us: int = 1000,
     defaults: bytes | None = None,
 ) -> DryRun:
-    simulator = prepare(data, name, given, gear=gear, cycle_time_us=cycle_time_us, defaults=defaults)
-    refused = refusal(data, name, defaults)
+    context = _context(data, name, defaults)  # one read for the simulation and the refusal check
+    simulator = _simulator(context.values, name, given, gear, cycle_time_us)
+    refused = _refused(context)
     if refused:
         raise DryRunRefused(refused)
     trace = simulator.run()
