@@ -23,6 +23,7 @@ Writing (`fmt`, `lint --fix`) keeps the file what it was:
 
 from __future__ import annotations
 
+import codecs
 import errno
 import functools
 import os
@@ -112,18 +113,6 @@ def not_a_list_file(path: Path) -> str | None:
     return None
 
 
-def starts_with_bom(path: Path) -> bool:
-    """Whether a regular file begins with the UTF-8 byte-order mark (False for anything unreadable)."""
-    if not_a_list_file(path) is not None:
-        return False
-    try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-        with os.fdopen(fd, "rb") as stream:
-            return stream.read(3) == b"\xef\xbb\xbf"
-    except OSError:
-        return False
-
-
 def is_xml(name: str) -> bool:
     """Whether a file name is one of the XML forms an axis list comes in (read by `xmlinput`)."""
     return name.lower().endswith(XML_SUFFIXES)
@@ -137,14 +126,23 @@ def is_folder(path: Path) -> bool:
         return False
 
 
-def read_list(path: Path) -> bytes:
-    """The bytes of a regular file; `Refused` for anything else, without ever blocking on a FIFO."""
+def read_list(path: Path, size: int = -1) -> bytes:
+    """The bytes of a regular file (the first `size` of them, when given); `Refused` for anything else,
+    without ever blocking on a FIFO."""
     fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     with os.fdopen(fd, "rb") as stream:
         kind = _kind(os.fstat(stream.fileno()).st_mode)
         if kind is not None:
             raise Refused(f"{path} is {kind}, not a regular file; not read")
-        return stream.read()
+        return stream.read(size)
+
+
+def starts_with_bom(path: Path) -> bool:
+    """Whether a regular file begins with the UTF-8 byte-order mark (False for anything unreadable)."""
+    try:
+        return read_list(path, len(codecs.BOM_UTF8)) == codecs.BOM_UTF8
+    except (OSError, ValueError):  # Refused is an OSError; ValueError: a NUL byte in the name
+        return False
 
 
 @dataclass(frozen=True)
