@@ -65,27 +65,21 @@ def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iter
     for startup in startups:
         for entry in ([startup.default] if startup.default else []) + startup.axes:
             if entry.refused:
-                yield Diagnostic(
-                    str(startup.path),
-                    entry.line,
-                    entry.column,
-                    entry.line,
-                    entry.column + len(entry.raw),
-                    CODE,
+                severity, message = (
                     Severity.WARNING,
                     f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {entry.refused}; "
                     "set --cnc-root or name the list (or its folder) on the command line to check it",
                 )
             elif entry.path is None:
-                yield Diagnostic(
-                    str(startup.path),
-                    entry.line,
-                    entry.column,
-                    entry.line,
-                    entry.column + len(entry.raw),
-                    CODE,
+                severity, message = (
                     Severity.ERROR,
                     f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
                     f"(the CNC root {startup.root_origin}); the CNC aborts the start-up when a list "
                     "is missing",
                 )
+            else:
+                continue
+            end = entry.column + len(entry.raw)
+            yield Diagnostic(
+                str(startup.path), entry.line, entry.column, entry.line, end, CODE, severity, message
+            )
