@@ -16,12 +16,14 @@ from .files import (
     ChangedOnDisk,
     Refused,
     Scope,
+    WriteFailed,
     is_folder,
     is_xml,
     not_a_list_file,
     read_list,
     real_path,
     reason,
+    same_file,
     write_atomically,
 )
 from .linter import (
@@ -72,6 +74,12 @@ class LintRequest:
     respect_gitignore: bool = True  # files git ignores are not searched in folders
     machine: str | None = None  # start-up list of the machine NC programs (`rfp.nc`) are checked against
     channel: int = 1  # the channel whose axis names the programs use
+    output: str | None = None  # the report file (-o): a run that would read it as an input stops first
+
+
+class OutputIsInput(ValueError):
+    """The report file (`-o/--output-file`) is one of the files the run reads: writing it would replace
+    that file with the report. A usage error, raised before anything is read or written."""
 
 
 @dataclass
@@ -348,6 +356,11 @@ class LintRun:
 
     def run(self, stdin: BinaryIO | None = None, progress: Progress | None = None) -> LintOutcome:
         found = self.discover()
+        if self.request.output is not None:
+            read = [t.path for t in [*found.targets, *found.context] if t.path is not None]
+            read += [t.defaults for t in found.targets if t.defaults is not None]
+            read += [s.path for s in self.startups]
+            refuse_output_over_input(self.request.output, read)
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
         mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff)
@@ -512,7 +525,7 @@ def _process(
 
 def write_error(exc: OSError, name: str) -> str:
     """The one-line message for a write that did not happen."""
-    if isinstance(exc, (ChangedOnDisk, Refused)):
+    if isinstance(exc, (ChangedOnDisk, Refused, WriteFailed)):
         return str(exc)
     return f"cannot write {name}: {reason(exc)}"
 
@@ -563,6 +576,9 @@ def run_lint(
 
     NC programs (`rfp.nc`) among the paths are checked against the machine of `request.machine` (LIS6xx).
     """
+    if request.output is not None:
+        named = [*request.paths, *(p for p in (request.machine, request.config_file) if p is not None)]
+        refuse_output_over_input(request.output, [Path(p) for p in named if p != "-"])
     programs = [path for path in request.paths if is_program(path)]
     rest = [path for path in request.paths if not is_program(path)]
     run = LintRun(replace(request, paths=rest))
@@ -577,6 +593,17 @@ def run_lint(
         outcome.errors.extend(errors)
     _configured_programs(run, {os.path.realpath(path) for path in programs}, outcome)
     return outcome
+
+
+def refuse_output_over_input(output: str, inputs: Iterable[Path], option: str = "--output-file") -> None:
+    """`OutputIsInput` when the file `option` writes is one of `inputs` (the same file under another name,
+    through a symbolic or a hard link, counts: it is compared by device and inode)."""
+    for path in inputs:
+        if same_file(Path(output), path):
+            raise OutputIsInput(
+                f"{option} {output} is {path}, which this run reads; writing it would replace that file: "
+                "give another file name"
+            )
 
 
 def is_program(path: str) -> bool:
@@ -600,6 +627,8 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
         todo = [path for path in wanted if os.path.realpath(path) not in done]
         if not todo:
             continue
+        if run.request.output is not None:
+            refuse_output_over_input(run.request.output, todo)
         from .machinebuild import MachineError, build_machine  # only for machines with programs
         from .programlint import lint_program_on
 

@@ -267,7 +267,7 @@ def lint(
     ),
 ) -> None:
     """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
-    from .api import LintRequest, run_lint
+    from .api import LintRequest, OutputIsInput, run_lint
     from .config import ConfigError, Overrides
 
     try:
@@ -303,12 +303,13 @@ def lint(
         respect_gitignore=respect_gitignore,
         machine=machine,
         channel=channel,
+        output=output_file if not silent else None,
     )
     quiet = quiet or silent
     try:
         with _progress(quiet) as progress:
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
-    except ConfigError as exc:
+    except (ConfigError, OutputIsInput) as exc:
         _fail(str(exc))
     _tell(outcome.errors, outcome.notes, quiet)
     if not outcome.results and not outcome.errors and not allow_empty:
@@ -344,6 +345,16 @@ def _patterns(values: list[str] | None) -> list[str] | None:
     if not values:
         return None
     return [part.strip() for value in values for part in value.split(",") if part.strip()]
+
+
+def _not_over_inputs(output: str, option: str, inputs: Iterable[str | None]) -> None:
+    """Exit 2 when the file an option writes is one of the files the command reads."""
+    from .api import OutputIsInput, refuse_output_over_input
+
+    try:
+        refuse_output_over_input(output, [Path(path) for path in inputs if path and path != "-"], option)
+    except OutputIsInput as exc:
+        _fail(str(exc))
 
 
 class _destination:
@@ -781,6 +792,8 @@ def dry_run_command(
     """Simulate the configured homing before a real axis moves."""
     import json
 
+    if plot:
+        _not_over_inputs(plot, "--plot", [file, program, scenario, config])
     if program is not None:
         single = [start, cam, zero_pulse_period, zero_pulse_phase, latch, cycle_time_ms, limit_switches]
         if any(v is not None for v in [*single, fixed_stop, cam_jitter]) or gear:
@@ -881,6 +894,10 @@ def _machine_dry_run(
         _fail(str(exc))
     if plot:
         from .plot import PlotUnavailable, plot_machine
+
+        machine = run.machine
+        lists = [axis.list_path for axis in [*machine.axes.values(), *machine.other_axes]]
+        _not_over_inputs(plot, "--plot", [str(path) for path in [*lists, machine.channel_list] if path])
 
         try:
             plot_machine(run, plot)

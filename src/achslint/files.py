@@ -1,6 +1,7 @@
 """Lists on disk: which files achslint may read and write, and how it writes them.
 
-Reading: only regular files. FIFOs, devices, sockets and the kernel's own file
+Reading: only regular files, and only up to a size limit per kind of file (a list,
+an NC program, a TOML file). FIFOs, devices, sockets and the kernel's own file
 systems (`/proc`, `/sys`, `/dev`) are refused, and a file is opened without
 blocking, so a FIFO put in place of a list cannot make a run hang.
 
@@ -18,6 +19,9 @@ Writing (`fmt`, `lint --fix`) keeps the file what it was:
   signal leaves the old file or the new one, never half of one. When the owner
   cannot be kept (someone else's file in a folder we may write), or the folder
   cannot take a temporary file, the file is rewritten in place instead;
+* a rewrite in place keeps the old bytes: when the file system stops it part-way
+  (disk full, quota, file-size limit), they are written back and the file cut
+  to its old length, and the error says so;
 * nothing is written when the file changed on disk since it was read.
 """
 
@@ -74,6 +78,16 @@ def inside(path: Path, root: Path) -> bool:
     return target == base or base in target.parents
 
 
+def same_file(first: Path, second: Path) -> bool:
+    """Whether two paths name one file (links followed; hard links compared by device and inode). False
+    when either cannot be looked at (a report file that does not exist yet is no input)."""
+    try:
+        one, other = os.stat(first), os.stat(second)
+    except (OSError, ValueError):
+        return False
+    return (one.st_dev, one.st_ino) == (other.st_dev, other.st_ino)
+
+
 def _kind(mode: int) -> str | None:
     """What a non-regular file is, in words; None for a regular file."""
     if stat.S_ISREG(mode):
@@ -126,15 +140,41 @@ def is_folder(path: Path) -> bool:
         return False
 
 
-def read_list(path: Path, size: int = -1) -> bytes:
+MIB = 1 << 20
+LIST_LIMIT = 64 * MIB  # an axis list is kilobytes; the largest real exports are a few megabytes
+PROGRAM_LIMIT = 16 * MIB  # an NC homing program
+SETTINGS_LIMIT = 4 * MIB  # a configuration file or a dry-run scenario (TOML)
+
+
+def _megabytes(size: int) -> str:
+    return f"{size // MIB:,} MB" if size % MIB == 0 else f"{size / MIB:,.1f} MB"
+
+
+def read_list(path: Path, size: int = -1, *, limit: int = LIST_LIMIT, what: str = "a list") -> bytes:
     """The bytes of a regular file (the first `size` of them, when given); `Refused` for anything else,
-    without ever blocking on a FIFO."""
+    without ever blocking on a FIFO, and for a file larger than `limit` bytes (`what` names the kind of
+    file in that message). At most `limit` + 1 bytes are ever read, so a file that grows while it is
+    read, or one that reports no size (`/proc`), cannot make a run take unbounded memory."""
     fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     with os.fdopen(fd, "rb") as stream:
-        kind = _kind(os.fstat(stream.fileno()).st_mode)
+        info = os.fstat(stream.fileno())
+        kind = _kind(info.st_mode)
         if kind is not None:
             raise Refused(f"{path} is {kind}, not a regular file; not read")
-        return stream.read(size)
+        if size >= 0:
+            return stream.read(min(size, limit))
+        if info.st_size > limit:
+            raise _too_large(path, info.st_size, limit, what)
+        data = stream.read(limit + 1)
+        if len(data) > limit:
+            raise _too_large(path, len(data), limit, what)
+        return data
+
+
+def _too_large(path: Path, size: int, limit: int, what: str) -> Refused:
+    return Refused(
+        f"{path} is {_megabytes(size)}, more than the {_megabytes(limit)} achslint reads for {what}; not read"
+    )
 
 
 def starts_with_bom(path: Path) -> bool:
@@ -187,10 +227,12 @@ def write_atomically(path: Path, data: bytes, expected: bytes | None = None) -> 
         _write_in_place(target, path, data, expected)
         return
     try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
+        try:
+            with os.fdopen(handle, "wb", buffering=0) as stream:
+                _write_all(stream.fileno(), data)
+                os.fsync(stream.fileno())
+        except OSError as exc:  # the list itself was never touched
+            raise WriteFailed(path, exc, UNCHANGED) from None
         os.chmod(temporary, stat.S_IMODE(info.st_mode))
         if not _keep_owner(temporary, info):
             Path(temporary).unlink()
@@ -229,14 +271,58 @@ def _check_unchanged(target: Path, shown: Path, expected: bytes | None) -> None:
 
 
 def _write_in_place(target: Path, shown: Path, data: bytes, expected: bytes | None) -> None:
-    """Overwrite the file's own content (same inode: hard links, owner and mode stay as they are)."""
-    with open(target, "r+b") as stream:
-        if expected is not None and stream.read() != expected:
+    """Overwrite the file's own content (same inode: hard links, owner and mode stay as they are).
+
+    The old bytes are kept in memory: when the write fails part-way (disk full, quota, file-size
+    limit), they are written back over the blocks they had and the file is cut to its old length, so it
+    is never left truncated or half new; `WriteFailed` then says whether that worked.
+    """
+    with open(target, "r+b", buffering=0) as stream:  # unbuffered: every failure surfaces here, not at close
+        old = stream.readall()
+        if expected is not None and old != expected:
             raise ChangedOnDisk(
                 f"{shown} changed while achslint was working on it; nothing written, run again"
             )
-        stream.seek(0)
-        stream.write(data)
-        stream.truncate()
-        stream.flush()
-        os.fsync(stream.fileno())
+        fd = stream.fileno()
+        try:
+            _write_all(fd, data)
+            os.ftruncate(fd, len(data))
+            os.fsync(fd)
+        except OSError as exc:
+            restored = _restore(fd, old)
+            raise WriteFailed(shown, exc, RESTORED if restored else DAMAGED) from None
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """Write all of `data` from the start of the file (a short write is continued, an error raised)."""
+    view, offset = memoryview(data), 0
+    while offset < len(view):
+        offset += os.pwrite(fd, view[offset:], offset)
+
+
+def _restore(fd: int, old: bytes) -> bool:
+    """Put `old` back as the whole content of an open file; whether that worked."""
+    try:
+        _write_all(fd, old)  # within the old length: those blocks are still allocated
+        os.ftruncate(fd, len(old))
+        os.fsync(fd)
+    except OSError:
+        return False
+    return True
+
+
+UNCHANGED = "the list is unchanged"
+RESTORED = "the list is unchanged (its old content was put back)"
+DAMAGED = "its old content could not be put back either: restore it from version control or a backup"
+
+
+class WriteFailed(OSError):
+    """A rewrite the file system stopped (disk full, quota, file-size limit); the message says what state
+    the file was left in."""
+
+    def __init__(self, shown: Path, cause: OSError, outcome: str) -> None:
+        super().__init__(cause.errno, f"cannot write {shown}: {reason(cause)}; {outcome}")
+        self.outcome = outcome
+
+    def __str__(self) -> str:
+        return str(self.strerror)

@@ -1,0 +1,273 @@
+"""Never lose (issue 22, items 1 and 2): rewrites the file system stops part-way, and a report file that
+names one of the inputs.
+
+A full disk is played by the file-size limit (RLIMIT_FSIZE) of the real entry point run in a child
+process: writing past it fails with EFBIG exactly where a full disk fails with ENOSPC, and it needs no
+privilege. The cases that take a folder we may not write, or a file whose owner we cannot keep, run the
+child as the unprivileged user `nobody` when the tests run as root, and are skipped otherwise (an
+ordinary user can neither make someone else's file nor give one away).
+"""
+
+from __future__ import annotations
+
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import pytest
+
+from achslint import files
+from achslint.files import UNCHANGED, WriteFailed, write_atomically
+
+MESSY = b"kopf.achs_nr 1\nkenngr.achs_typ     1\nEnde\n"  # fmt aligns it: the new text is longer
+BROKEN_END = b"kopf.achs_nr     1\nkenngr.achs_typ  1\nEnd\n"  # lint --fix writes `Ende`: one byte more
+ROOT = hasattr(os, "geteuid") and os.geteuid() == 0
+NOBODY = 65534
+AS_ROOT_ONLY = pytest.mark.skipif(
+    not ROOT, reason="needs root to make a file of another user and run as nobody"
+)
+
+
+def _limited(size: int) -> dict:
+    """subprocess.run arguments: the child may not write past `size` bytes."""
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (size, size))
+
+    return {"preexec_fn": limit}
+
+
+def _achslint(*args: str, cwd: Path, **extra) -> subprocess.CompletedProcess:
+    env = {**os.environ, "NO_COLOR": "1", "HOME": str(cwd)}
+    env.pop("FORCE_COLOR", None)
+    env.pop("COVERAGE_PROCESS_START", None)  # the child may run as another user: no coverage files
+    return subprocess.run(
+        [sys.executable, "-m", "achslint", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=cwd,
+        timeout=120,
+        **extra,
+    )
+
+
+@pytest.fixture
+def shared_folder():
+    """A folder outside pytest's private tmp tree (which only root may enter), removed afterwards."""
+    folder = Path(tempfile.mkdtemp(prefix="achslint-writes-"))
+    folder.chmod(0o755)
+    try:
+        yield folder
+    finally:
+        for path in sorted(folder.rglob("*"), reverse=True):
+            path.chmod(0o700) if path.is_dir() else path.unlink()
+            if path.is_dir():
+                path.rmdir()
+        folder.rmdir()
+
+
+def _no_temporaries(folder: Path) -> list[str]:
+    return [p.name for p in folder.iterdir() if p.name.endswith(".achslint")]
+
+
+# -- 1. a write that fails part-way leaves the old bytes ----------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("command", "original"),
+    [(("fmt",), MESSY), (("lint", "--fix"), BROKEN_END)],
+    ids=["fmt", "lint --fix"],
+)
+def test_1_hard_linked_list_full_disk_keeps_old_bytes(tmp_path, command, original):
+    """A hard-linked list is rewritten in place; with the disk full after its old length, the
+    rewrite stops part-way. Before the fix the list was left cut at the limit, neither old nor new."""
+    target = tmp_path / "achsmds1.lis"
+    target.write_bytes(original)
+    os.link(target, tmp_path / "copy.lis")
+    done = _achslint(*command, "achsmds1.lis", cwd=tmp_path, **_limited(len(original)))
+    assert target.read_bytes() == original
+    assert (tmp_path / "copy.lis").read_bytes() == original
+    assert done.returncode == 2, done.stderr
+    assert "cannot write achsmds1.lis" in done.stderr
+    assert "unchanged" in done.stderr
+    assert "Traceback" not in done.stderr
+    assert "1 file reformatted" not in done.stdout + done.stderr  # a write that did not happen is not counted
+    assert "fixed 1" not in done.stderr
+
+
+def test_1_temporary_file_on_a_full_disk_leaves_the_list_and_no_temporary(tmp_path):
+    """The ordinary path (temporary file, then rename) with the disk full: the list is untouched, the
+    temporary file removed, and the message says the list is unchanged."""
+    target = tmp_path / "achsmds1.lis"
+    target.write_bytes(MESSY)
+    done = _achslint("fmt", "achsmds1.lis", cwd=tmp_path, **_limited(len(MESSY) - 5))
+    assert target.read_bytes() == MESSY
+    assert _no_temporaries(tmp_path) == []
+    assert done.returncode == 2
+    assert f"; {UNCHANGED}" in done.stderr
+
+
+def _as_nobody(folder: Path, size: int, *args: str) -> tuple[int, str]:
+    """The command line run by `nobody` in a forked child (this interpreter may live where nobody may
+    not start it), with the file-size limit `size`: (exit code, what it printed)."""
+    from achslint.cli import main
+
+    # the interpreter's own modules may lie where nobody may not read them: everything the command
+    # imports on its way is imported here first, by the same command on a scratch copy
+    scratch = Path(tempfile.mkdtemp())
+    (scratch / "achsmds1.lis").write_bytes(MESSY)
+    main([*args[:-1], str(scratch / "achsmds1.lis")])
+    os.link(scratch / "achsmds1.lis", scratch / "linked.lis")
+    main([*args[:-1], str(scratch / "achsmds1.lis")])
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: never returns into pytest
+        code = 99
+        try:
+            os.dup2(write_end, 1)
+            os.dup2(write_end, 2)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (size, size))
+            os.setgroups([])
+            os.setgid(NOBODY)
+            os.setuid(NOBODY)
+            os.chdir(folder)
+            sys.stdout = sys.stderr = os.fdopen(2, "w", closefd=False)
+            code = main(list(args))
+            sys.stdout.flush()
+        finally:
+            os._exit(code)
+    os.close(write_end)
+    with os.fdopen(read_end) as stream:
+        printed = stream.read()
+    _, status = os.waitpid(pid, 0)
+    return os.waitstatus_to_exitcode(status), printed
+
+
+@AS_ROOT_ONLY
+def test_1_list_in_a_folder_we_may_not_write_full_disk(shared_folder):
+    """nobody may write the list but not its folder (no temporary file there): rewritten in place."""
+    target = shared_folder / "achsmds1.lis"
+    target.write_bytes(MESSY)
+    os.chown(target, NOBODY, NOBODY)
+    code, printed = _as_nobody(shared_folder, len(MESSY), "fmt", "achsmds1.lis")
+    assert target.read_bytes() == MESSY
+    assert code == 2, printed
+    assert "put back" in printed
+
+
+@AS_ROOT_ONLY
+def test_1_list_whose_owner_cannot_be_kept_full_disk(shared_folder):
+    """nobody may write root's list (mode 666) and the folder, but cannot give a new file root's owner:
+    the temporary file fills the disk first, or else the list is rewritten in place; either way the
+    list is as it was, root's, and no temporary file is left."""
+    shared_folder.chmod(0o777)
+    target = shared_folder / "achsmds1.lis"
+    target.write_bytes(MESSY)
+    target.chmod(0o666)
+    code, printed = _as_nobody(shared_folder, len(MESSY), "fmt", "achsmds1.lis")
+    assert target.read_bytes() == MESSY
+    assert os.stat(target).st_uid == 0
+    assert _no_temporaries(shared_folder) == []
+    assert code == 2, printed
+    assert "the list is unchanged" in printed
+
+
+def test_1_a_failed_restore_is_said_plainly(tmp_path, monkeypatch):
+    """When even the old bytes cannot go back, the message says so and what to do."""
+    target = tmp_path / "achsmds1.lis"
+    target.write_bytes(MESSY)
+    os.link(target, tmp_path / "copy.lis")
+    calls = []
+
+    def failing(fd: int, data: bytes, offset: int) -> int:
+        calls.append(offset)
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(files.os, "pwrite", failing)
+    with pytest.raises(WriteFailed) as caught:
+        write_atomically(target, MESSY + b"more", expected=MESSY)
+    assert "no space left" in str(caught.value).lower() or "No space" in str(caught.value)
+    assert "version control or a backup" in str(caught.value)
+    assert len(calls) == 2  # the write, then the attempt to put the old bytes back
+
+
+# -- 2. -o/--output-file naming an input --------------------------------------------------------------
+
+
+def _list(folder: Path, name: str = "achsmds1.lis") -> Path:
+    path = folder / name
+    path.write_bytes(b"kopf.achs_nr  1\nkopf.unbekannt  5\nEnde\n")
+    return path
+
+
+@pytest.mark.parametrize("how", ["same name", "other spelling", "symlink", "hard link"])
+def test_2_output_file_naming_an_input_is_a_usage_error(cli, tmp_path, monkeypatch, how):
+    monkeypatch.chdir(tmp_path)
+    target = _list(tmp_path)
+    before = target.read_bytes()
+    output = {
+        "same name": "achsmds1.lis",
+        "other spelling": "./sub/../achsmds1.lis",
+        "symlink": "link.lis",
+        "hard link": "hard.lis",
+    }[how]
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "link.lis").symlink_to(target)
+    os.link(target, tmp_path / "hard.lis")
+    done = cli("lint", "achsmds1.lis", "-o", output)
+    assert done.returncode == 2
+    assert b"--output-file" in done.stderr and b"achsmds1.lis" in done.stderr
+    assert target.read_bytes() == before
+
+
+def test_2_output_file_over_a_list_found_in_a_folder(cli, tmp_path, monkeypatch):
+    """The input is not named but found in the named folder, or through the start-up list."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "machine").mkdir()
+    target = _list(tmp_path / "machine")
+    before = target.read_bytes()
+    done = cli("lint", "machine", "--fix", "-o", "machine/achsmds1.lis")
+    assert done.returncode == 2
+    assert b"--output-file" in done.stderr
+    assert target.read_bytes() == before  # neither fixed nor overwritten: refused before anything ran
+
+
+def test_2_output_file_over_an_axis_list_of_a_startup_list(cli, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "listen").mkdir()
+    axis = _list(tmp_path / "listen")
+    before = axis.read_bytes()
+    (tmp_path / "listen" / "hochlauf.lis").write_bytes(b"achs_mds[0]  ./listen/achsmds1.lis\nEnde\n")
+    done = cli("lint", "listen/hochlauf.lis", "-o", "listen/achsmds1.lis")
+    assert done.returncode == 2
+    assert b"--output-file" in done.stderr
+    assert axis.read_bytes() == before
+
+
+def test_2_output_file_beside_the_inputs_is_written(cli, tmp_path, monkeypatch):
+    """The ordinary use stays: a report next to the lists (even an old report of the same name)."""
+    monkeypatch.chdir(tmp_path)
+    _list(tmp_path)
+    (tmp_path / "report.txt").write_text("old report\n")
+    done = cli("lint", ".", "-o", "report.txt", "--format", "concise")
+    assert done.returncode == 0  # LIS101 is a warning
+    assert "LIS101" in (tmp_path / "report.txt").read_text()
+
+
+def test_2_dry_run_plot_over_its_list_is_a_usage_error(cli, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    target = _list(tmp_path, "achsmds1.svg")
+    before = target.read_bytes()
+    done = cli("dry-run", "achsmds1.svg", "--plot", "achsmds1.svg")
+    assert done.returncode == 2
+    assert target.read_bytes() == before
+
+
+def test_write_failed_is_an_os_error_with_the_cause():
+    failure = WriteFailed(Path("a.lis"), OSError(27, "File too large"), UNCHANGED)
+    assert isinstance(failure, OSError) and failure.errno == 27
+    assert str(failure) == f"cannot write a.lis: File too large; {UNCHANGED}"
