@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections import Counter
 
 import pytest
 from hypothesis import given, settings
@@ -109,6 +110,104 @@ def test_zero_pulse_only_and_one_phase():
     assert any(w["code"] == "LIS402" for w in one_phase.warnings)  # started on the cam
 
 
+# --- one-phase homing on the cam and the zero pulse (TF5200 homing §2.3.3.2, §2.6, P-AXIS-00494) ------------
+# The zero-pulse logic is armed where the cam is detected (plus shift_offset_zero_pulse_activation), whatever
+# the speed: the first pulse after that point is the reference, also while the axis brakes after the cam.
+# AXIS, one phase: cam edge -100 reached at 100 mm/s, detected at t = 0.2 + 90/100 = 1.1 s (a whole cycle,
+# so exactly at -100); braking at 500 mm/s² takes 100/500 = 0.2 s and 100²/1000 = 10 mm: standstill at -110
+# at 1.3 s. While braking from the cam, x = -100 - (100 τ - 250 τ²) and v = 100 - 500 τ (τ after 1.1 s).
+ONE_PHASE = "kenngr.ref_ohne_rev 1\n"
+
+
+def event_at(trace, prefix):
+    return next(e for e in trace.events if e.kind.startswith(prefix))
+
+
+def test_one_phase_takes_the_pulse_passed_while_braking():
+    trace = run(ONE_PHASE)
+    # Armed at -100; the first pulse after it is -102.5, 2.5 mm into the braking: v² = 100² - 2·500·2.5 = 7500,
+    # v = 86.6025 mm/s, τ = (100 - 86.6025)/500 = 0.0267949 s. The axis brakes on to -110 (1.3 s): it stands
+    # 7.5 mm beyond the reference, so the final position is -950 - 7.5 = -957.5. No second phase is needed.
+    assert [p.name for p in trace.phases] == ["to the reference cam"]
+    assert "zero pulse was detected while braking" in trace.phases[0].ended_by
+    armed = event_at(trace, "cam reached, zero-pulse logic armed")
+    assert approx(armed.position, -100.0) and approx(armed.time, 1.1)
+    assert trace.reference["kind"] == "zero pulse" and approx(trace.reference["position"], -102.5)
+    assert approx(trace.reference["speed"], math.sqrt(7500))
+    assert approx(trace.events[-1].time, 1.1 + (100 - math.sqrt(7500)) / 500)
+    assert approx(trace.phases[0].end_position, -110.0) and approx(trace.phases[0].end_time, 1.3)
+    assert approx(trace.final_position, -957.5)
+
+
+def test_one_phase_with_a_shift_arms_the_logic_past_the_cam_edge():
+    trace = run(ONE_PHASE + "kenngr.shift_offset_zero_pulse_activation 30000\n")
+    # Shift 3 mm (30000 × 0.1 µm): armed at -100 - 3 = -103, passed while braking: v² = 10000 - 1000·3 = 7000,
+    # τ = (100 - 83.666)/500 = 0.032668 s. The pulse -102.5 lies before it; the next, -107.5, 7.5 mm after the
+    # cam: v² = 10000 - 7500 = 2500, v = 50 mm/s at τ = 0.1 s (t = 1.2 s). Stands at -110: final -950 - 2.5.
+    cam = event_at(trace, "cam reached")
+    assert cam.kind == "cam reached" and approx(cam.position, -100.0) and approx(cam.time, 1.1)
+    armed = event_at(trace, "zero-pulse logic armed")
+    assert approx(armed.position, -103.0) and approx(armed.time, 1.1 + (100 - math.sqrt(7000)) / 500)
+    assert approx(trace.reference["position"], -107.5) and approx(trace.reference["speed"], 50.0)
+    assert approx(trace.events[-1].time, 1.2)
+    assert approx(trace.final_position, -952.5)
+    assert [e.kind for e in trace.events] == [cam.kind, armed.kind, "zero pulse"]
+
+
+def test_one_phase_without_latch_samples_the_pulse_while_braking():
+    trace = run(ONE_PHASE, hardware_latch=False)
+    # The pulse -102.5 is crossed at 1.1267949 s and seen at the next cycle, 1.127 s (τ = 0.027 s):
+    # x = -100 - (100·0.027 - 250·0.027²) = -102.51775, v = 100 - 500·0.027 = 86.5 mm/s (error ≤ v·T).
+    assert approx(trace.reference["position"], -102.51775)
+    assert approx(trace.reference["speed"], 86.5) and approx(trace.events[-1].time, 1.127)
+    assert approx(trace.final_position, -950.0 + (-110.0 + 102.51775))
+
+
+def test_one_phase_armed_beyond_the_standstill_searches_on_at_vb_reflow():
+    trace = run(ONE_PHASE + "kenngr.shift_offset_zero_pulse_activation 120000\n")
+    # Shift 12 mm: armed at -112, beyond the standstill at -110. Phase 2 starts there at 10 mm/s (ramp 0.02 s,
+    # 0.1 mm): it passes -112 after 0.02 + 1.9/10 = 0.21 s (1.51 s) and reaches the next pulse -112.5 after
+    # 0.02 + 2.4/10 = 0.26 s (1.56 s), then brakes 0.1 mm to -112.6 (1.58 s).
+    assert [p.name for p in trace.phases] == ["to the reference cam", "on to the reference"]
+    armed = event_at(trace, "zero-pulse logic armed")
+    assert approx(armed.position, -112.0) and approx(armed.time, 1.51)
+    assert approx(trace.reference["position"], -112.5) and approx(trace.events[-1].time, 1.56)
+    assert approx(trace.phases[-1].end_position, -112.6) and approx(trace.phases[-1].end_time, 1.58)
+    assert approx(trace.final_position, -950.1)
+
+
+def test_one_phase_pulse_after_the_standstill():
+    trace = run(ONE_PHASE, zero_pulse_period=20.0, zero_pulse_phase=-112.0)
+    # Pulses every 20 mm at -112: the first after the arming point -100 lies 2 mm past the standstill at -110.
+    # Phase 2 from -110 at 10 mm/s reaches it after 0.02 + 1.9/10 = 0.21 s (1.51 s) and stands 0.1 mm beyond.
+    assert approx(trace.reference["position"], -112.0) and approx(trace.events[-1].time, 1.51)
+    assert approx(trace.reference["speed"], 10.0) and approx(trace.final_position, -950.1)
+
+
+def test_one_phase_search_limit_reached_while_braking():
+    trace = run(ONE_PHASE + "lr_hw[0].zero_pulse_search_max_dist 10000\n")
+    # 1 mm of search from the arming point -100, but the pulse -102.5 is 2.5 mm away: the limit (-101) is
+    # passed while braking, homing fails and the axis stands at -110.
+    assert trace.outcome == "failed" and trace.reference is None
+    assert "zero_pulse_search_max_dist" in trace.phases[-1].ended_by
+    assert approx(trace.phases[-1].end_position, -110.0)
+
+
+def test_explain_and_dry_run_agree_on_where_one_phase_homing_arms_the_logic():
+    from achslint.explain import explain_list
+
+    text = (AXIS + ONE_PHASE + "kenngr.shift_offset_zero_pulse_activation 30000\nEnde\n").encode()
+    phases = explain_list(text, "axis.lis")["phases"]
+    # explain: the logic is armed 3 mm after the cam edge, and a pulse passed while braking is the reference;
+    # the dry-run arms it 3 mm after the cam was detected (-100) and takes the pulse -107.5 while braking.
+    assert "the zero-pulse logic is armed 3 mm after the cam edge" in phases[0]["ends_when"]
+    assert "passed while the axis still brakes after the cam is the reference" in phases[1]["ends_when"]
+    trace = run(ONE_PHASE + "kenngr.shift_offset_zero_pulse_activation 30000\n")
+    assert approx(event_at(trace, "cam reached").position, -100.0)
+    assert approx(event_at(trace, "zero-pulse logic armed").position, -103.0)
+    assert len(trace.phases) == 1 and "while braking" in trace.phases[0].ended_by
+
+
 def test_missed_cam_fails_cleanly_at_the_limit_switch():
     trace = run(start_position=-200.0)  # behind the cam in the homing direction
     assert trace.outcome == "failed"
@@ -184,6 +283,50 @@ def test_lis405_zero_pulse_close_to_the_cam_edge():
     # is reached with a shift of 0.005 - 2.5 + 5 = 2.505 mm = 25050 × 0.1 µm.
     assert "25050" in warning["message"]
     assert not any(w["code"] == "LIS405" for w in run().warnings)
+
+
+def test_sweep_of_one_phase_homing_counts_the_jumps_an_independent_model_predicts():
+    # One phase (§2.3.3.2), latched pulses every 4 mm at -100.07: 0.07 mm after the cam edge -100. The cam is
+    # approached at 100 mm/s and sampled every 1 ms, so the logic is armed between -100 and -100.1 depending on
+    # the start: beyond -100.07 the pulse is missed and the next one, 4 mm on, is taken.
+    import random
+
+    scene = dict(
+        zero_pulse_period=4.0, zero_pulse_phase=-100.07, cam_jitter=0.0, limit_switches=(-200.0, 200.0)
+    )
+    simulator = prepare(
+        (AXIS + ONE_PHASE + "Ende\n").encode(), "axis.lis", ScenarioInput(**{**SCENE, **scene})
+    )
+    summary = sweep(simulator, 400, seed=11)
+
+    # The independent model, closed form: from rest at x, accelerate at 500 mm/s² to 100 mm/s (0.2 s, 10 mm),
+    # reach the edge after D = x + 100 mm, see it at the next whole millisecond, arm there; the reference is
+    # the first pulse -100.07 - 4k at or beyond the arming point. Starting on the cam the logic is armed at the
+    # start; below the cam the axis runs into the limit switch. The sweep draws its starts uniformly between
+    # the limit switches with random.Random(seed) and, without cam jitter, nothing else.
+    def expected_reference(x):
+        if x < -120.0:
+            return None
+        arm = x
+        if x > -100.0:
+            distance = x + 100.0
+            t = math.sqrt(distance / 250.0) if distance <= 10.0 else 0.2 + (distance - 10.0) / 100.0
+            seen = math.ceil(t / 0.001 - 1e-9) * 0.001
+            travelled = 250.0 * seen**2 if seen <= 0.2 else 10.0 + 100.0 * (seen - 0.2)
+            arm = x - travelled
+        return -100.07 - 4.0 * math.ceil((-100.07 - arm) / 4.0 - 1e-12)
+
+    rng = random.Random(11)
+    starts = [rng.uniform(-200.0, 200.0) for _ in range(400)]
+    references = [r for r in map(expected_reference, starts) if r is not None]
+    pulses = Counter(round((reference + 100.07) / 4.0) for reference in references)
+    assert summary["outcomes"]["homed"] == len(references)
+    assert summary["distinct_pulses"] == len(pulses)
+    assert summary["one_revolution_jumps"] == len(references) - max(pulses.values())
+    # Starts before the cam take -100.07 or, armed past it, -104.07; both occur in this sweep.
+    before_cam = Counter(round(expected_reference(x), 6) for x in starts if x > -100.0)
+    assert set(before_cam) == {-100.07, -104.07}
+    assert summary["reference_max"] == pytest.approx(-100.07)
 
 
 def test_sweep_reports_one_revolution_jumps():
@@ -279,8 +422,11 @@ def test_trace_properties(start, ref_richt, without_pulse, one_phase, fast, slow
     if trace.outcome == "homed":
         # The final position is the reference value plus the braking distance from the speed at the
         # reference event (the referencing speed, or less when the event comes during the acceleration).
-        # One-phase homing on the cam edge takes it at the approach speed vb_refmax.
-        reference_speed = fast if trace.strategy.definition.reference_speed == "vb_refmax" else slow
+        # One-phase homing on the cam edge takes it at the approach speed vb_refmax; one-phase homing on the
+        # zero pulse takes a pulse passed while braking from vb_refmax after the cam (§2.6), so up to vb_refmax.
+        one_phase_pulse = trace.strategy.id == "one_phase_cam_zero_pulse"
+        fastest = one_phase_pulse or trace.strategy.definition.reference_speed == "vb_refmax"
+        reference_speed = max(fast, slow) if fastest else slow
         speed = trace.reference["speed"]
         assert speed <= reference_speed * 1e-3 + 1e-12
         braking = speed * speed / (2 * accel)

@@ -35,6 +35,7 @@ if TYPE_CHECKING:
     from .scenario_input import DriveInput, SearchInput
 
 INF = math.inf
+ZERO_SEARCH_EXCEEDED = "zero_pulse_search_max_dist exceeded (maximum search distance)"
 __all__ = ["POSITION", "VELOCITY", "Simulator", "Trace"]
 
 # Where the cam signal is active: is(x) active, and the distance from x in direction s to where it
@@ -292,7 +293,7 @@ class Simulator:
             room = self.total_max - s * (x - self.start)
             bounds.append((max(room, 0.0), "homing_max_movement_dist exceeded (P-ERR-70394)"))
         if extra < INF:
-            bounds.append((extra, "zero_pulse_search_max_dist exceeded (maximum search distance)"))
+            bounds.append((max(extra, 0.0), ZERO_SEARCH_EXCEEDED))
         if not bounds:
             span = self.revolution * self.HORIZON_REVOLUTIONS if self.modulo else 1e7
             turns = f"{self.HORIZON_REVOLUTIONS} revolutions" if self.modulo else f"{span:g} {self.unit}"
@@ -517,15 +518,7 @@ class Simulator:
             before,
         )
         if cam_distance <= abs(x_end - x) or x_ref is not None:
-            trace.events.append(
-                Event(
-                    t + t_cam,
-                    x_cam,
-                    "cam edge detected, zero-pulse logic armed"
-                    if not self.shift
-                    else f"cam edge detected, zero-pulse logic armed {self.shift:g} {self.unit} later",
-                )
-            )
+            self._arming_events(trace, "cam edge detected", t + t_cam, x_cam, s)
         if x_ref is not None:
             t_ref = trace.phases[-1].segments[-1].t0
             self._reference(trace, event, x_ref, t_ref, self.refpkt, x_end)
@@ -620,24 +613,132 @@ class Simulator:
             return self._reference_search(
                 trace, "to the cam and reference", x, 0.0, s, self.fast, entry(x, s), 0.0
             )
-        t, travelled = 0.0, 0.0
-        if not active(x):
-            x_end, t, reached = self._edge_move(
-                trace,
-                "to the reference cam",
-                x,
-                t,
-                s,
-                self.fast,
-                entry(x, s),
-                "the cam was reached (sampled each cycle)",
-                "cam reached",
-                travelled,
+        if active(x):  # on the cam already (LIS402): the logic is armed where the axis stands
+            return self._reference_search(trace, "on to the reference", x, 0.0, s, self.slow, 0.0, 0.0)
+        return self._one_phase_zero_pulse(trace, x, s, entry(x, s))
+
+    def _one_phase_zero_pulse(self, trace: Trace, x: float, s: int, cam_distance: float) -> Trace:
+        """One-phase homing on the cam and the zero pulse (§2.3.3.2) from a start off the cam.
+
+        The cam is approached at vb_refmax and its edge sampled each cycle. The zero-pulse logic is armed at
+        that point, or shift_offset_zero_pulse_activation further on (§2.6: enabled as soon as the cam is
+        operated), whatever the axis does there: the first pulse after the arming point is the reference.
+        After the cam the axis brakes to a stop; a pulse passed while braking ends homing there (the axis is
+        already braking). Otherwise it searches on at vb_reflow, from where it stopped, and brakes after the
+        pulse. zero_pulse_search_max_dist counts from the arming point."""
+        x_stop, t_stop, reached = self._edge_move(
+            trace,
+            "to the reference cam",
+            x,
+            0.0,
+            s,
+            self.fast,
+            cam_distance,
+            "the cam was reached (sampled each cycle)",
+            "cam reached" if self.shift else "cam reached, zero-pulse logic armed",
+            0.0,
+        )
+        if not reached:
+            return trace
+        cam = trace.events[-1]
+        armed = cam.position + s * self.shift
+        pulse = armed + s * self._next_pulse(armed, s)
+        event = "encoder overflow" if self.overflow else "zero pulse"
+        latched = self.scenario.hardware_latch or self.overflow
+        search_max = self.zero_search_max if self.zero_search_max > 0 else INF
+        found = s * (pulse - armed) <= search_max
+        stop_at = pulse if found else armed + s * search_max  # where the search ends: pulse or search limit
+        if s * (x_stop - stop_at) >= 0:  # passed while braking after the cam
+            if self.shift:
+                self._arming_events(trace, "", cam.time, cam.position, s)
+            return self._end_while_braking(trace, stop_at, found, latched, event, s)
+        x_end, _t_end, x_ref = self._move(
+            trace,
+            "on to the reference",
+            x_stop,
+            t_stop,
+            s,
+            self.slow,
+            s * (pulse - x_stop),
+            latched,
+            f"the {event} was detected" + ("" if latched else " (sampled each cycle)"),
+            abs(x_stop - x),
+            search_max,
+            s * (armed - x_stop),
+        )
+        if self.shift:
+            self._arming_events(trace, "", cam.time, cam.position, s)
+        if x_ref is not None:
+            self._reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, self.refpkt, x_end)
+        return trace
+
+    def _end_while_braking(
+        self, trace: Trace, point: float, found: bool, latched: bool, event: str, s: int
+    ) -> Trace:
+        """The search ends at `point` while the axis brakes after the cam: at the reference event (`found`) or
+        at the search limit. The braking segment is split there, so the reference's speed is the speed then."""
+        phase = trace.phases[-1]
+        t_pass = self._passing_time(trace, point, s, phase.segments[-1].t0)
+        if t_pass is None:  # pragma: no cover - the point lies within the braking travel
+            raise AssertionError("a point within the braking travel is passed")
+        if not found:
+            phase.ended_by = ZERO_SEARCH_EXCEEDED
+            trace.outcome = "failed"
+            trace.failure = (
+                f"{phase.name}: {ZERO_SEARCH_EXCEEDED} while braking after the cam, before the {event}"
             )
-            if not reached:
-                return trace
-            travelled, x = abs(x_end - x), x_end
-        return self._reference_search(trace, "on to the reference", x, t, s, self.slow, 0.0, travelled)
+            return trace
+        t_detect = t_pass
+        if not latched:
+            cycle = self.scenario.cycle_time
+            t_detect = min(max(math.ceil(t_pass / cycle - 1e-9) * cycle, t_pass), phase.end_time)
+        braking = phase.segments.pop()
+        x_detect, v_detect = braking.position(t_detect), braking.velocity(t_detect)
+        phase.segments += [
+            Segment(braking.t0, t_detect, braking.x0, braking.v0, braking.a),
+            Segment(t_detect, braking.t1, x_detect, v_detect, braking.a),
+        ]
+        phase.ended_by = f"{phase.ended_by}; the {event} was detected while braking"
+        self._reference(trace, event, x_detect, t_detect, self.refpkt, phase.end_position)
+        return trace
+
+    @staticmethod
+    def _passing_time(trace: Trace, position: float, s: int, after: float) -> float | None:
+        """When the axis, moving in direction s from time `after` on, first reaches `position`; None if never.
+
+        Solves x(t) = position segment by segment: with u = s·v0, b = s·a and the gap g = s·(position - x0),
+        b/2·τ² + u·τ = g gives τ = 2g / (u + sqrt(u² + 2bg)), the form that stays exact for b = 0."""
+        for phase in trace.phases:
+            for segment in phase.segments:
+                if segment.t1 < after:
+                    continue
+                t0 = max(segment.t0, after)
+                gap = s * (position - segment.position(t0))
+                if gap <= 0:
+                    return t0
+                u, b, span = s * segment.velocity(t0), s * segment.a, segment.t1 - t0
+                if u * span + 0.5 * b * span * span < gap - 1e-12:
+                    continue
+                root = math.sqrt(max(u * u + 2 * b * gap, 0.0))
+                return t0 + min(2 * gap / (u + root), span)
+        return None
+
+    def _arming_events(self, trace: Trace, cam_kind: str, t_cam: float, x_cam: float, s: int) -> None:
+        """The events of the zero-pulse logic (§2.6): where the cam was operated and where the logic was armed.
+
+        Without shift_offset_zero_pulse_activation both are one point (`cam_kind`, zero-pulse logic armed);
+        with it the arming point follows the shift later, as its own event once the axis has passed it.
+        An empty `cam_kind` adds only the arming event (the cam event is already in the trace)."""
+        if not self.shift:
+            trace.events.append(Event(t_cam, x_cam, f"{cam_kind}, zero-pulse logic armed"))
+            return
+        if cam_kind:
+            trace.events.append(Event(t_cam, x_cam, cam_kind))
+        armed = x_cam + s * self.shift
+        t_armed = self._passing_time(trace, armed, s, t_cam)
+        if t_armed is not None:
+            kind = f"zero-pulse logic armed ({self.shift:g} {self.unit} after the cam edge, P-AXIS-00494)"
+            trace.events.append(Event(t_armed, armed, kind))
 
     def flying(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         """Flying homing of a spindle (§2.3.2.1): no reversal and no stop.
@@ -713,12 +814,7 @@ class Simulator:
         return trace
 
     def _edge_event(self, trace: Trace, t: float, position: float) -> None:
-        armed = (
-            "cam left, zero-pulse logic armed"
-            if not self.shift
-            else f"cam left, zero-pulse logic armed {self.shift:g} {self.unit} later"
-        )
-        trace.events.append(Event(t, position, armed))
+        self._arming_events(trace, "cam left", t, position, self.direction)
 
     def _flying_abort(
         self,

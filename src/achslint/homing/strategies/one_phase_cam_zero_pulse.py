@@ -20,13 +20,19 @@ _SPEEDS = (
 
 def _phases(setup: HomingSetup) -> list[Phase]:
     way = _sequence.direction(setup)
+    armed = (
+        f"{setup.shift:g} {setup.unit} after the cam edge (shift_offset_zero_pulse_activation, P-AXIS-00494)"
+        if setup.shift
+        else "at the cam edge"
+    )
+    event = _sequence.reference_event(setup).replace("the next ", "the first ")
     return [
         Phase(
             "to the reference cam",
             way,
             setup.stage("vb_refmax"),
             setup.speed("vb_refmax"),
-            "the cam is reached",
+            f"the cam is reached; the zero-pulse logic is armed {armed}, whatever the speed (§2.6)",
             _SPEEDS,
         ),
         Phase(
@@ -34,7 +40,8 @@ def _phases(setup: HomingSetup) -> list[Phase]:
             way,
             setup.stage("vb_reflow"),
             setup.speed("vb_reflow"),
-            f"{_sequence.reference_event(setup)} after the cam edge is detected (no reversal)",
+            f"{event} after the arming point is detected (no reversal). One passed while the axis still brakes "
+            "after the cam is the reference too: homing then ends with that braking, without this phase",
         ),
     ]
 
@@ -45,8 +52,9 @@ STRATEGY = StrategyDef(
     controlled_by="cnc",
     matches=lambda axis: bool(axis.get("kenngr.ref_ohne_rev")) and _zero_pulse(axis),
     describe=lambda axis: (
-        "Homing without reversal: the axis moves in the homing direction to the cam and references on the next "
-        "zero pulse after it. It must not start on the cam, which the PLC has to ensure (§2.3.3.2)."
+        "Homing without reversal: the axis moves in the homing direction to the cam, where the zero-pulse logic "
+        "is armed (§2.6), and references on the first zero pulse after that point, even while it brakes after "
+        "the cam. It must not start on the cam, which the PLC has to ensure (§2.3.3.2)."
     ),
     parameters={
         **SEQUENCE,
