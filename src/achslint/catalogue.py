@@ -16,6 +16,7 @@ from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Any
 
+from .closest import close_matches
 from .numbers import NumberProblem, parse_reference
 from .syntax import path_pattern
 
@@ -310,7 +311,7 @@ class Catalogue:
         # long as every known one cannot reach 0.6 (difflib's ratio is at most 2*short/(short+long)), so a
         # pathological name is not indexed for nothing.
         too_long = 3 * len(pattern) > 7 * self._longest
-        loose = [] if too_long else difflib.get_close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
+        loose = [] if too_long else close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
         close = [c for c in loose if difflib.SequenceMatcher(None, c, pattern).ratio() >= 0.75]
         if close:
             return close
