@@ -112,6 +112,25 @@ def test_flying_homing_with_a_shifted_activation_takes_the_pulse_after_the_shift
     assert short.outcome == "failed" and "zero_pulse_search_max_dist" in short.failure
 
 
+def test_flying_homing_arming_event_and_lis405_on_a_spindle():
+    # Cam left at 280.008° (as above), shift 10° (100000 × 0.0001°): the logic is armed at 290.008°, passed at
+    # t = 0.1 + (290.008 - 1.8)/36 = 8.1058 s. Events give both positions (§2.6).
+    trace = spindle("kenngr.shift_offset_zero_pulse_activation 100000\n", start_position=0.0)
+    left, armed = (e for e in trace.events if e.kind.startswith(("cam left", "zero-pulse logic armed")))
+    assert left.kind == "cam left" and approx(left.position, 280.008, 1e-6)
+    assert approx(armed.position, 290.008, 1e-6) and approx(armed.time, 0.1 + 288.208 / 36, 1e-6)
+    # A pulse 0.012° after the arming point 280.008 with a cam jitter of 0.05°: margin 36 °/s × 1 ms + 0.05 =
+    # 0.086° (LIS405). The shift of half a revolution, 180.012°, moves the reference by one pulse period, 360°:
+    # the same angle on a spindle, so pos_refpkt stays.
+    message = next(
+        w["message"]
+        for w in spindle(start_position=0.0, zero_pulse_phase=280.02, cam_jitter=0.05).warnings
+        if w["code"] == "LIS405"
+    )
+    assert "0.012 deg after" in message and "to about 1800120" in message
+    assert "whole revolutions only, to the same position within [0, 360) deg" in message
+
+
 def test_spindle_against_its_preferred_direction_is_refused_like_lint():
     body = (SPINDLE + "kenngr.vorz_richtung 1\nkenngr.beweg_richt 0\nEnde\n").encode()  # restricted, negative
     with pytest.raises(DryRunRefused, match="LIS319"):
@@ -239,6 +258,11 @@ def test_zero_pulse_search_counts_from_the_activation_point():
     shift = "kenngr.shift_offset_zero_pulse_activation 30000\n"
     homed = linear(shift + "lr_hw[0].zero_pulse_search_max_dist 50000\n")  # 5 mm >= 4.5 mm
     assert homed.outcome == "homed" and approx(homed.reference["position"], -107.5)
+    # The events give both points as positions (§2.6): the cam edge -100 at 2.71 s (phase 3 from -90 at
+    # 10 mm/s: 0.02 + 9.9/10 = 1.01 s after 1.7 s) and the arming point -103, 3 mm (0.3 s) later.
+    edge, armed = (e for e in homed.events if e.kind.startswith(("cam edge", "zero-pulse logic armed")))
+    assert edge.kind == "cam edge detected" and approx(edge.position, -100.0) and approx(edge.time, 2.71)
+    assert approx(armed.position, -103.0) and approx(armed.time, 3.01)
     failed = linear(shift + "lr_hw[0].zero_pulse_search_max_dist 40000\n")  # 4 mm < 4.5 mm
     assert failed.outcome == "failed" and "zero_pulse_search_max_dist" in failed.phases[-1].ended_by
 

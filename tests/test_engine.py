@@ -285,6 +285,39 @@ def test_lis405_zero_pulse_close_to_the_cam_edge():
     assert not any(w["code"] == "LIS405" for w in run().warnings)
 
 
+def lis405(trace):
+    return next((w["message"] for w in trace.warnings if w["code"] == "LIS405"), None)
+
+
+def test_lis405_in_one_phase_homing_as_in_three_phase_homing():
+    # Pulses every 4 mm at -100.01: 0.01 mm after the cam edge -100 where the logic is armed (§2.6), well
+    # within the cam jitter (0.02 mm). Three phases: margin 10 mm/s × 1 ms + 0.02 = 0.03 mm. One phase takes
+    # the cam at vb_refmax: margin 100 mm/s × 1 ms + 0.02 = 0.12 mm. Both warn.
+    scene = dict(zero_pulse_period=4.0, zero_pulse_phase=-100.01, cam_jitter=0.02)
+    three = lis405(run(**scene))
+    one = lis405(run(ONE_PHASE, **scene))
+    assert three is not None and one is not None
+    assert "0.01 mm after" in one and "0.12 mm" in one and "0.03 mm" in three
+    # The shift that puts the pulse half a revolution away: 0.01 - 2 + 4 = 2.01 mm = 20100 × 0.1 µm. Armed at
+    # -102.01, the logic then takes -104.01 instead of -100.01: the reference moves 4 mm (one pulse period) in
+    # the homing direction, so pos_refpkt -950 mm must become -954 mm = -9540000 × 0.1 µm.
+    for message in (one, three):
+        assert "to about 20100 (= 2.01 mm)" in message
+        assert "4 mm (one zero-pulse period) in the homing direction" in message
+        assert "getriebe[0].pos_refpkt by -4 mm, to about -9540000" in message
+    shifted = run(ONE_PHASE + "kenngr.shift_offset_zero_pulse_activation 20100\n", **scene)
+    assert lis405(shifted) is None and approx(shifted.reference["position"], -104.01)
+
+
+def test_lis405_pulse_just_before_the_arming_point_keeps_the_reference():
+    # A pulse 0.01 mm before the arming point (-99.99): the logic takes the next one, -103.99 (3.99 mm on),
+    # unless the jitter arms it early. Shift (3.99 - 2) mod 4 = 1.99 mm -> armed at -101.99, still -103.99:
+    # the reference does not move and pos_refpkt stays.
+    message = lis405(run(ONE_PHASE, zero_pulse_period=4.0, zero_pulse_phase=-99.99, cam_jitter=0.02))
+    assert message is not None and "0.01 mm before" in message and "to about 19900" in message
+    assert "the reference stays on the same zero pulse" in message and "pos_refpkt keeps its value" in message
+
+
 def test_sweep_of_one_phase_homing_counts_the_jumps_an_independent_model_predicts():
     # One phase (§2.3.3.2), latched pulses every 4 mm at -100.07: 0.07 mm after the cam edge -100. The cam is
     # approached at 100 mm/s and sampled every 1 ms, so the logic is armed between -100 and -100.1 depending on

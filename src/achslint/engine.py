@@ -525,20 +525,56 @@ class Simulator:
         return trace
 
     def _check_pulse_margin(self, trace: Trace, activation: float, s: int, speed: float) -> None:
-        """LIS405: the pulse after the activation point is so close that cam jitter can skip it."""
+        """LIS405: a zero pulse so close to the arming point that the cam's spread can put it on either side.
+
+        The arming point moves with the cam edge: by the scenario's cam jitter and by the sampling of the edge,
+        one cycle at the speed the cam is crossed (vb_reflow in three phases, vb_refmax in one phase). The
+        message names the shift that puts the pulse half a revolution away, how far the reference moves with
+        it (whole pulse periods) and the pos_refpkt that keeps the axis's coordinates."""
         period, _ = self._pulse_lattice()
-        distance = self._next_pulse(activation, s)
+        ahead = self._next_pulse(activation, s)  # the pulse the logic takes
+        behind = period - ahead  # the pulse just before the arming point
         margin = speed * self.scenario.cycle_time + self.scenario.cam_jitter
-        if distance < margin or period - distance < margin:
-            current = self.shift
-            wanted = (current + distance - period / 2) % period
-            trace.warn(
-                "LIS405",
-                f"the zero pulse lies {distance:.4g} {self.unit} after the point where the zero-pulse logic is armed "
-                f"(one revolution = {period:g} {self.unit}); with cam jitter and sampling of {margin:.4g} {self.unit} the "
-                f"reference can jump by one encoder revolution. Set kenngr.shift_offset_zero_pulse_activation to "
-                f"about {round(wanted / POSITION)} (= {wanted:.4g} {self.unit}) to put the pulse half a revolution away",
+        if ahead >= margin and behind >= margin:
+            return
+        unit = self.unit
+        side = f"{ahead:.4g} {unit} after" if ahead < margin else f"{behind:.4g} {unit} before"
+        wanted = (self.shift + ahead - period / 2) % period
+        trace.warn(
+            "LIS405",
+            f"a zero pulse lies {side} the point where the zero-pulse logic is armed (one encoder revolution = "
+            f"{period:g} {unit}); the cam jitter and the sampling of the cam edge ({margin:.4g} {unit}) can arm it "
+            f"on either side, so the reference can jump by one revolution. Set "
+            f"kenngr.shift_offset_zero_pulse_activation to about {round(wanted / POSITION)} (= {wanted:.4g} {unit}) "
+            f"to put the pulse half a revolution away; {self._reference_moves(wanted, ahead, period, s)}",
+        )
+
+    def _reference_moves(self, wanted: float, ahead: float, period: float, s: int) -> str:
+        """What the shift `wanted` does to the reference: the logic armed at (wanted - shift) further on takes
+        the pulse half a period after it, so the reference moves by wanted - shift + period/2 - ahead along
+        the homing direction, a whole number of pulse periods; pos_refpkt must move with it."""
+        periods = round((wanted - self.shift + period / 2 - ahead) / period)
+        moved = s * periods * period  # in the scenario frame
+        if self.modulo:  # a whole revolution of a modulo axis is the same position
+            half = self.revolution / 2
+            moved = (moved + half) % self.revolution - half
+        if not periods:
+            return "the reference stays on the same zero pulse, so pos_refpkt keeps its value"
+        if self.modulo and abs(moved) < 1e-9 * period:
+            return (
+                f"the reference moves by whole revolutions only, to the same position within "
+                f"[{self.modulo[0]:g}, {self.modulo[1]:g}) {self.unit}, so pos_refpkt keeps its value"
             )
+        unit = self.unit
+        count = abs(periods)
+        how_many = "one zero-pulse period" if count == 1 else f"{count} zero-pulse periods"
+        way = "in" if periods > 0 else "against"
+        value = self.wrap(self.refpkt + moved)
+        return (
+            f"the reference then moves {abs(moved):.6g} {unit} ({how_many}) {way} the homing direction: correct "
+            f"getriebe[{self.strategy.gear}].pos_refpkt by {moved:+.6g} {unit}, to about "
+            f"{round(value / POSITION)} (= {value:.6g} {unit}), so the axis keeps its coordinates"
+        )
 
     def _with_cam(self, trace: Trace, x: float, lo: float, hi: float) -> Trace:
         s = self.direction
@@ -645,6 +681,8 @@ class Simulator:
         pulse = armed + s * self._next_pulse(armed, s)
         event = "encoder overflow" if self.overflow else "zero pulse"
         latched = self.scenario.hardware_latch or self.overflow
+        # The arming point inherits the cam's spread: its jitter and the sampling at the approach speed.
+        self._check_pulse_margin(trace, armed, s, self.fast)
         search_max = self.zero_search_max if self.zero_search_max > 0 else INF
         found = s * (pulse - armed) <= search_max
         stop_at = pulse if found else armed + s * search_max  # where the search ends: pulse or search limit

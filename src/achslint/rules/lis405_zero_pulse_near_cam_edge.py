@@ -2,19 +2,25 @@
 What
 ----
 The zero pulse that ends homing lies so close to the point where the CNC starts
-looking for it (the cam edge, moved by `kenngr.shift_offset_zero_pulse_activation`)
-that the spread of the cam switch and the sampling of one control cycle can put
-the activation on either side of the pulse. Only `achslint dry-run` reports this:
-it needs the machine's geometry (cam position, zero-pulse phase, cam jitter) from
-a scenario, which an axis list does not hold.
+looking for it that the spread of the cam switch and the sampling of one control
+cycle can put that point on either side of the pulse. The zero-pulse logic is
+armed where the cam edge is detected, moved on by
+`kenngr.shift_offset_zero_pulse_activation` (§2.6), in three-phase homing
+(taken at `vb_reflow`) and in one-phase homing (taken at the approach speed
+`vb_refmax`, so its sampling spread is larger) alike. Only `achslint dry-run`
+reports this: it needs the machine's geometry (cam position, zero-pulse phase,
+cam jitter) from a scenario, which an axis list does not hold.
 
 Why
 ---
-When the activation falls just behind the pulse, the CNC takes the next pulse one
+When the arming falls just behind the pulse, the CNC takes the next pulse one
 encoder revolution later: the machine's zero point then moves by a whole revolution
 (for example 5 mm on a 5 mm ball screw) from one homing to the next, without any
-message. Moving the activation point about half a revolution away from the pulse
-makes the choice of pulse insensitive to the cam's spread.
+message. Moving the arming point about half a revolution away from the pulse
+makes the choice of pulse insensitive to the cam's spread. That shift usually
+makes the CNC take a different pulse for good, typically the next one, one pulse
+period further: the message says by how much the reference moves, and
+`pos_refpkt` must move by the same amount so the axis keeps its coordinates.
 
 Example
 -------
@@ -44,6 +50,7 @@ getriebe[0].vb_refmax                      100000
 getriebe[0].vb_reflow                      10000
 getriebe[0].a_ref                          500
 kenngr.shift_offset_zero_pulse_activation  25050
+getriebe[0].pos_refpkt                     -50000
 ```
 ```
 # file: scenario.toml
@@ -55,13 +62,18 @@ cam_jitter = 0.02
 limit_switches = [-1010.0, 1010.0]
 ```
 The dry-run's message names the shift that puts the pulse half a revolution
-away (here 25050 × 0.1 µm = 2.505 mm).
+away (here 25050 × 0.1 µm = 2.505 mm). Armed there, the CNC takes the pulse at
+-105.005 instead of -100.005: the reference moves 5 mm in the (negative) homing
+direction, so `pos_refpkt` goes from 0 to -5 mm (-50000 × 0.1 µm) and the axis
+keeps its coordinates.
 
 Reference
 ---------
-TF5200 homing manual §2.3.1.3 (phase 3: zero pulse after leaving the cam) and P-AXIS-00494
-(`shift_offset_zero_pulse_activation`). The margin is the distance travelled in
-one control cycle at the search speed plus the scenario's `cam_jitter`.
+TF5200 homing manual §2.3.1.3 (phase 3: zero pulse after the cam edge), §2.3.3.2
+(one-phase homing) and §2.6 with P-AXIS-00494 (`shift_offset_zero_pulse_activation`:
+the zero-pulse logic is enabled as soon as the cam is operated, or that much
+later); P-AXIS-00152 (`pos_refpkt`). The margin is the distance travelled in one
+control cycle at the speed the cam is crossed plus the scenario's `cam_jitter`.
 """
 
 from __future__ import annotations
