@@ -203,8 +203,8 @@ def test_align_values_turns_a_right_aligned_list_left():
 @pytest.mark.parametrize(
     ("options", "message"),
     [
-        ({"value_column": 0}, "value-column must be a column number from 1 up, not 0"),
-        ({"comment_column": "40"}, "comment-column must be a column number from 1 up, not '40'"),
+        ({"value_column": 0}, "value-column must be a column number from 1 to 400, not 0"),
+        ({"comment_column": "40"}, "comment-column must be a column number from 1 to 400, not '40'"),
         ({"align_values": "center"}, 'align-values must be one of "left", "right", "keep", not \'center\''),
     ],
 )
@@ -333,7 +333,7 @@ def test_fmt_follows_the_fmt_table_of_the_nearest_configuration(cli, tmp_path):
             "value-colum = 30",
             "unknown key `fmt.value-colum` (known keys: align-values, comment-column, value-column)",
         ),
-        ("value-column = 0", "value-column must be a column number from 1 up, not 0"),
+        ("value-column = 0", "value-column must be a column number from 1 to 400, not 0"),
         ('align-values = "center"', "key `fmt.align-values`: Input should be 'left', 'right' or 'keep'"),
     ],
 )

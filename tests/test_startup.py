@@ -8,6 +8,8 @@ from pathlib import Path
 
 import pytest
 
+from achslint.config import forget_cached
+
 from .conftest import FIXTURES
 from .test_strictness import run_in
 
@@ -67,11 +69,21 @@ def test_cnc_root_option_and_setting(machine, tmp_path):
     assert len(lis504) == 4 and all(
         f"looked for `{wrong}/listen/" in m and "given by --cnc-root" in m for m in lis504
     )
-    (machine / "listen" / ".achslint.toml").write_text('cnc-root = ".."\n')  # relative to the config file
+    (machine / ".git").mkdir()  # the repository the configuration belongs to: cnc-root may point up to it
+    (machine / "listen" / ".achslint.toml").write_text('cnc-root = "../.."\n')  # relative to the config file
+    forget_cached()  # the first run saw no configuration in listen/
     result = run_in(
         tmp_path / "elsewhere", "lint", str(machine / "listen" / "hochlauf.lis"), "--format", "json"
     )
-    assert linted(result, machine)[1] == []
+    assert result.returncode == 2 and b"key `cnc-root`: '../..' lies outside" in result.stderr
+    (machine / "listen" / ".achslint.toml").write_text('cnc-root = ".."\n')
+    forget_cached()
+    result = run_in(
+        tmp_path / "elsewhere", "lint", str(machine / "listen" / "hochlauf.lis"), "--format", "json"
+    )
+    assert result.returncode == 0, result.stderr
+    names, lis504 = linted(result, machine)
+    assert lis504 == [] and "achsmds3.lis" in names
     assert run_in(machine, "lint", "listen/hochlauf.lis", "--cnc-root", "nowhere").returncode == 2
 
 
@@ -83,7 +95,8 @@ def test_cnc_root_extends_where_entries_may_be_read(tmp_path):
     (tmp_path / "listen" / "hochlauf.lis").rename(config / "hochlauf.lis")
     result = run_in(tmp_path, "lint", "config/hochlauf.lis", "--format", "json")
     _, lis504 = linted(result, tmp_path)
-    assert len(lis504) == 4 and all("outside the start-up list's folder" in m for m in lis504)
+    # the CNC root is the start-up list's folder (config/): the lists are not guessed from elsewhere
+    assert len(lis504) == 4 and all("does not exist" in m and "/config/listen/" in m for m in lis504)
     result = run_in(tmp_path, "lint", "config/hochlauf.lis", "--format", "json", "--cnc-root", ".")
     names, lis504 = linted(result, tmp_path)
     assert lis504 == [] and "achsmds3.lis" in names
@@ -120,18 +133,28 @@ def test_the_ext_schedule_variant_reads_the_lists_one_folder_up(tmp_path, where,
     assert "LIS501" in {d["code"] for d in json.loads(result.stdout)["diagnostics"]}
 
 
-def test_only_lists_in_the_folders_above_are_read_not_other_files(tmp_path):
+def test_entries_are_read_under_the_cnc_root_only(tmp_path):
+    """The CNC root of `listen/ExtSchedule/hochlauf.lis` is the folder above `listen/`: an entry below it is
+    read, whatever its name; one above it, or a symbolic link below it that leads out, is refused."""
     machine = tmp_path / "machine"
     shutil.copytree(EXT_SCHEDULE, machine)
-    (machine / "listen" / "notes.txt").write_text("kopf.achs_nr 9\nEnde\n")
     (machine / "listen" / "other").mkdir()
     (machine / "listen" / "other" / "achsmds9.lis").write_text("kopf.achs_nr 9\nEnde\n")
+    (tmp_path / "outside.lis").write_text("kopf.achs_nr 8\nkopf.SECRET 1\nEnde\n")
+    (machine / "listen" / "link.lis").symlink_to(tmp_path / "outside.lis")
     startup = machine / "listen" / "ExtSchedule" / "hochlauf.lis"
     startup.write_text(
         startup.read_text().replace(
-            "#\nEnde", "achs_mds[2] ./listen/notes.txt\nachs_mds[3] ./listen/other/achsmds9.lis\nEnde"
+            "#\nEnde",
+            "achs_mds[2] ./listen/other/achsmds9.lis\nachs_mds[3] ../outside.lis\n"
+            "achs_mds[4] ./listen/link.lis\nEnde",
         )
     )
     result = run_in(machine, "lint", "listen/ExtSchedule/hochlauf.lis", "--format", "json")
-    refused = [d["message"] for d in json.loads(result.stdout)["diagnostics"] if d["code"] == "LIS504"]
-    assert len(refused) == 2 and all("outside the start-up list's folder" in m for m in refused)
+    document = json.loads(result.stdout)
+    refused = [d["message"] for d in document["diagnostics"] if d["code"] == "LIS504"]
+    assert len(refused) == 2
+    assert "`../outside.lis`" in refused[0] and "lies outside the CNC root" in refused[0]
+    assert "`./listen/link.lis`" in refused[1] and "symbolic link that leads outside" in refused[1]
+    assert document["summary"]["files"] == 4  # achsmds1, achsmds2, other/achsmds9 and the start-up list (its LIS504)
+    assert b"SECRET" not in result.stdout + result.stderr

@@ -9,7 +9,16 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
-from .config import ConfigError, Overrides, ResolvedConfig, discover, load_file, matches_glob
+from .config import (
+    PROGRAM_SUFFIXES,
+    ConfigError,
+    Overrides,
+    ResolvedConfig,
+    discover,
+    load_file,
+    matches_glob,
+    named_path,
+)
 from .decode import UnreadableInput, decode
 from .diagnostics import Diagnostic, Severity
 from .files import (
@@ -219,7 +228,7 @@ class LintRun:
         if self.request.overrides.cnc_root is not None:
             root, origin = Path(self.request.overrides.cnc_root), "given by --cnc-root"
         else:
-            root, origin = config.cnc_root(), f"`cnc-root` in {config.path}"
+            root, origin = config.cnc_root(), f"set by `cnc-root` in {config.path}"
         try:
             startup = read_startup(path, scope, root, origin)
         except OSError as exc:
@@ -611,8 +620,6 @@ def is_program(path: str) -> bool:
     return path.lower().endswith(PROGRAM_SUFFIXES)
 
 
-PROGRAM_SUFFIXES = (".nc",)
-
 
 def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> None:
     """The homing programs the configuration of each linted start-up list names (`homing-programs`),
@@ -623,7 +630,7 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
         startups.setdefault(os.path.realpath(path), (path, given_root))
     for startup, cnc_root in startups.values():
         config = run.config_for(startup)
-        wanted = [Path(os.path.normpath(config.root / name)) for name in config.settings.homing_programs]
+        wanted = [named_path(config.path, name) for name in config.settings.homing_programs] if config.path else []
         todo = [path for path in wanted if os.path.realpath(path) not in done]
         if not todo:
             continue
@@ -644,11 +651,32 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
                     f"{config.path}: homing-programs names {path.name}, but {_shown(path)} does not exist"
                 )
                 continue
+            problem = _not_a_program(path)
+            if problem is not None:
+                outcome.errors.append(f"configuration error in {config.path}: key `homing-programs`: {problem}")
+                continue
             settings = run.settings_for(Target(str(path), path, run.config_for(path)))
             result = lint_program_on(path, machine, name=_shown(path), settings=settings)
             if result.error:
                 outcome.errors.append(result.error)
             outcome.results.append(result)
+
+
+def _not_a_program(path: Path) -> str | None:
+    """Why a file a configuration names as a homing program is not one (not a regular file, too large,
+    binary or UTF-16); None when it is text achslint can check. Its lines are never shown."""
+    from .files import read_program_file
+    from .ncprogram import program_text
+
+    try:
+        data = read_program_file(path)
+    except Refused as exc:
+        return str(exc)
+    except OSError as exc:
+        return f"cannot read {_shown(path)}: {reason(exc)}"
+    if program_text(data) is None:
+        return f"{_shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
+    return None
 
 
 @dataclass

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, NoReturn, TextIO, TypeVar, get_args
 import typer
 
 from . import __version__
-from .config import SeverityName
+from .config import CYCLE_TIME_US, MAX_TOLERANCE_UM, SeverityName
 from .config import UnknownParameters as UnknownParametersChoice
 from .reporters import REPORTERS
 
@@ -195,13 +195,15 @@ def lint(
         None,
         "--cycle-time-ms",
         metavar="MS",
-        min=0.001,
+        min=CYCLE_TIME_US[0] / 1000,
+        max=CYCLE_TIME_US[1] / 1000,
         help="CNC cycle time in ms, as in dry-run (for LIS403; default 1).",
     ),
     cycle_time_us: int | None = typer.Option(
         None,
         "--cycle-time-us",
-        min=1,
+        min=CYCLE_TIME_US[0],
+        max=CYCLE_TIME_US[1],
         hidden=True,
         help="The cycle time in µs (old spelling of --cycle-time-ms).",
     ),
@@ -210,6 +212,7 @@ def lint(
         "--repeatability-tolerance-um",
         metavar="UM",
         min=0.0,
+        max=MAX_TOLERANCE_UM,
         help="Required homing repeatability in µm (for LIS403; default 20).",
     ),
     stdin_filename: str | None = typer.Option(
@@ -332,7 +335,7 @@ def lint(
                     docs_url=_docs_url(docs_url, config),
                 )
                 if REPORTERS[fmt].text and not quiet:
-                    _summary(outcome.results, stream, fix)
+                    _summary(outcome.results, stream, fix, bool(outcome.errors))
                 if statistics:  # a machine format's output stays one document; the counts go to stderr
                     _print_statistics(outcome.results, sys.stderr)
     if outcome.errors:
@@ -380,10 +383,11 @@ class _destination:
             self.file.close()
 
 
-def _summary(results: list[FileResult], stream: TextIO, fixing: bool) -> None:
-    """ruff's closing lines: "All checks passed!", or how many findings a fix would remove."""
+def _summary(results: list[FileResult], stream: TextIO, fixing: bool, failed: bool = False) -> None:
+    """ruff's closing lines: "All checks passed!" (never when something could not be checked: `failed`),
+    or how many findings a fix would remove."""
     if not any(r.diagnostics for r in results):
-        if not any(r.error for r in results):
+        if not failed and not any(r.error for r in results):
             stream.write("All checks passed!\n")
         return
     if fixing:

@@ -46,6 +46,13 @@ def parse_codes(values: list[str]) -> list[str]:
     return cleaned
 
 
+# Bounds of the numbers a configuration file may set: the same as the command-line options' (an absurd
+# value is a configuration error, never gigabytes of padding or a MemoryError).
+MAX_COLUMN = 400  # [fmt] value-column / comment-column: wider than any real list, small enough to pad
+CYCLE_TIME_US = (50, 100_000)  # the CNC cycle: 0.05 ms to 100 ms (scenario.CYCLE_MS in ms)
+MAX_TOLERANCE_UM = 1_000_000.0  # repeatability tolerance on linear axes: up to 1 m
+MAX_TOLERANCE_DEG = 360.0  # and on rotary axes: up to one turn
+
 LEFT: Literal["left"] = "left"
 RIGHT: Literal["right"] = "right"
 KEEP: Literal["keep"] = "keep"
@@ -72,9 +79,9 @@ class FmtOptions:
     def __post_init__(self) -> None:
         for name in ("value_column", "comment_column"):
             column = getattr(self, name)
-            if column is not None and (type(column) is not int or column < 1):
+            if column is not None and (type(column) is not int or not 1 <= column <= MAX_COLUMN):
                 raise ValueError(
-                    f"{name.replace('_', '-')} must be a column number from 1 up, not {column!r}"
+                    f"{name.replace('_', '-')} must be a column number from 1 to {MAX_COLUMN}, not {column!r}"
                 )
         if self.align_values not in ALIGN_VALUES:
             choices = ", ".join(f'"{choice}"' for choice in ALIGN_VALUES)
@@ -111,9 +118,9 @@ class Settings:
     include: list[str] = _key(factory=lambda: ["achsmds*.lis"])
     exclude: list[str] = _key(factory=list, cli=EXTEND)  # the command line extends it (--extend-exclude)
     unknown_parameters: UnknownParameters = _key("warn")
-    cycle_time_us: int = _key(1000, gt=0)
-    repeatability_tolerance_um: float = _key(20.0, ge=0)  # linear axes (LIS403)
-    repeatability_tolerance_deg: float = _key(0.01, ge=0)  # rotary axes (LIS403)
+    cycle_time_us: int = _key(1000, ge=CYCLE_TIME_US[0], le=CYCLE_TIME_US[1])
+    repeatability_tolerance_um: float = _key(20.0, ge=0, le=MAX_TOLERANCE_UM)  # linear axes (LIS403)
+    repeatability_tolerance_deg: float = _key(0.01, ge=0, le=MAX_TOLERANCE_DEG)  # rotary axes (LIS403)
     scenario: dict[str, Any] = _key(factory=dict)  # scenario defaults for dry-run
     cnc_root: str | None = _key(
         None, min_length=1
@@ -236,7 +243,9 @@ class ResolvedConfig:
         """The `cnc-root` setting as a folder (relative to the configuration file's folder), or None."""
         if self.settings.cnc_root is None:
             return None
-        return Path(os.path.abspath(self.root / Path(self.settings.cnc_root).expanduser()))
+        if self.path is None:  # pragma: no cover - the built-in defaults set no cnc-root
+            return Path(os.path.abspath(Path(self.settings.cnc_root).expanduser()))
+        return named_path(self.path, self.settings.cnc_root)
 
     def ignored_for(self, target: Path) -> list[str]:
         """Codes ignored for one file by `per-file-ignores`."""
@@ -293,9 +302,57 @@ def load_file(path: Path) -> ResolvedConfig:
         validated = model.model_validate(data)
     except ValidationError as exc:
         raise ConfigError(_format_error(path, exc, model)) from None
-    return ResolvedConfig(
-        Settings(**{item.name: getattr(validated, item.name) for item in fields(Settings)}), path
-    )
+    settings = Settings(**{item.name: getattr(validated, item.name) for item in fields(Settings)})
+    _check_contained(path, settings)
+    return ResolvedConfig(settings, path)
+
+
+def named_path(config: Path, value: str) -> Path:
+    """A path a configuration file names, relative to the file's folder (`~` is the home folder)."""
+    return Path(os.path.normpath(Path(os.path.abspath(config)).parent / Path(value).expanduser()))
+
+
+def repository_of(config: Path) -> Path:
+    """The repository a configuration file belongs to: the git work tree that holds it (the nearest
+    folder above it with a `.git`), else the configuration file's own folder."""
+    folder = Path(os.path.abspath(config)).parent
+    for candidate in (folder, *folder.parents):
+        if os.path.lexists(candidate / ".git"):
+            return candidate
+    return folder
+
+
+def _check_contained(path: Path, settings: Settings) -> None:
+    """Paths a configuration names stay inside its repository: a pull request that changes the
+    configuration must not make achslint read (and quote) files elsewhere on the machine that runs it.
+    `homing-programs` must also name NC programs (`.nc`)."""
+    repository = repository_of(path)
+    named = [("cnc-root", settings.cnc_root)] if settings.cnc_root is not None else []
+    named += [("homing-programs", program) for program in settings.homing_programs]
+    for key, value in named:
+        target = named_path(path, value)
+        if not target.is_relative_to(repository):
+            problem = f"lies outside {repository}"
+        elif not Path(os.path.realpath(target)).is_relative_to(os.path.realpath(repository)):
+            problem = f"leads outside {repository} through a symbolic link"
+        else:
+            problem = ""
+        if problem:
+            where = "the git work tree" if os.path.lexists(repository / ".git") else (
+                "the configuration's folder (no git work tree holds it)"
+            )
+            raise ConfigError(
+                f"configuration error in {path}: key `{key}`: {value!r} {problem}, {where}; "
+                "name a folder or file inside it"
+            )
+        if key == "homing-programs" and not value.lower().endswith(PROGRAM_SUFFIXES):
+            raise ConfigError(
+                f"configuration error in {path}: key `homing-programs`: {value!r} is not an NC program "
+                f"(a name ending in {', '.join(PROGRAM_SUFFIXES)})"
+            )
+
+
+PROGRAM_SUFFIXES = (".nc",)  # what the command line takes for an NC homing program (api.is_program)
 
 
 def _has_table(pyproject: Path) -> bool:
@@ -318,13 +375,25 @@ def _has_table(pyproject: Path) -> bool:
 
 @lru_cache(maxsize=256)
 def _config_in(folder: Path) -> Path | None:
+    from .files import not_a_list_file
+
     for name in CONFIG_NAMES:
         candidate = folder / name
         try:
-            found = candidate.is_file()
-        except OSError:  # a folder on the way we may not look into has no configuration for us
+            exists = os.path.lexists(candidate)
+        except (OSError, ValueError):  # a folder on the way we may not look into has no configuration for us
             continue
-        if found and (name != "pyproject.toml" or _has_table(candidate)):
+        if not exists:
+            continue
+        problem = not_a_list_file(candidate)
+        if problem is not None and problem != "permission denied":
+            # a FIFO, a device or a dangling link where a configuration belongs: it may be meant to
+            # apply, and skipping it silently would lint with other settings than the project's
+            raise ConfigError(
+                f"configuration error: {candidate} is {problem}; achslint does not read it "
+                "(replace it with a regular file, or remove it)"
+            )
+        if problem is None and (name != "pyproject.toml" or _has_table(candidate)):
             return candidate
     return None
 

@@ -171,6 +171,11 @@ def read_list(path: Path, size: int = -1, *, limit: int = LIST_LIMIT, what: str 
         return data
 
 
+def read_program_file(path: Path) -> bytes:
+    """The bytes of an NC program: `read_list`'s checks, with the size limit of a program."""
+    return read_list(path, limit=PROGRAM_LIMIT, what="an NC program")
+
+
 def _too_large(path: Path, size: int, limit: int, what: str) -> Refused:
     return Refused(
         f"{path} is {_megabytes(size)}, more than the {_megabytes(limit)} achslint reads for {what}; not read"

@@ -80,52 +80,31 @@ def _entry_path(raw: str) -> Path:
     return Path(text)
 
 
-def _exists(target: Path) -> bool:
-    return not_a_list_file(target) not in _MISSING
+LISTS_FOLDER = "listen"  # where the CNC keeps its lists, below its working directory
 
 
-def find_cnc_root(startup: Path, entries: list[str]) -> Path:
-    """The CNC working directory the start-up list's relative entries are written against.
-
-    The CNC resolves `./listen/achsmds1.lis` against its own working directory, not against the start-up
-    list's folder (the SDK keeps `hochlauf.lis` itself in `listen/`). Without a `cnc-root`, the root is the
-    nearest folder, from the start-up list's own folder upwards, where every relative entry exists; if
-    there is none, the one where most of them exist (the start-up list's folder when none exists anywhere).
-    """
+def default_cnc_root(startup: Path) -> Path:
+    """The CNC working directory a start-up list's relative entries are written against, when nobody set
+    one: the start-up list's own folder, or the folder above `listen/` when the list lies in `listen/`
+    (the SDK layout, `./listen/achsmds1.lis` named from `listen/hochlauf.lis`) or one folder below it
+    (the external-scheduling variant `listen/ExtSchedule/hochlauf.lis`). Never guessed from where the
+    named files happen to exist: a start-up list must not choose which folders achslint reads."""
     folder = Path(os.path.abspath(startup)).parent
-    relative = [path for path in map(_entry_path, entries) if not path.is_absolute()]
-    best, best_count = folder, 0
-    if not relative:
-        return folder
-    for candidate in (folder, *folder.parents):
-        count = sum(_exists(candidate / path) for path in relative)
-        if count == len(relative):
-            return candidate
-        if count > best_count:
-            best, best_count = candidate, count
-    return best
-
-
-LIST_SUFFIXES = (".lis", ".xml")
-
-
-def _in_a_folder_above(target: Path, startup: Path, root: Path) -> bool:
-    """Whether `target` is a list file lying directly in a folder that holds the start-up list, below the
-    CNC root: the SDK's `listen/ExtSchedule/hochlauf.lis` names `./listen/achsmds1.lis`, one folder up.
-    Other files there (`.bashrc`) and other folders (`./home/...`) stay out of reach."""
-    folder = target.parent
-    return target.suffix.lower() in LIST_SUFFIXES and inside(startup.parent, folder) and inside(folder, root)
+    for candidate in (folder, folder.parent):
+        if candidate.name.lower() == LISTS_FOLDER and candidate.parent != candidate:
+            return candidate.parent
+    return folder
 
 
 def _resolve(
-    raw: str, startup: Path, root: Path, root_given: bool, scope: Scope | None
+    raw: str, root: Path, root_origin: str, scope: Scope | None
 ) -> tuple[Path | None, str | None, Path]:
     """(file, None, looked) for an entry achslint reads, (None, why, looked) for one it refuses, and
     (None, None, looked) when it is missing.
 
-    The file must lie in the start-up list's folder or below it, be a list directly in a folder above it
-    (up to the CNC root), lie under a `cnc-root` the user set, or under a path the user gave: a start-up
-    list cannot make achslint read (and show) `/proc/self/environ` or `../../secret.lis`.
+    The file, with every symbolic link followed, must lie under the CNC root or under a path the user
+    gave: a start-up list cannot make achslint read (and show) `/proc/self/environ`, `../../secret.lis`
+    or a link inside the machine folder that leads elsewhere.
     """
     target = Path(os.path.normpath(root / _entry_path(raw)))
     problem = not_a_list_file(target)
@@ -133,28 +112,19 @@ def _resolve(
         return None, None, target
     if problem is not None:
         return None, f"it is {problem}" if problem.startswith("a ") else problem, target
-    allowed = (
-        inside(target, startup.parent)
-        or (root_given and inside(target, root))
-        or (scope and scope.contains(target))
-        or _in_a_folder_above(target, startup, root)
-    )
-    if not allowed:
-        return (
-            None,
-            (
-                f"it lies outside the start-up list's folder {startup.parent}"
-                + ("" if root_given else " and no --cnc-root / `cnc-root` was set")
-            ),
-            target,
-        )
+    if not (inside(target, root) or (scope and scope.contains(target))):
+        linked = Path(os.path.abspath(target)).is_relative_to(
+            root
+        )  # its name is under the root, its file not
+        what = "it is a symbolic link that leads outside" if linked else "it lies outside"
+        return None, f"{what} the CNC root {root} ({root_origin})", target
     return target, None, target
 
 
 def read_startup(
     path: Path, scope: Scope | None = None, cnc_root: Path | None = None, root_origin: str = ""
 ) -> Startup:
-    """The entries of a start-up list, resolved against `cnc_root` (found from the entries when None).
+    """The entries of a start-up list, resolved against `cnc_root` (`default_cnc_root` when None).
 
     Raises `OSError` / `decode.UnreadableInput` when the start-up list cannot be read.
     """
@@ -165,14 +135,14 @@ def read_startup(
         for line in parse_bytes(read_list(path), str(path)).assignments()
         if line.path_ok and line.path and line.value is not None and _ENTRY.fullmatch(line.path)
     ]
-    given = cnc_root is not None
     if cnc_root is None:
-        cnc_root = find_cnc_root(path, [value for _, value, _ in entries])
-        root_origin = "found from the entries; --cnc-root sets it"
+        cnc_root = default_cnc_root(path)
+        above = cnc_root != Path(os.path.abspath(path)).parent
+        root_origin = f"{'the folder above `listen/`' if above else 'the start-up list folder'}; --cnc-root sets another"
     root = Path(os.path.abspath(cnc_root))
     startup = Startup(path, root=root, root_origin=root_origin)
     for key, value, line in entries:
-        found, refused, looked = _resolve(value, path, root, given, scope)
+        found, refused, looked = _resolve(value, root, root_origin or "as given", scope)
         entry = StartupEntry(key, value, line.number, line.value_column, found, refused, looked)
         if entry.key == "default_achs_mds":
             startup.default = entry

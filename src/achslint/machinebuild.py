@@ -66,7 +66,7 @@ def _read_startup(startup: Path, cnc_root: Path | None) -> Startup:
     """The start-up list's entries; the files they name shown relative to the working directory, like
     every other path in reports."""
     try:
-        entries = read_startup(startup, cnc_root=cnc_root, root_origin="given" if cnc_root else "")
+        entries = read_startup(startup, cnc_root=cnc_root, root_origin="as given" if cnc_root else "")
     except OSError as exc:
         raise MachineError(f"cannot read the start-up list: {reason(exc)}", startup) from None
     except UnreadableInput as exc:

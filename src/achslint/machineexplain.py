@@ -219,7 +219,7 @@ def explain_startup(
     gear: int = 0,
 ) -> dict[str, Any]:
     """`explain_machine` from files. Raises `MachineError` for the machine, `OSError` for the program."""
-    from .files import Refused, not_a_list_file, read_list
+    from .files import Refused, not_a_list_file, read_program_file
     from .machinebuild import build_machine
     from .ncprogram import read_program
 
@@ -229,5 +229,5 @@ def explain_startup(
         problem = not_a_list_file(program)
         if problem is not None:
             raise Refused(f"{program}: {problem}")
-        read = read_program(read_list(program), str(program))
+        read = read_program(read_program_file(program), str(program))
     return explain_machine(machine, read, gear)

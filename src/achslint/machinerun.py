@@ -331,7 +331,7 @@ def machine_dry_run(
 
     Raises MachineError (machine or program unreadable), ScenarioError and DryRunRefused, each with a
     one-line message naming the file."""
-    from .files import reason
+    from .files import Refused, read_program_file, reason
     from .machinebuild import MachineError, build_machine, rename
     from .machinescenario import machine_scenario_input
     from .ncprogram import read_program
@@ -349,7 +349,9 @@ def machine_dry_run(
             startup,
         )
     try:
-        data = program.read_bytes()
+        data = read_program_file(program)
+    except Refused as exc:
+        raise MachineError(str(exc)) from None  # the message names the file
     except OSError as exc:
         raise MachineError(f"cannot read the homing program: {reason(exc)}", program) from None
     plan = MachinePlan(machine, read_program(data, str(program)), given, cycle_time_us=cycle_time_us)

@@ -144,7 +144,7 @@ def lint_program_on(
     path: Path, machine: Machine, *, name: str | None = None, settings: FileSettings | None = None
 ) -> FileResult:
     """Lint one homing program against a machine that is already built."""
-    from .files import Refused, not_a_list_file, read_list, reason
+    from .files import Refused, not_a_list_file, read_program_file, reason
     from .ncprogram import program_text, read_program
 
     shown = name or str(path)
@@ -153,7 +153,7 @@ def lint_program_on(
     if problem is not None:
         return FileResult(shown, [], f"cannot read {shown}: {problem}")
     try:
-        data = read_list(path)
+        data = read_program_file(path)
     except Refused as exc:
         return FileResult(shown, [], str(exc))
     except OSError as exc:
@@ -173,16 +173,15 @@ def lint_programs(
     from .machinebuild import MachineError, build_machine
 
     if request.machine is None:
-        return [], [
-            f"{path}: an NC program is checked against a machine: give its start-up list with "
-            "--machine hochlauf.lis"
-            for path in paths
-        ]
+        return _not_checked(
+            paths,
+            "an NC program is checked against a machine: give its start-up list with --machine hochlauf.lis",
+        )
     cnc_root = Path(request.overrides.cnc_root) if request.overrides.cnc_root else None
     try:
         machine = build_machine(Path(request.machine), cnc_root=cnc_root, channel=request.channel)
     except MachineError as exc:
-        return [], [f"--machine: {exc}"]
+        return _not_checked(paths, f"not checked, the machine cannot be read: --machine: {exc}")
     results: list[FileResult] = []
     errors: list[str] = []
     for raw in paths:
@@ -192,3 +191,10 @@ def lint_programs(
             errors.append(result.error)
         results.append(result)
     return results, errors
+
+
+def _not_checked(paths: list[str], why: str) -> tuple[list[FileResult], list[str]]:
+    """Programs that could not be checked: each is an unreadable result (so no format reports the run as
+    clean), and the reason is one error line per program."""
+    errors = [f"{path}: {why}" for path in paths]
+    return [FileResult(path, [], error) for path, error in zip(paths, errors)], errors

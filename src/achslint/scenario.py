@@ -33,6 +33,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 
+from .config import CYCLE_TIME_US
+
 if TYPE_CHECKING:
     from pydantic import BaseModel
 
@@ -51,7 +53,7 @@ class ScenarioError(Exception):
 POSITION_BOUND = {"mm": 1e6, "deg": 1e9}
 ANY_POSITION = 1e9
 MIN_PERIOD = 0.001  # 1 µm (or 0.001°)
-CYCLE_MS = (0.05, 100.0)
+CYCLE_MS = (CYCLE_TIME_US[0] / 1000, CYCLE_TIME_US[1] / 1000)  # the configuration's bounds, in ms
 MAX_RATE = 1e9  # velocities and accelerations per second
 
 

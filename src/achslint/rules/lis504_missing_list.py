@@ -4,10 +4,11 @@ What
 A start-up list entry (`achs_mds[i]` or `default_achs_mds`) that names an axis
 list which does not exist. Relative names are resolved the way the CNC resolves
 them: against its working directory, the CNC root. Set it with `--cnc-root DIR`
-or `cnc-root` in the configuration; otherwise it is the nearest folder, from the
-start-up list's folder upwards, where the entries exist (the SDK keeps
-`./listen/…` names in a start-up list that itself lies in `listen/`). The
-message names the file looked for and the root.
+or `cnc-root` in the configuration; otherwise it is the start-up list's folder,
+or the folder above `listen/` when the start-up list lies in `listen/` or one
+folder below it (the SDK keeps `./listen/…` names in `listen/hochlauf.lis`).
+The message names the file looked for and the root. An entry whose file, links
+followed, lies outside the CNC root is not read: a warning says why.
 
 Why
 ---
@@ -74,7 +75,7 @@ def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iter
                 severity, message = (
                     Severity.ERROR,
                     f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
-                    f"(the CNC root {startup.root_origin}); the CNC aborts the start-up when a list "
+                    f"(the CNC root is {startup.root_origin}); the CNC aborts the start-up when a list "
                     "is missing",
                 )
             else:
