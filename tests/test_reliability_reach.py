@@ -117,6 +117,20 @@ def test_3_a_symlink_inside_the_machine_that_leads_out_is_not_read(tmp_path):
     assert SECRET.encode() not in explained.stdout + explained.stderr
 
 
+def test_3_nothing_is_looked_up_outside_the_root(tmp_path):
+    """A file outside the root that exists and one that does not get the same words: a start-up list
+    cannot probe the machine that lints it for which files exist."""
+    (tmp_path / "exists.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    startup = _machine(
+        tmp_path / "machine", entries="achs_mds[1]  ../exists.lis\nachs_mds[2]  ../missing.lis\n"
+    )
+    entries = read_startup(startup)
+    root = tmp_path / "machine"
+    assert [entry.refused for entry in entries.axes[1:]] == [
+        f"it lies outside the CNC root {root} (the folder above `listen/`; --cnc-root sets another)"
+    ] * 2
+
+
 def test_3_a_symlinked_folder_on_the_way_out_is_refused_too(tmp_path):
     (tmp_path / "outside").mkdir()
     (tmp_path / "outside" / "achsmds1.lis").write_text(f"kopf.achs_nr 1\n{SECRET} 1\nEnde\n")

@@ -107,17 +107,17 @@ def _resolve(
     or a link inside the machine folder that leads elsewhere.
     """
     target = Path(os.path.normpath(root / _entry_path(raw)))
+    # Where the entry leads is checked before anything is looked up there: not even whether a file
+    # outside the root exists shows in a finding.
+    if not (inside(target, root) or (scope and scope.contains(target))):
+        linked = target.is_relative_to(root)  # its name lies under the root, the file it leads to does not
+        what = "it is a symbolic link that leads outside" if linked else "it lies outside"
+        return None, f"{what} the CNC root {root} ({root_origin})", target
     problem = not_a_list_file(target)
     if problem in _MISSING:
         return None, None, target
     if problem is not None:
         return None, f"it is {problem}" if problem.startswith("a ") else problem, target
-    if not (inside(target, root) or (scope and scope.contains(target))):
-        linked = Path(os.path.abspath(target)).is_relative_to(
-            root
-        )  # its name is under the root, its file not
-        what = "it is a symbolic link that leads outside" if linked else "it lies outside"
-        return None, f"{what} the CNC root {root} ({root_origin})", target
     return target, None, target
 
 
