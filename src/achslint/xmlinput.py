@@ -106,16 +106,28 @@ def root_element(data: bytes) -> str:
     return match.group(1) if match else "?"
 
 
+_DECLARATION = re.compile(rb'(?:\xef\xbb\xbf)?<\?xml[^>]*encoding\s*=\s*["\']([A-Za-z0-9_.-]+)["\']')
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
+def declared_encoding(data: bytes) -> str | None:
+    """The encoding the XML declaration names (`<?xml version="1.0" encoding="cp1252"?>`), if any."""
+    match = _DECLARATION.match(data)
+    return match.group(1).decode("ascii") if match else None
+
+
 def source_text(data: bytes) -> str:
-    """The XML file as text, for code frames: by its byte-order mark or declared encoding, else Latin-1."""
-    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
-        encoding = "utf-16"
-    else:
-        match = re.match(rb'<\?xml[^>]*encoding=["\']([A-Za-z0-9_.-]+)["\']', data)
-        encoding = match.group(1).decode("ascii") if match else "utf-8"
+    """The XML file as text, for code frames: by its byte-order mark or declared encoding, else Latin-1.
+
+    Latin-1 too when the declared codec fails or yields lone surrogates (UTF-7 and the escape codecs can),
+    which no output format could show."""
+    bom = data.startswith((b"\xff\xfe", b"\xfe\xff"))
+    encoding = "utf-16" if bom else declared_encoding(data) or "utf-8"
     try:
         text = data.decode(encoding)
-    except (LookupError, UnicodeDecodeError):
+    except (LookupError, ValueError):  # UnicodeError is a ValueError; IDNA raises a plain UnicodeError
+        text = data.decode("latin-1")
+    if _SURROGATE.search(text):
         text = data.decode("latin-1")
     return text[1:] if text.startswith("\ufeff") else text
 
@@ -142,11 +154,13 @@ class _Collector(ContentHandler):
         self.field: tuple[str, int] | None = None  # <DriveType> / <Spindle> being read, with its line
         self.field_text: list[str] = []
         self.axis_fields: list[dict[str, tuple[str, int]]] = []  # DriveType / Spindle: (text, line)
+        self.elements = 0  # elements started so far
 
     def _here(self) -> tuple[int, int]:
         return self.locator.getLineNumber(), (self.locator.getColumnNumber() or 0) + 1
 
     def startElement(self, name: str, attrs: AttributesImpl) -> None:
+        self.elements += 1
         local = _local(name)
         line, column = self._here()
         if local == "IsgAxisDef":
@@ -247,9 +261,18 @@ def _parse(data: bytes, name: str) -> _Collector:
         ) from None
     except SAXException as exc:
         raise UnreadableInput(f"{name} is not well-formed XML: {exc.getMessage()}{_where(exc)}") from None
-    except LookupError as exc:  # expat asks Python's codecs for encodings it does not know itself
+    except (LookupError, ValueError):  # after the defusedxml errors, which are ValueErrors too
+        if collector.elements:  # raised by our own handler, not by the encoding: a bug, not the file
+            raise
+        # expat decodes UTF-8, UTF-16, ISO-8859-1 and ASCII itself and asks Python for any other declared
+        # encoding as a table of 256 single characters: multi-byte encodings (Shift_JIS, GB2312, EUC-KR,
+        # Big5), UTF-7 and codecs that are no text encoding (IDNA, punycode, rot13) fail there, before
+        # the first element is read.
+        declared = declared_encoding(data)
         raise UnreadableInput(
-            f"{name} is not well-formed XML: it declares an {exc}; save it as UTF-8"
+            f"refusing to read {name}: it declares the encoding `{declared or '?'}`, which achslint cannot "
+            "read XML in (UTF-8, UTF-16, ASCII and one-byte code pages such as Latin-1 or cp1252 only); "
+            "save it as UTF-8"
         ) from None
     return collector
 
