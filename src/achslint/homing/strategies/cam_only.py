@@ -14,7 +14,9 @@ STRATEGY = StrategyDef(
     matches=lambda axis: True,
     describe=describe,
     parameters={**SEQUENCE, **CAM, **CAM_EDGE, **THREE_PHASE_SPEEDS},
-    example="kenngr.ref_ohne_nocken 0\nkenngr.ref_ohne_rev 0\nkenngr.homing_without_zero_pulse 1\n",
+    example=(
+        "kenngr.antr_typ 1\nkenngr.ref_ohne_nocken 0\nkenngr.ref_ohne_rev 0\nkenngr.homing_without_zero_pulse 1\n"
+    ),
     phases=phases,
     manual_type="I",
     with_cam=True,

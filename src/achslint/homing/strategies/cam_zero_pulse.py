@@ -19,7 +19,9 @@ STRATEGY = StrategyDef(
     matches=lambda axis: _zero_pulse(axis),
     describe=describe,
     parameters={**SEQUENCE, **CAM, **ZERO_PULSE, **CAM_AND_ZERO_PULSE, **THREE_PHASE_SPEEDS},
-    example="kenngr.ref_ohne_nocken 0\nkenngr.ref_ohne_rev 0\nkenngr.homing_without_zero_pulse 0\n",
+    example=(
+        "kenngr.antr_typ 1\nkenngr.ref_ohne_nocken 0\nkenngr.ref_ohne_rev 0\nkenngr.homing_without_zero_pulse 0\n"
+    ),
     phases=phases,
     manual_type="III",
     with_cam=True,

@@ -41,7 +41,10 @@ STRATEGY = StrategyDef(
         **CAM_EDGE,
         "getriebe[i].vb_refmax": Use("speed towards the cam, at which its edge is taken (§3.5)"),
     },
-    example="kenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\nkenngr.homing_without_zero_pulse 1\n",
+    example=(
+        "kenngr.antr_typ 1\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\nkenngr.homing_without_zero_pulse 1\n"
+        "getriebe[0].vb_refmax 20000\n"
+    ),
     phases=_phases,
     manual_type="I",
     with_cam=True,

@@ -63,7 +63,9 @@ STRATEGY = StrategyDef(
         **CAM_AND_ZERO_PULSE,
         "getriebe[i].vb_refmax": Use("speed towards the cam (§3.5; assumed for the approach)"),
     },
-    example="kenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\nkenngr.homing_without_zero_pulse 0\n",
+    example=(
+        "kenngr.antr_typ 1\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 0\nkenngr.homing_without_zero_pulse 0\n"
+    ),
     phases=_phases,
     manual_type="III",
     with_cam=True,

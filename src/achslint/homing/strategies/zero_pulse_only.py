@@ -34,7 +34,7 @@ STRATEGY = StrategyDef(
         "pulse as the reference (§2.3.3.3); the pulse must occur only once in the travel range to be unique."
     ),
     parameters={**SEQUENCE, **ZERO_PULSE},
-    example="kenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n",
+    example="kenngr.antr_typ 1\nkenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n",
     phases=_phases,
     manual_type="II",
     with_zero_pulse=True,

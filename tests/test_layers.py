@@ -1,0 +1,478 @@
+"""The import graph of `src/achslint` runs one way (issue 23, STYLE.md "The house, drawn").
+
+Every module has a layer; a module imports only from its own layer or the layers below it, and no chain of
+imports leads back to where it started. Imports inside functions and under `TYPE_CHECKING` count as much as
+the ones at the top of a module: hiding an import in a function defers it, it does not remove the arrow.
+Today's offending arrows are listed in `ALLOWED`; the list only shrinks.
+
+Also here: linting a list does not load the heavy optional libraries, and each homing strategy's published
+`example` selects that strategy.
+"""
+
+from __future__ import annotations
+
+import ast
+import json
+import subprocess
+import sys
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import cache
+from itertools import takewhile
+from pathlib import Path
+
+import pytest
+
+from achslint.homing.base import StrategyDef
+from achslint.homing.registry import classify, strategies
+from achslint.resolved import resolve_bytes
+
+from .conftest import FIXTURES, ROOT, run_cli
+
+PACKAGE = ROOT / "src" / "achslint"
+
+# The layers, bottom first, after the target layout of issue 23 (STYLE.md, "The house, drawn") for today's flat
+# modules. A few stages have an order inside them too: what a registry lists sits below the registry. A name
+# ending in `.*` puts every module of that package (its `__init__` too, unless named on its own) there.
+LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    # reading and writing files, text, what a finding is, how values are shown
+    ("core", ("files", "decode", "signals", "diagnostics", "display", "tomlfile", "closest")),
+    ("syntax", ("syntax", "numbers", "xmlinput")),
+    ("catalogue", ("catalogue", "units")),
+    # one axis's typed values, the CNC's corrections, and the resolved axis that applies them
+    ("axis", ("facts", "analysis", "corrections")),
+    ("axis: resolved", ("resolved",)),
+    ("homing: data", ("homing.base", "homing.parameters", "homing.setup")),
+    ("homing: strategies", ("homing.strategies.*",)),
+    ("homing: registry", ("homing.registry", "homing")),
+    ("homing: scenario", ("scenario",)),
+    ("homing: scenario input", ("scenario_input",)),
+    ("homing: simulation", ("engine", "dryrun")),
+    ("machine", ("machinemodel", "machine", "channel", "ncprogram", "machinebuild")),
+    ("rules: what a rule sees", ("context",)),
+    ("rules", ("rules.*",)),
+    ("rules: registry", ("rules",)),
+    ("lint", ("linter", "config", "suppression", "fixer", "programlint")),
+    # products built on the stages below: the model, explanations, machine runs, diff, layout, rule docs
+    ("model base", ("model_base",)),
+    ("model fields", ("model_generated",)),
+    (
+        "products",
+        ("model", "explain", "machinerun", "machinescenario", "machineexplain", "listdiff", "fmt", "docs"),
+    ),
+    # every format of every command
+    ("output: formats", ("reporters.*", "plot", "machinereport")),
+    ("output: registry", ("reporters",)),
+    # the public API (the package re-exports it) and the editor
+    ("api", ("achslint", "api", "lsp.*")),
+    ("cli", ("cli", "__main__")),
+)
+LAYER_OF = {module: number for number, (_, names) in enumerate(LAYERS) for module in names}
+
+# Today's offending arrows, "importer -> imported": each closes a cycle or points up the layers. Remove an
+# arrow here when the code stops drawing it; the test fails until you do, and fails on any arrow not here.
+ALLOWED = frozenset(
+    {
+        # the axis: the CNC's corrections are typed against the axis that applies them
+        "corrections -> resolved",
+        # homing: the strategy data names the engine's types; the scenario's pydantic input is loaded on use
+        "homing.base -> engine",
+        "scenario -> config",
+        "scenario -> scenario_input",
+        # dry-run asks two rules whether the CNC refuses the homing
+        "dryrun -> config",
+        "dryrun -> context",
+        "dryrun -> rules.lis306_torq_drive_type",
+        "dryrun -> rules.lis319_spindle_homing_direction",
+        # the machine runs its own rule loop; building a machine goes through the API
+        "machine -> context",
+        "machine -> rules",
+        "machinebuild -> api",
+        # what a rule sees reads the lint settings and the registry's severities
+        "context -> config",
+        "context -> rules",
+        # rules reach up to the registry, the suppression model and the program lint
+        "rules -> suppression",
+        "rules.lis009_unused_noqa -> rules",
+        "rules.lis009_unused_noqa -> suppression",
+        "rules.lis316_gantry_slave_no_homing -> rules",
+        "rules.lis501_duplicate_axis_number -> rules",
+        "rules.lis502_duplicate_axis_name -> rules",
+        "rules.lis503_gantry_master_missing -> rules",
+        "rules.lis504_missing_list -> rules",
+        "rules.lis510_gantry_homing_type_mismatch -> rules",
+        "rules.lis511_gantry_drive_controlled_homing -> rules",
+        "rules.lis601_program_text -> programlint",
+        "rules.lis602_unknown_axis -> programlint",
+        "rules.lis603_axis_twice_in_g74 -> programlint",
+        "rules.lis604_disabled_axis_homed -> programlint",
+        "rules.lis605_gantry_slave_alone -> programlint",
+        "rules.lis606_move_before_homing -> programlint",
+        "rules.lis607_ignored_axis_beside_moving_axes -> programlint",
+        # the program lint goes through the API
+        "programlint -> api",
+        # the model's base class builds the model
+        "model_base -> model",
+        # the formats take their shared pieces from the registry that loads them
+        "reporters.concise -> reporters",
+        "reporters.full -> reporters",
+        "reporters.github -> reporters",
+        "reporters.gitlab -> reporters",
+        "reporters.json_format -> reporters",
+        "reporters.junit -> reporters",
+        "reporters.sarif -> reporters",
+        "reporters.sarif -> achslint",
+        # the XML reader looks parameters up in the catalogue
+        "xmlinput -> catalogue",
+    }
+)
+
+
+@dataclass(frozen=True)
+class Arrow:
+    importer: str
+    imported: str
+    line: int  # the first import of `imported` in the importer's file
+    eager: bool  # one of those imports runs when the importer loads (module level, not under TYPE_CHECKING)
+
+    def __str__(self) -> str:
+        return f"{self.importer} -> {self.imported}"
+
+
+def module_name(path: Path, package: Path) -> str:
+    """`src/achslint/homing/registry.py` -> `homing.registry`; the package's own `__init__` is `achslint`."""
+    parts = list(path.relative_to(package).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts) or "achslint"
+
+
+@cache
+def modules(package: Path = PACKAGE) -> dict[str, Path]:
+    return {module_name(path, package): path for path in sorted(package.rglob("*.py"))}
+
+
+def _inside(name: str) -> str | None:
+    """`achslint.homing.setup` -> `homing.setup`; None for a module outside the package."""
+    if name == "achslint":
+        return name
+    return name.removeprefix("achslint.") if name.startswith("achslint.") else None
+
+
+def _is_type_checking(test: ast.expr) -> bool:
+    return (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING") or (
+        isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING"
+    )
+
+
+class _Imports(ast.NodeVisitor):
+    """The achslint modules one file imports: `import`, `from ... import` (relative or absolute) and
+    `importlib.import_module(f"{__package__}.pkg.{name}")`, each marked eager or deferred."""
+
+    def __init__(self, importer: str, path: Path, source: str, known: dict[str, Path]) -> None:
+        self.importer = importer
+        self.known = known
+        parts = [] if importer == "achslint" else importer.split(".")
+        self.package = parts if path.name == "__init__.py" else parts[:-1]  # where `from .` starts
+        tree = ast.parse(source, str(path))
+        # Import statements sit among statements; only a file that calls import_module needs its expressions
+        # walked, and only there are its strings (the registry's module names) of interest.
+        self.dynamic = "import_module" in source
+        self.constants = (
+            {n.value for n in ast.walk(tree) if isinstance(n, ast.Constant) and isinstance(n.value, str)}
+            if self.dynamic
+            else set()
+        )
+        self.deferred = 0  # > 0 inside a function or an `if TYPE_CHECKING:` block
+        self.found: list[tuple[str, int, bool]] = []
+        self.visit(tree)
+
+    def generic_visit(self, node: ast.AST) -> None:
+        if self.dynamic:
+            super().generic_visit(node)
+            return
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, (ast.stmt, ast.excepthandler, ast.match_case)):
+                self.visit(child)
+
+    def _add(self, imported: str, line: int) -> None:
+        if imported != self.importer:
+            self.found.append((imported, line, self.deferred == 0))
+
+    def _defer(self, node: ast.AST) -> None:
+        self.deferred += 1
+        self.generic_visit(node)
+        self.deferred -= 1
+
+    visit_FunctionDef = visit_AsyncFunctionDef = visit_Lambda = _defer
+
+    def visit_If(self, node: ast.If) -> None:
+        if not _is_type_checking(node.test):
+            self.generic_visit(node)
+            return
+        self.deferred += 1
+        for statement in node.body:
+            self.visit(statement)
+        self.deferred -= 1
+        for statement in node.orelse:
+            self.visit(statement)
+
+    def visit_Import(self, node: ast.Import) -> None:
+        for alias in node.names:
+            name = _inside(alias.name)
+            if name is not None:
+                self._add(name, node.lineno)
+
+    def visit_ImportFrom(self, node: ast.ImportFrom) -> None:
+        if node.level:
+            parts = self.package[: len(self.package) - (node.level - 1)]
+            base = ".".join([*parts, *(node.module.split(".") if node.module else [])]) or "achslint"
+        else:
+            found = _inside(node.module or "")
+            if found is None:
+                return
+            base = found
+        for alias in node.names:
+            submodule = alias.name if base == "achslint" else f"{base}.{alias.name}"
+            self._add(submodule if submodule in self.known else base, node.lineno)
+
+    def visit_Call(self, node: ast.Call) -> None:
+        """A registry's `import_module(f"{__name__}.{name}")`: the package's modules that the file names in a
+        string (its tuple or table of module names), or every module of the package if it names none."""
+        self.generic_visit(node)
+        if not (isinstance(node.func, ast.Attribute) and node.func.attr == "import_module"):
+            return
+        if not node.args or not isinstance(node.args[0], ast.JoinedStr):
+            return
+        pieces = node.args[0].values
+        head = pieces[0] if pieces else None
+        if not (isinstance(head, ast.FormattedValue) and isinstance(head.value, ast.Name)):
+            return
+        if head.value.id == "__name__":
+            anchor = [] if self.importer == "achslint" else self.importer.split(".")
+        elif head.value.id == "__package__":
+            anchor = self.package
+        else:
+            return
+        fixed = takewhile(lambda piece: isinstance(piece, ast.Constant), pieces[1:])
+        middle = "".join(str(piece.value) for piece in fixed if isinstance(piece, ast.Constant))
+        package = ".".join([*anchor, *filter(None, middle.split("."))])
+        members = [m for m in self.known if m.startswith(f"{package}.")]
+        named = [m for m in members if m.rsplit(".", 1)[-1] in self.constants]
+        for member in named or members:
+            self._add(member, node.lineno)
+
+
+@cache
+def arrows(package: Path = PACKAGE) -> tuple[Arrow, ...]:
+    """Every import between the package's modules, wherever in the file it is written."""
+    first: dict[tuple[str, str], int] = {}
+    eager: set[tuple[str, str]] = set()
+    known = modules(package)
+    for importer, path in known.items():
+        source = path.read_text(encoding="utf-8")
+        for imported, line, runs_on_load in _Imports(importer, path, source, known).found:
+            key = (importer, imported)
+            first[key] = min(first.get(key, line), line)
+            if runs_on_load:
+                eager.add(key)
+    return tuple(Arrow(a, b, line, (a, b) in eager) for (a, b), line in sorted(first.items()))
+
+
+def layer_of(module: str) -> int | None:
+    if module in LAYER_OF:
+        return LAYER_OF[module]
+    parts = module.split(".")
+    for size in range(len(parts), 0, -1):
+        layer = LAYER_OF.get(".".join(parts[:size]) + ".*")
+        if layer is not None:
+            return layer
+    return None
+
+
+def _graph(edges: Iterable[Arrow]) -> dict[str, set[str]]:
+    graph: dict[str, set[str]] = {}
+    for arrow in edges:
+        graph.setdefault(arrow.importer, set()).add(arrow.imported)
+    return graph
+
+
+def components(edges: Iterable[Arrow]) -> list[set[str]]:
+    """The strongly connected components of more than one module (Tarjan): the modules on a common cycle."""
+    graph = _graph(edges)
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[set[str]] = []
+
+    def visit(node: str) -> None:
+        index[node] = low[node] = len(index)
+        stack.append(node)
+        for successor in sorted(graph.get(node, ())):
+            if successor not in index:
+                visit(successor)
+                low[node] = min(low[node], low[successor])
+            elif successor in stack:
+                low[node] = min(low[node], index[successor])
+        if low[node] == index[node]:
+            component = set(stack[stack.index(node) :])
+            del stack[stack.index(node) :]
+            if len(component) > 1:
+                found.append(component)
+
+    for node in sorted(graph):
+        if node not in index:
+            visit(node)
+    return found
+
+
+def path_back(arrow: Arrow, package: Path = PACKAGE) -> list[str] | None:
+    """The shortest import chain from `arrow.imported` back to `arrow.importer`, if the arrow closes a cycle."""
+    graph = _graph(arrows(package))
+    came_from = {arrow.imported: arrow.imported}
+    frontier = [arrow.imported]
+    while frontier:
+        following = []
+        for node in frontier:
+            for successor in sorted(graph.get(node, ())):
+                if successor not in came_from:
+                    came_from[successor] = node
+                    following.append(successor)
+        frontier = following
+        if arrow.importer in came_from:
+            chain = [arrow.importer]
+            while chain[-1] != arrow.imported:
+                chain.append(came_from[chain[-1]])
+            return chain[::-1]
+    return None
+
+
+def _up(arrow: Arrow) -> bool:
+    below, above = layer_of(arrow.importer), layer_of(arrow.imported)
+    return below is not None and above is not None and above > below
+
+
+def offending() -> dict[Arrow, str]:
+    """The arrows that go up the layers, and the arrows that close a cycle within one layer, with why.
+
+    Without the upward arrows a cycle can only run inside one layer. There, the imports deferred into a
+    function or under TYPE_CHECKING are what close it (the module-level ones load in order); if the
+    module-level imports of a layer still form a cycle of their own, those count as well."""
+    found = {
+        a: f"up from {LAYERS[layer_of(a.importer) or 0][0]} to {LAYERS[layer_of(a.imported) or 0][0]}"
+        for a in arrows()
+        if _up(a)
+    }
+    level = [a for a in arrows() if a not in found]
+    for component in components(level):
+        inside = [a for a in level if a.importer in component and a.imported in component]
+        eager_cycles = components(a for a in inside if a.eager)
+        for arrow in inside:
+            if not arrow.eager or any({arrow.importer, arrow.imported} <= c for c in eager_cycles):
+                layer = LAYERS[layer_of(arrow.importer) or 0][0]
+                found[arrow] = f"closes a cycle in {layer}"
+    return found
+
+
+def _explained(arrow: Arrow, why: str) -> str:
+    where = f"{modules()[arrow.importer].relative_to(ROOT)}:{arrow.line}"
+    back = path_back(arrow)
+    cycle = f"; back: {' -> '.join(back)}" if back else ""
+    return f"  {arrow}  ({why}{cycle}; {where})"
+
+
+def test_every_module_has_a_layer() -> None:
+    missing = [name for name in modules() if layer_of(name) is None]
+    assert not missing, (
+        f"modules without a layer: {', '.join(missing)}; give each one in LAYERS of tests/test_layers.py "
+        "(the layers are drawn in STYLE.md, 'The house, drawn')"
+    )
+
+
+def test_every_declared_layer_names_a_module() -> None:
+    stale = [key for key in LAYER_OF if key.removesuffix(".*") not in modules()]
+    assert not stale, f"LAYERS in tests/test_layers.py names modules that do not exist: {', '.join(stale)}"
+
+
+def test_imports_go_down_the_layers_without_cycles() -> None:
+    found = offending()
+    new = {arrow: why for arrow, why in found.items() if str(arrow) not in ALLOWED}
+    gone = sorted(ALLOWED - {str(arrow) for arrow in found})
+    lines = []
+    if new:
+        lines.append(f"{len(new)} import(s) that go up the layers or close a cycle (tests/test_layers.py):")
+        lines += [_explained(arrow, why) for arrow, why in sorted(new.items(), key=lambda item: str(item[0]))]
+    if gone:
+        lines.append("arrows in ALLOWED that no longer offend; delete them there:")
+        lines += [f"  {arrow}" for arrow in gone]
+    assert not lines, "\n".join(lines)
+
+
+def test_the_walk_sees_deferred_type_checking_and_registry_imports(tmp_path: Path) -> None:
+    package = tmp_path / "achslint"
+    (package / "plugins").mkdir(parents=True)
+    files = {
+        "__init__.py": "from .api import run\n",
+        "api.py": "def run():\n    from . import low\n    return low\n",
+        "low.py": (
+            "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from .api import run\n"
+            "else:\n    import achslint.helpers\n"
+        ),
+        "helpers.py": "",
+        "plugins/__init__.py": (
+            "import importlib\nNAMES = ('first',)\n"
+            "def load(name):\n    return importlib.import_module(f'{__name__}.{name}')\n"
+        ),
+        "plugins/first.py": "from .. import low\nfrom ..plugins import second\n",
+        "plugins/second.py": "",
+    }
+    for name, text in files.items():
+        (package / name).write_text(text, encoding="utf-8")
+    found = {str(arrow): arrow.eager for arrow in arrows(package)}
+    assert found == {
+        "achslint -> api": True,
+        "api -> low": False,  # inside a function
+        "low -> api": False,  # under TYPE_CHECKING
+        "low -> helpers": True,  # the else branch runs
+        "plugins -> plugins.first": False,  # named in the registry's tuple; `second` is not
+        "plugins.first -> low": True,
+        "plugins.first -> plugins.second": True,
+    }
+    assert components(arrows(package)) == [{"api", "low"}]
+    assert path_back(next(a for a in arrows(package) if str(a) == "api -> low"), package) == ["low", "api"]
+
+
+def test_linting_a_list_leaves_pydantic_matplotlib_and_pygls_unloaded(tmp_path: Path) -> None:
+    """Start-up time: the CLI and the API lint lists without the model, plotting or editor libraries."""
+    probe = (
+        "import json, sys\n"
+        "import achslint\n"
+        "from achslint.cli import main\n"
+        "code = main(['lint', *sys.argv[1:]])\n"
+        "found = achslint.lint(sys.argv[1])\n"
+        "heavy = [name for name in ('pydantic', 'matplotlib', 'pygls') if name in sys.modules]\n"
+        "print(json.dumps({'code': code, 'found': len(found), 'heavy': heavy}))\n"
+    )
+    lists = (str(FIXTURES / "multi_rule.lis"), str(FIXTURES / "lists" / "achsmds1.lis"))
+    done = subprocess.run(
+        [sys.executable, "-c", probe, *lists], cwd=tmp_path, capture_output=True, text=True, timeout=60
+    )
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout.splitlines()[-1])
+    assert report["code"] == 1 and report["found"] > 0  # the lint ran and found what multi_rule.lis holds
+    assert report["heavy"] == []
+
+
+@pytest.mark.parametrize("definition", strategies(), ids=lambda definition: definition.id)
+def test_every_strategy_example_selects_that_strategy(definition: StrategyDef) -> None:
+    axis = resolve_bytes(definition.example.encode(), f"the example of {definition.id}")
+    assert classify(axis).id == definition.id, definition.example
+
+
+def test_explain_publishes_each_strategy_with_an_example_that_selects_it() -> None:
+    done = run_cli("explain", "kenngr.homing.homing_type", "--format", "json")
+    assert done.returncode == 0, done.stderr
+    published = json.loads(done.stdout)["strategies"]
+    assert [entry["id"] for entry in published] == [d.id for d in strategies()]
+    chosen = [classify(resolve_bytes(entry["example"].encode(), entry["id"])).id for entry in published]
+    assert chosen == [entry["id"] for entry in published]
