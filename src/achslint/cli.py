@@ -19,9 +19,10 @@ from typing import TYPE_CHECKING, Any, NoReturn, TextIO, TypeVar, get_args
 import typer
 
 from . import __version__
-from .config import CYCLE_TIME_US, MAX_TOLERANCE_UM, SeverityName
+from .config import MAX_TOLERANCE_UM, SeverityName
 from .config import UnknownParameters as UnknownParametersChoice
 from .reporters import REPORTERS
+from .scenario import CYCLE_TIME_US
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 

@@ -16,6 +16,8 @@ from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Literal
 
+from .scenario import CYCLE_TIME_US
+
 if TYPE_CHECKING:
     from pydantic import ValidationError
 
@@ -49,7 +51,7 @@ def parse_codes(values: list[str]) -> list[str]:
 # Bounds of the numbers a configuration file may set: the same as the command-line options' (an absurd
 # value is a configuration error, never gigabytes of padding or a MemoryError).
 MAX_COLUMN = 400  # [fmt] value-column / comment-column: wider than any real list, small enough to pad
-CYCLE_TIME_US = (50, 100_000)  # the CNC cycle: 0.05 ms to 100 ms (scenario.CYCLE_MS in ms)
+# cycle-time-us: scenario.CYCLE_TIME_US, the CNC's cycle (the dry run's scenario has the same bounds)
 MAX_TOLERANCE_UM = 1_000_000.0  # repeatability tolerance on linear axes: up to 1 m
 MAX_TOLERANCE_DEG = 360.0  # and on rotary axes: up to one turn
 
@@ -338,8 +340,10 @@ def _check_contained(path: Path, settings: Settings) -> None:
         else:
             problem = ""
         if problem:
-            where = "the git work tree" if os.path.lexists(repository / ".git") else (
-                "the configuration's folder (no git work tree holds it)"
+            where = (
+                "the git work tree"
+                if os.path.lexists(repository / ".git")
+                else "the configuration's folder (no git work tree holds it)"
             )
             raise ConfigError(
                 f"configuration error in {path}: key `{key}`: {value!r} {problem}, {where}; "

@@ -33,8 +33,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 
-from .config import CYCLE_TIME_US
-
 if TYPE_CHECKING:
     from pydantic import BaseModel
 
@@ -53,7 +51,8 @@ class ScenarioError(Exception):
 POSITION_BOUND = {"mm": 1e6, "deg": 1e9}
 ANY_POSITION = 1e9
 MIN_PERIOD = 0.001  # 1 µm (or 0.001°)
-CYCLE_MS = (CYCLE_TIME_US[0] / 1000, CYCLE_TIME_US[1] / 1000)  # the configuration's bounds, in ms
+CYCLE_TIME_US = (50, 100_000)  # the CNC cycle: 0.05 ms to 100 ms (the configuration's cycle-time bounds too)
+CYCLE_MS = (CYCLE_TIME_US[0] / 1000, CYCLE_TIME_US[1] / 1000)
 MAX_RATE = 1e9  # velocities and accelerations per second
 
 

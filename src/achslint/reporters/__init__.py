@@ -22,22 +22,7 @@ class Reporter:
 
 
 if TYPE_CHECKING:
-    from ..diagnostics import Diagnostic
-
-
-class LintResult(Protocol):
-    """What a reporter reads of one file's result (`linter.FileResult`)."""
-
-    @property
-    def name(self) -> str: ...
-    @property
-    def diagnostics(self) -> list[Diagnostic]: ...
-    @property
-    def error(self) -> str | None: ...  # the file could not be read at all
-    @property
-    def source_lines(self) -> list[str]: ...
-    @property
-    def fail_on(self) -> str: ...  # the lowest severity that fails the run for this file
+    from .base import LintResult
 
 
 class ReportFunction(Protocol):
@@ -56,13 +41,6 @@ REPORTERS = {
     "gitlab": Reporter("gitlab", needs_source=True),
     "junit": Reporter("junit"),
 }
-
-
-def write_json(document: object, stream: TextIO) -> None:
-    """The machine formats that are JSON (json, sarif, gitlab) write through here: strict JSON, one document."""
-    from ..display import json_text
-
-    stream.write(json_text(document) + "\n")
 
 
 def get(name: str) -> ReportFunction:

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, TextIO
 from ..display import printable
 
 if TYPE_CHECKING:
-    from . import LintResult
+    from .base import LintResult
 
 
 def report(results: Sequence[LintResult], stream: TextIO, **_options: object) -> None:

@@ -9,7 +9,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..display import printable
 
 if TYPE_CHECKING:
-    from . import LintResult
+    from .base import LintResult
 
 _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
 

@@ -9,7 +9,7 @@ from ..diagnostics import Severity
 from ..display import printable
 
 if TYPE_CHECKING:
-    from . import LintResult
+    from .base import LintResult
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
 

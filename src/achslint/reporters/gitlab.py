@@ -7,10 +7,10 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, TextIO, TypedDict
 
 from ..diagnostics import Severity
-from . import write_json
+from .base import write_json
 
 if TYPE_CHECKING:
-    from . import LintResult
+    from .base import LintResult
 
 SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
 

@@ -6,10 +6,10 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, TextIO, TypedDict
 
 from ..diagnostics import Diagnostic, rule_url
-from . import write_json
+from .base import write_json
 
 if TYPE_CHECKING:
-    from . import LintResult
+    from .base import LintResult
 
 # The document, as `SCHEMA` below describes it.
 

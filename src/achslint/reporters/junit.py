@@ -15,7 +15,7 @@ from ..diagnostics import Severity
 from ..display import printable
 
 if TYPE_CHECKING:
-    from . import LintResult
+    from .base import LintResult
 
 
 def document(results: Sequence[LintResult]) -> ET.Element:

@@ -10,11 +10,11 @@ from urllib.parse import quote
 
 from .. import __version__
 from ..diagnostics import Diagnostic, Severity, rule_url
-from . import write_json
+from .base import write_json
 
 if TYPE_CHECKING:
     from ..rules import Rule
-    from . import LintResult
+    from .base import LintResult
 
 # The document follows the SARIF 2.1.0 schema (the tests validate it); its parts are plain JSON objects.
 JsonObject = dict[str, Any]
