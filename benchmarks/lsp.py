@@ -11,7 +11,13 @@
 - the server process's resident memory after opening 100 typical lists (250 lines, in ten
   folders of ten axes) over stdio, once every list's diagnostics arrived;
 - for information, the same edit end to end through a real server process (stdio, JSON-RPC,
-  debounce 0): from sending the change to receiving its diagnostics.
+  debounce 0): from sending the change to receiving its diagnostics;
+- formatting and fix-all edits of a list of n and 2n bytes (1 MB at full size; the line diff that
+  turns the result into edits, in-process): doubling the list at most 2.6 times the time;
+- LIS101 on a list of 1,000 distinct unknown names (the closest-name search), in-process;
+- a hover sent while that list is linted again, over stdio: answered from the last analysis;
+- a 50,000-line list in a fresh server process: a hover while it is linted again, the server's
+  resident memory, and the size of its diagnostics message (capped at 1,000 findings).
 """
 
 from __future__ import annotations
@@ -35,6 +41,11 @@ from generate import axis_list
 BUDGET_DIAGNOSTICS_MS = 50
 BUDGET_ANSWER_MS = 20
 BUDGET_MEMORY_MB = 300
+BUDGET_DOUBLING = 2.6  # time(2n) / time(n); 2 is linear, 4 would be quadratic
+BUDGET_UNKNOWN_S = 0.5  # LIS101 on 1,000 distinct unknown names
+BUDGET_HOVER_WHILE_LINT_MS = 50
+BUDGET_LARGE_MEMORY_MB = 300  # a server with a 50,000-line list open
+BUDGET_DIAGNOSTICS_BYTES = 1_000_000  # one publishDiagnostics message
 
 
 def verdict(ok: bool) -> str:
@@ -169,6 +180,7 @@ class Client:
             command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL
         )
         self.published: dict[str, tuple[float, int | None]] = {}
+        self.sizes: dict[str, int] = {}  # bytes of the last diagnostics message per document
         self.responses: dict[int, dict] = {}
         self.lock = threading.Condition()
         self.reader = threading.Thread(target=self._read, daemon=True)
@@ -187,11 +199,13 @@ class Client:
                     break
                 if header.lower().startswith(b"content-length:"):
                     length = int(header.split(b":")[1])
-            message = json.loads(stream.read(length))
+            body = stream.read(length)
+            message = json.loads(body)
             with self.lock:
                 if message.get("method") == "textDocument/publishDiagnostics":
                     params = message["params"]
                     self.published[params["uri"]] = (time.perf_counter(), params.get("version"))
+                    self.sizes[params["uri"]] = len(body)
                 elif "id" in message and "method" not in message:
                     self.responses[message["id"]] = message
                 self.lock.notify_all()
@@ -319,6 +333,214 @@ def server_process(lists: int, runs: int) -> bool:
     return ok
 
 
+def unknown_list(count: int, round_: int = 0) -> str:
+    """`count` distinct unknown names: catalogue names with one letter changed and a number added (another
+    number each round, so a new lint searches again instead of finding its earlier answers)."""
+    import random
+
+    from achslint.catalogue import catalogue
+
+    rng = random.Random(7)
+    names = list(catalogue()._candidates)
+    lines = ["kopf.achs_nr 1"]
+    for number in range(count):
+        name = rng.choice(names).replace("[i]", "[0]")
+        at = rng.randrange(len(name))
+        lines.append(
+            f"{name[:at]}{rng.choice('abcdefghijklmnopqrstuvwxyz')}{name[at + 1 :]}_{round_}_{number} 1"
+        )
+    return "\n".join([*lines, "Ende", ""])
+
+
+def doubling(label: str, small: float, large: float) -> float:
+    ratio = large / max(small, 1e-4)
+    print(f"  {label:<44} {small * 1000:8.1f} ms -> {large * 1000:8.1f} ms  ({ratio:4.2f} x)")
+    return ratio if large > 0.005 else 0.0  # below 5 ms the ratio is noise
+
+
+def edits_linear(size: int) -> bool:
+    """Formatting and fix-all edits (the server's own work for them) at n and 2n bytes, in-process."""
+    from achslint.lsp import features
+    from achslint.lsp.documents import Document
+    from achslint.lsp.session import Session
+
+    def real_list(n: int) -> str:  # generated lists, comments out of their column: every line formatted
+        return axis_list(n // 90).replace("        ( ", "  ( ")
+
+    def repeated(n: int) -> str:  # two lines over and over, spaced two ways: half of them formatted
+        return "kopf.achs_nr    1\nkopf.achs_nr 1\n" * (n // 32) + "Ende\n"
+
+    def misspelt_end(text: str) -> str:  # one safe fix (LIS004) at the end of a long list
+        return text[: text.rindex("Ende")] + "End\n"
+
+    session = Session()
+
+    def timed(text: str, fix: bool) -> float:
+        samples: list[float] = []
+        while len(samples) < 3 and sum(samples) < 2.0:  # slow cases: fewer repetitions
+            document = Document("file:///bench/achsmds1.lis", None, text, 1)
+            start = time.perf_counter()
+            if fix:
+                fixed = session.fixed_text(document)
+                assert fixed is not None
+                edits = features.diff_edits(document, fixed)
+            else:
+                edits = features.format_document(document, document.parse())
+            samples.append(time.perf_counter() - start)
+            assert edits
+        return statistics.median(samples)
+
+    print(f"formatting and fix-all edits at n = {size:,} bytes and 2n (in-process)")
+    timed(real_list(size // 8), False)  # imports and caches: not part of the first figure
+    worst = 0.0
+    for label, make, fix in (
+        ("format: generated list, comments moved", real_list, False),
+        ("format: two lines repeated", repeated, False),
+        ("fix all: generated list ending in End", lambda n: misspelt_end(real_list(n)), True),
+        ("fix all: two lines repeated, then End", lambda n: misspelt_end(repeated(n)), True),
+    ):
+        worst = max(worst, doubling(label, timed(make(size), fix), timed(make(2 * size), fix)))
+    ok = worst <= BUDGET_DOUBLING
+    print(f"  worst doubling {worst:.2f} x (linear is 2, budget <= {BUDGET_DOUBLING})  -> {verdict(ok)}")
+    return ok
+
+
+def unknown_names() -> bool:
+    """LIS101 on 1,000 distinct unknown names (the closest-name search), in-process, searched afresh each run."""
+    from achslint.catalogue import catalogue
+    from achslint.linter import lint_file
+
+    data = unknown_list(1000).encode("ascii")
+    samples = []
+    for _ in range(3):
+        catalogue()._suggestions.clear()
+        start = time.perf_counter()
+        result = lint_file(data, "achsmds1.lis")
+        samples.append(time.perf_counter() - start)
+    took = statistics.median(samples)
+    found = sum(1 for d in result.diagnostics if d.code == "LIS101")
+    ok = took <= BUDGET_UNKNOWN_S
+    print(f"LIS101, a list of 1,000 distinct unknown names ({found} findings), in-process")
+    print(f"  lint            {took:7.3f} s median (budget <= {BUDGET_UNKNOWN_S} s)  -> {verdict(ok)}")
+    return ok
+
+
+def _open(client: Client, uri: str, text: str) -> None:
+    item = {"uri": uri, "languageId": "achsmds", "version": 1, "text": text}
+    client.send({"method": "textDocument/didOpen", "params": {"textDocument": item}})
+    client.wait(lambda: uri in client.published)
+
+
+def _started(folder: Path) -> Client:
+    client = Client([sys.executable, "-m", "achslint", "server"])
+    client.request(
+        "initialize",
+        {
+            "processId": os.getpid(),
+            "rootUri": folder.as_uri(),
+            "capabilities": {},
+            "initializationOptions": {"debounceMs": 0},
+        },
+    )
+    client.send({"method": "initialized", "params": {}})
+    return client
+
+
+def hover_while_linting(
+    client: Client, uri: str, changes: list[dict], line: int = 0
+) -> tuple[list[float], list[float], int]:
+    """Make each change in turn and hover while the document is linted: the hover times, the lint times
+    (change -> diagnostics) and how many hovers were answered before the lint ended."""
+    hovers, lints, overlapped = [], [], 0
+    where = {"textDocument": {"uri": uri}, "position": {"line": line, "character": 2}}  # on kopf.achs_nr
+    for version, change in enumerate(changes, 2):
+        sent = time.perf_counter()
+        client.send(
+            {
+                "method": "textDocument/didChange",
+                "params": {
+                    "textDocument": {"uri": uri, "version": version},
+                    "contentChanges": [change],
+                },
+            }
+        )
+        time.sleep(0.02)  # the worker has taken the lint
+        asked = time.perf_counter()
+        answer = client.request("textDocument/hover", where)
+        answered = time.perf_counter()
+        assert "kopf.achs_nr" in json.dumps(answer.get("result")), answer
+        with client.lock:
+            done = client.published.get(uri, (0.0, None))
+        overlapped += done[1] != version or done[0] > answered
+        hovers.append(answered - asked)
+        client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
+        lints.append(client.published[uri][0] - sent)
+    return hovers, lints, overlapped
+
+
+def busy_server(runs: int) -> bool:
+    """Hovers while a slow lint runs, memory and diagnostics size with a 50,000-line list (fresh processes)."""
+    folder = Path(tempfile.mkdtemp(prefix="achslint-lsp-busy-"))
+    ok = True
+
+    client = _started(folder)
+    uri = (folder / "unknown" / "achsmds1.lis").as_uri()
+    _open(client, uri, unknown_list(1000))
+    renamed = [{"text": unknown_list(1000, r + 1)} for r in range(runs)]  # all names new: searched again
+    hovers, lints, overlapped = hover_while_linting(client, uri, renamed)
+    client.close()
+    hover = median_ms(hovers)
+    good = hover <= BUDGET_HOVER_WHILE_LINT_MS
+    ok = ok and good
+    print("language server process, busy")
+    print(
+        f"  hover while 1,000 unknown names are linted  {hover:6.1f} ms median, worst {max(hovers) * 1000:.1f} ms "
+        f"(budget <= {BUDGET_HOVER_WHILE_LINT_MS} ms)  -> {verdict(good)}"
+    )
+    print(
+        f"    (lint {median_ms(lints):.0f} ms median; {overlapped} of {len(hovers)} hovers answered before it ended)"
+    )
+
+    client = _started(folder)
+    uri = (folder / "large" / "achsmds1.lis").as_uri()
+    text = axis_list(50_000)
+    started = time.perf_counter()
+    _open(client, uri, text)
+    first = time.perf_counter() - started
+    column = text.splitlines()[1].index("1 ")  # the axis number, typed over (the editor sends the edit)
+    typed = [
+        {
+            "range": {"start": {"line": 1, "character": column}, "end": {"line": 1, "character": column + 1}},
+            "text": str(n % 9 + 1),
+        }
+        for n in range(1, max(3, runs // 5) + 1)
+    ]
+    hovers, lints, overlapped = hover_while_linting(client, uri, typed, line=1)
+    rss = client.rss_mb()
+    size = client.sizes[uri]
+    client.close()
+    hover = median_ms(hovers)
+    good_hover = hover <= BUDGET_HOVER_WHILE_LINT_MS
+    good_memory = rss <= BUDGET_LARGE_MEMORY_MB
+    good_size = size <= BUDGET_DIAGNOSTICS_BYTES
+    ok = ok and good_hover and good_memory and good_size
+    print(
+        f"  a 50,000-line list: first diagnostics after {first:.1f} s, a new lint takes {median_ms(lints) / 1000:.1f} s"
+    )
+    print(
+        f"  hover while it is linted                    {hover:6.1f} ms median, worst {max(hovers) * 1000:.1f} ms "
+        f"(budget <= {BUDGET_HOVER_WHILE_LINT_MS} ms)  -> {verdict(good_hover)}"
+    )
+    print(
+        f"  resident memory   {rss:7.1f} MB (budget <= {BUDGET_LARGE_MEMORY_MB} MB)  -> {verdict(good_memory)}"
+    )
+    print(
+        f"  diagnostics message {size / 1e6:5.2f} MB (budget <= {BUDGET_DIAGNOSTICS_BYTES / 1e6:.0f} MB)  "
+        f"-> {verdict(good_size)}"
+    )
+    return ok
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description="Measure the language server against its budgets.")
     parser.add_argument("--quick", action="store_true", help="fewer repetitions")
@@ -332,6 +554,12 @@ def main() -> int:
     ok = in_process(runs)
     print()
     ok = server_process(100, runs) and ok
+    print()
+    ok = edits_linear(1 << 18 if args.quick else 1 << 20) and ok
+    print()
+    ok = unknown_names() and ok
+    print()
+    ok = busy_server(5 if args.quick else 15) and ok
     return 0 if ok else 1
 
 

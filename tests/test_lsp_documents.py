@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.lsp.documents import Document, LineCache
-from achslint.syntax import parse_text
+from achslint.syntax import parse_text, split_lines
 
 from .conftest import examples
 
@@ -70,6 +70,25 @@ def test_line_cache_parse_equals_the_full_parse_after_any_edit(before, inserted,
     at = min(at, len(before))
     after = before[:at] + inserted + before[at:]
     assert fields(cache.parse(after, "x")) == fields(parse_text(after))
+
+
+POSITION = st.tuples(st.integers(0, 12), st.integers(0, 12))
+
+
+@settings(max_examples=examples(300, 80), deadline=None)
+@given(TEXTS, st.lists(st.tuples(POSITION, POSITION, TEXTS), min_size=1, max_size=6))
+def test_edits_keep_the_lines_as_a_fresh_split_has_them(text, edits):
+    # apply() re-reads only the lines around an edit; the text and its lines must be those of the whole
+    # text read again, wherever the edit falls (CR and LF joined or split, past the end, reversed ranges).
+    document = Document("file:///a.lis", None, text)
+    for start, end, inserted in edits:
+        fresh = Document("file:///a.lis", None, document.text)
+        a = fresh.offset(*start)
+        expected = fresh.text[:a] + inserted + fresh.text[max(a, fresh.offset(*end)) :]
+        document.apply(start, end, inserted)
+        assert document.text == expected
+        assert document.raw_lines == split_lines(expected, keepends=True)
+        assert document.lines == Document("file:///a.lis", None, expected).lines
 
 
 def test_positions_count_utf16_units_and_only_real_line_breaks():

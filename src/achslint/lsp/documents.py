@@ -90,13 +90,15 @@ class LineCache:
 
 @dataclass
 class Document:
+    """An open document. Its lines (with their breaks) are kept up to date by `apply`, which re-reads only
+    the lines an edit touches: a keystroke in a 50,000-line list does not split the whole text again."""
+
     uri: str
     path: Path | None  # None for documents that are not files (untitled, other schemes)
     text: str
     version: int | None = None
     encoding: str = "utf-16"  # the position encoding agreed with the client
-    _lines: list[str] | None = field(default=None, repr=False)
-    _raw: list[str] | None = field(default=None, repr=False)  # the lines with their breaks
+    _raw: list[str] | None = field(default=None, repr=False)  # the lines with their breaks (never mutated)
     cache: LineCache = field(default_factory=LineCache, repr=False)
 
     @property
@@ -107,17 +109,19 @@ class Document:
     @property
     def lines(self) -> list[str]:
         """Line texts without their breaks, numbered as the parser numbers them."""
-        if self._lines is None:
-            self._lines = [raw.rstrip("\r\n") for raw in self.raw_lines]
-            if not self._lines or self.text.endswith(("\n", "\r")):
-                self._lines.append("")
-        return self._lines
+        return [self._text_of(number) for number in range(1, self.line_count + 1)]
 
     @property
     def raw_lines(self) -> list[str]:
         if self._raw is None:
             self._raw = split_lines(self.text, keepends=True)
         return self._raw
+
+    @property
+    def line_count(self) -> int:
+        """How many lines the parser reads (an empty last one after a final line break)."""
+        raw = self.raw_lines
+        return len(raw) + (1 if not raw or raw[-1].endswith(("\n", "\r")) else 0)
 
     @property
     def bom(self) -> bool:
@@ -128,19 +132,19 @@ class Document:
         """The text as achslint reads it: without a byte-order mark the editor kept as a character."""
         return self.text[1:] if self.bom else self.text
 
+    def _text_of(self, number: int) -> str:
+        raw = self.raw_lines
+        return raw[number - 1].rstrip("\r\n") if 1 <= number <= len(raw) else ""
+
     def line(self, number: int) -> str:
         """Line `number` (1-based) as achslint sees it (without the byte-order mark)."""
-        lines = self.lines
-        if not 1 <= number <= len(lines):
-            return ""
-        text = lines[number - 1]
+        text = self._text_of(number)
         return text[1:] if number == 1 and self.bom else text
 
     # -- positions -------------------------------------------------------------------------------
     def to_lsp(self, line: int, column: int) -> tuple[int, int]:
         """A 1-based achslint (line, column) as a 0-based LSP (line, character)."""
-        lines = self.lines
-        line = max(1, min(line, len(lines)))
+        line = max(1, min(line, self.line_count))
         text = self.line(line)
         column = max(1, min(column, len(text) + 1))
         shift = 1 if line == 1 and self.bom else 0
@@ -148,8 +152,7 @@ class Document:
 
     def from_lsp(self, line: int, character: int) -> tuple[int, int]:
         """A 0-based LSP position as a 1-based achslint (line, column), clamped to the document."""
-        lines = self.lines
-        number = max(1, min(line + 1, len(lines)))
+        number = max(1, min(line + 1, self.line_count))
         text = self.line(number)
         if number == 1 and self.bom:
             character = max(0, character - 1)
@@ -161,7 +164,7 @@ class Document:
         raw = self.raw_lines
         if line >= len(raw):
             return len(self.text)
-        start = sum(len(r) for r in raw[:line])
+        start = sum(map(len, raw[:line]))
         body = raw[line].rstrip("\r\n")
         return start + code_points(body, character, self.encoding)
 
@@ -169,11 +172,31 @@ class Document:
         """Apply one content change (a whole-document change when `start` is None)."""
         if start is None or end is None:
             self.text = new_text
-            self._lines = self._raw = None
-        else:
-            a, b = self.offset(*start), self.offset(*end)
-            self.text = self.text[:a] + new_text + self.text[max(a, b) :]
-        self._lines = self._raw = None
+            self._raw = None
+            return
+        raw = self.raw_lines
+        a = self.offset(*start)
+        b = max(a, self.offset(*end))
+        # The lines from the one before the edit to the one after it are read again: a line break can join
+        # or split only there (a CR before the edit and an LF after it become one CRLF, for example).
+        first = max(min(start[0], len(raw)) - 1, 0)
+        last = min((end[0] if b > a else start[0]) + 2, len(raw))
+        region = sum(map(len, raw[:first]))
+        old_length = sum(map(len, raw[first:last]))
+        self.text = self.text[:a] + new_text + self.text[b:]
+        changed = self.text[region : region + old_length + len(new_text) - (b - a)]
+        self._raw = [*raw[:first], *split_lines(changed, keepends=True), *raw[last:]]
+
+    def adopt_lines(self, other: Document) -> None:
+        """Take the lines another thread split from this very text (they cost a pass over a large text)."""
+        if self._raw is None and other.text is self.text:
+            self._raw = other._raw
+
+    def copy(self) -> Document:
+        """This version of the document, to lint while the editor goes on changing the original: the text
+        and its lines are shared (neither is ever changed in place), the parse cache too (only the worker
+        thread parses)."""
+        return Document(self.uri, self.path, self.text, self.version, self.encoding, self._raw, self.cache)
 
     def parse(self) -> ListFile:
         if self.bom:  # read without the mark, and known to have one (LIS006)

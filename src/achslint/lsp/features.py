@@ -8,7 +8,6 @@ units module, the rules' documentation and their fixes; formatting is `fmt`'s.
 
 from __future__ import annotations
 
-import difflib
 import os
 import re
 from collections.abc import Callable, Sequence
@@ -32,6 +31,7 @@ from ..numbers import Reference
 from ..rules import registry
 from ..units import describe, unit_label
 from .documents import Document, units
+from .textdiff import changed_blocks
 
 if TYPE_CHECKING:
     from ..analysis import Setting
@@ -126,11 +126,41 @@ def to_lsp_diagnostic(document: Document, d: Diagnostic) -> lsp.Diagnostic:
     )
 
 
+MAX_DIAGNOSTICS = 1000  # findings sent for one document; a summary tells how many more there are
+_SEVERITY_ORDER = {Severity.ERROR: 0, Severity.WARNING: 1, Severity.INFO: 2}
+
+
+def capped(found: list[Diagnostic], limit: int = MAX_DIAGNOSTICS) -> tuple[list[Diagnostic], int]:
+    """At most `limit` findings, the most severe first chosen, in their order; and how many were left out.
+
+    A list with 50,000 unknown names would otherwise send megabytes to the editor on every edit; the
+    first thousand say what is wrong, and errors are never hidden behind warnings."""
+    if len(found) <= limit:
+        return found, 0
+    ranked = sorted(
+        range(len(found)), key=lambda index: (_SEVERITY_ORDER.get(found[index].severity, 3), index)
+    )
+    kept = sorted(ranked[:limit])
+    return [found[index] for index in kept], len(found) - limit
+
+
 def publishable(
     document: Document, snapshot: Snapshot | None, found: list[Diagnostic]
 ) -> list[lsp.Diagnostic]:
-    out = [to_lsp_diagnostic(document, d) for d in found]
+    shown, left_out = capped(found)
+    out = [to_lsp_diagnostic(document, d) for d in shown]
     start = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1))
+    if left_out:
+        out.insert(
+            0,
+            lsp.Diagnostic(
+                start,
+                f"{left_out:,} more findings are not shown here (the editor gets the first {len(shown):,}); "
+                f"`achslint lint {document.name}` lists them all",
+                lsp.DiagnosticSeverity.Information,
+                source="achslint",
+            ),
+        )
     if snapshot is not None and snapshot.result.error:
         out.insert(
             0, lsp.Diagnostic(start, snapshot.result.error, lsp.DiagnosticSeverity.Error, source="achslint")
@@ -569,20 +599,15 @@ def text_edits(document: Document, fix: Fix) -> list[lsp.TextEdit]:
 
 
 def diff_edits(document: Document, new_text: str) -> list[lsp.TextEdit]:
-    """The line edits that turn the document's text into `new_text`."""
-    old = syntax.split_lines(document.text, keepends=True)
+    """The line edits that turn the document's text into `new_text` (linear in its length: textdiff)."""
+    old = document.raw_lines
     new = syntax.split_lines(new_text, keepends=True)
-    edits = []
-    matcher = difflib.SequenceMatcher(None, old, new, autojunk=False)
-    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
-        if tag == "equal":
-            continue
-        edits.append(
-            lsp.TextEdit(
-                lsp.Range(_line_start(document, old, i1), _line_start(document, old, i2)), "".join(new[j1:j2])
-            )
+    return [
+        lsp.TextEdit(
+            lsp.Range(_line_start(document, old, i1), _line_start(document, old, i2)), "".join(new[j1:j2])
         )
-    return edits
+        for i1, i2, j1, j2 in changed_blocks(old, new)
+    ]
 
 
 def _line_start(document: Document, old: list[str], index: int) -> lsp.Position:

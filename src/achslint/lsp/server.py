@@ -1,38 +1,93 @@
 """`achslint server`: the language server (stdio), on pygls 2.
 
 The handlers only translate between the protocol and `session` / `features`; no finding,
-card or fix is computed here. Every handler is guarded: whatever a document contains, the
-server answers (at worst with nothing) and keeps running.
+card or fix is computed here. Three promises shape this module:
+
+- Every message is answered. Our own reader (`protocol.FrameReader`) takes the byte stream
+  and skips what is not a message; `dispatch` answers malformed requests with the JSON-RPC
+  error they call for (ParseError, InvalidRequest, InvalidParams, ServerNotInitialized, and
+  InvalidRequest after `shutdown`) before pygls sees them. Every handler is guarded.
+- The message loop never waits for a lint. Lints, fix-all and formatting run on one worker
+  thread (`worker.Worker`), which alone touches the `Session`; hover, completion, definition,
+  outline and inlay hints answer from the last analysis of the document. A lint whose text
+  was edited again before it finished is not published (the newer one follows).
+- Nothing hostile fills the log: problems are one line each, without tracebacks.
 """
 
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import functools
+import gc
+import itertools
+import json
 import logging
+import sys
+import threading
 import traceback
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Any, BinaryIO, TypeVar
 
 from lsprotocol import types as lsp
+from pygls.io_ import StdoutWriter
 from pygls.lsp.server import LanguageServer
+from pygls.protocol import default_converter
+from pygls.protocol.json_rpc import JsonRPCNotification, JsonRPCRequestMessage
 from pygls.uris import to_fs_path
 
 from .. import __version__
 from ..files import is_xml
 from . import features
 from .documents import Document
+from .protocol import FrameReader, Skipped
 from .session import ClientSettings, Session, Snapshot
+from .worker import Latest, Worker
 
 if TYPE_CHECKING:
     from ..config import FmtOptions
     from ..context import Context
+    from ..diagnostics import Diagnostic
     from ..machine import StartupEntry
     from ..syntax import ListFile
 
 log = logging.getLogger("achslint.lsp")
-_Params = TypeVar("_Params")  # the parameters of a request or notification
+_T = TypeVar("_T")
+
+FIRST_ANALYSIS_WAIT = 30.0  # seconds a request waits for a document's first lint before answering without it
+DRAIN_WAIT = 5.0  # seconds the server waits for running requests when the client's input ends
+IDLE_COLLECTION = 2.0  # seconds without a message before the server collects garbage (see run())
+COLLECT_AFTER_LINTS = 200  # ... or after this many lints without such a pause
+IN_FLIGHT = 64  # messages read but not yet handled; the reader waits beyond that (a flood cannot fill memory)
+_DOCUMENT_SYNC = (lsp.TEXT_DOCUMENT_DID_OPEN, lsp.TEXT_DOCUMENT_DID_CHANGE, lsp.TEXT_DOCUMENT_DID_CLOSE)
+
+
+def describe(exc: BaseException) -> str:
+    """An exception in one line: type, message (shortened) and where it was raised."""
+    text = " ".join(str(exc).split())
+    text = text if len(text) <= 200 else text[:200] + "..."
+    frames = traceback.extract_tb(exc.__traceback__)
+    where = f" ({Path(frames[-1].filename).name}:{frames[-1].lineno})" if frames else ""
+    return f"{type(exc).__name__}: {text}{where}"
+
+
+@dataclass
+class Analysis:
+    """A document's text as it was linted, and what the lint found."""
+
+    generation: int  # which edit of the document this is (newer edits have larger numbers)
+    document: Document  # a copy: positions in the findings are positions in this text
+    snapshot: Snapshot
+    found: list[Diagnostic]
+
+
+@dataclass(frozen=True)
+class _Unreadable:
+    """A message body that is not JSON."""
+
+    reason: str
 
 
 class AchslintServer(LanguageServer):
@@ -40,8 +95,33 @@ class AchslintServer(LanguageServer):
         super().__init__(
             "achslint", __version__, text_document_sync_kind=lsp.TextDocumentSyncKind.Incremental
         )
-        self.session = Session()
+        # pygls keeps its own copy of every document for features we do not use: the editor's text
+        # lives once, in `documents`.
+        for method in _DOCUMENT_SYNC:
+            self.protocol.fm.builtin_features.pop(method, None)
+        self.session = Session()  # used on the worker thread only
+        self.documents: dict[str, Document] = {}  # the editor's documents, as they are now
+        self.generations: dict[str, int] = {}
+        self.analyses: dict[str, Analysis] = {}  # the last analysis of each document
+        self._edits = itertools.count(1)
         self._timers: dict[str, asyncio.TimerHandle] = {}
+        self._waiting: dict[str, list[tuple[int, asyncio.Future[Analysis | None]]]] = {}
+        self._to_lint: Latest[tuple[Document, int]] = Latest()
+        self._fixes: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # fix-all edits by generation
+        self._converter = default_converter()  # type: ignore[no-untyped-call]  # the one pygls uses
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._worker: Worker | None = None
+        self._slots = threading.Semaphore(IN_FLIGHT)
+        self._done: asyncio.Future[int] | None = None
+        self._drain = False  # at the end of the input, answer the requests still running before stopping
+        self.initialized = False
+        self.stopping = False  # `shutdown` received
+        # Seconds without a message after which the garbage collector runs (None: it runs on its own, as
+        # in tests). `run()` turns its full collections off: one takes a third of a second with a large
+        # list open and would stop the loop in the middle of typing.
+        self.collect_when_idle: float | None = None
+        self._collector: asyncio.TimerHandle | None = None
+        self._uncollected = 0  # lints since the last full collection
 
     # -- client capabilities -------------------------------------------------------------------
     def _text_capabilities(self) -> lsp.TextDocumentClientCapabilities | None:
@@ -84,78 +164,429 @@ class AchslintServer(LanguageServer):
 
     @property
     def encoding(self) -> str:
-        encoding = self.workspace.position_encoding if self.workspace is not None else None
+        encoding = self.workspace.position_encoding
         names: dict[str, str] = {
             lsp.PositionEncodingKind.Utf8: "utf-8",
             lsp.PositionEncodingKind.Utf32: "utf-32",
         }
         return names.get(encoding or "", "utf-16")
 
-    # -- diagnostics -----------------------------------------------------------------------------
-    def publish(self, uri: str) -> None:
-        self._timers.pop(uri, None)
-        document = self.session.documents.get(uri)
-        if document is None:
-            return
-        peers: list[str] = []
+    # -- serving ---------------------------------------------------------------------------------
+    def serve(self, stdin: BinaryIO, stdout: BinaryIO) -> int:
+        """Answer the messages of `stdin` on `stdout` until `exit` or the end of the input; the exit code
+        (0 after shutdown and exit or at the end of the input, 1 for an exit without shutdown)."""
+        self.protocol.set_writer(StdoutWriter(stdout))
+        return asyncio.run(self._serve(stdin))
+
+    async def _serve(self, stdin: BinaryIO) -> int:
+        self._loop = asyncio.get_running_loop()
+        self._done = self._loop.create_future()
+        self._worker = Worker()
+        threading.Thread(target=self._read, args=(stdin,), name="achslint-reader", daemon=True).start()
         try:
-            snapshot, found, peers = self.session.diagnostics(uri)
-            diagnostics = features.publishable(document, snapshot, found)
+            code = await self._done
+            if self._drain:  # the input ended: answer what was asked before it
+                pending = asyncio.all_tasks() - {asyncio.current_task()}
+                if pending:
+                    await asyncio.wait(pending, timeout=DRAIN_WAIT)
+                for _ in range(3):  # the answers are sent by callbacks of the finished tasks
+                    await asyncio.sleep(0)
+            return code
+        finally:
+            for timer in self._timers.values():
+                timer.cancel()
+            if self._collector is not None:
+                self._collector.cancel()
+            self._worker.stop()
+
+    def _finish(self, code: int, drain: bool = False) -> None:
+        if self._done is not None and not self._done.done():
+            self._drain = drain
+            self._done.set_result(code)
+
+    def _read(self, stdin: BinaryIO) -> None:
+        """The reader thread: frames from the stream, parsed, handed to the loop one by one."""
+        loop = self._loop
+        assert loop is not None
+        reader = FrameReader(stdin)
+        try:
+            while True:
+                frame = reader.next()
+                if frame is None:
+                    break
+                item: object
+                if isinstance(frame, Skipped):
+                    item = frame
+                else:
+                    try:
+                        item = json.loads(frame)
+                    except (ValueError, RecursionError) as exc:
+                        item = _Unreadable(describe(exc))
+                self._slots.acquire()
+                loop.call_soon_threadsafe(self._receive, item)
+        except (OSError, ValueError) as exc:  # the stream broke (or was closed)
+            log.warning("achslint: stopped reading the client: %s", describe(exc))
+        except RuntimeError:  # the loop has closed: the server stopped
+            return
+        with contextlib.suppress(RuntimeError):  # the loop has closed meanwhile
+            loop.call_soon_threadsafe(self._finish, 0, True)
+
+    def _idle_later(self) -> None:
+        """(Re)start the wait for a quiet moment to collect garbage in."""
+        if self.collect_when_idle is None or self._loop is None:
+            return
+        if self._collector is not None:
+            self._collector.cancel()
+        self._collector = self._loop.call_later(self.collect_when_idle, self._collect)
+
+    def _collect(self) -> None:
+        self._collector = None
+        if self._worker is not None and not self._worker.idle:
+            self._idle_later()  # a lint is running: not a quiet moment yet
+            return
+        self._uncollected = 0
+        gc.collect()
+
+    def _receive(self, item: object) -> None:
+        self._slots.release()
+        self._idle_later()
+        try:
+            if isinstance(item, Skipped):
+                log.warning("achslint: %s", item.reason)
+                if item.refused:
+                    self.window_show_message(
+                        lsp.ShowMessageParams(lsp.MessageType.Warning, f"achslint: {item.reason}")
+                    )
+            elif isinstance(item, _Unreadable):
+                log.warning("achslint: a message is not JSON: %s", item.reason)
+                self._reply_error(None, lsp.ErrorCodes.ParseError, f"the message is not JSON: {item.reason}")
+            else:
+                self.dispatch(item)
+        except OSError as exc:  # the client is gone (broken pipe)
+            log.warning("achslint: cannot write to the client: %s", describe(exc))
+            self._finish(1)
+
+    def _reply_error(self, msg_id: int | str | None, code: int, message: str) -> None:
+        body = json.dumps({"jsonrpc": "2.0", "id": msg_id, "error": {"code": int(code), "message": message}})
+        data = body.encode("utf-8")
+        writer = self.protocol.writer
+        if writer is not None:
+            writer.write(b"Content-Length: %d\r\n\r\n" % len(data) + data)
+
+    def dispatch(self, raw: object) -> None:
+        """Check one message and hand it to pygls, or answer it with the error it calls for."""
+        if not isinstance(raw, dict):
+            kind = "a batch" if isinstance(raw, list) else f"a JSON {type(raw).__name__}"
+            log.warning("achslint: ignored %s where a message object belongs", kind)
+            self._reply_error(None, lsp.ErrorCodes.InvalidRequest, f"{kind} is not a JSON-RPC message")
+            return
+        method, msg_id = raw.get("method"), raw.get("id")
+        has_id = "id" in raw
+        good_id = isinstance(msg_id, (int, str)) and not isinstance(msg_id, bool)
+        answer_to = msg_id if good_id else None
+        if (
+            raw.get("jsonrpc") != "2.0"
+            or (has_id and not good_id)
+            or not isinstance(method, (str, type(None)))
+        ):
+            log.warning("achslint: ignored a message that is not JSON-RPC 2.0")
+            self._reply_error(answer_to, lsp.ErrorCodes.InvalidRequest, "not a JSON-RPC 2.0 message")
+            return
+        if method is None:
+            if has_id:
+                self._handle(raw, None)  # the client's answer to a request of ours
+            else:
+                self._reply_error(None, lsp.ErrorCodes.InvalidRequest, "a message needs a method or an id")
+            return
+        request = has_id
+        if method == lsp.EXIT:
+            self._finish(0 if self.stopping else 1)
+            return
+        refusal = self._refusal(method)
+        if refusal is not None:
+            code, why = refusal
+            if request:
+                self._reply_error(answer_to, code, why)
+            return
+        if self._handle(raw, method) and request:
+            if method == lsp.INITIALIZE:
+                self.initialized = True
+            elif method == lsp.SHUTDOWN:
+                self.stopping = True
+                for timer in self._timers.values():
+                    timer.cancel()
+                self._timers.clear()
+
+    def _refusal(self, method: str) -> tuple[int, str] | None:
+        """Why a message cannot be handled now (error code and words), or None."""
+        if self.stopping:
+            return lsp.ErrorCodes.InvalidRequest, f"{method}: the server is shutting down"
+        if method == lsp.INITIALIZE and self.initialized:
+            return lsp.ErrorCodes.InvalidRequest, "the server is already initialized"
+        if method != lsp.INITIALIZE and not self.initialized:
+            return lsp.ErrorCodes.ServerNotInitialized, f"{method}: the server is not initialized yet"
+        return None
+
+    def _handle(self, raw: dict[str, Any], method: str | None) -> bool:
+        """Structure the message as lsprotocol types and let pygls route it; False when its params do not
+        fit (a request gets InvalidParams)."""
+        msg_id = raw.get("id")
+        try:
+            if method is None:
+                message = self.protocol.structure_message(raw)
+            else:
+                known = self.protocol.get_message_type(method)
+                if known is None:  # a method lsprotocol does not know: pygls answers MethodNotFound
+                    raw = {"params": None, **raw}
+                fallback = JsonRPCRequestMessage if "id" in raw else JsonRPCNotification
+                message = self._converter.structure(raw, known or fallback)
         except Exception as exc:
-            log.error("achslint: cannot lint %s: %s\n%s", uri, exc, traceback.format_exc())
-            diagnostics = [
-                lsp.Diagnostic(
-                    lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)),
-                    f"achslint could not check this document: internal error {type(exc).__name__}: {exc}",
-                    lsp.DiagnosticSeverity.Error,
-                    source="achslint",
-                )
-            ]
-        self.text_document_publish_diagnostics(
-            lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
-        )
-        for peer in peers:  # other open lists of the machine whose machine findings changed with this one
-            self.publish(peer)
+            why = _invalid(exc)
+            log.warning("achslint: ignored %s: invalid params: %s", method or "a response", why)
+            if method is not None and "id" in raw:
+                self._reply_error(msg_id, lsp.ErrorCodes.InvalidParams, f"invalid params for {method}: {why}")
+            return False
+        try:
+            self.protocol.handle_message(message)
+        except OSError:
+            raise
+        except Exception as exc:
+            log.error("achslint: %s failed: %s", method, describe(exc))
+            if method is not None and "id" in raw:
+                self._reply_error(msg_id, lsp.ErrorCodes.InternalError, f"{method} failed: {describe(exc)}")
+            return False
+        return True
+
+    # -- the worker ------------------------------------------------------------------------------
+    def run_on_worker(self, job: Callable[[], _T]) -> Awaitable[_T]:
+        """Run `job` on the worker thread (after the work queued before it); awaitable on the loop."""
+        assert self._worker is not None
+        return asyncio.wrap_future(self._worker.submit(job))
+
+    def on_worker(self, job: Callable[[], object]) -> None:
+        """Queue `job` on the worker without waiting for it."""
+        if self._worker is not None:
+            self._worker.submit(job)
+
+    # -- diagnostics -----------------------------------------------------------------------------
+    def edited(self, uri: str) -> None:
+        """The document's text changed: it needs a new analysis."""
+        self.generations[uri] = next(self._edits)
 
     def schedule(self, uri: str, delay_ms: int | None = None) -> None:
+        """Lint the document after the debounce delay (restarted by every edit)."""
         delay = self.session.settings.debounce_ms if delay_ms is None else delay_ms
         timer = self._timers.pop(uri, None)
         if timer is not None:
             timer.cancel()
-        if delay <= 0:
-            self.publish(uri)
+        if delay <= 0 or self._loop is None:
+            self.lint(uri)
             return
-        loop = asyncio.get_running_loop()
-        self._timers[uri] = loop.call_later(delay / 1000, self.publish, uri)
+        self._timers[uri] = self._loop.call_later(delay / 1000, self.lint, uri)
 
-    def publish_all(self) -> None:
-        for uri in list(self.session.documents):
-            self.publish(uri)
+    def lint(self, uri: str) -> None:
+        """Queue a lint of the document's current text (replacing one not started yet)."""
+        timer = self._timers.pop(uri, None)
+        if timer is not None:
+            timer.cancel()
+        document = self.documents.get(uri)
+        if document is None or self._worker is None or self.stopping:
+            return
+        if self._to_lint.put(uri, (document.copy(), self.generations[uri])):
+            self._worker.submit(functools.partial(self._lint_now, uri))
+
+    def lint_all(self) -> None:
+        for uri in list(self.documents):
+            self.lint(uri)
+
+    def _lint_now(self, uri: str) -> None:
+        """On the worker: lint the newest text asked for, then hand the result to the loop."""
+        taken = self._to_lint.take(uri)
+        if taken is None:
+            return  # closed meanwhile
+        document, generation = taken
+        self.session.open(document)
+        analysis: Analysis | None = None
+        peers: list[str] = []
+        try:
+            snapshot, found, peers = self.session.diagnostics(uri)
+            diagnostics = features.publishable(document, snapshot, found)
+            if snapshot is not None:
+                analysis = Analysis(generation, document, snapshot, found)
+        except Exception as exc:
+            log.error("achslint: cannot lint %s: %s", uri, describe(exc))
+            diagnostics = [
+                lsp.Diagnostic(
+                    lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1)),
+                    f"achslint could not check this document: internal error {describe(exc)}",
+                    lsp.DiagnosticSeverity.Error,
+                    source="achslint",
+                )
+            ]
+        if self._loop is not None:
+            self._loop.call_soon_threadsafe(
+                self._linted, uri, generation, document, analysis, diagnostics, peers
+            )
+
+    def _linted(
+        self,
+        uri: str,
+        generation: int,
+        document: Document,
+        analysis: Analysis | None,
+        diagnostics: list[lsp.Diagnostic],
+        peers: list[str],
+    ) -> None:
+        """On the loop: keep the analysis, publish it unless the text changed meanwhile."""
+        self._uncollected += 1
+        if self.collect_when_idle is not None and self._uncollected >= COLLECT_AFTER_LINTS:
+            self._uncollected = 0
+            gc.collect()  # never quiet for long: collect now and then anyway
+        else:
+            self._idle_later()
+        if uri not in self.documents:
+            return
+        last = self.analyses.get(uri)
+        if analysis is not None and (last is None or analysis.generation >= last.generation):
+            self.analyses[uri] = analysis
+            self.documents[uri].adopt_lines(analysis.document)
+        self._wake(uri, generation)
+        if generation != self.generations.get(uri) or self.stopping:
+            return  # stale: the lint of the newer text follows
+        self.text_document_publish_diagnostics(
+            lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
+        )
+        for peer in peers:  # other open lists of the machine whose machine findings changed with this one
+            self.lint(peer)
+
+    def _wake(self, uri: str, generation: int | None) -> None:
+        """Answer the requests that waited for an analysis of this generation (all of them when None)."""
+        waiting = self._waiting.pop(uri, [])
+        still = []
+        for wanted, future in waiting:
+            if generation is None or wanted <= generation:
+                if not future.done():
+                    future.set_result(self.analyses.get(uri))
+            else:
+                still.append((wanted, future))
+        if still:
+            self._waiting[uri] = still
+
+    async def analysis(self, uri: str, current: bool = False) -> Analysis | None:
+        """The document's last analysis (waiting for the first one); with `current`, one of its text as it
+        is now (linted at once if need be: fixes and formatting must not act on an older text)."""
+        if uri not in self.documents or self._loop is None:
+            return None
+        wanted = self.generations[uri] if current else 0
+        found = self.analyses.get(uri)
+        if found is not None and found.generation >= wanted:
+            return found
+        if current:
+            self.lint(uri)
+        future: asyncio.Future[Analysis | None] = self._loop.create_future()
+        self._waiting.setdefault(uri, []).append((wanted, future))
+        try:
+            return await asyncio.wait_for(future, FIRST_ANALYSIS_WAIT)
+        except TimeoutError:
+            return None
+
+    async def fix_all_edits(self, analysis: Analysis) -> list[lsp.TextEdit]:
+        """The edits of every safe fix in the analysed text (computed once per text, on the worker)."""
+        uri = analysis.document.uri
+        cached = self._fixes.get(uri)
+        if cached is not None and cached[0] == analysis.generation:
+            return cached[1]
+        document, session = analysis.document, self.session
+
+        def edits() -> list[lsp.TextEdit]:
+            fixed = session.fixed_text(document)
+            return features.diff_edits(document, fixed) if fixed is not None else []
+
+        found = await self.run_on_worker(edits)
+        if uri in self.documents:
+            self._fixes[uri] = (analysis.generation, found)
+        return found
+
+    def close(self, uri: str) -> Document | None:
+        document = self.documents.pop(uri, None)
+        timer = self._timers.pop(uri, None)
+        if timer is not None:
+            timer.cancel()
+        self._to_lint.drop(uri)
+        self.generations.pop(uri, None)
+        self.analyses.pop(uri, None)
+        self._fixes.pop(uri, None)
+        self._wake(uri, None)
+        session = self.session
+        self.on_worker(lambda: session.close(uri))
+        return document
+
+    def forget_disk(self) -> None:
+        """Files or configurations changed on disk: the worker reads them again (before its next lint)."""
+        session = self.session
+        self.on_worker(session.forget_disk)
 
 
-server = AchslintServer()
+def create() -> AchslintServer:
+    """A language server with every feature registered (one per process; tests make several)."""
+    ls = AchslintServer()
+    for method, options, handler in _FEATURES:
+        ls.feature(method, options)(handler)
+    return ls
 
 
-def guarded(
-    default: Callable[[], object] | None = None,
-) -> Callable[[Callable[[AchslintServer, _Params], object]], Callable[[AchslintServer, _Params], object]]:
-    """Answer `default()` (or None) instead of failing when a handler meets something unexpected (logged on
-    stderr)."""
+_FEATURES: list[tuple[str, object, Callable[..., Any]]] = []
+_Handler = TypeVar("_Handler", bound=Callable[..., Any])
 
-    def wrap(
-        handler: Callable[[AchslintServer, _Params], object],
-    ) -> Callable[[AchslintServer, _Params], object]:
+
+def feature(method: str, options: object = None) -> Callable[[_Handler], _Handler]:
+    def register(handler: _Handler) -> _Handler:
+        _FEATURES.append((method, options, handler))
+        return handler
+
+    return register
+
+
+def guarded(default: Callable[[], object] | None = None) -> Callable[[_Handler], _Handler]:
+    """Answer `default()` (or None) instead of failing when a handler meets something unexpected (one line
+    on stderr)."""
+
+    def fallback(handler: Callable[..., Any], exc: Exception) -> object:
+        log.error("achslint: %s failed: %s", handler.__name__, describe(exc))
+        return default() if default is not None else None
+
+    def wrap(handler: _Handler) -> _Handler:
+        if asyncio.iscoroutinefunction(handler):
+
+            @functools.wraps(handler)
+            async def run_async(ls: AchslintServer, params: object) -> object:
+                try:
+                    return await handler(ls, params)
+                except Exception as exc:
+                    return fallback(handler, exc)
+
+            return run_async  # type: ignore[return-value]
+
         @functools.wraps(handler)
-        def run(ls: AchslintServer, params: _Params) -> object:
+        def run(ls: AchslintServer, params: object) -> object:
             try:
                 return handler(ls, params)
             except Exception as exc:
-                log.error("achslint: %s failed: %s\n%s", handler.__name__, exc, traceback.format_exc())
-                return default() if default is not None else None
+                return fallback(handler, exc)
 
-        return run
+        return run  # type: ignore[return-value]
 
     return wrap
+
+
+def _invalid(exc: Exception) -> str:
+    """What is wrong with a message's params, in one line."""
+    from cattrs import transform_error
+    from cattrs.errors import ClassValidationError
+
+    if isinstance(exc, ClassValidationError):
+        return "; ".join(transform_error(exc)[:3])
+    return describe(exc)
 
 
 def _take_settings(ls: AchslintServer, raw: object) -> None:
@@ -174,7 +605,7 @@ def _path(uri: str) -> Path | None:
     return Path(path) if path and uri.startswith("file:") and "\0" not in path else None
 
 
-@server.feature(lsp.INITIALIZE)
+@feature(lsp.INITIALIZE)
 @guarded()
 def initialize(ls: AchslintServer, params: lsp.InitializeParams) -> None:
     _take_settings(ls, params.initialization_options or {})
@@ -183,18 +614,21 @@ def initialize(ls: AchslintServer, params: lsp.InitializeParams) -> None:
     ls.session.root = root
 
 
-@server.feature(lsp.TEXT_DOCUMENT_DID_OPEN)
+@feature(lsp.TEXT_DOCUMENT_DID_OPEN)
 @guarded()
 def did_open(ls: AchslintServer, params: lsp.DidOpenTextDocumentParams) -> None:
     item = params.text_document
-    ls.session.open(Document(item.uri, _path(item.uri), item.text, item.version, ls.encoding))
-    ls.publish(item.uri)
+    if item.uri in ls.documents:
+        ls.close(item.uri)  # opened again without a close: the new text counts
+    ls.documents[item.uri] = Document(item.uri, _path(item.uri), item.text, item.version, ls.encoding)
+    ls.edited(item.uri)
+    ls.lint(item.uri)
 
 
-@server.feature(lsp.TEXT_DOCUMENT_DID_CHANGE)
+@feature(lsp.TEXT_DOCUMENT_DID_CHANGE)
 @guarded()
 def did_change(ls: AchslintServer, params: lsp.DidChangeTextDocumentParams) -> None:
-    document = ls.session.documents.get(params.text_document.uri)
+    document = ls.documents.get(params.text_document.uri)
     if document is None:
         return
     for change in params.content_changes:
@@ -204,73 +638,62 @@ def did_change(ls: AchslintServer, params: lsp.DidChangeTextDocumentParams) -> N
         else:
             document.apply(None, None, change.text)
     document.version = params.text_document.version
+    ls.edited(document.uri)
     ls.schedule(document.uri)
 
 
-@server.feature(lsp.TEXT_DOCUMENT_DID_SAVE)
+@feature(lsp.TEXT_DOCUMENT_DID_SAVE)
 @guarded()
 def did_save(ls: AchslintServer, params: lsp.DidSaveTextDocumentParams) -> None:
     uri = params.text_document.uri
     if uri.endswith(".toml"):
-        ls.session.forget_disk()
-        ls.publish_all()
-    elif uri in ls.session.documents:
-        ls.session.forget_disk()  # the saved list is now what its neighbours see on disk
+        ls.forget_disk()
+        ls.lint_all()
+    elif uri in ls.documents:
+        ls.forget_disk()  # the saved list is now what its neighbours see on disk
+        ls.edited(uri)
         ls.schedule(uri, 0)
 
 
-@server.feature(lsp.TEXT_DOCUMENT_DID_CLOSE)
+@feature(lsp.TEXT_DOCUMENT_DID_CLOSE)
 @guarded()
 def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams) -> None:
     uri = params.text_document.uri
-    timer = ls._timers.pop(uri, None)
-    if timer is not None:
-        timer.cancel()
-    document = ls.session.documents.get(uri)
-    ls.session.close(uri)
+    document = ls.close(uri)
     ls.text_document_publish_diagnostics(lsp.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
     if document is not None and document.path is not None:
         # Its neighbours now see the file on disk instead of the buffer.
         near = {document.path.parent, document.path.parent.parent}
-        ls.session.forget_disk()
-        for other in list(ls.session.documents.values()):
+        ls.forget_disk()
+        for other in list(ls.documents.values()):
             if other.path is not None and other.path.parent in near:
-                ls.publish(other.uri)
+                ls.lint(other.uri)
 
 
-@server.feature(lsp.WORKSPACE_DID_CHANGE_CONFIGURATION)
+@feature(lsp.WORKSPACE_DID_CHANGE_CONFIGURATION)
 @guarded()
 def did_change_configuration(ls: AchslintServer, params: lsp.DidChangeConfigurationParams) -> None:
     if isinstance(params.settings, dict) and params.settings:
         _take_settings(ls, params.settings)
-    ls.session.forget_disk()
-    ls.publish_all()
+    ls.forget_disk()
+    ls.lint_all()
 
 
-@server.feature(lsp.WORKSPACE_DID_CHANGE_WATCHED_FILES)
+@feature(lsp.WORKSPACE_DID_CHANGE_WATCHED_FILES)
 @guarded()
 def did_change_watched_files(ls: AchslintServer, params: lsp.DidChangeWatchedFilesParams) -> None:
-    ls.session.forget_disk()
-    ls.publish_all()
+    ls.forget_disk()
+    ls.lint_all()
 
 
 # -- requests ---------------------------------------------------------------------------------------
 
 
-def _where(
-    ls: AchslintServer, uri: str, position: lsp.Position
-) -> tuple[Document | None, Snapshot | None, int, int]:
-    document = ls.session.documents.get(uri)
-    if document is None:
-        return None, None, 0, 0
-    line, column = document.from_lsp(position.line, position.character)
-    return document, ls.session.snapshot(uri), line, column
-
-
 def _xml_target(
-    ls: AchslintServer, document: Document, line: int, column: int
+    session: Session, document: Document, line: int, column: int
 ) -> tuple[Context | None, ListFile, int, int] | None:
-    """The embedded list, its context and the list position under an XML position (TwinCAT CDATA, ISG XML)."""
+    """The embedded list, its context and the list position under an XML position (TwinCAT CDATA, ISG XML).
+    Lints the embedded list: runs on the worker."""
     from ..decode import UnreadableInput
     from ..linter import lint_parsed
     from ..syntax import parse_text
@@ -288,30 +711,34 @@ def _xml_target(
             if xml_line != line:
                 continue
             file = parse_text(embedded.text, document.name)
-            config, _ = ls.session.config_for(document)
+            config, _ = session.config_for(document)
             result = lint_parsed(
-                file, document.name, ls.session.file_settings(config, document.path, document.name)
+                file, document.name, session.file_settings(config, document.path, document.name)
             )
             list_column = 1 if embedded.line_map is not None else column - xml_column + 1
             return result.context, file, number, max(list_column, 1)
     return None
 
 
-@server.feature(lsp.TEXT_DOCUMENT_HOVER)
+@feature(lsp.TEXT_DOCUMENT_HOVER)
 @guarded()
-def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None:
-    document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
-    if document is None or snapshot is None:
+async def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None:
+    uri = params.text_document.uri
+    analysis = await ls.analysis(uri)
+    document = ls.documents.get(uri)
+    if document is None or analysis is None:
         return None
+    line, column = document.from_lsp(params.position.line, params.position.character)
     context: Context | None
     file: ListFile | None
     if is_xml(document.name):
-        found = _xml_target(ls, document, line, column)
+        copy, session = document.copy(), ls.session
+        found = await ls.run_on_worker(lambda: _xml_target(session, copy, line, column))
         if found is None:
             return None
         context, file, line, column = found
     else:
-        context, file = snapshot.context, snapshot.file
+        context, file = analysis.snapshot.context, analysis.snapshot.file
     text = features.hover_text(context, file, line, column, ls.markdown)
     if not text:
         return None
@@ -319,98 +746,118 @@ def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None:
     return lsp.Hover(lsp.MarkupContent(kind, text))
 
 
-@server.feature(
+@feature(
     lsp.TEXT_DOCUMENT_COMPLETION,
     lsp.CompletionOptions(trigger_characters=[".", "[", " ", ":", ","], resolve_provider=True),
 )
 @guarded()
-def completion(ls: AchslintServer, params: lsp.CompletionParams) -> lsp.CompletionList | None:
-    document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
+async def completion(ls: AchslintServer, params: lsp.CompletionParams) -> lsp.CompletionList | None:
+    uri = params.text_document.uri
+    analysis = await ls.analysis(uri)
+    document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
         return None
+    line, column = document.from_lsp(params.position.line, params.position.character)
+    snapshot = analysis.snapshot if analysis is not None else None
     return features.complete(document, snapshot, line, column, ls.snippets, ls.edit_range_default)
 
 
-@server.feature(lsp.COMPLETION_ITEM_RESOLVE)
+@feature(lsp.COMPLETION_ITEM_RESOLVE)
 @guarded(default=None)
 def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem) -> lsp.CompletionItem:
     return features.resolve_item(item, ls.markdown_in_completion)
 
 
-@server.feature(
+@feature(
     lsp.TEXT_DOCUMENT_CODE_ACTION,
     lsp.CodeActionOptions(
         code_action_kinds=[lsp.CodeActionKind.QuickFix, features.FIX_ALL, lsp.CodeActionKind.SourceFixAll]
     ),
 )
 @guarded(default=list)
-def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]:
-    uri = params.text_document.uri
-    document = ls.session.documents.get(uri)
-    if document is None:
+async def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]:
+    analysis = await ls.analysis(params.text_document.uri, current=True)
+    if analysis is None:
         return []
-    snapshot, found, _ = ls.session.diagnostics(uri)
-
-    def fix_all() -> list[lsp.TextEdit]:
-        from ..fixer import fix_bytes
-
-        config, _ = ls.session.config_for(document)
-        settings = ls.session.file_settings(config, document.path, document.name)
-        settings.keep_context = False
-        outcome = fix_bytes(document.body.encode("utf-8"), document.name, settings)
-        if not outcome.fixed:
-            return []
-        text = outcome.data.decode("utf-8")
-        return features.diff_edits(document, ("\ufeff" if document.bom else "") + text)
-
-    return features.code_actions(document, snapshot, found, params.range, params.context.only, fix_all)
-
-
-def _list_file(ls: AchslintServer, uri: str) -> tuple[Document, ListFile] | None:
-    """An open axis list (not XML) and its parse."""
-    document = ls.session.documents.get(uri)
-    if document is None or is_xml(document.name):
-        return None
-    snapshot = ls.session.snapshot(uri)
-    return (document, snapshot.file) if snapshot is not None and snapshot.file is not None else None
-
-
-@server.feature(lsp.TEXT_DOCUMENT_FORMATTING)
-@guarded(default=list)
-def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
-    found = _list_file(ls, params.text_document.uri)
-    return features.format_document(*found, _fmt_options(ls, found[0])) if found is not None else []
-
-
-@server.feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
-@guarded(default=list)
-def range_formatting(ls: AchslintServer, params: lsp.DocumentRangeFormattingParams) -> list[lsp.TextEdit]:
-    found = _list_file(ls, params.text_document.uri)
-    return (
-        features.format_range(*found, params.range, _fmt_options(ls, found[0])) if found is not None else []
+    snapshot, found = analysis.snapshot, analysis.found
+    edits: list[lsp.TextEdit] = []
+    if snapshot.file is not None and any(d.fix is not None and d.fix.applicability == "safe" for d in found):
+        edits = await ls.fix_all_edits(analysis)
+    return features.code_actions(
+        analysis.document, snapshot, found, params.range, params.context.only, lambda: edits
     )
 
 
-def _fmt_options(ls: AchslintServer, document: Document) -> FmtOptions:
-    """The `[fmt]` settings of the document's configuration: the editor formats as `achslint fmt` does."""
-    return ls.session.config_for(document)[0].settings.fmt
+async def _formatted(
+    ls: AchslintServer, uri: str, edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]]
+) -> list[lsp.TextEdit]:
+    """Formatting edits for the document's current text (not XML, not a start-up list), on the worker."""
+    from ..machine import is_startup_list
 
-
-@server.feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
-@guarded(default=list)
-def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams) -> list[lsp.DocumentSymbol]:
-    found = _list_file(ls, params.text_document.uri)
-    return features.document_symbols(*found) if found is not None else []
-
-
-@server.feature(lsp.TEXT_DOCUMENT_DEFINITION)
-@guarded(default=list)
-def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[lsp.Location]:
-    document, snapshot, line, column = _where(ls, params.text_document.uri, params.position)
+    document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
         return []
-    if snapshot is not None and snapshot.startup and snapshot.file is None:
-        snapshot.file = document.parse()
+    if document.path is not None and is_startup_list(document.path):
+        return []
+    copy, session = document.copy(), ls.session
+
+    def job() -> list[lsp.TextEdit]:
+        options = session.config_for(copy)[0].settings.fmt  # `[fmt]`: the editor formats as `achslint fmt`
+        return edits(copy, copy.parse(), options)
+
+    return await ls.run_on_worker(job)
+
+
+@feature(lsp.TEXT_DOCUMENT_FORMATTING)
+@guarded(default=list)
+async def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
+    return await _formatted(ls, params.text_document.uri, features.format_document)
+
+
+@feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
+@guarded(default=list)
+async def range_formatting(
+    ls: AchslintServer, params: lsp.DocumentRangeFormattingParams
+) -> list[lsp.TextEdit]:
+    def edits(document: Document, file: ListFile, options: FmtOptions) -> list[lsp.TextEdit]:
+        return features.format_range(document, file, params.range, options)
+
+    return await _formatted(ls, params.text_document.uri, edits)
+
+
+async def _list_analysis(ls: AchslintServer, uri: str) -> Analysis | None:
+    """The last analysis of an open axis list (not XML, not a start-up list)."""
+    analysis = await ls.analysis(uri)
+    if analysis is None or analysis.snapshot.file is None or is_xml(analysis.document.name):
+        return None
+    return analysis
+
+
+@feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+@guarded(default=list)
+async def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams) -> list[lsp.DocumentSymbol]:
+    analysis = await _list_analysis(ls, params.text_document.uri)
+    if analysis is None or analysis.snapshot.file is None:
+        return []
+    return features.document_symbols(analysis.document, analysis.snapshot.file)
+
+
+@feature(lsp.TEXT_DOCUMENT_DEFINITION)
+@guarded(default=list)
+async def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[lsp.Location]:
+    from ..syntax import parse_text
+
+    uri = params.text_document.uri
+    analysis = await ls.analysis(uri)
+    document = ls.documents.get(uri)
+    if document is None or analysis is None or is_xml(document.name):
+        return []
+    line, column = document.from_lsp(params.position.line, params.position.character)
+    snapshot = analysis.snapshot
+    if snapshot.startup and snapshot.file is None:  # a start-up list is not parsed by its lint
+        copy = document.copy()
+        parsed = await ls.run_on_worker(lambda: parse_text(copy.text, copy.name))
+        snapshot = Snapshot(snapshot.version, copy.text, snapshot.result, parsed, startup=True)
 
     def entries() -> list[StartupEntry]:
         from ..machine import read_startup
@@ -423,18 +870,46 @@ def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[lsp.Loc
     return features.definition(document, snapshot, line, column, entries)
 
 
-@server.feature(lsp.TEXT_DOCUMENT_INLAY_HINT)
+@feature(lsp.TEXT_DOCUMENT_INLAY_HINT)
 @guarded(default=list)
-def inlay_hint(ls: AchslintServer, params: lsp.InlayHintParams) -> list[lsp.InlayHint]:
+async def inlay_hint(ls: AchslintServer, params: lsp.InlayHintParams) -> list[lsp.InlayHint]:
     if not ls.session.settings.inlay_hints:
         return []
-    document = ls.session.documents.get(params.text_document.uri)
-    if document is None or is_xml(document.name):
+    analysis = await ls.analysis(params.text_document.uri)
+    if analysis is None or is_xml(analysis.document.name):
         return []
-    return features.inlay_hints(document, ls.session.snapshot(document.uri), params.range)
+    return features.inlay_hints(analysis.document, analysis.snapshot, params.range)
+
+
+class _OneLine(logging.Filter):
+    """Every log record in one line: an exception is named with where it was raised, never a traceback
+    (pygls logs some with theirs), and a message is cut at its first line break."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        message = record.getMessage()
+        if record.exc_info and record.exc_info[1] is not None:
+            message = f"{message.splitlines()[0] if message else ''}: {describe(record.exc_info[1])}"
+        first = message.splitlines()[0] if message else ""
+        record.msg, record.args = first[:1000], None
+        record.exc_info, record.exc_text, record.stack_info = None, None, None
+        return True
+
+
+server = create()
 
 
 def run() -> None:
     """Serve on standard input and output until the client says exit."""
-    logging.basicConfig(level=logging.WARNING, format="%(message)s")
-    server.start_io()
+    handler = logging.StreamHandler()
+    handler.setFormatter(logging.Formatter("%(message)s"))
+    handler.addFilter(_OneLine())
+    logging.basicConfig(level=logging.WARNING, handlers=[handler])
+    sys.setswitchinterval(0.001)  # the loop gets the interpreter back quickly while the worker lints
+    # Full collections only when the server is idle (a lint makes no cyclic garbage; the young generations
+    # are still collected as usual).
+    gc.set_threshold(700, 10, 1 << 30)
+    server.collect_when_idle = IDLE_COLLECTION
+    # The reader thread reads the descriptor itself: blocked in sys.stdin's buffer, it would hold that buffer's
+    # lock when the interpreter exits, which aborts the process.
+    stdin = open(sys.stdin.fileno(), "rb", buffering=0, closefd=False)  # noqa: SIM115 - open while serving
+    sys.exit(server.serve(stdin, sys.stdout.buffer))

@@ -201,6 +201,19 @@ class Session:
         settings.keep_context = True
         return settings
 
+    def fixed_text(self, document: Document) -> str | None:
+        """The document's text with every safe fix applied, as `achslint lint --fix` would write it; None
+        when no fix applies."""
+        from ..fixer import fix_bytes
+
+        config, _ = self.config_for(document)
+        settings = self.file_settings(config, document.path, document.name)
+        settings.keep_context = False
+        outcome = fix_bytes(document.body.encode("utf-8"), document.name, settings)
+        if not outcome.fixed:
+            return None
+        return ("\ufeff" if document.bom else "") + outcome.data.decode("utf-8")
+
     # -- linting ---------------------------------------------------------------------------------
     def snapshot(self, uri: str) -> Snapshot | None:
         """The linted current version of a document (computed when the text changed)."""
