@@ -7,7 +7,7 @@ from pathlib import Path
 
 from achslint.config import ConfigError, Settings, discover, load_file
 
-BAD_SPEED = b"kenngr.antr_typ 1\ngetriebe[0].a_ref 500\ngetriebe[0].vb_refmax 20000\ngetriebe[0].vb_reflow 100000\nEnde\n"  # LIS302
+BAD_SPEED = b"kenngr.antr_typ 1\nlr_hw[0].cam_direct_access 0\ngetriebe[0].a_ref 500\ngetriebe[0].vb_refmax 20000\ngetriebe[0].vb_reflow 100000\nEnde\n"  # LIS302
 UNKNOWN = b"kenngr.ref_ricth 1\nEnde\n"  # LIS101
 
 

@@ -56,7 +56,9 @@ def test_a_symbol_number_that_names_no_symbol() -> None:
 
 def test_the_axis_type_written_as_a_symbol_sets_the_units() -> None:
     # a rotary axis: accelerations are in °/s² in the messages
-    [(_, code, message)] = found("kenngr.achs_typ  ACHSTYP_ROTATOR", "kenngr.antr_typ  1")
+    [(_, code, message)] = found(
+        "kenngr.achs_typ  ACHSTYP_ROTATOR", "kenngr.antr_typ  1", "lr_hw[0].cam_direct_access  0"
+    )
     assert code == "LIS404" and "1000 °/s² (default)" in message
 
 
@@ -110,6 +112,6 @@ def test_a_missing_value_says_what_is_expected() -> None:
 
 
 def test_an_unknown_axis_type_symbol_leaves_the_axis_linear() -> None:
-    findings = found("kenngr.achs_typ  LINEAR", "kenngr.antr_typ  1")
+    findings = found("kenngr.achs_typ  LINEAR", "kenngr.antr_typ  1", "lr_hw[0].cam_direct_access  0")
     assert [code for _, code, _ in findings] == ["LIS404", "LIS203"]
     assert "1000 mm/s² (default)" in findings[0][2]  # linear units, not °/s²

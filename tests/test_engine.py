@@ -423,10 +423,11 @@ def test_json_has_the_stable_keys():
     phase=st.floats(-50, 50),
 )
 def test_trace_properties(start, ref_richt, without_pulse, one_phase, fast, slow, accel, latch, phase):
+    # a_max 5000 so that every a_ref drawn is used as written (above a_max the CNC lowers it, LIS325).
     axis = (
         f"kenngr.antr_typ 1\nkenngr.ref_richt {ref_richt}\nkenngr.homing_without_zero_pulse {without_pulse}\n"
         f"kenngr.ref_ohne_rev {one_phase}\ngetriebe[0].vb_refmax {fast}\ngetriebe[0].vb_reflow {slow}\n"
-        f"getriebe[0].a_ref {accel}\nEnde\n"
+        f"getriebe[0].a_ref {accel}\ngetriebe[0].dynamik.a_max 5000\nEnde\n"
     ).encode()
     scenario = ScenarioInput(
         start_position=start,

@@ -53,7 +53,7 @@ def corrections(text: str) -> dict:
         ),
         # P-AXIS-00386 on a spindle (P-ERR-110522); P-AXIS-00388 on a CANopen drive (P-ERR-110516).
         (
-            "kenngr.antr_typ 2\nkenngr.achs_typ 4\nantr.sercos.drive_supports_cnc_homing 1",
+            "kenngr.antr_typ 2\nkenngr.achs_typ 4\nkenngr.achs_mode 0x4\nantr.sercos.drive_supports_cnc_homing 1",
             {"antr.sercos.drive_supports_cnc_homing": (True, False, "P-ERR-110522")},
         ),
         ("kenngr.antr_typ 8\nantr.cnc_homing_encoder 2", {"antr.cnc_homing_encoder": (2, 0, "P-ERR-110516")}),

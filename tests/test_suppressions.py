@@ -8,7 +8,11 @@ BASE = "kenngr.antr_typ 1\ngetriebe[0].a_ref 500\ngetriebe[0].vb_refmax 20000\n"
 
 
 def run(text: str, select=None):
-    return [(d.line, d.code) for d in lint((text + "Ende\n").encode("latin-1"), select=select)]
+    # The cam signal from the PLC (LIS321), last so that the lines above keep their numbers.
+    return [
+        (d.line, d.code)
+        for d in lint((text + "lr_hw[0].cam_direct_access 0\nEnde\n").encode("latin-1"), select=select)
+    ]
 
 
 def test_end_of_line_noqa_with_codes():
@@ -18,7 +22,7 @@ def test_end_of_line_noqa_with_codes():
 
 def test_noqa_inside_a_paren_comment_and_several_codes():
     text = BASE + "getriebe[0].vb_reflow 100000   ( slow on purpose, noqa: LIS302, LIS403\n"
-    found = lint((text + "Ende\n").encode("latin-1"))
+    found = lint((text + "lr_hw[0].cam_direct_access 0\nEnde\n").encode("latin-1"))
     assert [(d.line, d.code) for d in found] == [
         (4, "LIS009")
     ]  # LIS302 suppressed; LIS403 had nothing to suppress

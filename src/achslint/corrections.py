@@ -177,8 +177,63 @@ def reference_monitoring(axis: ResolvedAxis) -> None:
         )
 
 
+def homing_dynamics(axis: ResolvedAxis) -> None:
+    """P-AXIS-00285 above the gear stage's a_max (P-AXIS-00008) is lowered to it (P-ERR-110393); P-AXIS-00286
+    other than 0 below the stage's tr_min (P-AXIS-00201) is raised to it (P-ERR-110394). 0 is no error: it
+    selects the fallbacks of §3.2.4."""
+    for gear in axis.gear_stages_set("a_ref"):
+        path, limit = f"getriebe[{gear}].a_ref", f"getriebe[{gear}].dynamik.a_max"
+        most = axis.number(limit)
+        if axis.written_number(path) > most:
+            axis.correct(
+                path,
+                most,
+                "P-ERR-110393",
+                f"the homing acceleration may be at most the axis's {limit}; the CNC homes with {limit}",
+            )
+    for gear in axis.gear_stages_set("tr_ref"):
+        path, limit = f"getriebe[{gear}].tr_ref", f"getriebe[{gear}].dynamik.tr_min"
+        least, written = axis.number(limit), axis.written_number(path)
+        if 0 < written < least:
+            axis.correct(
+                path,
+                least,
+                "P-ERR-110394",
+                f"the homing ramp time may not be shorter than the axis's {limit}; the CNC ramps with {limit}",
+            )
+
+
+LINEAR, MODULO = 0x1, 0x4  # kenngr.achs_mode bits (P-AXIS-00015)
+
+
+def spindle_modulo(axis: ResolvedAxis) -> None:
+    """P-AXIS-00015 of a spindle without the MODULO bit is corrected to modulo (P-ERR-110352)."""
+    if axis.axis_type != "S":
+        return
+    mode = int(axis.written_number("kenngr.achs_mode"))
+    if mode & MODULO:
+        return
+    used = (mode & ~LINEAR) | MODULO
+    axis.correct(
+        "kenngr.achs_mode",
+        used,
+        "P-ERR-110352",
+        f"a spindle always counts modulo; the CNC uses {used:#x}, MODULO (0x4) in place of LINEAR (0x1) and the "
+        "other bits as written (the manual names only the MODULO bit)",
+    )
+
+
 # In the order the CNC's checks depend on each other (the overflow offset needs the overflow switch).
-CORRECTIONS = (homing_type, encoder_overflow, speed_caps, sercos_latch, path_monitoring, reference_monitoring)
+CORRECTIONS = (
+    homing_type,
+    encoder_overflow,
+    speed_caps,
+    sercos_latch,
+    path_monitoring,
+    reference_monitoring,
+    homing_dynamics,
+    spindle_modulo,
+)
 
 
 def apply(axis: ResolvedAxis) -> None:

@@ -173,6 +173,8 @@ def summary(ctx: Context) -> Summary:
         "resettable": values.get("kenngr.gantry_max_diff_resetable"),
         "retraction": values.get("kenngr.homing.torq_retraction_distance"),
         "torq": values.homing_type == "TORQ",
+        "homing_type": values.homing_type,  # in force: after corrections, the drive's default when unset
+        "homing_type_at": at("kenngr.homing.homing_type"),
         "axis_type": values.axis_type,
     }
 
@@ -220,6 +222,17 @@ def repeated_values(
             Severity.WARNING,
             [Related(earlier[0], line, column, parameter, "first use")],
         )
+
+
+def gantry_pairs(members: list[Member]) -> Iterator[tuple[Member, Member | None]]:
+    """Every gantry slave of a machine (a list with `kenngr.gantry_ax_nr`) with its master: the list whose
+    `kopf.achs_nr` it names, or None when the machine has no such list (LIS503)."""
+    by_number = {info["achs_nr"]: (name, info) for name, info in members}
+    for name, info in members:
+        if info["gantry_ax_nr"]:
+            master = by_number.get(info["gantry_ax_nr"])
+            # An axis naming its own number has no master (lists of one XML file share their name).
+            yield (name, info), (master if master is not None and master[1] is not info else None)
 
 
 def check_machines(

@@ -29,6 +29,7 @@ Use instead
 kenngr.antr_typ                 1
 getriebe[0].vb_not_referenced   50000
 getriebe[0].vb_refmax           50000
+lr_hw[0].cam_direct_access      0          ( cam signal from the PLC
 ```
 
 Reference

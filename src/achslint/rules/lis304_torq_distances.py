@@ -33,6 +33,9 @@ getriebe[0].homing.torq_move_velocity       5000
 getriebe[0].homing.torq_move_acceleration   100
 kenngr.homing.torq_min_distance             0
 kenngr.homing.torq_max_distance             200000     ( 20 mm
+antr.fixed_stop.drive_ident[0].id           TORQUE_LIMIT ( torque limited while homing
+antr.fixed_stop.drive_ident[0].wr_ident     S_0_0092
+antr.fixed_stop.drive_ident[0].active_value 50
 ```
 
 Reference

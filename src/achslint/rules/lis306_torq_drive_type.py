@@ -25,6 +25,7 @@ fixed-stop homing:
 ```
 kenngr.antr_typ                 1          ( conventional
 kenngr.homing.homing_type       CNC_CONTROLLED
+lr_hw[0].cam_direct_access      0          ( cam signal from the PLC
 ```
 
 Reference

@@ -36,6 +36,9 @@ getriebe[0].homing.torq_move_velocity       5000
 getriebe[0].homing.torq_move_acceleration   100
 kenngr.homing.torq_detect_time              25000      ( 25 ms at the torque limit
 kenngr.homing.torq_detect_velocity_limit    300        ( 30 % residual speed
+antr.fixed_stop.drive_ident[0].id           TORQUE_LIMIT ( torque limited while homing
+antr.fixed_stop.drive_ident[0].wr_ident     S_0_0092
+antr.fixed_stop.drive_ident[0].active_value 50
 ```
 
 Reference

@@ -35,6 +35,7 @@ kenngr.ref_richt               0
 getriebe[0].vb_reflow          50000
 getriebe[0].a_ref              100
 getriebe[0].pos_refpkt         -9800000        ( -980 mm: 20 mm inside the limit
+lr_hw[0].cam_direct_access     0               ( cam signal from the PLC
 ```
 
 Reference

@@ -34,6 +34,7 @@ kenngr.ref_ohne_rev    1
 kenngr.vorz_richtung   1
 kenngr.beweg_richt     1
 kenngr.ref_richt       1          ( home in the preferred direction
+kenngr.achs_mode       0x4        ( MODULO
 ```
 
 Reference

@@ -27,6 +27,7 @@ Use instead
 kenngr.achs_typ        4
 kenngr.antr_typ        1
 kenngr.ref_ohne_rev    1          ( flying homing, also from rotation
+kenngr.achs_mode       0x4        ( MODULO
 ```
 
 Reference

@@ -24,6 +24,7 @@ Use instead
 ```
 kenngr.antr_typ           6
 kenngr.abs_pos_gueltig    0          ( incremental: home it
+lr_hw[0].cam_direct_access 0         ( cam signal from the PLC
 ```
 
 Reference

@@ -26,6 +26,7 @@ Use instead
 kenngr.antr_typ                 1
 kenngr.ref_ohne_nocken          0
 kenngr.ref_ohne_rev             0
+lr_hw[0].cam_direct_access      0          ( cam signal from the PLC
 ```
 
 Reference

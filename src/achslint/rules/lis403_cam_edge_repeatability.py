@@ -32,6 +32,7 @@ kenngr.antr_typ                    1
 kenngr.homing_without_zero_pulse   1
 getriebe[0].vb_refmax              200000
 getriebe[0].vb_reflow              20000      ( 1.2 m/min -> 20 µm per cycle
+lr_hw[0].cam_direct_access         0          ( cam signal from the PLC
 ```
 
 Reference

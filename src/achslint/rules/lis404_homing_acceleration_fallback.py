@@ -27,6 +27,7 @@ Use instead
 ```
 kenngr.antr_typ                             1
 getriebe[0].a_ref                           500
+lr_hw[0].cam_direct_access                  0          ( cam signal from the PLC
 ```
 
 Reference
