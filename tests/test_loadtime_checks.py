@@ -365,3 +365,42 @@ def test_drive_controlled_slave_without_its_master_is_judged_alone(tmp_path):
     )
     assert [row[:3] for row in rows] == [("achsmds2.lis", 1, "LIS511"), ("achsmds2.lis", 4, "LIS503")]
     assert "its own type counts" in rows[0][3]
+
+
+# --- item 6: a DISABLED axis named by G74 is refused (P-AXIS-00299, P-ERR-50685 / P-ERR-60313) -------------------
+
+
+@pytest.mark.parametrize(
+    "absolute,why",
+    [
+        ("1", "its absolute position is valid without homing: leave it out of G74"),
+        ("0", "the axis is incremental (kenngr.abs_pos_gueltig 0), so it can never be homed (LIS308)"),
+    ],
+)
+def test_dry_run_of_a_disabled_axis_says_the_cnc_refuses_g74(absolute, why):
+    text = f"kenngr.antr_typ 2\nkenngr.abs_pos_gueltig {absolute}\nkenngr.homing.homing_type DISABLED\n"
+    trace = dry_run(listed(text), "d.lis").trace
+    assert trace.outcome == "failed" and not trace.phases and trace.reference is None
+    assert trace.failure == (
+        "homing is DISABLED (kenngr.homing.homing_type): the CNC refuses a G74 that names this axis "
+        f"(P-ERR-50685 / P-ERR-60313); {why}"
+    )
+    # explain says the same of G74 on this axis.
+    assert "P-ERR-50685 / P-ERR-60313" in explain_list(listed(text), "d.lis")["strategy"]["description"]
+
+
+def test_sweep_of_a_disabled_axis_counts_refusals_not_homed_runs():
+    from achslint.dryrun import prepare, sweep
+
+    text = "kenngr.antr_typ 2\nkenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED\n"
+    summary = sweep(prepare(listed(text), "d.lis"), 5)
+    assert summary["outcomes"] == {"failed": 5}
+    assert "refuses a G74" in summary["reasons"][0]["reason"]
+
+
+def test_an_absolute_axis_that_may_be_homed_still_needs_no_homing():
+    # Only DISABLED refuses: an absolute axis with its drive's default homing type needs none.
+    assert (
+        dry_run(listed("kenngr.antr_typ 2\nkenngr.abs_pos_gueltig 1\n"), "a.lis").trace.outcome
+        == "not_required"
+    )

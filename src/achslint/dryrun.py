@@ -154,10 +154,31 @@ def dry_run(
     refused = _refused(context)
     if refused:
         raise DryRunRefused(refused)
-    trace = simulator.run()
+    trace = run(simulator)
     simulator.check_soft_limits(trace)
     annotate(simulator, trace)
     return DryRun(simulator.values, simulator, trace)
+
+
+def run(simulator: Simulator, start: float | None = None, cam_shift: float = 0.0) -> Trace:
+    """One G74 of the axis as the CNC answers it. With homing DISABLED (P-AXIS-00299) the CNC refuses a G74 that
+    names the axis, whatever its encoder: an absolute axis keeps a valid position, yet the G74 still ends with the
+    error (the machine run stops the program there too, LIS604), so the dry-run of it is refused, not "not
+    required"."""
+    trace = simulator.run(start=start, cam_shift=cam_shift)
+    values = simulator.values
+    if values.homing_type == "DISABLED":
+        why = (
+            "its absolute position is valid without homing: leave it out of G74"
+            if simulator.strategy.setup.absolute
+            else "the axis is incremental (kenngr.abs_pos_gueltig 0), so it can never be homed (LIS308)"
+        )
+        trace.outcome = "failed"
+        trace.failure = (
+            "homing is DISABLED (kenngr.homing.homing_type): the CNC refuses a G74 that names this axis "
+            f"(P-ERR-50685 / P-ERR-60313); {why}"
+        )
+    return trace
 
 
 def annotate(simulator: Simulator, trace: Trace) -> None:
@@ -410,7 +431,7 @@ def sweep(simulator: Simulator, runs: int, seed: int = 1) -> dict[str, Any]:
     for _ in range(runs):
         start = rng.uniform(low, high)
         shift = rng.uniform(-jitter, jitter) if jitter else 0.0
-        trace = simulator.run(start=start, cam_shift=shift)
+        trace = run(simulator, start, shift)
         outcomes[trace.outcome] += 1
         if trace.outcome != "homed":
             reason = (
