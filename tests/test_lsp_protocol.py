@@ -7,6 +7,7 @@ make a lint slow on purpose and look at what the server answers meanwhile.
 
 from __future__ import annotations
 
+import gc
 import io
 import json
 import logging
@@ -376,6 +377,27 @@ def test_a_lint_of_an_older_text_is_not_published(inprocess: InProcess, tmp_path
         m["params"]["version"] for m in inprocess.received if m.get("method", "").endswith("Diagnostics")
     ]
     assert published == [1, 3]  # version 2 was linted, but its findings were stale when they came
+
+
+def test_garbage_is_collected_when_idle_not_during_a_lint(
+    inprocess: InProcess, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    collections: list[float] = []
+    monkeypatch.setattr(gc, "collect", lambda *_: collections.append(time.perf_counter()) or 0)
+    inprocess.server.collect_when_idle = 0.05
+    uri = (tmp_path / "achsmds1.lis").as_uri()
+    started, release = slow_lint(inprocess.server)
+    inprocess.send(opened(uri, LIST))
+    assert started.wait(10)
+    time.sleep(0.3)  # quiet on the wire, but the worker is busy
+    assert collections == []
+    release.set()
+    published = inprocess.diagnostics(uri, 1)
+    assert published["params"]["diagnostics"]
+    deadline = time.perf_counter() + 10
+    while not collections and time.perf_counter() < deadline:
+        time.sleep(0.02)
+    assert len(collections) == 1  # once the lint ended and nothing came for a while
 
 
 def test_diagnostics_are_capped_with_a_summary(inprocess: InProcess, tmp_path: Path) -> None:

@@ -266,12 +266,15 @@ class AchslintServer(LanguageServer):
             log.warning("achslint: cannot write to the client: %s", describe(exc))
             self._finish(1)
 
-    def _reply_error(self, msg_id: int | str | None, code: int, message: str) -> None:
-        body = json.dumps({"jsonrpc": "2.0", "id": msg_id, "error": {"code": int(code), "message": message}})
-        data = body.encode("utf-8")
+    def _send(self, body: bytes) -> None:
+        """Write one message (its JSON) to the client, framed; on the loop, like everything pygls sends."""
         writer = self.protocol.writer
         if writer is not None:
-            writer.write(b"Content-Length: %d\r\n\r\n" % len(data) + data)
+            writer.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+
+    def _reply_error(self, msg_id: int | str | None, code: int, message: str) -> None:
+        error = {"jsonrpc": "2.0", "id": msg_id, "error": {"code": int(code), "message": message}}
+        self._send(json.dumps(error).encode("utf-8"))
 
     def dispatch(self, raw: object) -> None:
         """Check one message and hand it to pygls, or answer it with the error it calls for."""
@@ -423,19 +426,15 @@ class AchslintServer(LanguageServer):
                     source="achslint",
                 )
             ]
+        # Written out here, not on the loop: a thousand findings take tens of milliseconds to serialise.
+        published = lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
+        message = {"jsonrpc": "2.0", "method": lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": published}
+        body = json.dumps(self._converter.unstructure(message)).encode("utf-8")
         if self._loop is not None:
-            self._loop.call_soon_threadsafe(
-                self._linted, uri, generation, document, analysis, diagnostics, peers
-            )
+            self._loop.call_soon_threadsafe(self._linted, uri, generation, analysis, body, peers)
 
     def _linted(
-        self,
-        uri: str,
-        generation: int,
-        document: Document,
-        analysis: Analysis | None,
-        diagnostics: list[lsp.Diagnostic],
-        peers: list[str],
+        self, uri: str, generation: int, analysis: Analysis | None, published: bytes, peers: list[str]
     ) -> None:
         """On the loop: keep the analysis, publish it unless the text changed meanwhile."""
         self._uncollected += 1
@@ -453,9 +452,7 @@ class AchslintServer(LanguageServer):
         self._wake(uri, generation)
         if generation != self.generations.get(uri) or self.stopping:
             return  # stale: the lint of the newer text follows
-        self.text_document_publish_diagnostics(
-            lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
-        )
+        self._send(published)
         for peer in peers:  # other open lists of the machine whose machine findings changed with this one
             self.lint(peer)
 
@@ -776,9 +773,10 @@ def completion_resolve(ls: AchslintServer, item: lsp.CompletionItem) -> lsp.Comp
 )
 @guarded(default=list)
 async def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]:
-    analysis = await ls.analysis(params.text_document.uri, current=True)
-    if analysis is None:
-        return []
+    uri = params.text_document.uri
+    analysis = await ls.analysis(uri, current=True)
+    if analysis is None or analysis.generation != ls.generations.get(uri):
+        return []  # no analysis of the text as it is now: an edit computed on another text could land anywhere
     snapshot, found = analysis.snapshot, analysis.found
     edits: list[lsp.TextEdit] = []
     if snapshot.file is not None and any(d.fix is not None and d.fix.applicability == "safe" for d in found):
@@ -895,6 +893,14 @@ class _OneLine(logging.Filter):
         return True
 
 
+def quiet_collector() -> None:
+    """No automatic full garbage collections: the server runs them when it is idle. A lint makes no cyclic
+    garbage, and the young generations are still collected as usual; a full collection with a large list
+    open takes a third of a second, and during a lint several would stop the loop (and, over a growing
+    heap, make linting a large list slower than linear)."""
+    gc.set_threshold(700, 10, 1 << 30)
+
+
 server = create()
 
 
@@ -905,9 +911,7 @@ def run() -> None:
     handler.addFilter(_OneLine())
     logging.basicConfig(level=logging.WARNING, handlers=[handler])
     sys.setswitchinterval(0.001)  # the loop gets the interpreter back quickly while the worker lints
-    # Full collections only when the server is idle (a lint makes no cyclic garbage; the young generations
-    # are still collected as usual).
-    gc.set_threshold(700, 10, 1 << 30)
+    quiet_collector()
     server.collect_when_idle = IDLE_COLLECTION
     # The reader thread reads the descriptor itself: blocked in sys.stdin's buffer, it would hold that buffer's
     # lock when the interpreter exits, which aborts the process.

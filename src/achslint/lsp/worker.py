@@ -46,7 +46,7 @@ class Worker:
         """Nothing running, nothing queued."""
         return not self._running and not self._jobs
 
-    def stop(self, timeout: float = 5.0) -> None:
+    def stop(self, timeout: float = 1.0) -> None:
         """Cancel the jobs not started and wait (up to `timeout`) for the running one to end."""
         with self._ready:
             self._stopping = True
