@@ -9,13 +9,24 @@ from __future__ import annotations
 
 import io
 import sys
+import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from achslint.cli import main
 from achslint.decode import UnreadableInput
+from achslint.machinebuild import build_machine
+from achslint.machinemodel import HomingBlock, MoveBlock, Program
+from achslint.machinerun import MachineRun, run_machine
+from achslint.machinescenario import read_machine_scenario
+from achslint.ncprogram import read_program
 from achslint.xmlinput import extract, source_text
+
+from .conftest import ROOT
+
+EXAMPLE = ROOT / "docs" / "dry-run" / "machine"  # the README's example machine (six axes)
 
 
 @pytest.fixture
@@ -124,3 +135,113 @@ def test_a_skipped_xml_in_an_unusable_encoding_gets_its_note(run, tmp_path):
     assert "internal error" not in err and "Traceback" not in err
     assert "skipped, an XML file without an axis list (<Tools>)" in err
     assert code == 0 and "achsmds1.lis:2:1: LIS005" in out
+
+
+# -- linear time: the NC program reader and the timeline plot (item 7) --------------------------------
+
+# Each line took the reader tens of seconds before (quadratic); now a fraction of a second. The bound is
+# loose on purpose: the benchmark (benchmarks/run --only robustness) measures the doubling.
+LOOSE_SECONDS = 2.0
+
+
+def _read_timed(data: bytes) -> tuple[Program, float]:
+    start = time.perf_counter()
+    program = read_program(data, "rfp.nc")
+    return program, time.perf_counter() - start
+
+
+def test_a_long_number_followed_by_many_words_is_read_in_linear_time():
+    # `X` with 20,000 digits, then 10,000 words without a blank: every word used to search to the line's end
+    # for an extended name's `=` (14 s).
+    program, seconds = _read_timed(b"G74 X" + b"1" * 20_000 + b"Y1" * 10_000 + b"\n")
+    assert seconds < LOOSE_SECONDS
+    [problem] = program.problems
+    assert (problem.at.column, problem.at.end_column) == (5, 20_006)
+    assert problem.message == (
+        "`X1111111111111111111… (20,001 characters)`: the number is too large to use, so the block cannot be read"
+    )
+
+
+def test_a_long_run_of_axis_words_is_read_in_linear_time():
+    program, seconds = _read_timed(b"G74 " + b"Z1" * 25_000 + b"\n")  # 10 s before
+    assert seconds < LOOSE_SECONDS
+    [block] = program.blocks
+    assert isinstance(block, HomingBlock) and len(block.words) == 25_000
+    assert block.words[-1].at.column == 4 + 2 * 24_999 + 1
+
+
+def test_many_program_ends_in_one_block_are_read_in_linear_time():
+    program, seconds = _read_timed(b"G01 X1 F100 " + b"M30 " * 8_000 + b"\n")  # 10 s before
+    assert seconds < LOOSE_SECONDS
+    [block] = program.blocks
+    assert isinstance(block, MoveBlock) and program.end is not None and program.end.column == 13
+
+
+def _example_run(moves: int) -> MachineRun:
+    """The example machine homing Z, X and Y, then `moves` small moves of X and Z back and forth."""
+    lines = "".join(f"N{i + 20} G01 G91 X{2 * (i % 2) - 1} Z{2 * (i % 2) - 1}\n" for i in range(moves))
+    program = read_program(f"N10 G74 Z1 X2 Y2\nG01 G91 F30000\n{lines}M30\n".encode(), "rfp.nc")
+    run = run_machine(
+        build_machine(EXAMPLE / "listen" / "hochlauf.lis"),
+        program,
+        read_machine_scenario(EXAMPLE / "machine.toml"),
+    )
+    assert run.failure is None
+    return run
+
+
+def _artists(figure: Any) -> list[int]:
+    """How many artists each panel has, block labels left aside (they are counted on their own)."""
+    from matplotlib.text import Text
+
+    return [sum(not isinstance(a, Text) for a in panel.get_children()) for panel in figure.axes]
+
+
+def test_the_timeline_draws_each_kind_of_mark_once_however_many_blocks():
+    # One artist per block and phase made matplotlib recompute its limits over all of them on each one:
+    # 2,000 blocks took minutes. Each kind of mark is now one collection.
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from achslint.plot import LABEL_GAP, build_machine_figure
+
+    short, long = _example_run(6), _example_run(30)
+    figures = [build_machine_figure(short), build_machine_figure(long)]
+    try:
+        assert _artists(figures[0]) == _artists(figures[1])
+        timeline = figures[1].axes[0]
+        bars = sum(
+            len(c.get_paths()) for c in timeline.collections if c.get_transform() == timeline.transData
+        )
+        assert bars == sum(len(axis.phases) for axis in long.axes.values())  # one bar per phase
+        labels = [t for t in timeline.texts if t.get_text().startswith(" N")]
+        assert 2 <= len(labels) <= 1 / LABEL_GAP + 1  # labels that would overlap are left out
+        x_min, x_max = timeline.get_xlim()
+        assert x_min < 0 < long.total_time < x_max  # limits set once, around the whole program
+    finally:
+        for figure in figures:
+            plt.close(figure)
+
+
+# -- honest output of the machine dry-run (item 11) -----------------------------------------------------
+
+
+def test_a_tiny_feed_is_shown_as_written_in_text_and_json():
+    from rich.console import Console
+
+    from achslint.machinereport import machine_json, render_machine
+
+    program = read_program(b"N10 G74 Z1\nN20 G01 G91 Z-1 F0.00001\nM30\n", "rfp.nc")
+    run = run_machine(
+        build_machine(EXAMPLE / "listen" / "hochlauf.lis"),
+        program,
+        read_machine_scenario(EXAMPLE / "machine.toml"),
+    )
+    assert machine_json(run)["blocks"][1]["text"] == "N20 G01 G91 Z-1 F0.00001"
+    console = Console(record=True, width=200, color_system=None)
+    render_machine(run, console)
+    text = console.export_text()
+    assert "N20 G01 G91 Z-1 F0.00001" in text and "F0 " not in text
+    # 1 mm at 0.00001 mm/min is 1.67e-07 mm/s, not a speed of 0
+    [move] = [line for line in text.splitlines() if "F0.00001;" in line]
+    assert "- 1.67e-07 mm/s" in move

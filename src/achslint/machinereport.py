@@ -264,7 +264,7 @@ def _render_axis(axis: AxisRun, console: Any) -> None:
         console.print(
             Text(
                 f"  {_num(phase.start_time, 3, fixed=True):>9} - {_num(phase.end_time, 3, fixed=True):>9} s  "
-                f"{sign} {_num(phase.velocity, 3):>8} {unit}/s  "
+                f"{sign} {_speed(phase.velocity):>8} {unit}/s  "
                 f"{_num(phase.start_position, fixed=True)} -> {_num(phase.end_position, fixed=True)} {unit}  "
             )
             + Text(phase.name)
@@ -273,6 +273,13 @@ def _render_axis(axis: AxisRun, console: Any) -> None:
     for warning in axis.warnings:
         prefix = f"{warning['code']}: " if warning["code"] else "note: "
         console.print(Text("  ") + Text(prefix, style="yellow") + Text(warning["message"]))
+
+
+def _speed(value: float) -> str:
+    """A phase's speed to three decimals; one too slow for them keeps three significant digits (a move at
+    F0.00001 runs at 1.67e-07 mm/s, not at 0)."""
+    text = _num(value, 3)
+    return f"{value:.3g}" if text == "0" and value else text
 
 
 def sweep_words(summary: dict[str, Any]) -> str:

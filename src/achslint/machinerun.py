@@ -35,6 +35,7 @@ import statistics
 from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
@@ -368,13 +369,22 @@ def block_text(block: HomingBlock | MoveBlock | SkippedBlock) -> str:
     if isinstance(block, HomingBlock):
         return f"{number}G74 " + " ".join(f"{w.name}{int(w.value)}" for w in block.words)
     words = ["G00" if block.rapid else "G01", "G90" if block.absolute else "G91"]
-    words += [f"{w.name}{_num(w.value)}" for w in block.targets]
+    words += [f"{w.name}{_programmed(w.value)}" for w in block.targets]
     if not block.rapid and block.feed_mm_min is not None:
-        words.append(f"F{_num(block.feed_mm_min)}")
+        words.append(f"F{_programmed(block.feed_mm_min)}")
     return number + " ".join(words)
 
 
+def _programmed(value: float) -> str:
+    """A number of the program as its shortest exact text, without exponent: `F0.00001` stays so (four
+    decimals would show `F0`, a feed the block does not have)."""
+    text = format(Decimal(repr(value)), "f")
+    text = text.rstrip("0").rstrip(".") if "." in text else text
+    return "0" if text == "-0" else text
+
+
 def _num(value: float) -> str:
+    """A computed number (a position, a limit) to four decimals."""
     text = f"{value:.4f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
 

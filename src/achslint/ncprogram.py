@@ -40,13 +40,14 @@ NEUTRAL_G = frozenset({17, 18, 19, 40, 80})
 END_M = frozenset({2, 30})
 
 _NUMBER = r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)"
-# `Z1=200` (an extended name) or `Z200` / `G01` / `N10` (letters, then a number); group 4 catches a letter
-# run without a number.
-_WORD = re.compile(
-    rf"(?P<ext>[A-Za-z][A-Za-z_]*[0-9]+[A-Za-z0-9_]*|[A-Za-z][A-Za-z_]*)=(?P<evalue>{_NUMBER})"
-    rf"|(?P<addr>[A-Za-z][A-Za-z_]*)(?P<value>{_NUMBER})"
-    r"|(?P<bare>[A-Za-z][A-Za-z_]*)"
-)
+# `Z200` / `G01` / `N10` (letters, then a number); `bare` catches a letter run without a number. Every part
+# is matched in time linear in what it takes, whatever follows.
+_WORD = re.compile(rf"(?P<addr>[A-Za-z][A-Za-z_]*)(?P<value>{_NUMBER})|(?P<bare>[A-Za-z][A-Za-z_]*)")
+# An extended name (`Z1=200`, `S1=3`) is a run of letters, digits and `_` that starts with a letter and is
+# followed by `=` and a number. The run is found once and shared by every position inside it: matching it
+# again from each word of `X1Y1Y1…=` would take time quadratic in the length of the run.
+_NOT_IN_NAME = re.compile(r"[^A-Za-z0-9_]")
+_EXTENDED_VALUE = re.compile(rf"=(?P<evalue>{_NUMBER})")
 _BLANKS = " \t\f\v"
 
 
@@ -61,6 +62,11 @@ class _Word:
     @property
     def number(self) -> float:
         return float(self.text)
+
+    @property
+    def written(self) -> str:
+        """The word as written, for messages (shortened when long)."""
+        return _short(f"{self.address}{'=' if self.extended else ''}{self.text}")
 
 
 @dataclass
@@ -121,12 +127,25 @@ class _Reader:
         junk: list[tuple[int, int, str]] = []
         for start, part in self.code_parts(number, text):
             position = 0
+            run_end = 0  # where the letter/digit run around `position` ends
             while position < len(part):
                 if part[position] in _BLANKS:
                     position += 1
                     continue
-                match = _WORD.match(part, position)
                 column = start + position + 1
+                if position >= run_end:
+                    stop = _NOT_IN_NAME.search(part, position)
+                    run_end = stop.start() if stop else len(part)
+                letter = part[position].isascii() and part[position].isalpha()
+                extended = _EXTENDED_VALUE.match(part, run_end) if letter else None
+                if extended is not None:
+                    end = extended.end()
+                    name = part[position:run_end].upper()
+                    word = _Word(name, extended.group("evalue"), column, start + end + 1, True)
+                    self.word(word, part[position:end], words, junk)
+                    position = run_end = end
+                    continue
+                match = _WORD.match(part, position)
                 if match is None:
                     end = position
                     while end < len(part) and part[end] not in _BLANKS and not part[end].isalpha():
@@ -136,19 +155,21 @@ class _Reader:
                     position = end
                     continue
                 end_column = start + match.end() + 1
-                if match.group("ext"):
-                    words.append(
-                        _Word(match.group("ext").upper(), match.group("evalue"), column, end_column, True)
-                    )
-                elif match.group("addr"):
-                    words.append(_Word(match.group("addr").upper(), match.group("value"), column, end_column))
+                if match.group("addr"):
+                    word = _Word(match.group("addr").upper(), match.group("value"), column, end_column)
+                    self.word(word, match.group(0), words, junk)
                 else:
                     junk.append((column, end_column, match.group("bare")))
-                if words and not math.isfinite(words[-1].number):
-                    junk.append((column, end_column, match.group(0)))
-                    words.pop()
                 position = match.end()
         return words, junk
+
+    @staticmethod
+    def word(word: _Word, written: str, words: list[_Word], junk: list[tuple[int, int, str]]) -> None:
+        """Keep a word, or report it as junk when its number is too large for a float."""
+        if math.isfinite(word.number):
+            words.append(word)
+        else:
+            junk.append((word.column, word.end_column, written))
 
     # -- blocks ------------------------------------------------------------------------------------
     def line(self, number: int, text: str) -> None:
@@ -204,7 +225,10 @@ class _Reader:
         for word in feed:
             if word.number <= 0:
                 self.problem(
-                    number, word.column, word.end_column, f"F{word.text}: a feed rate must be above 0 mm/min"
+                    number,
+                    word.column,
+                    word.end_column,
+                    f"{word.written}: a feed rate must be above 0 mm/min",
                 )
             else:
                 self.modal.feed = word.number
@@ -225,12 +249,12 @@ class _Reader:
             return
         reasons = []
         if other_g:
-            reasons.append(", ".join(f"G{w.text}" for w in other_g) + " is not simulated")
+            reasons.append(", ".join(w.written for w in other_g) + " is not simulated")
         if not_read:
-            reasons.append(", ".join(f"{w.address}{w.text}" for w in not_read) + " is not simulated")
-        extra_m = [w for w in m_words if w not in ends]
+            reasons.append(", ".join(w.written for w in not_read) + " is not simulated")
+        extra_m = [w for w in m_words if w.number not in END_M]
         if extra_m:
-            reasons.append(", ".join(f"M{w.text}" for w in extra_m) + " is not simulated")
+            reasons.append(", ".join(w.written for w in extra_m) + " is not simulated")
         if 74 in codes and motion:
             reasons.append("G74 and a motion command (G00/G01) in one block")
         if reasons:
@@ -255,7 +279,7 @@ class _Reader:
             return None
         word = numbers[0]
         if not re.fullmatch(r"\+?[0-9]+", word.text) or len(word.text) > 9:
-            self.problem(number, word.column, word.end_column, f"N{word.text} is not a block number")
+            self.problem(number, word.column, word.end_column, f"{word.written} is not a block number")
             return None
         return int(word.text)
 
@@ -275,7 +299,7 @@ class _Reader:
                     number,
                     word.column,
                     word.end_column,
-                    f"G74 {word.address}{'=' if word.extended else ''}{value}: the homing order of an axis is "
+                    f"G74 {word.written}: the homing order of an axis is "
                     "a whole number from 1 up (axes with the same number home together)",
                 )
                 continue
@@ -284,7 +308,7 @@ class _Reader:
                     number,
                     word.column,
                     word.end_column,
-                    f"G74 {word.address}{'=' if word.extended else ''}{value}: a homing order above "
+                    f"G74 {word.written}: a homing order above "
                     f"{MAX_SEQUENCE} is not read; number the steps 1, 2, 3, …",
                 )
                 continue
@@ -325,12 +349,22 @@ class _Reader:
         )
 
 
+# Longer words are shortened in messages: a 5,000-digit number is not worth repeating.
+SHOWN_CHARACTERS = 40
+
+
+def _short(text: str) -> str:
+    if len(text) <= SHOWN_CHARACTERS:
+        return text
+    return f"{text[: SHOWN_CHARACTERS // 2]}… ({len(text):,} characters)"
+
+
 def _junk_message(piece: str) -> str:
     if piece[:1].isalpha() and piece.isascii():
         if re.fullmatch(r"[A-Za-z_]+", piece):
-            return f"`{piece}` has no number after it, so the block cannot be read"
-        return f"`{piece}`: the number is too large to use, so the block cannot be read"
-    shown = piece if piece.isprintable() else repr(piece)
+            return f"`{_short(piece)}` has no number after it, so the block cannot be read"
+        return f"`{_short(piece)}`: the number is too large to use, so the block cannot be read"
+    shown = _short(piece if piece.isprintable() else repr(piece))
     return f"`{shown}` is not an NC word (an address followed by a number), so the block cannot be read"
 
 

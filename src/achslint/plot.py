@@ -396,6 +396,10 @@ def plot_trace(trace: Trace, target: str) -> None:
 
 MOVE_COLOUR = "#999999"
 FAILURE_COLOUR = "#cc3311"
+_BarStyle = tuple[str, str, str | None, float, float]  # a lane bar's face, edge, hatch, alpha, line width
+# Labels at the top of the timeline closer than this share of the time axis would overlap (`N1015` at
+# fontsize 7 takes about 4 %): the later one is left out, its line is still drawn.
+LABEL_GAP = 0.05
 
 
 def _machine_samples(phases: list[AxisPhase], per_segment: int = 30) -> tuple[list[float], list[float]]:
@@ -444,31 +448,19 @@ def build_machine_figure(run: MachineRun) -> Any:
             colours[name] = PHASE_COLOURS[len(colours) % (len(PHASE_COLOURS) - 1)]
         return colours[name]
 
-    def mark(time: float, text: str, line: str | None, above: bool, **style: Any) -> None:
-        """A vertical line through every panel at `time` (`line`: its style, None for none) and a label
-        at the top of the timeline, just above it or just below its upper edge."""
-        if line is not None:
-            for panel in rows:
-                panel.axvline(time, color="#444444", linewidth=0.8, linestyle=line, zorder=1)
-        timeline.text(
-            time,
-            1.01 if above else 0.99,
-            f" {text}",
-            transform=timeline.get_xaxis_transform(),
-            ha="left",
-            va="bottom" if above else "top",
-            fontsize=7,
-            **style,
-        )
-
-    # Blocks shaded in turn, groups separated by dashed lines and labelled above the timeline.
+    # Every kind of mark is gathered first and drawn as one collection: one artist per block or phase would
+    # make matplotlib recompute the limits over all artists each time (2,000 blocks took minutes).
+    span = max(run.total_time, 1e-3)
+    shaded: list[tuple[float, float]] = []
+    block_lines: list[float] = []
+    group_lines: list[float] = []
+    labels = _Labels(timeline, span)
     for block in run.blocks:
         if block.start_time is None or block.end_time is None or block.end_time <= block.start_time:
             continue
         if block.index % 2 == 0:
-            for panel in rows:
-                panel.axvspan(block.start_time, block.end_time, color="#eeeeee", zorder=0, linewidth=0)
-        share = (block.end_time - block.start_time) / max(run.total_time, 1e-9)
+            shaded.append((block.start_time, block.end_time))
+        share = (block.end_time - block.start_time) / span
         words = block.text.split(" ", 1)
         label = (
             block.text
@@ -477,83 +469,82 @@ def build_machine_figure(run: MachineRun) -> Any:
             if share > 0.12
             else words[0]
         )
-        mark(block.start_time, label, "-", True, fontweight="bold")
+        block_lines.append(block.start_time)
+        labels.add(block.start_time, label, above=True, fontweight="bold")
         for number, group in enumerate(block.groups if len(block.groups) > 1 else []):
             if group.start_time is not None:  # the first group starts with its block: no second line
-                mark(
-                    group.start_time,
-                    f"grp {group.sequence}",
-                    "--" if number else None,
-                    False,
-                    color="#444444",
-                )
-    names = [a.name for a in axes_runs]
+                if number:
+                    group_lines.append(group.start_time)
+                labels.add(group.start_time, f"grp {group.sequence}", above=False, color="#444444")
+    for panel in rows:
+        _spans(panel, shaded, color="#eeeeee", zorder=0, linewidth=0)
+        _vertical_lines(panel, block_lines, color="#444444", linewidth=0.8, linestyle="-", zorder=1)
+        _vertical_lines(panel, group_lines, color="#444444", linewidth=0.8, linestyle="--", zorder=1)
+        if run.failure is not None:
+            _vertical_lines(
+                panel, [run.failure.time], color=FAILURE_COLOUR, linewidth=1.0, zorder=3, gid="failure time"
+            )
+
+    # The lanes: each style (colour, outline, hatching) is one collection over every lane.
+    bars: dict[_BarStyle, list[tuple[float, float, float]]] = {}
+    stars: list[tuple[float, float]] = []
     for lane, axis in enumerate(axes_runs):
         y = lanes - 1 - lane
         for phase in axis.phases:
             width = max(phase.end_time - phase.start_time, 0.0)
+            style: _BarStyle
             if phase.kind == "still":
-                timeline.broken_barh(
-                    [(phase.start_time, width)],
-                    (y - 0.3, 0.6),
-                    facecolors="white",
-                    edgecolors="#ee7733",
-                    hatch="xx",
-                    linewidth=1.0,
-                    zorder=2,
-                )
-                continue
-            if phase.kind == "move":
-                colour = MOVE_COLOUR
+                style = ("white", "#ee7733", "xx", 1.0, 1.0)
+            elif phase.kind == "following":
+                colour = colour_of(phase.name.split(": ", 1)[1])
+                style = (colour, colour, "//", 0.55, 0.5)
             else:
-                colour = colour_of(phase.name.split(": ", 1)[1] if phase.kind == "following" else phase.name)
-            timeline.broken_barh(
-                [(phase.start_time, width)],
-                (y - 0.3, 0.6),
-                facecolors=colour,
-                edgecolors="black" if phase.kind != "following" else colour,
-                hatch="//" if phase.kind == "following" else None,
-                alpha=0.55 if phase.kind == "following" else 0.9,
-                linewidth=0.5,
-                zorder=2,
-            )
+                colour = MOVE_COLOUR if phase.kind == "move" else colour_of(phase.name)
+                style = (colour, "black", None, 0.9, 0.5)
+            bars.setdefault(style, []).append((phase.start_time, width, y))
         if axis.reference is not None:
+            stars.append((axis.reference["time"], y))
+        failed = axis.outcome == "failed"
+        if failed and run.failure is not None:
+            when: float | None = run.failure.time
+        elif axis.outcome in ("failed", "aborted") and axis.phases:
+            when = axis.phases[-1].end_time
+        else:
+            when = None
+        if when is not None:
             timeline.plot(
-                [axis.reference["time"]],
-                [y],
-                marker="*",
-                markersize=11,
-                color="#ddaa33",
-                markeredgecolor="black",
-                linestyle="none",
-                zorder=4,
-            )
-        if axis.outcome in ("failed", "aborted") and axis.phases:
-            end = axis.phases[-1].end_time
-            timeline.plot(
-                [run.failure.time if axis.outcome == "failed" and run.failure else end],
+                [when],
                 [y],
                 marker="X",
-                markersize=12 if axis.outcome == "failed" else 8,
+                markersize=12 if failed else 8,
                 color=FAILURE_COLOUR,
                 linestyle="none",
                 zorder=5,
-                gid="failure" if axis.outcome == "failed" else None,
+                gid="failure" if failed else None,
             )
-        elif axis.outcome == "failed" and run.failure is not None:
-            timeline.plot(
-                [run.failure.time],
-                [y],
-                marker="X",
-                markersize=12,
-                color=FAILURE_COLOUR,
-                linestyle="none",
-                zorder=5,
-                gid="failure",
-            )
-    if run.failure is not None:
-        for panel in rows:
-            panel.axvline(run.failure.time, color=FAILURE_COLOUR, linewidth=1.0, zorder=3, gid="failure time")
+    for (face, edge, hatch, alpha, width), found in bars.items():
+        _rectangles(
+            timeline,
+            [(x, y - 0.3, w, 0.6) for x, w, y in found],
+            facecolor=face,
+            edgecolor=edge,
+            hatch=hatch,
+            alpha=alpha,
+            linewidth=width,
+            zorder=2,
+        )
+    if stars:
+        timeline.plot(
+            [t for t, _ in stars],
+            [y for _, y in stars],
+            marker="*",
+            markersize=11,
+            color="#ddaa33",
+            markeredgecolor="black",
+            linestyle="none",
+            zorder=4,
+        )
+    names = [a.name for a in axes_runs]
     timeline.set_yticks(range(lanes))
     timeline.set_yticklabels(
         [
@@ -563,6 +554,7 @@ def build_machine_figure(run: MachineRun) -> Any:
         fontsize=8,
     )
     timeline.set_ylim(-0.7, lanes - 0.05)
+    timeline.set_xlim(-0.05 * span, 1.05 * span)  # shared by every panel
     for panel, axis in zip(rows[1:], moving, strict=True):
         times, positions = _machine_samples([p for p in axis.phases if p.kind != "still"])
         # standing before, between and after its phases
@@ -626,6 +618,61 @@ def build_machine_figure(run: MachineRun) -> Any:
     )
     figure.suptitle(title, fontsize=11, x=0.4, y=0.995, va="top")
     return figure
+
+
+class _Labels:
+    """Block and group labels at the top of the timeline: just above it (blocks) or just below its upper
+    edge (groups), each row leaving out a label that would overlap the one before."""
+
+    def __init__(self, timeline: Axes, span: float) -> None:
+        self.timeline = timeline
+        self.gap = LABEL_GAP * span
+        self.last: dict[bool, float] = {}
+
+    def add(self, time: float, text: str, *, above: bool, **style: Any) -> None:
+        if time < self.last.get(above, -math.inf) + self.gap:
+            return
+        self.last[above] = time
+        self.timeline.text(
+            time,
+            1.01 if above else 0.99,
+            f" {text}",
+            transform=self.timeline.get_xaxis_transform(),
+            ha="left",
+            va="bottom" if above else "top",
+            fontsize=7,
+            **style,
+        )
+
+
+def _spans(panel: Axes, spans: list[tuple[float, float]], **style: Any) -> None:
+    """Time spans over the panel's full height, as one collection (the limits stay as they are)."""
+    if spans:
+        _rectangles(
+            panel, [(t0, 0.0, t1 - t0, 1.0) for t0, t1 in spans], panel.get_xaxis_transform(), **style
+        )
+
+
+def _vertical_lines(panel: Axes, times: list[float], **style: Any) -> None:
+    """Vertical lines over the panel's full height at `times`, as one collection."""
+    from matplotlib.collections import LineCollection
+
+    if times:
+        lines = LineCollection(
+            [[(t, 0.0), (t, 1.0)] for t in times], transform=panel.get_xaxis_transform(), **style
+        )
+        panel.add_collection(lines, autolim=False)
+
+
+def _rectangles(
+    panel: Axes, boxes: list[tuple[float, float, float, float]], transform: Any = None, **style: Any
+) -> None:
+    """Rectangles (x, y, width, height) as one collection, in data coordinates unless `transform` is given."""
+    from matplotlib.collections import PolyCollection
+
+    vertices = [[(x, y), (x, y + h), (x + w, y + h), (x + w, y)] for x, y, w, h in boxes]
+    collection = PolyCollection(vertices, transform=transform or panel.transData, **style)
+    panel.add_collection(collection, autolim=False)
 
 
 def _at(axis: AxisRun, time: float) -> float:
