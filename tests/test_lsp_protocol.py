@@ -369,7 +369,8 @@ def test_a_lint_of_an_older_text_is_not_published(inprocess: InProcess, tmp_path
     started, release = slow_lint(inprocess.server)
     inprocess.send(changed(uri, LIST + "kenngr.other_typo 1\n", 2))
     assert started.wait(10)
-    inprocess.send(changed(uri, "kopf.achs_nr 1\nEnde\n", 3))
+    inprocess.send(changed(uri, "kopf.achs_nr 1\nEnde\n", 3), hover(11, uri, 0, 2))
+    inprocess.answer(11)  # answered after the change to version 3 was taken (messages are handled in order)
     release.set()
     final = inprocess.diagnostics(uri, 3)
     assert final["params"]["diagnostics"] == []

@@ -443,11 +443,11 @@ def test_10_diff_and_explain_read_the_list_inside_xml(run, tmp_path):
 
 
 def test_12_the_closest_name_is_searched_once_per_distinct_name(monkeypatch):
-    import difflib
+    import achslint.catalogue as module
 
     calls = []
-    real = difflib.get_close_matches
-    monkeypatch.setattr(difflib, "get_close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    real = module.close_matches
+    monkeypatch.setattr(module, "close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
     lint_file(b"kenngr.ref_ricth_zz 1\n" * 500 + b"kenngr.vb_reflow_zz 1\n" * 500 + b"Ende\n", "a.lis")
     assert sorted(calls) == ["kenngr.ref_ricth_zz", "kenngr.vb_reflow_zz"]
     catalogue()._suggestions.clear()
@@ -456,7 +456,7 @@ def test_12_the_closest_name_is_searched_once_per_distinct_name(monkeypatch):
 def test_12_a_name_too_long_for_any_match_skips_the_search_with_the_same_answer(monkeypatch):
     # Past 7/3 of the longest known name no candidate can reach difflib's 0.6 cutoff: the search is left
     # out, and the suggestions are what the full search gives (the same member in another group, or none).
-    import difflib
+    import achslint.catalogue as module
 
     cat = catalogue()
     longest = cat._longest
@@ -466,8 +466,8 @@ def test_12_a_name_too_long_for_any_match_skips_the_search_with_the_same_answer(
         "kenngr.vb_reflowx",  # ordinary: searched
     ]
     calls: list[str] = []
-    real = difflib.get_close_matches
-    monkeypatch.setattr(difflib, "get_close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    real = module.close_matches
+    monkeypatch.setattr(module, "close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
     shortcut = [cat._suggest(name, 3) for name in names]
     assert calls == ["kenngr.vb_reflowx"]
     monkeypatch.setitem(cat.__dict__, "_longest", 10**9)  # no name is too long: the full search everywhere
