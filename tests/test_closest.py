@@ -38,7 +38,7 @@ def misspelt(draw: st.DrawFn) -> str:
     return word
 
 
-@settings(max_examples=examples(400, 20), deadline=None)
+@settings(max_examples=examples(400, 12), deadline=None)
 @given(misspelt(), st.integers(1, 5), st.sampled_from([0.3, 0.6, 0.6, 0.75, 0.9, 1.0]))
 def test_same_answer_as_difflib(word: str, n: int, cutoff: float) -> None:
     assert close_matches(word, NAMES, n, cutoff) == difflib.get_close_matches(word, NAMES, n, cutoff)

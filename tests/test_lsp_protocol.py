@@ -26,6 +26,7 @@ from hypothesis import strategies as st
 
 pytest.importorskip("pygls.lsp.server", reason="the lsp extra is not installed")
 
+from achslint.lsp import features
 from achslint.lsp.protocol import MAX_CONTENT_LENGTH, MAX_LINE, FrameReader, Skipped
 from achslint.lsp.server import AchslintServer, create
 
@@ -390,7 +391,7 @@ def test_garbage_is_collected_when_idle_not_during_a_lint(
     started, release = slow_lint(inprocess.server)
     inprocess.send(opened(uri, LIST))
     assert started.wait(10)
-    time.sleep(0.3)  # quiet on the wire, but the worker is busy
+    time.sleep(0.15)  # quiet on the wire (three times the idle wait), but the worker is busy
     assert collections == []
     release.set()
     published = inprocess.diagnostics(uri, 1)
@@ -401,15 +402,19 @@ def test_garbage_is_collected_when_idle_not_during_a_lint(
     assert len(collections) == 1  # once the lint ended and nothing came for a while
 
 
-def test_diagnostics_are_capped_with_a_summary(inprocess: InProcess, tmp_path: Path) -> None:
-    names = "".join(f"kenngr.unknown_{n} 1\n" for n in range(1100))
-    text = "kopf.achs_nr 1\n" + names + "kenngr.ref_richt 7\nEnde\n"  # an error (LIS201) after 1,100 warnings
+def test_diagnostics_are_capped_with_a_summary(
+    inprocess: InProcess, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # 1,000 in the server (benchmarks/lsp.py measures that message: under 1 MB); 20 here, the same code.
+    monkeypatch.setattr(features, "MAX_DIAGNOSTICS", 20)
+    names = "".join(f"kenngr.unknown_{n} 1\n" for n in range(30))
+    text = "kopf.achs_nr 1\n" + names + "kenngr.ref_richt 7\nEnde\n"  # an error (LIS201) after 30 warnings
     uri = (tmp_path / "achsmds1.lis").as_uri()
     inprocess.send(opened(uri, text))
     found = inprocess.diagnostics(uri, 1)["params"]["diagnostics"]
-    assert len(found) == 1001 and len(json.dumps(found)) < 1_000_000
+    assert len(found) == 21
     summary = found[0]
-    assert summary["severity"] == 3 and "more findings are not shown" in summary["message"]
+    assert summary["severity"] == 3 and summary["message"].startswith("11 more findings are not shown")
     assert "achslint lint" in summary["message"]
     shown = found[1:]
     assert shown[-1]["code"] == "LIS201" and shown[-1]["severity"] == 1  # the error is kept, in its place

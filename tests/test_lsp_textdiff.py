@@ -48,7 +48,7 @@ def edited(draw: st.DrawFn) -> tuple[list[str], list[str]]:
     return old, new
 
 
-@settings(max_examples=examples(1000, 150), deadline=None)
+@settings(max_examples=examples(1000, 80), deadline=None)
 @given(edited())
 def test_blocks_turn_old_into_new(pair: tuple[list[str], list[str]]) -> None:
     old, new = pair
@@ -58,7 +58,7 @@ def test_blocks_turn_old_into_new(pair: tuple[list[str], list[str]]) -> None:
     assert (blocks == []) == (old == new)
 
 
-@settings(max_examples=examples(300, 60), deadline=None)
+@settings(max_examples=examples(300, 40), deadline=None)
 @given(st.lists(st.tuples(LINE, st.booleans()), max_size=40))
 def test_lines_changed_in_place_are_the_only_ones_edited(rows: list[tuple[str, bool]]) -> None:
     # What the formatter does: the same number of lines, some of them rewritten (into a new layout).

@@ -130,11 +130,12 @@ MAX_DIAGNOSTICS = 1000  # findings sent for one document; a summary tells how ma
 _SEVERITY_ORDER = {Severity.ERROR: 0, Severity.WARNING: 1, Severity.INFO: 2}
 
 
-def capped(found: list[Diagnostic], limit: int = MAX_DIAGNOSTICS) -> tuple[list[Diagnostic], int]:
+def capped(found: list[Diagnostic], limit: int | None = None) -> tuple[list[Diagnostic], int]:
     """At most `limit` findings, the most severe first chosen, in their order; and how many were left out.
 
     A list with 50,000 unknown names would otherwise send megabytes to the editor on every edit; the
     first thousand say what is wrong, and errors are never hidden behind warnings."""
+    limit = MAX_DIAGNOSTICS if limit is None else limit
     if len(found) <= limit:
         return found, 0
     ranked = sorted(
