@@ -474,6 +474,10 @@ MESSAGE = st.fixed_dictionaries(
         "params": PARAMS,
     },
 )
+RESPONSE = st.fixed_dictionaries(
+    {"jsonrpc": st.just("2.0"), "id": st.integers(0, 5) | st.text(max_size=3)},
+    optional={"result": JSON, "error": JSON | st.fixed_dictionaries({"code": JSON, "message": JSON})},
+)
 HEADER = st.sampled_from(
     [
         b"Content-Length: %d\r\n\r\n",
@@ -485,6 +489,7 @@ NOISE = st.binary(max_size=120).filter(lambda b: b"content-length" not in b.lowe
 PIECE = st.one_of(
     st.builds(frame, st.binary(max_size=120), HEADER),  # a well-framed body that is anything
     st.builds(frame, MESSAGE, HEADER),  # a well-framed message that is nearly right
+    st.builds(frame, RESPONSE, HEADER),  # as if the client answered a request of the server
     st.builds(
         lambda m: frame(json.dumps(m).encode("utf-8")[: len(json.dumps(m)) // 2]), MESSAGE
     ),  # cut short

@@ -296,10 +296,12 @@ class AchslintServer(LanguageServer):
             self._reply_error(answer_to, lsp.ErrorCodes.InvalidRequest, "not a JSON-RPC 2.0 message")
             return
         if method is None:
-            if has_id:
-                self._handle(raw, None)  # the client's answer to a request of ours
-            else:
+            if not has_id:
                 self._reply_error(None, lsp.ErrorCodes.InvalidRequest, "a message needs a method or an id")
+            elif _is_response(raw):
+                self._handle(raw, None)  # the client's answer to a request of ours
+            else:  # a response is not answered: told in the log only
+                log.warning("achslint: ignored a response without a result or a well-formed error")
             return
         request = has_id
         if method == lsp.EXIT:
@@ -574,6 +576,19 @@ def guarded(default: Callable[[], object] | None = None) -> Callable[[_Handler],
         return run  # type: ignore[return-value]
 
     return wrap
+
+
+def _is_response(raw: dict[str, Any]) -> bool:
+    """A JSON-RPC response: a result, or an error with a number and words (what pygls can read)."""
+    if "error" not in raw:
+        return "result" in raw
+    error = raw["error"]
+    return (
+        isinstance(error, dict)
+        and isinstance(error.get("code"), int)
+        and not isinstance(error.get("code"), bool)
+        and isinstance(error.get("message"), str)
+    )
 
 
 def _invalid(exc: Exception) -> str:
