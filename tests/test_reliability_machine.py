@@ -245,3 +245,94 @@ def test_a_tiny_feed_is_shown_as_written_in_text_and_json():
     # 1 mm at 0.00001 mm/min is 1.67e-07 mm/s, not a speed of 0
     [move] = [line for line in text.splitlines() if "F0.00001;" in line]
     assert "- 1.67e-07 mm/s" in move
+
+
+# -- gantry couplings without a master (item 10) ---------------------------------------------------
+
+
+def _machine(folder: Path, masters: dict[str, int | None]) -> Path:
+    """A start-up list and one simulated axis per name (logical numbers 1, 2, … in order), each a gantry
+    slave of the number given; the start-up list's path."""
+    entries = []
+    for number, (name, master) in enumerate(masters.items(), 1):
+        coupling = f"kenngr.gantry_ax_nr {master}\n" if master else ""
+        (folder / f"achsmds{number}.lis").write_text(
+            f"kopf.achs_nr {number}\nkopf.log_achs_name {name}\n{coupling}Ende\n", encoding="ascii"
+        )
+        entries.append(f"achs_mds[{number - 1}] ./achsmds{number}.lis\n")
+    startup = folder / "hochlauf.lis"
+    startup.write_text(f"zahl_mds {len(entries)}\n{''.join(entries)}Ende\n", encoding="ascii")
+    return startup
+
+
+def _dry_run(run, folder: Path, startup: Path, program: str) -> tuple[int, str, str]:
+    (folder / "rfp.nc").write_text(program, encoding="ascii")
+    code, out, err = run("dry-run", startup, "--program", folder / "rfp.nc")
+    assert "internal error" not in err and "Traceback" not in err
+    return code, out, err
+
+
+def test_a_gantry_axis_that_is_its_own_master_is_a_finding_and_not_simulated(run, tmp_path):
+    startup = _machine(tmp_path, {"X": None, "Y": 2})
+    code, out, _ = run("lint", startup)
+    assert code == 1
+    assert "achsmds2.lis:3:1: LIS507 [error] kenngr.gantry_ax_nr 2 is this axis's own kopf.achs_nr" in out
+    code, out, _ = _dry_run(run, tmp_path, startup, "N10 G74 X1 Y1\nM30\n")  # KeyError before
+    assert code == 1
+    assert "FAILED at 0 s (line 1): Y is its own gantry master" in out and "(LIS507)" in out
+
+
+@pytest.mark.parametrize("program", ["N10 G74 X1 Y1\nM30\n", "N10 G01 G91 Y5 F100\nM30\n"])
+def test_two_axes_naming_each_other_as_master_are_findings_and_not_simulated(run, tmp_path, program):
+    startup = _machine(tmp_path, {"X": 2, "Y": 1, "Z": None})
+    code, out, _ = run("lint", startup)
+    assert code == 1
+    circles = [line for line in out.splitlines() if "LIS507" in line]
+    assert [line.split(":", 1)[0] for line in circles] == [
+        str(tmp_path / "achsmds1.lis"),
+        str(tmp_path / "achsmds2.lis"),
+    ]
+    assert "in a circle (1 → 2 → 1)" in circles[0] and "in a circle (2 → 1 → 2)" in circles[1]
+    code, out, _ = _dry_run(run, tmp_path, startup, program)
+    assert code == 1
+    assert "X → Y → X name each other as gantry master" in out or "Y → X → Y name each other" in out
+
+
+def test_an_axis_beside_a_coupling_without_master_is_still_simulated(run, tmp_path):
+    startup = _machine(tmp_path, {"X": 2, "Y": 1, "Z": None})
+    code, out, _ = _dry_run(run, tmp_path, startup, "N10 G74 Z1\nM30\n")
+    assert code == 0 and "Z (logical 3; simulated drive: single phase): homed" in out
+
+
+@pytest.mark.parametrize("order", ["X1 Y1 Z1", "X1 Z1 Y1"])
+def test_a_slave_of_a_slave_is_a_finding_and_not_simulated_in_any_order(run, tmp_path, order):
+    startup = _machine(tmp_path, {"X": None, "Y": 1, "Z": 2})
+    code, out, _ = run("lint", startup)
+    assert code == 1
+    [line] = [line for line in out.splitlines() if "LIS507" in line]
+    assert line.startswith(f"{tmp_path / 'achsmds3.lis'}:3:1: LIS507 [error]")
+    assert "axis 2 is itself the gantry slave of axis 1" in line
+    code, out, _ = _dry_run(run, tmp_path, startup, f"N10 G74 {order}\nM30\n")  # KeyError for X1 Z1 Y1
+    assert code == 1
+    assert "Z follows the gantry master Y, which is itself the gantry slave of X" in out
+
+
+def test_coupling_faults_are_found_in_linear_time_on_a_long_circle():
+    from achslint.rules.lis507_gantry_master_chain import circle_words, coupling_faults
+
+    # 20,000 axes, each the master of the one before, the first the master of the last; a slave of the
+    # circle; an ordinary pair; an axis of its own.
+    size = 20_000
+    master_of = {n: n + 1 for n in range(1, size)} | {size: 1, 0: 5, -1: -2, -3: -3}
+    start = time.perf_counter()
+    faults = coupling_faults(master_of)
+    assert time.perf_counter() - start < LOOSE_SECONDS
+    assert faults[1].kind == "circle" and faults[1].axes(3) == (1, 2, 3) and len(faults[1].members) == size
+    assert faults[size].axes(2) == (size, 1)
+    assert (
+        circle_words(faults[size - 1])
+        == f"{size - 1} → {size} → 1 → 2 → 3 → 4 → … → {size - 1} (20,000 axes)"
+    )
+    assert (faults[0].kind, faults[0].members) == ("chain", (0, 5, 6))
+    assert (faults[-3].kind, faults[-3].members) == ("itself", (-3,))
+    assert -1 not in faults and len(faults) == size + 2

@@ -53,6 +53,8 @@ from .machinemodel import (
     SkippedBlock,
 )
 from .machinescenario import MachineScenario
+from .rules.lis507_gantry_master_chain import CODE as CHAIN_CODE
+from .rules.lis507_gantry_master_chain import CouplingFault, circle_words, coupling_faults
 from .scenario import Scenario, ScenarioError, default_scenario
 
 VERSION = 1
@@ -280,12 +282,22 @@ class MachinePlan:
         self.scenario = scenario
         self.cycle_time_us = cycle_time_us
         self.axes = {name: _Axis(axis, scenario, cycle_time_us) for name, axis in machine.axes.items()}
-        self.master: dict[str, str] = {}  # slave -> master
+        coupled: dict[str, str] = {}  # slave -> master
         for master, slave in machine.gantry_pairs:
-            self.master[slave.upper()] = master.upper()
+            coupled[slave.upper()] = master.upper()
         for name, axis in machine.axes.items():
-            if axis.gantry_master and name not in self.master:
-                self.master[name] = axis.gantry_master.upper()
+            if axis.gantry_master and name not in coupled:
+                coupled[name] = axis.gantry_master.upper()
+        # Couplings without a master to lead them (LIS507) are not simulated: the axes involved are refused
+        # when a block names them, every other axis runs.
+        self.uncoupled: dict[str, str] = {}  # axis -> why the dry-run does not simulate it
+        for slave, fault in coupling_faults(coupled).items():
+            # each axis of a circle is a slave with its own fault; a chain takes the master along
+            for name in fault.members[:2] if fault.kind == "chain" else (slave,):
+                self.uncoupled.setdefault(name, _no_master(slave, fault))
+        self.master = {
+            s: m for s, m in coupled.items() if s not in self.uncoupled and m not in self.uncoupled
+        }
         self.slaves: dict[str, list[str]] = {}
         for slave, master in self.master.items():
             self.slaves.setdefault(master, []).append(slave)
@@ -305,6 +317,25 @@ class MachinePlan:
         self, starts: Mapping[str, float] | None = None, cam_shifts: Mapping[str, float] | None = None
     ) -> MachineRun:
         return _Runner(self, starts or {}, cam_shifts or {}).run()
+
+
+def _no_master(slave: str, fault: CouplingFault[str]) -> str:
+    """Why the dry-run does not simulate the axes of a gantry coupling without a master (LIS507)."""
+    if fault.kind == "itself":
+        return (
+            f"{slave} is its own gantry master (kenngr.gantry_ax_nr names its own logical axis number): no axis "
+            f"leads this gantry, so the dry-run does not simulate {slave} ({CHAIN_CODE})"
+        )
+    if fault.kind == "circle":
+        return (
+            f"{circle_words(fault)} name each other as gantry master: no axis leads this gantry, so the dry-run "
+            f"does not simulate them ({CHAIN_CODE})"
+        )
+    _, master, lead = fault.members
+    return (
+        f"{slave} follows the gantry master {master}, which is itself the gantry slave of {lead}: a slave of a "
+        f"slave is no gantry the CNC couples, so the dry-run does not simulate {slave} and {master} ({CHAIN_CODE})"
+    )
 
 
 def run_machine(
@@ -588,6 +619,9 @@ class _Runner:
                 self._fail(index, word.at, name, f"G74 names {name} twice", t, "axis named twice")
                 return False
             seen.add(name)
+            if name in plan.uncoupled:
+                self._fail(index, word.at, name, plan.uncoupled[name], t, "gantry coupling without a master")
+                return False
             prepared = plan.axes[name]
             if prepared.strategy.id == "disabled":
                 self._fail(
@@ -833,6 +867,9 @@ class _Runner:
         for word in block.targets:
             name = word.name.upper()
             if not self._known(index, word, t, f"the block moves {name}"):
+                return t
+            if name in plan.uncoupled:
+                self._fail(index, word.at, name, plan.uncoupled[name], t, "gantry coupling without a master")
                 return t
             prepared = plan.axes[name]
             if prepared.spindle:
