@@ -336,3 +336,48 @@ def test_coupling_faults_are_found_in_linear_time_on_a_long_circle():
     assert (faults[0].kind, faults[0].members) == ("chain", (0, 5, 6))
     assert (faults[-3].kind, faults[-3].members) == ("itself", (-3,))
     assert -1 not in faults and len(faults) == size + 2
+
+
+# -- start-up lists: channel lists that are not there, a list that names itself (item 11) -----------
+
+
+def test_a_missing_channel_list_is_a_finding(run, tmp_path):
+    startup = _machine(tmp_path, {"X": None})
+    startup.write_text(startup.read_text().replace("Ende\n", "sda_mds[0] ./sda_mds1.lis\nEnde\n"))
+    code, out, _ = run("lint", startup)  # before: all checks passed, only explain and dry-run knew
+    assert code == 1
+    assert f"{startup}:3:12: LIS504 [error] `sda_mds[0]` names `./sda_mds1.lis`, which does not exist" in out
+    code, _, err = run("explain", startup)
+    assert code == 2 and "the CNC does not start without it" in err
+
+
+def test_a_channel_list_outside_the_cnc_root_is_a_finding(run, tmp_path):
+    machine = tmp_path / "machine"
+    machine.mkdir()
+    (tmp_path / "default_sda.lis").write_text("gruppe[0].achse[0].bezeichnung X\nEnde\n")
+    (machine / "default_sda.lis").symlink_to(tmp_path / "default_sda.lis")
+    startup = _machine(machine, {"X": None})
+    startup.write_text(startup.read_text().replace("Ende\n", "default_sda_mds ./default_sda.lis\nEnde\n"))
+    code, out, _ = run("lint", startup)
+    assert code == 0  # a warning: achslint does not read it, the CNC may
+    assert "LIS504 [warning] `default_sda_mds` names `./default_sda.lis`, which achslint does not read" in out
+
+
+def test_a_startup_list_that_names_only_itself_says_so(run, tmp_path):
+    startup = tmp_path / "hochlauf.lis"
+    startup.write_text("zahl_mds 1\nachs_mds[0] ./hochlauf.lis\nEnde\n")
+    (tmp_path / "rfp.nc").write_text("N10 G74 X1\nM30\n")
+    code, out, _ = run("lint", startup)
+    assert code == 1
+    assert (
+        f"{startup}:2:13: LIS504 [error] `achs_mds[0]` names `./hochlauf.lis`, which is this start-up list "
+        "itself, not an axis list" in out
+    )
+    # explain and dry-run took it for an axis list of defaults (an axis X_ACHSE); now they refuse
+    for args in (("explain", startup), ("dry-run", startup, "--program", tmp_path / "rfp.nc")):
+        code, out, err = run(*args)
+        assert code == 2 and out == ""
+        assert err.strip() == (
+            f"achslint: {startup}:2: `achs_mds[0]` names this start-up list itself (`./hochlauf.lis`), not the "
+            "axis list: name the axis list's file"
+        )

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from .channel import ChannelList, read_channel_list
 from .decode import UnreadableInput
-from .files import reason
+from .files import reason, same_file
 from .machine import Startup, StartupEntry, read_startup
 from .machinemodel import Location, Machine, MachineAxis
 from .resolved import ResolvedAxis, resolve_bytes
@@ -96,6 +96,13 @@ def _read_entry(startup: Startup, entry: StartupEntry, kind: str) -> bytes:
         raise MachineError(
             f"`{entry.key}` names the {kind} `{entry.raw}`, which achslint does not read: {entry.refused}; "
             "give the CNC's working directory with --cnc-root",
+            startup.path,
+            entry.line,
+        )
+    if entry.path is not None and same_file(entry.path, startup.path):
+        raise MachineError(
+            f"`{entry.key}` names this start-up list itself (`{entry.raw}`), not the {kind}: name the {kind}'s "
+            "file",
             startup.path,
             entry.line,
         )

@@ -1,14 +1,16 @@
 """
 What
 ----
-A start-up list entry (`achs_mds[i]` or `default_achs_mds`) that names an axis
-list which does not exist. Relative names are resolved the way the CNC resolves
-them: against its working directory, the CNC root. Set it with `--cnc-root DIR`
-or `cnc-root` in the configuration; otherwise it is the start-up list's folder,
-or the folder above `listen/` when the start-up list lies in `listen/` or one
-folder below it (the SDK keeps `./listen/…` names in `listen/hochlauf.lis`).
-The message names the file looked for and the root. An entry whose file, links
-followed, lies outside the CNC root is not read: a warning says why.
+A start-up list entry (`achs_mds[i]`, `default_achs_mds`, `sda_mds[i]` or
+`default_sda_mds`) that names an axis or channel list which does not exist.
+Relative names are resolved the way the CNC resolves them: against its working
+directory, the CNC root. Set it with `--cnc-root DIR` or `cnc-root` in the
+configuration; otherwise it is the start-up list's folder, or the folder above
+`listen/` when the start-up list lies in `listen/` or one folder below it (the
+SDK keeps `./listen/…` names in `listen/hochlauf.lis`). The message names the
+file looked for and the root. An entry whose file, links followed, lies outside
+the CNC root is not read: a warning says why. An entry that names the start-up
+list itself is an error too: it gives no list.
 
 Why
 ---
@@ -41,7 +43,8 @@ achs_mds[0]          ./achsmds1.lis
 
 Reference
 ---------
-P-STUP-00015 (achs_mds[i]) and P-STUP-00035 (default_achs_mds); list format facts §9.
+P-STUP-00015 (achs_mds[i]), P-STUP-00035 (default_achs_mds), P-STUP-00009 (sda_mds[i]) and
+P-STUP-00034 (default_sda_mds); list format facts §9.
 """
 
 from __future__ import annotations
@@ -50,6 +53,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
+from ..files import same_file
 
 if TYPE_CHECKING:
     from ..machine import Startup
@@ -59,13 +63,27 @@ CODE = "LIS504"
 NAME = "missing-list"
 SEVERITY = "error"
 FIX = "none"
-SUMMARY = "Start-up list names an axis list that does not exist"
+SUMMARY = "Start-up list names an axis or channel list that does not exist"
+
+_KINDS = {
+    "achs_mds": "an axis list",
+    "default_achs_mds": "the default axis list",
+    "sda_mds": "a channel list",
+    "default_sda_mds": "the default channel list",
+}
 
 
 def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
     for startup in startups:
-        for entry in ([startup.default] if startup.default else []) + startup.axes:
-            if entry.refused:
+        defaults = [entry for entry in (startup.default, startup.default_channel) if entry is not None]
+        for entry in [*defaults, *startup.axes, *startup.channels]:
+            if entry.path is not None and same_file(entry.path, startup.path):
+                severity, message = (
+                    Severity.ERROR,
+                    f"`{entry.key}` names `{entry.raw}`, which is this start-up list itself, not "
+                    f"{_KINDS[entry.key.split('[')[0]]}: name the list file, or remove the entry",
+                )
+            elif entry.refused:
                 severity, message = (
                     Severity.WARNING,
                     f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {entry.refused}; "
