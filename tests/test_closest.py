@@ -9,7 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.catalogue import catalogue
-from achslint.closest import close_matches
+from achslint.closest import close_matches, ratio_bound
+from achslint.rules.lis101_unknown_parameter import _clear_winner
 
 from .conftest import examples
 
@@ -42,6 +43,20 @@ def misspelt(draw: st.DrawFn) -> str:
 @given(misspelt(), st.integers(1, 5), st.sampled_from([0.3, 0.6, 0.6, 0.75, 0.9, 1.0]))
 def test_same_answer_as_difflib(word: str, n: int, cutoff: float) -> None:
     assert close_matches(word, NAMES, n, cutoff) == difflib.get_close_matches(word, NAMES, n, cutoff)
+
+
+@settings(max_examples=examples(400, 30), deadline=None)
+@given(misspelt(), st.lists(misspelt(), min_size=1, max_size=3))
+def test_lis101_decides_as_with_the_exact_ratios(word: str, others: list[str]) -> None:
+    # The bound is never below difflib's ratio (either order), so LIS101 skips exact ratios only where they
+    # cannot change its decision: the best candidate at 0.85 or more and 0.05 ahead of the next one.
+    candidates = close_matches(word, NAMES) or others
+    for name in candidates:
+        assert ratio_bound(word, name) >= difflib.SequenceMatcher(None, word, name).ratio()
+        assert ratio_bound(word, name) >= difflib.SequenceMatcher(None, name, word).ratio()
+    ratio = difflib.SequenceMatcher(None, word, candidates[0]).ratio()
+    runner_up = difflib.SequenceMatcher(None, word, candidates[1]).ratio() if len(candidates) > 1 else 0.0
+    assert _clear_winner(word, candidates) == (ratio >= 0.85 and ratio - runner_up >= 0.05)
 
 
 def test_ties_and_the_exact_cutoff_are_difflibs() -> None:

@@ -446,8 +446,8 @@ def test_12_the_closest_name_is_searched_once_per_distinct_name(monkeypatch):
     import achslint.catalogue as module
 
     calls = []
-    real = module.close_matches
-    monkeypatch.setattr(module, "close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    real = module.scored_matches
+    monkeypatch.setattr(module, "scored_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
     lint_file(b"kenngr.ref_ricth_zz 1\n" * 500 + b"kenngr.vb_reflow_zz 1\n" * 500 + b"Ende\n", "a.lis")
     assert sorted(calls) == ["kenngr.ref_ricth_zz", "kenngr.vb_reflow_zz"]
     catalogue()._suggestions.clear()
@@ -466,8 +466,8 @@ def test_12_a_name_too_long_for_any_match_skips_the_search_with_the_same_answer(
         "kenngr.vb_reflowx",  # ordinary: searched
     ]
     calls: list[str] = []
-    real = module.close_matches
-    monkeypatch.setattr(module, "close_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    real = module.scored_matches
+    monkeypatch.setattr(module, "scored_matches", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
     shortcut = [cat._suggest(name, 3) for name in names]
     assert calls == ["kenngr.vb_reflowx"]
     monkeypatch.setitem(cat.__dict__, "_longest", 10**9)  # no name is too long: the full search everywhere

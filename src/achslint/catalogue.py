@@ -7,7 +7,6 @@ range, unit and default, and which known name is closest to a misspelt one.
 
 from __future__ import annotations
 
-import difflib
 import json
 import re
 import sys
@@ -16,7 +15,7 @@ from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Any
 
-from .closest import close_matches
+from .closest import scored_matches
 from .numbers import NumberProblem, parse_reference
 from .syntax import path_pattern
 
@@ -311,8 +310,9 @@ class Catalogue:
         # long as every known one cannot reach 0.6 (difflib's ratio is at most 2*short/(short+long)), so a
         # pathological name is not indexed for nothing.
         too_long = 3 * len(pattern) > 7 * self._longest
-        loose = [] if too_long else close_matches(pattern, self._candidates, n=limit, cutoff=0.6)
-        close = [c for c in loose if difflib.SequenceMatcher(None, c, pattern).ratio() >= 0.75]
+        scored = [] if too_long else scored_matches(pattern, self._candidates, n=limit, cutoff=0.6)
+        loose = [name for _, name in scored]
+        close = [name for ratio, name in scored if ratio >= 0.75]
         if close:
             return close
         # Same member name in another group: "kenngr.vb_reflow" -> "getriebe[i].vb_reflow".

@@ -18,11 +18,27 @@ from collections.abc import Sequence
 _MARGIN = 0.05  # below the cutoff for rapidfuzz's rough float pass; the exact bound decides after it
 
 
+def ratio_bound(a: str, b: str) -> float:
+    """A number `difflib.SequenceMatcher(None, a, b).ratio()` never exceeds (either order), computed fast."""
+    from rapidfuzz.distance import Indel  # imported here: only lists with unknown names pay for it
+
+    length = len(a) + len(b)
+    # The same arithmetic as difflib's ratio (2.0 * matches / length), with LCS for the matches.
+    return Indel.similarity(a, b) / length if length else 1.0
+
+
 def close_matches(word: str, candidates: Sequence[str], n: int = 3, cutoff: float = 0.6) -> list[str]:
     """What `difflib.get_close_matches(word, candidates, n, cutoff)` returns, in the same order."""
+    return [name for _, name in scored_matches(word, candidates, n, cutoff)]
+
+
+def scored_matches(
+    word: str, candidates: Sequence[str], n: int = 3, cutoff: float = 0.6
+) -> list[tuple[float, str]]:
+    """`close_matches` with each name's ratio, `difflib.SequenceMatcher(None, name, word).ratio()`."""
     if n <= 0 or not candidates:
         return []
-    from rapidfuzz import process  # imported here: only lists with unknown names pay for it
+    from rapidfuzz import process
     from rapidfuzz.distance import Indel
 
     rough = process.extract(
@@ -34,9 +50,7 @@ def close_matches(word: str, candidates: Sequence[str], n: int = 3, cutoff: floa
     )
     bounded = []
     for name, _, _ in rough:
-        length = len(word) + len(name)
-        # The same arithmetic as difflib's ratio (2.0 * matches / length), with LCS for the matches.
-        bound = Indel.similarity(word, name) / length if length else 1.0
+        bound = ratio_bound(word, name)
         if bound >= cutoff:
             bounded.append((bound, name))
     bounded.sort(reverse=True)
@@ -55,4 +69,4 @@ def close_matches(word: str, candidates: Sequence[str], n: int = 3, cutoff: floa
             heapq.heappush(best, (ratio, name))
         elif (ratio, name) > best[0]:
             heapq.heapreplace(best, (ratio, name))
-    return [name for _, name in sorted(best, reverse=True)]
+    return sorted(best, reverse=True)

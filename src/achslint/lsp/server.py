@@ -415,9 +415,12 @@ class AchslintServer(LanguageServer):
         peers: list[str] = []
         try:
             snapshot, found, peers = self.session.diagnostics(uri)
-            diagnostics = features.publishable(document, snapshot, found)
             if snapshot is not None:
                 analysis = Analysis(generation, document, snapshot, found)
+            if self._to_lint.waiting(uri):  # a newer text is queued: its lint publishes, not this one
+                self._hand_over(uri, generation, analysis, None, [])
+                return
+            diagnostics = features.publishable(document, snapshot, found)
         except Exception as exc:
             log.error("achslint: cannot lint %s: %s", uri, describe(exc))
             diagnostics = [
@@ -432,11 +435,16 @@ class AchslintServer(LanguageServer):
         published = lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
         message = {"jsonrpc": "2.0", "method": lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": published}
         body = json.dumps(self._converter.unstructure(message)).encode("utf-8")
+        self._hand_over(uri, generation, analysis, body, peers)
+
+    def _hand_over(
+        self, uri: str, generation: int, analysis: Analysis | None, published: bytes | None, peers: list[str]
+    ) -> None:
         if self._loop is not None:
-            self._loop.call_soon_threadsafe(self._linted, uri, generation, analysis, body, peers)
+            self._loop.call_soon_threadsafe(self._linted, uri, generation, analysis, published, peers)
 
     def _linted(
-        self, uri: str, generation: int, analysis: Analysis | None, published: bytes, peers: list[str]
+        self, uri: str, generation: int, analysis: Analysis | None, published: bytes | None, peers: list[str]
     ) -> None:
         """On the loop: keep the analysis, publish it unless the text changed meanwhile."""
         self._uncollected += 1
@@ -452,7 +460,7 @@ class AchslintServer(LanguageServer):
             self.analyses[uri] = analysis
             self.documents[uri].adopt_lines(analysis.document)
         self._wake(uri, generation)
-        if generation != self.generations.get(uri) or self.stopping:
+        if published is None or generation != self.generations.get(uri) or self.stopping:
             return  # stale: the lint of the newer text follows
         self._send(published)
         for peer in peers:  # other open lists of the machine whose machine findings changed with this one

@@ -92,6 +92,10 @@ class Latest(Generic[_Item]):
             self._items[key] = item
             return first
 
+    def waiting(self, key: str) -> bool:
+        """Whether an item for `key` waits (a newer one, when a job for the key is running)."""
+        return key in self._items
+
     def take(self, key: str) -> _Item | None:
         with self._lock:
             return self._items.pop(key, None)

@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING
 
 from .. import syntax
 from ..catalogue import fill_indices
+from ..closest import ratio_bound
 from ..diagnostics import Diagnostic, Severity
 from ._common import replace_path_fix
 
@@ -62,6 +63,21 @@ def _with_indices(pattern: str, indices: tuple[int, ...]) -> tuple[str, bool]:
     if count == len(indices):
         return fill_indices(pattern, indices), True
     return fill_indices(pattern, (0,) * count), False
+
+
+def _clear_winner(pattern: str, candidates: list[str]) -> bool:
+    """The best candidate is close (ratio >= 0.85) and clearly ahead of the next one (by 0.05 or more).
+
+    The exact ratios (difflib's, slow) are worked out only when the fast upper bound cannot decide: a bound
+    below 0.85 rules the best one out, and a runner-up bounded 0.05 below the best one is behind enough."""
+    if ratio_bound(pattern, candidates[0]) < 0.85:
+        return False
+    ratio = difflib.SequenceMatcher(None, pattern, candidates[0]).ratio()
+    if ratio < 0.85:
+        return False
+    if len(candidates) < 2 or ratio - ratio_bound(pattern, candidates[1]) >= 0.05:
+        return True
+    return ratio - difflib.SequenceMatcher(None, pattern, candidates[1]).ratio() >= 0.05
 
 
 def _diagnose(ctx: Context, setting: Setting) -> tuple[str, str | None, str | None]:
@@ -93,9 +109,7 @@ def _diagnose(ctx: Context, setting: Setting) -> tuple[str, str | None, str | No
     if not candidates:
         return f"unknown parameter `{path}`; check the spelling against `achslint explain`", None, None
     best, fits = _with_indices(candidates[0], indices)
-    ratio = difflib.SequenceMatcher(None, pattern, candidates[0]).ratio()
-    runner_up = difflib.SequenceMatcher(None, pattern, candidates[1]).ratio() if len(candidates) > 1 else 0.0
-    unambiguous = fits and (candidates[0] == pattern.lower() or (ratio >= 0.85 and ratio - runner_up >= 0.05))
+    unambiguous = fits and (candidates[0] == pattern.lower() or _clear_winner(pattern, candidates))
     message = f"unknown parameter `{path}`; did you mean `{best}`?"
     if len(candidates) > 1 and not unambiguous:
         others = ", ".join(f"`{_with_indices(c, indices)[0]}`" for c in candidates[1:])
