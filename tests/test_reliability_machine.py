@@ -381,3 +381,36 @@ def test_a_startup_list_that_names_only_itself_says_so(run, tmp_path):
             f"achslint: {startup}:2: `achs_mds[0]` names this start-up list itself (`./hochlauf.lis`), not the "
             "axis list: name the axis list's file"
         )
+
+
+# -- a channel list that gives one logical axis several names (item 11) -------------------------------
+
+
+def test_a_logical_axis_with_two_names_in_the_channel_list_is_a_finding(run, tmp_path):
+    startup = _machine(tmp_path, {"X": None, "Y": None})
+    startup.write_text(startup.read_text().replace("Ende\n", "sda_mds[0] ./sda_mds1.lis\nEnde\n"))
+    channel = tmp_path / "sda_mds1.lis"
+    channel.write_text(
+        "gruppe[0].achse[0].bezeichnung X\ngruppe[0].achse[0].log_achs_nr 1\n"
+        "gruppe[0].achse[1].bezeichnung Y\ngruppe[0].achse[1].log_achs_nr 1\n"  # meant 2
+        "gruppe[0].achse[2].bezeichnung C\ngruppe[0].achse[2].log_achs_nr 2\n"
+        "spindel[0].bezeichnung S\nspindel[0].log_achs_nr 2\n"  # axis 2 as spindle S and rotary axis C: fine
+        "Ende\n"
+    )
+    code, out, _ = run("lint", startup)
+    assert code == 0  # a warning
+    [line] = [line for line in out.splitlines() if "LIS508" in line]
+    assert line == (
+        f"{channel}:3:32: LIS508 [warning] gruppe[0].achse[1] names logical axis 1 `Y`, but gruppe[0].achse[0] "
+        "already names it `X`: an axis has one name in a channel; give this slot the logical number of the "
+        "axis it is meant for, or remove it"
+    )
+    # The dry-run simulated X and Y as two axes of one axis list; now Y is not a name of the machine.
+    code, out, _ = _dry_run(run, tmp_path, startup, "N10 G74 X1 Y1\nM30\n")
+    assert code == 1 and "G74 names Y, which is not an axis of the machine (its axes: C, S, X)" in out
+    code, out, err = run("explain", startup)
+    assert code == 0
+    assert (
+        f"{channel}:3: gruppe[0].achse[1] names logical axis 1 Y, which gruppe[0].achse[0] already names X"
+        in (out + err)
+    )

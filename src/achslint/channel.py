@@ -85,6 +85,18 @@ class ChannelList:
     problems: list[ChannelProblem] = field(default_factory=list)
     _refused: set[str] = field(default_factory=set)  # slots with an unusable value (reported once)
 
+    def other_names(self) -> list[tuple[ChannelAxis, ChannelAxis]]:
+        """(first, again) for each slot that gives a logical axis another name than an earlier slot of the
+        same kind gave it: two slots of the axis groups, or two spindles. (A spindle and an axis of a group
+        with one number are left alone: a spindle can also work as a rotary axis.)"""
+        first: dict[tuple[bool, int], ChannelAxis] = {}
+        found = []
+        for axis in self.axes:
+            earlier = first.setdefault((axis.spindle, axis.logical_number), axis)
+            if earlier.name != axis.name:
+                found.append((earlier, axis))
+        return found
+
 
 def _typed(parameter: ChannelParameter, line: syntax.Line) -> int | str | tuple[str]:
     """The value of an assignment, or a one-element tuple with what is wrong with it."""

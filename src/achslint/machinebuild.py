@@ -19,7 +19,7 @@ from pathlib import Path
 
 from .channel import ChannelList, read_channel_list
 from .decode import UnreadableInput
-from .files import reason, same_file
+from .files import read_list, reason, same_file
 from .machine import Startup, StartupEntry, read_startup
 from .machinemodel import Location, Machine, MachineAxis
 from .resolved import ResolvedAxis, resolve_bytes
@@ -165,6 +165,25 @@ def _channel_list(startup: Startup, channel: int, machine: Machine) -> ChannelLi
     return result
 
 
+def read_channel_entry(entry: StartupEntry, default: StartupEntry | None) -> ChannelList | None:
+    """The channel list a start-up entry names, with the default channel list underneath, for the machine
+    rules (LIS508, the default list only when it is read); None when the channel list cannot be read
+    (LIS504 and `build_machine` say why)."""
+    under = default.path if default is not None else None
+    if entry.path is None:
+        return None
+    try:
+        defaults = read_list(under) if under is not None else None
+        return read_channel_list(
+            read_list(entry.path),
+            str(_relative(entry.path)),
+            defaults,
+            str(_relative(under)) if under else "",
+        )
+    except (OSError, UnreadableInput):
+        return None
+
+
 def _number(values: ResolvedAxis) -> int:
     number = values.get("kopf.achs_nr")
     return int(number) if isinstance(number, int) else 0
@@ -248,8 +267,16 @@ def _named_by_channel(
             continue
         by_number[number] = (entry, data, values)
     named: set[int] = set()
+    renamed = {id(again): first for first, again in channel_list.other_names()}
     for item in channel_list.axes:
         where = f"{item.at.path}:{item.at.line}"
+        if id(item) in renamed:
+            first = renamed[id(item)]
+            machine.notes.append(
+                f"{where}: {item.slot} names logical axis {item.logical_number} {item.name}, which {first.slot} "
+                f"already names {first.name} (LIS508); only the first name is used"
+            )
+            continue
         found = by_number.get(item.logical_number)
         if found is None:
             machine.notes.append(

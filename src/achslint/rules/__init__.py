@@ -101,6 +101,7 @@ RULE_MODULES = (
     "lis505_xml_axis_definition",
     "lis506_default_list_axis_number",
     "lis507_gantry_master_chain",
+    "lis508_axis_named_twice_in_channel",
     "lis510_gantry_homing_type_mismatch",
     "lis511_gantry_drive_controlled_homing",
     "lis601_program_text",
