@@ -70,7 +70,7 @@ def test_any_encoding_expat_knows_is_read(encoding):
 
 def test_an_unknown_declared_encoding_is_a_clear_refusal():
     result = lint_file(b'<?xml version="1.0" encoding="x-nonsense"?><AchsMds>Ende</AchsMds>', "a.xml")
-    assert result.error and "declares the encoding `x-nonsense`" in result.error
+    assert result.error and "declares the unknown encoding `x-nonsense`" in result.error
     assert result.error.endswith("save it as UTF-8")
 
 

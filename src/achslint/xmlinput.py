@@ -17,6 +17,7 @@ the size of the file.
 
 from __future__ import annotations
 
+import codecs
 import re
 from bisect import bisect_right
 from dataclasses import dataclass, field
@@ -268,11 +269,16 @@ def _parse(data: bytes, name: str) -> _Collector:
         # encoding as a table of 256 single characters: multi-byte encodings (Shift_JIS, GB2312, EUC-KR,
         # Big5), UTF-7 and codecs that are no text encoding (IDNA, punycode, rot13) fail there, before
         # the first element is read.
-        declared = declared_encoding(data)
+        declared = declared_encoding(data) or "?"
+        try:
+            codecs.lookup(declared)
+        except LookupError:
+            raise UnreadableInput(
+                f"refusing to read {name}: it declares the unknown encoding `{declared}`; save it as UTF-8"
+            ) from None
         raise UnreadableInput(
-            f"refusing to read {name}: it declares the encoding `{declared or '?'}`, which achslint cannot "
-            "read XML in (UTF-8, UTF-16, ASCII and one-byte code pages such as Latin-1 or cp1252 only); "
-            "save it as UTF-8"
+            f"refusing to read {name}: it declares the encoding `{declared}`, which achslint cannot read XML "
+            "in (UTF-8, UTF-16, ASCII and one-byte code pages such as Latin-1 or cp1252 only); save it as UTF-8"
         ) from None
     return collector
 
