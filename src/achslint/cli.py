@@ -21,7 +21,7 @@ import typer
 from . import __version__
 from .config import MAX_TOLERANCE_UM, SeverityName
 from .config import UnknownParameters as UnknownParametersChoice
-from .reporters import REPORTERS
+from .output.reporters import REPORTERS
 from .scenario import CYCLE_TIME_US
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
@@ -326,7 +326,7 @@ def lint(
             if statistics and REPORTERS[fmt].text:
                 _print_statistics(outcome.results, stream)
             else:
-                from .reporters import get
+                from .output.reporters import get
 
                 get(fmt)(
                     outcome.results,
@@ -1001,7 +1001,7 @@ def schema(
     import json
 
     if output == SchemaOutput.lint:
-        from .reporters.json_format import SCHEMA as document
+        from .output.reporters.json_format import SCHEMA as document
     else:
         from .model import json_schema
 

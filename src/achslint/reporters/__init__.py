@@ -1,50 +1,37 @@
-"""Output formats: a small registry from format name to a report function.
+"""The lint output formats under their first name: they live in `achslint.output.reporters` now.
 
-Every reporter takes the per-file results and a text stream. Machine formats
-use only the standard library and never colour their output.
+Kept so that code written against `achslint.reporters` (the registry, `get`, a format module such as
+`sarif`) goes on working; nothing in the package imports this name.
 """
 
 from __future__ import annotations
 
-import importlib
-from collections.abc import Sequence
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Protocol, TextIO
+from ..output.reporters import (
+    REPORTERS,
+    Reporter,
+    ReportFunction,
+    base,
+    concise,
+    full,
+    get,
+    github,
+    gitlab,
+    json_format,
+    junit,
+    sarif,
+)
 
-
-@dataclass(frozen=True)
-class Reporter:
-    """An output format: the module with its `report` function, and what the report needs."""
-
-    module: str
-    text: bool = False  # for people: `--statistics` replaces it, the closing summary lines follow it
-    needs_source: bool = False  # shows the lines of the list (the linter keeps them only when asked)
-
-
-if TYPE_CHECKING:
-    from .base import LintResult
-
-
-class ReportFunction(Protocol):
-    """`report(results, stream, **options)`: the options a format does not use are ignored (`color`,
-    `sources` for code frames, `docs_url`)."""
-
-    def __call__(self, results: Sequence[LintResult], stream: TextIO, **options: Any) -> None: ...
-
-
-REPORTERS = {
-    "full": Reporter("full", text=True, needs_source=True),
-    "concise": Reporter("concise", text=True),
-    "json": Reporter("json_format"),
-    "sarif": Reporter("sarif"),
-    "github": Reporter("github"),
-    "gitlab": Reporter("gitlab", needs_source=True),
-    "junit": Reporter("junit"),
-}
-
-
-def get(name: str) -> ReportFunction:
-    """The `report(results, stream, **options)` function of a format."""
-    module = importlib.import_module(f"{__name__}.{REPORTERS[name].module}")
-    report: ReportFunction = module.report
-    return report
+__all__ = [
+    "REPORTERS",
+    "ReportFunction",
+    "Reporter",
+    "base",
+    "concise",
+    "full",
+    "get",
+    "github",
+    "gitlab",
+    "json_format",
+    "junit",
+    "sarif",
+]

@@ -8,12 +8,12 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, TextIO
 from urllib.parse import quote
 
-from .. import __version__
-from ..diagnostics import Diagnostic, Severity, rule_url
+from ... import __version__
+from ...diagnostics import Diagnostic, Severity, rule_url
 from .base import write_json
 
 if TYPE_CHECKING:
-    from ..rules import Rule
+    from ...rules import Rule
     from .base import LintResult
 
 # The document follows the SARIF 2.1.0 schema (the tests validate it); its parts are plain JSON objects.
@@ -52,8 +52,8 @@ def _fingerprint(d: Diagnostic) -> str:
 
 
 def _rules(docs_url: str | None, chosen: Mapping[str, Rule] | None) -> list[JsonObject]:
-    from ..docs import rule_text
-    from ..rules import registry
+    from ...docs import rule_text
+    from ...rules import registry
 
     rules: list[JsonObject] = []
     for rule in (registry() if chosen is None else chosen).values():
