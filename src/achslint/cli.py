@@ -11,10 +11,10 @@ import functools
 import gc
 import os
 import sys
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable
 from enum import Enum
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NoReturn, TextIO, TypeVar, get_args
+from typing import TYPE_CHECKING, Any, NoReturn, TextIO, get_args
 
 import typer
 
@@ -46,6 +46,7 @@ if TYPE_CHECKING:
 
     from .api import FormatOutcome
     from .linter import FileResult
+    from .output import Screen
 
 if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
     OutputFormat = Enum
@@ -626,19 +627,21 @@ def explain(
 ) -> None:
     """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
 
-    from .explain import explain_list, parameter_card, render_card, render_list
+    from .explain import explain_list, parameter_card
     from .files import not_a_list_file
     from .machine import is_startup_list
+    from .output import explain as shown
 
     path = Path(target)
     problem = not_a_list_file(path)
-    as_json = output_format == ExplainFormat.json
+    screen = _screen(color)
     if problem is None and is_startup_list(path):
-        _show(_machine_report(path, program, channel, cnc_root, gear), _render_machine, as_json, color)
+        report = _machine_report(path, program, channel, cnc_root, gear)
+        shown.MACHINE[output_format.value](report, screen)
     elif program is not None:
         _fail("--program goes with a start-up list (hochlauf.lis)")
     elif problem is None or problem not in NOT_A_FILE:
-        _show(explain_list(_one_list(path, target), target, gear), render_list, as_json, color)
+        shown.LIST[output_format.value](explain_list(_one_list(path, target), target, gear), screen)
     else:
         from .catalogue import catalogue
 
@@ -649,20 +652,14 @@ def explain(
             if suggestions:
                 hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?"
             _fail(f"{target!r} is neither a file nor a known parameter{hint}")
-        _show(parameter_card(parameter), render_card, as_json, color)
+        shown.PARAMETER[output_format.value](parameter_card(parameter), screen)
 
 
-Report = TypeVar("Report", bound=Mapping[str, Any])
+def _screen(color: Color) -> Screen:
+    """Standard output for a command's report, coloured as --color says."""
+    from .output import Screen
 
-
-def _show(report: Report, render: Callable[[Report, Console], None], as_json: bool, color: Color) -> None:
-    """An explanation as JSON, or rendered for people."""
-    import json
-
-    if as_json:
-        typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
-    else:
-        render(report, _console(_use_color(color, sys.stdout)))
+    return Screen(color=_use_color(color, sys.stdout), echo=typer.echo)
 
 
 def _machine_report(
@@ -682,12 +679,6 @@ def _machine_report(
         _fail(str(exc))
     except OSError as exc:
         _fail(str(exc) if exc.errno is None else f"cannot read {program}: {reason(exc)}")
-
-
-def _render_machine(report: dict[str, Any], console: Console) -> None:
-    from .machineexplain import render_machine
-
-    render_machine(report, console)
 
 
 # Why an argument of explain names no file at all (then it is taken as a parameter name).

@@ -1,6 +1,6 @@
 """`achslint explain`: what an axis list configures for homing, and parameter cards.
 
-`explain_list` returns plain data (rendered as text or JSON by the CLI): the
+`explain_list` returns plain data (output/explain.py renders it as text or JSON): the
 homing strategy with its phases in words, and every homing parameter with its
 value, where it came from, its unit and human unit, and whether it takes effect
 under the strategy, with the reason.
@@ -17,8 +17,6 @@ from .rules import registry
 from .units import describe, to_human, unit_label
 
 if TYPE_CHECKING:
-    from rich.console import Console
-
     from .homing import HomingStrategy
     from .resolved import ResolvedAxis
 
@@ -64,6 +62,15 @@ class PhaseInfo(TypedDict):
     text: str
 
 
+class CommandedInfo(TypedDict):
+    """What a G74 that names the axis runs (the same strategy as at power-up except on an absolute axis)."""
+
+    id: str
+    title: str
+    description: str
+    phases: list[PhaseInfo]
+
+
 class SourceInfo(TypedDict):
     kind: str
     line: int | None
@@ -89,6 +96,7 @@ class ListReport(TypedDict):
     axis: AxisInfo
     strategy: StrategyInfo
     phases: list[PhaseInfo]
+    commanded: CommandedInfo
     corrections: list[CorrectionData]
     parameters: list[ParameterRow]
 
@@ -139,11 +147,10 @@ def _speed_words(value: float | None, axis_type: str) -> str:
     return describe(value, unit)
 
 
-def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
-    """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs, after its corrections."""
-    values = resolve_bytes(data, name, defaults)
-    strategy = classify(values, gear)
-    axis_type = values.axis_type
+def phase_infos(strategy: HomingStrategy) -> list[PhaseInfo]:
+    """The strategy's phases in words, numbered, with their speeds in list and human units."""
+    axis_type = strategy.setup.axis_type
+    unit = "um/s" if axis_type == "T" else "0.001deg/s"
     phases: list[PhaseInfo] = []
     for number, phase in enumerate(strategy.phases, 1):
         speed = _speed_words(phase.velocity, axis_type)
@@ -165,16 +172,25 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
                 "direction": phase.direction,
                 "velocity_parameter": phase.velocity_parameter,
                 "velocity": phase.velocity,
-                "velocity_human": to_human(phase.velocity, "um/s" if axis_type == "T" else "0.001deg/s")
-                if phase.velocity
-                else None,
+                "velocity_human": to_human(phase.velocity, unit) if phase.velocity else None,
                 "ends_when": phase.ends_when,
                 "note": phase.note,
                 "text": text,
             }
         )
+    return phases
+
+
+def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
+    """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs after its corrections, at
+    power-up (`strategy`, `phases`) and when a G74 names the axis (`commanded`)."""
+    values = resolve_bytes(data, name, defaults)
+    strategy = classify(values, gear)
+    commanded = classify(values, gear, commanded=True)
+    axis_type = values.axis_type
+    phases = phase_infos(strategy)
     parameters = [parameter_row(values, strategy, path) for path in homing_parameter_paths(gear)]
-    acceleration = strategy.setup.acceleration
+    acceleration = strategy.acceleration
     return {
         "version": 1,
         "file": name,
@@ -198,10 +214,16 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
             "variants": strategy.variants,
             "ends_with_braking": strategy.definition.ends_with_braking,
             "acceleration": {"value": acceleration.value, "source": acceleration.source}
-            if strategy.moves and strategy.controlled_by == "cnc" and strategy.id != "fixed_stop"
+            if strategy.moves and strategy.controlled_by == "cnc" and acceleration is not None
             else None,
         },
         "phases": phases,
+        "commanded": {
+            "id": commanded.id,
+            "title": commanded.title,
+            "description": commanded.description,
+            "phases": phases if commanded.definition is strategy.definition else phase_infos(commanded),
+        },
         "corrections": [c.as_dict() for c in values.corrections],
         "parameters": parameters,
     }
@@ -229,64 +251,6 @@ def parameter_row(values: ResolvedAxis, strategy: HomingStrategy, path: str) -> 
         "effective": found.effective,
         "reason": found.reason,
     }
-
-
-def render_list(report: ListReport, console: Console) -> None:
-    from rich.table import Table
-    from rich.text import Text
-
-    axis = report["axis"]
-    console.print(Text(f"{report['file']}", style="bold"))
-    drive_note = "" if axis["drive_type_set"] else " (not set in the list: CNC default)"
-    console.print(
-        f"Axis {axis['name']} (logical axis {axis['number']}): {axis['axis_type']} axis, "
-        f"drive type {axis['drive_type']} = {axis['drive']}{drive_note}"
-    )
-    type_note = "" if axis["homing_type_set"] else " (not set: the drive type's default)"
-    strategy = report["strategy"]
-    console.print(
-        Text(f"Homing: {strategy['title']}", style="bold")
-        + Text(f" — homing_type {axis['homing_type']}{type_note}")
-    )
-    console.print(strategy["description"])
-    for variant in strategy["variants"]:
-        console.print(f"  • {variant}")
-    if report["phases"]:
-        console.print(Text(f"Phases (gear stage {report['gear']}):", style="bold"))
-        for phase in report["phases"]:
-            console.print("  " + phase["text"])
-        if strategy["ends_with_braking"]:
-            console.print(
-                "  After the reference event the axis brakes, so it stops beyond the reference position "
-                "by its braking distance."
-            )
-    for correction in report["corrections"]:
-        console.print(
-            Text(f"CNC correction {correction['error']}: ", style="yellow")
-            + Text(
-                f"`{correction['parameter']}` {correction['written']} is used as {correction['used']}: "
-                f"{correction['reason']}"
-            )
-        )
-    table = Table(
-        title=f"Homing parameters (gear stage {report['gear']})", title_justify="left", show_lines=False
-    )
-    for column in ("parameter", "id", "value", "unit", "human", "source", "effective", "why"):
-        table.add_column(column, overflow="fold")
-    for row in report["parameters"]:
-        source = "default" if row["source"]["kind"] == "default" else f"line {row['source']['line']}"
-        table.add_row(
-            row["parameter"],
-            row["p_axis"],
-            str(row["value"])
-            + (f" (written {row['written']}, {row['correction']})" if row["correction"] else ""),
-            row["unit"] or "",
-            row["human"] or "",
-            source,
-            Text("yes", style="green") if row["effective"] else Text("no", style="red"),
-            row["reason"],
-        )
-    console.print(table)
 
 
 # --- parameter cards --------------------------------------------------------------------------
@@ -346,40 +310,3 @@ def parameter_card(parameter: Parameter) -> ParameterCard:
         "strategies": strategies_using(parameter),
         "rules": rules_checking(parameter),
     }
-
-
-def render_card(card: ParameterCard, console: Console) -> None:
-    from rich.text import Text
-
-    console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))
-    console.print(card["description"])
-    rows = [
-        ("type", card["type"]),
-        ("range (manual)", card["range"]),
-        (
-            "checked range",
-            card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}",
-        ),
-        ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
-        ("symbols", card["symbols"] and ", ".join(card["symbols"])),
-        ("max length", card["max_length"]),
-        ("default", card["default"]),
-        ("units", card["units"] and ", ".join(f"{k}: {v}" for k, v in card["units"].items())),
-        ("indices", card["index_bounds"] and ", ".join(f"{a}..{b}" for a, b in card["index_bounds"])),
-        ("aliases", ", ".join(f"{a['path']} ({a['kind']})" for a in card["aliases"])),
-        ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
-        ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
-        ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
-        (
-            "matters for",
-            card["strategies"] is not None
-            and (", ".join(s["title"] for s in card["strategies"]) or "no homing strategy"),
-        ),
-        ("checked by", card["rules"] and ", ".join(card["rules"])),
-        ("manual title", card["manual_title"]),
-        ("manual", card["manual"]),
-    ]
-    width = max(len(k) for k, _ in rows)
-    for key, value in rows:
-        if value not in (None, "", False, [], {}):
-            console.print(Text(f"  {key:<{width}}  ", style="bold") + Text(str(value)))

@@ -1,6 +1,6 @@
 """`achslint explain hochlauf.lis [--program rfp.nc]`: the axes of a machine and the order they home in.
 
-`explain_machine` returns plain data (the CLI prints it as text or JSON): per axis its programmed name, its
+`explain_machine` returns plain data (output/explain.py renders it as text or JSON): per axis its programmed name, its
 logical number, its axis and drive type, the homing strategy the CNC runs (from the homing registry, after
 the CNC's load-time corrections) and its part in a gantry; with a program, the homing order block by block
 and the program findings (LIS6xx).
@@ -35,6 +35,7 @@ def _gantry(axis: MachineAxis, machine: Machine) -> dict[str, Any] | None:
 def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
     values = axis.resolved
     strategy = classify(values, gear)
+    commanded = classify(values, gear, commanded=True)
     log_name = values.get("kopf.log_achs_name")
     return {
         "name": axis.name,
@@ -51,6 +52,7 @@ def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
         "homing_type": values.homing_type,
         "homing_type_set": not values.homing_type_is_default,
         "strategy": {"id": strategy.id, "title": strategy.title},
+        "commanded": {"id": commanded.id, "title": commanded.title},  # what a G74 that names the axis runs
         "absolute": bool(values.get("kenngr.abs_pos_gueltig")),
         "gantry": _gantry(axis, machine),
         "corrections": [c.as_dict() for c in values.corrections],
@@ -133,81 +135,6 @@ def explain_machine(machine: Machine, program: Program | None = None, gear: int 
             ],
         }
     return report
-
-
-def render_machine(report: dict[str, Any], console: Any) -> None:
-    """The report as text: a table of the axes, then the homing order of the program."""
-    from rich.table import Table
-    from rich.text import Text
-
-    where = (
-        f"channel {report['channel']} ({report['channel_list']})" if report["channel_list"] else "axis lists"
-    )
-    console.print(Text(f"{report['startup']}", style="bold") + Text(f" — names from {where}"))
-    program = report["program"]
-    table = Table(show_lines=False)
-    columns = ["name", "no.", "axis", "drive", "homing", "gantry"] + (["homed"] if program else [])
-    for column in columns:
-        table.add_column(column, overflow="fold")
-    for row in report["axes"]:
-        names = row["name"] + (
-            f" ({row['log_achs_name']})"
-            if row["log_achs_name"] and row["log_achs_name"].upper() != row["name"]
-            else ""
-        )
-        cells = [
-            names,
-            str(row["logical_number"]),
-            row["axis_type"],
-            f"{row['drive_type']} {row['drive']}",
-            f"{row['strategy']['title']} ({row['homing_type']})",
-            _gantry_words(row["gantry"]),
-        ]
-        if program:
-            cells.append(row.get("homed", ""))
-        table.add_row(*cells)
-    console.print(table)
-    for row in report["other_axes"]:
-        console.print(
-            f"Not named in this channel: {row['list']} (logical axis {row['logical_number']}, "
-            f"kopf.log_achs_name {row['log_achs_name']})"
-        )
-    for note in report["notes"]:
-        console.print(Text("note: ", style="yellow") + Text(note))
-    if program is None:
-        return
-    console.print(Text(f"Homing order of {program['name']}:", style="bold"))
-    for block in program["blocks"]:
-        label = f"line {block['line']}" + (f" N{block['number']}" if block.get("number") is not None else "")
-        if block["kind"] == "homing":
-            steps = "; then ".join(", ".join(group["axes"]) for group in block["groups"]) or "no axis"
-            console.print(f"  {label}: G74 homes {steps}")
-        elif block["kind"] == "move":
-            targets = " ".join(f"{name}{value:g}" for name, value in block["targets"].items())
-            mode = (
-                "G00"
-                if block["rapid"]
-                else f"G01 F{block['feed_mm_min']:g}"
-                if block["feed_mm_min"]
-                else "G01"
-            )
-            console.print(f"  {label}: {mode} {'G90' if block['absolute'] else 'G91'} {targets}")
-        else:
-            console.print(f"  {label}: not simulated — {block['reason']}")
-    for finding in program["findings"]:
-        style = {"error": "red", "warning": "yellow"}.get(finding["severity"], "")
-        console.print(
-            Text(f"  {finding['code']} {finding['severity']}", style=style)
-            + Text(f" line {finding['line']}:{finding['column']}: {finding['message']}")
-        )
-
-
-def _gantry_words(gantry: dict[str, Any] | None) -> str:
-    if gantry is None:
-        return ""
-    if gantry["role"] == "master":
-        return "master of " + ", ".join(gantry["slaves"])
-    return f"slave of {gantry['master']}" + (" (homed with it)" if gantry["homes_with_master"] else "")
 
 
 def explain_startup(

@@ -1,0 +1,196 @@
+"""`achslint explain` as text or JSON: an axis list, a parameter card, a machine (start-up list).
+
+The reports are built by `explain.explain_list`, `explain.parameter_card` and
+`machineexplain.explain_machine`; their JSON is the report itself. One registry per kind of report maps
+each of `FORMATS` to its renderer.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from . import Registry, Screen, write_json
+
+if TYPE_CHECKING:
+    from ..explain import ListReport, ParameterCard
+
+
+def list_text(report: ListReport, screen: Screen) -> None:
+    """`explain LIST`: the axis, its homing strategy and phases in words, the CNC's corrections, then a
+    table of every homing parameter with its source and whether it takes effect."""
+    from rich.table import Table
+    from rich.text import Text
+
+    console = screen.console
+    axis = report["axis"]
+    console.print(Text(f"{report['file']}", style="bold"))
+    drive_note = "" if axis["drive_type_set"] else " (not set in the list: CNC default)"
+    console.print(
+        f"Axis {axis['name']} (logical axis {axis['number']}): {axis['axis_type']} axis, "
+        f"drive type {axis['drive_type']} = {axis['drive']}{drive_note}"
+    )
+    type_note = "" if axis["homing_type_set"] else " (not set: the drive type's default)"
+    strategy = report["strategy"]
+    console.print(
+        Text(f"Homing: {strategy['title']}", style="bold")
+        + Text(f" — homing_type {axis['homing_type']}{type_note}")
+    )
+    console.print(strategy["description"])
+    for variant in strategy["variants"]:
+        console.print(f"  • {variant}")
+    if report["phases"]:
+        console.print(Text(f"Phases (gear stage {report['gear']}):", style="bold"))
+        for phase in report["phases"]:
+            console.print("  " + phase["text"])
+        if strategy["ends_with_braking"]:
+            console.print(
+                "  After the reference event the axis brakes, so it stops beyond the reference position "
+                "by its braking distance."
+            )
+    for correction in report["corrections"]:
+        console.print(
+            Text(f"CNC correction {correction['error']}: ", style="yellow")
+            + Text(
+                f"`{correction['parameter']}` {correction['written']} is used as {correction['used']}: "
+                f"{correction['reason']}"
+            )
+        )
+    table = Table(
+        title=f"Homing parameters (gear stage {report['gear']})", title_justify="left", show_lines=False
+    )
+    for column in ("parameter", "id", "value", "unit", "human", "source", "effective", "why"):
+        table.add_column(column, overflow="fold")
+    for row in report["parameters"]:
+        source = "default" if row["source"]["kind"] == "default" else f"line {row['source']['line']}"
+        table.add_row(
+            row["parameter"],
+            row["p_axis"],
+            str(row["value"])
+            + (f" (written {row['written']}, {row['correction']})" if row["correction"] else ""),
+            row["unit"] or "",
+            row["human"] or "",
+            source,
+            Text("yes", style="green") if row["effective"] else Text("no", style="red"),
+            row["reason"],
+        )
+    console.print(table)
+
+
+def card_text(card: ParameterCard, screen: Screen) -> None:
+    """`explain PARAM`: the parameter's id and path, its description, then one line per fact it has."""
+    from rich.text import Text
+
+    console = screen.console
+    console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))
+    console.print(card["description"])
+    rows = [
+        ("type", card["type"]),
+        ("range (manual)", card["range"]),
+        (
+            "checked range",
+            card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}",
+        ),
+        ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
+        ("symbols", card["symbols"] and ", ".join(card["symbols"])),
+        ("max length", card["max_length"]),
+        ("default", card["default"]),
+        ("units", card["units"] and ", ".join(f"{k}: {v}" for k, v in card["units"].items())),
+        ("indices", card["index_bounds"] and ", ".join(f"{a}..{b}" for a, b in card["index_bounds"])),
+        ("aliases", ", ".join(f"{a['path']} ({a['kind']})" for a in card["aliases"])),
+        ("drive types", card["drive_types"] and ", ".join(card["drive_types"])),
+        ("axis types", card["axis_types"] and ", ".join(card["axis_types"])),
+        ("restart", "a change needs a CNC restart" if card["restart_required"] else None),
+        (
+            "matters for",
+            card["strategies"] is not None
+            and (", ".join(s["title"] for s in card["strategies"]) or "no homing strategy"),
+        ),
+        ("checked by", card["rules"] and ", ".join(card["rules"])),
+        ("manual title", card["manual_title"]),
+        ("manual", card["manual"]),
+    ]
+    width = max(len(k) for k, _ in rows)
+    for key, value in rows:
+        if value not in (None, "", False, [], {}):
+            console.print(Text(f"  {key:<{width}}  ", style="bold") + Text(str(value)))
+
+
+def machine_text(report: dict[str, Any], screen: Screen) -> None:
+    """`explain hochlauf.lis`: a table of the machine's axes, then the homing order of the program."""
+    from rich.table import Table
+    from rich.text import Text
+
+    console = screen.console
+    where = (
+        f"channel {report['channel']} ({report['channel_list']})" if report["channel_list"] else "axis lists"
+    )
+    console.print(Text(f"{report['startup']}", style="bold") + Text(f" — names from {where}"))
+    program = report["program"]
+    table = Table(show_lines=False)
+    columns = ["name", "no.", "axis", "drive", "homing", "gantry"] + (["homed"] if program else [])
+    for column in columns:
+        table.add_column(column, overflow="fold")
+    for row in report["axes"]:
+        names = row["name"] + (
+            f" ({row['log_achs_name']})"
+            if row["log_achs_name"] and row["log_achs_name"].upper() != row["name"]
+            else ""
+        )
+        cells = [
+            names,
+            str(row["logical_number"]),
+            row["axis_type"],
+            f"{row['drive_type']} {row['drive']}",
+            f"{row['strategy']['title']} ({row['homing_type']})",
+            _gantry_words(row["gantry"]),
+        ]
+        if program:
+            cells.append(row.get("homed", ""))
+        table.add_row(*cells)
+    console.print(table)
+    for row in report["other_axes"]:
+        console.print(
+            f"Not named in this channel: {row['list']} (logical axis {row['logical_number']}, "
+            f"kopf.log_achs_name {row['log_achs_name']})"
+        )
+    for note in report["notes"]:
+        console.print(Text("note: ", style="yellow") + Text(note))
+    if program is None:
+        return
+    console.print(Text(f"Homing order of {program['name']}:", style="bold"))
+    for block in program["blocks"]:
+        label = f"line {block['line']}" + (f" N{block['number']}" if block.get("number") is not None else "")
+        if block["kind"] == "homing":
+            steps = "; then ".join(", ".join(group["axes"]) for group in block["groups"]) or "no axis"
+            console.print(f"  {label}: G74 homes {steps}")
+        elif block["kind"] == "move":
+            targets = " ".join(f"{name}{value:g}" for name, value in block["targets"].items())
+            mode = (
+                "G00"
+                if block["rapid"]
+                else f"G01 F{block['feed_mm_min']:g}"
+                if block["feed_mm_min"]
+                else "G01"
+            )
+            console.print(f"  {label}: {mode} {'G90' if block['absolute'] else 'G91'} {targets}")
+        else:
+            console.print(f"  {label}: not simulated — {block['reason']}")
+    for finding in program["findings"]:
+        style = {"error": "red", "warning": "yellow"}.get(finding["severity"], "")
+        console.print(
+            Text(f"  {finding['code']} {finding['severity']}", style=style)
+            + Text(f" line {finding['line']}:{finding['column']}: {finding['message']}")
+        )
+
+
+def _gantry_words(gantry: dict[str, Any] | None) -> str:
+    if gantry is None:
+        return ""
+    if gantry["role"] == "master":
+        return "master of " + ", ".join(gantry["slaves"])
+    return f"slave of {gantry['master']}" + (" (homed with it)" if gantry["homes_with_master"] else "")
+
+
+LIST: Registry[ListReport] = {"text": list_text, "json": write_json}
+PARAMETER: Registry[ParameterCard] = {"text": card_text, "json": write_json}
+MACHINE: Registry[dict[str, Any]] = {"text": machine_text, "json": write_json}
