@@ -35,7 +35,6 @@ def _gantry(axis: MachineAxis, machine: Machine) -> dict[str, Any] | None:
 def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
     values = axis.resolved
     strategy = classify(values, gear)
-    commanded = classify(values, gear, commanded=True)
     log_name = values.get("kopf.log_achs_name")
     return {
         "name": axis.name,
@@ -52,7 +51,6 @@ def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
         "homing_type": values.homing_type,
         "homing_type_set": not values.homing_type_is_default,
         "strategy": {"id": strategy.id, "title": strategy.title},
-        "commanded": {"id": commanded.id, "title": commanded.title},  # what a G74 that names the axis runs
         "absolute": bool(values.get("kenngr.abs_pos_gueltig")),
         "gantry": _gantry(axis, machine),
         "corrections": [c.as_dict() for c in values.corrections],
