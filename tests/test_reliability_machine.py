@@ -227,9 +227,8 @@ def test_the_timeline_draws_each_kind_of_mark_once_however_many_blocks():
 
 
 def test_a_tiny_feed_is_shown_as_written_in_text_and_json():
-    from rich.console import Console
-
-    from achslint.machinereport import machine_json, render_machine
+    from achslint.output import Screen
+    from achslint.output.machine import RENDERERS, MachineDryRun, machine_json
 
     program = read_program(b"N10 G74 Z1\nN20 G01 G91 Z-1 F0.00001\nM30\n", "rfp.nc")
     run = run_machine(
@@ -238,9 +237,9 @@ def test_a_tiny_feed_is_shown_as_written_in_text_and_json():
         read_machine_scenario(EXAMPLE / "machine.toml"),
     )
     assert machine_json(run)["blocks"][1]["text"] == "N20 G01 G91 Z-1 F0.00001"
-    console = Console(record=True, width=200, color_system=None)
-    render_machine(run, console)
-    text = console.export_text()
+    stream = io.StringIO()
+    RENDERERS["text"](MachineDryRun(run), Screen(file=stream))
+    text = stream.getvalue()
     assert "N20 G01 G91 Z-1 F0.00001" in text and "F0 " not in text
     # 1 mm at 0.00001 mm/min is 1.67e-07 mm/s, not a speed of 0
     [move] = [line for line in text.splitlines() if "F0.00001;" in line]

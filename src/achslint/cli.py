@@ -868,13 +868,11 @@ def _machine_dry_run(
     allow_failures: bool,
 ) -> None:
     """`dry-run hochlauf.lis --program rfp.nc`: the homing program over the whole machine."""
-    import json
-
     from .dryrun import DryRunRefused
     from .files import reason
     from .machinebuild import MachineError
-    from .machinereport import machine_json, render_machine, sweep_words
     from .machinerun import machine_dry_run
+    from .output.machine import RENDERERS, MachineDryRun
     from .scenario import ScenarioError
 
     try:
@@ -901,13 +899,7 @@ def _machine_dry_run(
             _fail(str(exc))
         except OSError as exc:
             _fail(f"cannot write the plot to {plot}: {reason(exc)}")
-    if output_format == ExplainFormat.json:
-        typer.echo(json.dumps(machine_json(run, summary), indent=2, ensure_ascii=False, allow_nan=False))
-    else:
-        console = _console(_use_color(color, sys.stdout))
-        render_machine(run, console)
-        if summary is not None:
-            console.print(sweep_words(summary), markup=False, highlight=False)
+    RENDERERS[output_format.value](MachineDryRun(run, summary), _screen(color))
     if plot:
         _say(f"wrote {plot}")
     sweep_failed = summary is not None and summary["failed"] > 0 and not allow_failures

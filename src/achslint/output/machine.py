@@ -1,4 +1,5 @@
-"""The machine dry-run as JSON and as text: a summary table per block and group, then each axis's phases.
+"""`dry-run hochlauf.lis --program rfp.nc` as JSON or text: a summary table per block and group, then each
+axis's phases, then the sweep when `--sweep` asked for one.
 
 The JSON document (`"version": 1, "kind": "machine dry-run"`) is described in docs/dry-run/machine.md.
 Times are seconds from the program start; positions are per axis in its own unit (`axes[].unit`: mm, or
@@ -8,14 +9,28 @@ homing (the scenario's frame), `final_position` is in the homed frame. Numbers a
 
 from __future__ import annotations
 
-from typing import Any
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
-from . import dryrun
-from .machinerun import AxisPhase, AxisRun, BlockRun, MachineRun
+from .. import dryrun
+from . import Registry, Screen, write_json
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from ..machinerun import AxisPhase, AxisRun, BlockRun, MachineRun
 
 _round = dryrun.json_number
 _num = dryrun.number_text
 _finite = dryrun.finite_document
+
+
+@dataclass(frozen=True)
+class MachineDryRun:
+    """What the machine dry-run reports: the run, and the summary of `--sweep` when one was asked for."""
+
+    run: MachineRun
+    sweep: dict[str, Any] | None = None
 
 
 OUTCOME_WORDS = {
@@ -139,6 +154,10 @@ def machine_json(run: MachineRun, sweep: dict[str, Any] | None = None) -> dict[s
     return _finite(document)
 
 
+def as_json(report: MachineDryRun, screen: Screen) -> None:
+    write_json(machine_json(report.run, report.sweep), screen, strict=True)
+
+
 # --- text ---------------------------------------------------------------------------------------
 
 
@@ -152,7 +171,14 @@ def _group_axes(axes: list[str], following: list[str], still: list[str]) -> str:
     return " ".join(shown)
 
 
-def render_machine(run: MachineRun, console: Any) -> None:
+def as_text(report: MachineDryRun, screen: Screen) -> None:
+    """The run as tables and lines for people, the sweep in words after it."""
+    render_machine(report.run, screen.console)
+    if report.sweep is not None:
+        screen.console.print(sweep_words(report.sweep), markup=False, highlight=False)
+
+
+def render_machine(run: MachineRun, console: Console) -> None:
     from rich import box
     from rich.table import Table
     from rich.text import Text
@@ -235,7 +261,7 @@ def render_machine(run: MachineRun, console: Any) -> None:
         console.print(Text(prefix, style="yellow") + Text(line + warning["message"]))
 
 
-def _render_axis(axis: AxisRun, console: Any) -> None:
+def _render_axis(axis: AxisRun, console: Console) -> None:
     from rich.text import Text
 
     unit = axis.unit
@@ -308,3 +334,6 @@ def sweep_words(summary: dict[str, Any]) -> str:
         for reason in entry["reasons"]:
             lines.append(f"    {reason['reason']} ×{reason['count']}")
     return "\n".join(lines)
+
+
+RENDERERS: Registry[MachineDryRun] = {"text": as_text, "json": as_json}
