@@ -62,7 +62,10 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ),
     # every format of every command: the screen they write to, the formats, lint's registry of them
     ("output: screen", ("output",)),
-    ("output: formats", ("output.reporters.*", "output.explain", "output.machine", "plot")),
+    (
+        "output: formats",
+        ("output.reporters.*", "output.explain", "output.machine", "output.diff", "plot"),
+    ),
     ("output: registry", ("output.reporters",)),
     ("output: the registry's first name", ("reporters",)),
     # the public API (the package re-exports it) and the editor

@@ -919,16 +919,12 @@ def diff_command(
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
 ) -> None:
     """Show how two lists differ in their effective values (after defaults), by parameter with units."""
-    import json
-
-    from .listdiff import diff_lists, render
+    from .listdiff import diff_lists
+    from .output.diff import RENDERERS
 
     contents = [_one_list(Path(name), name) for name in (a, b, *([defaults] if defaults else []))]
     report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
-    if output_format == ExplainFormat.json:
-        typer.echo(json.dumps(report, indent=2, ensure_ascii=False))
-    else:
-        render(report, _console(_use_color(color, sys.stdout)))
+    RENDERERS[output_format.value](report, _screen(color))
     raise typer.Exit(EXIT_FINDINGS if report["differences"] or report["unknown_parameters"] else EXIT_OK)
 
 

@@ -9,13 +9,10 @@ with units.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, TypedDict
+from typing import TypedDict
 
 from .resolved import ResolvedAxis, plain, resolve_bytes
 from .units import to_human, unit_label
-
-if TYPE_CHECKING:
-    from rich.console import Console
 
 
 class Difference(TypedDict):
@@ -93,29 +90,3 @@ def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | N
         if unknown_a.get(path) != unknown_b.get(path)
     ]
     return {"version": 1, "a": a_name, "b": b_name, "differences": rows, "unknown_parameters": unknown}
-
-
-def render(report: DiffReport, console: Console) -> None:
-    from rich.table import Table
-
-    if not report["differences"] and not report["unknown_parameters"]:
-        console.print(f"{report['a']} and {report['b']} configure the axis the same way")
-        return
-    table = Table(title=f"{report['a']} → {report['b']}", title_justify="left")
-    for column in ("parameter", "id", "A", "B", "unit", "A human", "B human", "A from", "B from"):
-        table.add_column(column, overflow="fold")
-    for row in report["differences"]:
-        table.add_row(
-            row["parameter"],
-            row["p_axis"],
-            str(row["a"]),
-            str(row["b"]),
-            row["unit"] or "",
-            row["a_human"] or "",
-            row["b_human"] or "",
-            row["a_source"],
-            row["b_source"],
-        )
-    console.print(table)
-    for unknown in report["unknown_parameters"]:
-        console.print(f"unknown parameter {unknown['parameter']}: {unknown['a']!r} → {unknown['b']!r}")
