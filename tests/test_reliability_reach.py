@@ -374,3 +374,23 @@ def test_11_a_program_whose_machine_is_missing_is_not_a_clean_run(tmp_path, fmt)
     assert b"missing/hochlauf.lis" in result.stderr
     if fmt == "json":
         assert json.loads(result.stdout)["summary"]["unreadable"] == ["rfp.nc"]
+
+
+def test_11_a_startup_list_naming_itself_is_one_finding_not_an_axis_list(tmp_path):
+    """Before, the start-up list was also linted as an axis list of its own: LIS101 for every entry."""
+    (tmp_path / "hochlauf.lis").write_text(
+        "achs_mds[0]  ./hochlauf.lis\ndefault_achs_mds  ./hochlauf.lis\nEnde\n"
+    )
+    result = _run(tmp_path, "lint", "hochlauf.lis", "--format", "json")
+    codes = [d["code"] for d in json.loads(result.stdout)["diagnostics"]]
+    assert codes == ["LIS504", "LIS504"]
+
+
+def test_11_text_with_a_lone_surrogate_is_linted_not_a_crash():
+    """An editor or a caller can hand over text no UTF-8 can hold ("\\ud800" in JSON)."""
+    from achslint import lint_text
+    from achslint.lsp.session import xml_bytes
+
+    found = lint_text("kopf.achs_nr 1\nkopf.na\ud800me 1\nEnde\n")
+    assert [(d.code, d.line) for d in found] == [("LIS001", 2)]  # `?` in a name: not a parameter line
+    assert xml_bytes('<?xml version="1.0" encoding="latin-1"?><a>\ud800</a>').endswith(b"<a>?</a>")

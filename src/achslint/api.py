@@ -19,7 +19,7 @@ from .config import (
     matches_glob,
     named_path,
 )
-from .decode import UnreadableInput, decode
+from .decode import UnreadableInput, decode, text_bytes
 from .diagnostics import Diagnostic, Severity
 from .files import (
     ChangedOnDisk,
@@ -238,9 +238,11 @@ class LintRun:
             found.errors.append(f"{path}: {exc}")
             return
         self.startups.append(startup)
-        defaults = startup.default.path if startup.default else None
+        # An entry naming the start-up list itself is LIS504's; its lines are no axis list (or defaults).
+        named = [e for e in [startup.default, *startup.axes] if e and e.path and not same_file(e.path, path)]
+        defaults = startup.default.path if startup.default in named and startup.default else None
         for entry in startup.axes:
-            if entry.path is not None:
+            if entry in named and entry.path is not None:
                 found.add(
                     Target(
                         _shown(entry.path),
@@ -620,7 +622,6 @@ def is_program(path: str) -> bool:
     return path.lower().endswith(PROGRAM_SUFFIXES)
 
 
-
 def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> None:
     """The homing programs the configuration of each linted start-up list names (`homing-programs`),
     checked against that start-up list's machine."""
@@ -630,7 +631,9 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
         startups.setdefault(os.path.realpath(path), (path, given_root))
     for startup, cnc_root in startups.values():
         config = run.config_for(startup)
-        wanted = [named_path(config.path, name) for name in config.settings.homing_programs] if config.path else []
+        wanted = (
+            [named_path(config.path, name) for name in config.settings.homing_programs] if config.path else []
+        )
         todo = [path for path in wanted if os.path.realpath(path) not in done]
         if not todo:
             continue
@@ -653,7 +656,9 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
                 continue
             problem = _not_a_program(path)
             if problem is not None:
-                outcome.errors.append(f"configuration error in {config.path}: key `homing-programs`: {problem}")
+                outcome.errors.append(
+                    f"configuration error in {config.path}: key `homing-programs`: {problem}"
+                )
                 continue
             settings = run.settings_for(Target(str(path), path, run.config_for(path)))
             result = lint_program_on(path, machine, name=_shown(path), settings=settings)
@@ -768,7 +773,7 @@ def _as_bytes(source: Source) -> tuple[bytes, str]:
     if isinstance(source, (bytes, bytearray)):
         return bytes(source), "<bytes>"
     if isinstance(source, str) and "\n" in source:
-        return source.encode("utf-8"), "<string>"
+        return text_bytes(source), "<string>"
     path = Path(source)
     if not path.is_file():
         raise FileNotFoundError(2, "no such axis list", str(path))
@@ -797,7 +802,7 @@ def lint_text(
 ) -> list[Diagnostic]:
     """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
     settings = FileSettings.of(list(select) if select else None, list(ignore or []))
-    return findings(text.encode("utf-8"), filename, settings)
+    return findings(text_bytes(text), filename, settings)
 
 
 def load(source: Source, *, defaults: Source | None = None, strict: bool = False) -> AxisBase:
@@ -837,8 +842,8 @@ def loads(
     """The typed model of a list's text (see `load`)."""
     from .model import build_model, rule_errors
 
-    data = text.encode("utf-8")
-    default_data = (defaults.encode("utf-8"), "<defaults>") if defaults is not None else None
+    data = text_bytes(text)
+    default_data = (text_bytes(defaults), "<defaults>") if defaults is not None else None
     return _finish(
         build_model(data, filename, default_data), data, filename, default_data, strict, rule_errors
     )

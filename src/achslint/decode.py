@@ -35,6 +35,12 @@ class SourceText:
         return UTF8_BOM + body if self.bom else body
 
 
+def text_bytes(text: str) -> bytes:
+    """Text from an editor or a caller as UTF-8 bytes. A lone surrogate (JSON can carry one: "\\ud800") has
+    no UTF-8 form: it becomes `?`, one character as it was, so positions stay where they were."""
+    return text.encode("utf-8", "replace")
+
+
 def decode(data: bytes) -> SourceText:
     """Decode list bytes: UTF-8 (with or without BOM), else cp1252, else Latin-1.
 

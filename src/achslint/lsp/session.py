@@ -27,7 +27,7 @@ from ..config import (
     matches_glob,
     parse_codes,
 )
-from ..decode import UnreadableInput
+from ..decode import UnreadableInput, text_bytes
 from ..diagnostics import Diagnostic, Severity
 from ..files import is_xml, not_a_list_file, read_list, starts_with_bom
 from ..linter import FileResult, FileSettings, lint_file, lint_parsed
@@ -121,7 +121,7 @@ def xml_bytes(text: str) -> bytes:
             return text.encode(match.group(1))
         except (LookupError, UnicodeEncodeError):
             pass
-    return text.encode("utf-8")
+    return text_bytes(text)
 
 
 _REAL: dict[str, str] = {}
@@ -173,7 +173,7 @@ class Session:
         """A list as the editor has it: the open buffer, else the file."""
         document = self.by_path(path)
         if document is not None:
-            return document.body.encode("utf-8")
+            return text_bytes(document.body)
         return read_list(path)
 
     def forget_disk(self) -> None:
@@ -209,7 +209,7 @@ class Session:
         config, _ = self.config_for(document)
         settings = self.file_settings(config, document.path, document.name)
         settings.keep_context = False
-        outcome = fix_bytes(document.body.encode("utf-8"), document.name, settings)
+        outcome = fix_bytes(text_bytes(document.body), document.name, settings)
         if not outcome.fixed:
             return None
         return ("\ufeff" if document.bom else "") + outcome.data.decode("utf-8")
