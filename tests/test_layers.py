@@ -64,7 +64,15 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("output: screen", ("output",)),
     (
         "output: formats",
-        ("output.reporters.*", "output.explain", "output.machine", "output.diff", "plot"),
+        (
+            "output.reporters.*",
+            "plot",
+            "output.plot",
+            "output.explain",
+            "output.dryrun",
+            "output.machine",
+            "output.diff",
+        ),
     ),
     ("output: registry", ("output.reporters",)),
     ("output: the registry's first name", ("reporters",)),

@@ -786,8 +786,6 @@ def dry_run_command(
     channel: int = typer.Option(1, "--channel", min=1, help="Channel whose axis names the program uses."),
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
-    import json
-
     if plot:
         _not_over_inputs(plot, "--plot", [file, program, scenario, config])
     if program is not None:
@@ -802,8 +800,10 @@ def dry_run_command(
         return
 
     from .decode import UnreadableInput
-    from .dryrun import DryRunRefused, dry_run, render, scenario_input, sweep, sweep_words, trace_json
+    from .dryrun import DryRunRefused, dry_run, scenario_input, sweep
     from .files import reason
+    from .output import OutputFailed
+    from .output import dryrun as shown
     from .scenario import ScenarioError
 
     try:
@@ -830,25 +830,13 @@ def dry_run_command(
         summary = sweep(run.simulator, sweep_runs) if sweep_runs else None
     except (ScenarioError, DryRunRefused) as exc:
         _fail(str(exc))
+    report = shown.AxisDryRun(run, summary)
     if plot:
-        from .plot import PlotUnavailable, plot_trace
-
         try:
-            plot_trace(run.trace, plot)
-        except PlotUnavailable as exc:
+            shown.plot(report, plot)
+        except OutputFailed as exc:
             _fail(str(exc))
-        except OSError as exc:
-            _fail(f"cannot write the plot to {plot}: {reason(exc)}")
-    if output_format == ExplainFormat.json:
-        document = trace_json(run)
-        if summary is not None:
-            document["sweep"] = summary
-        typer.echo(json.dumps(document, indent=2, ensure_ascii=False, allow_nan=False))
-    else:
-        console = _console(_use_color(color, sys.stdout))
-        render(run, console)
-        if summary is not None:
-            console.print(sweep_words(summary), markup=False, highlight=False)
+    shown.RENDERERS[output_format.value](report, _screen(color))
     if plot:
         _say(f"wrote {plot}")
     sweep_failed = summary is not None and summary["outcomes"].get("failed", 0) > 0 and not allow_failures
@@ -869,10 +857,10 @@ def _machine_dry_run(
 ) -> None:
     """`dry-run hochlauf.lis --program rfp.nc`: the homing program over the whole machine."""
     from .dryrun import DryRunRefused
-    from .files import reason
     from .machinebuild import MachineError
     from .machinerun import machine_dry_run
-    from .output.machine import RENDERERS, MachineDryRun
+    from .output import OutputFailed
+    from .output import machine as shown
     from .scenario import ScenarioError
 
     try:
@@ -886,20 +874,16 @@ def _machine_dry_run(
         )
     except (MachineError, ScenarioError, DryRunRefused) as exc:
         _fail(str(exc))
+    report = shown.MachineDryRun(run, summary)
     if plot:
-        from .plot import PlotUnavailable, plot_machine
-
         machine = run.machine
         lists = [axis.list_path for axis in [*machine.axes.values(), *machine.other_axes]]
         _not_over_inputs(plot, "--plot", [str(path) for path in [*lists, machine.channel_list] if path])
-
         try:
-            plot_machine(run, plot)
-        except PlotUnavailable as exc:
+            shown.plot(report, plot)
+        except OutputFailed as exc:
             _fail(str(exc))
-        except OSError as exc:
-            _fail(f"cannot write the plot to {plot}: {reason(exc)}")
-    RENDERERS[output_format.value](MachineDryRun(run, summary), _screen(color))
+    shown.RENDERERS[output_format.value](report, _screen(color))
     if plot:
         _say(f"wrote {plot}")
     sweep_failed = summary is not None and summary["failed"] > 0 and not allow_failures

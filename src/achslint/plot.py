@@ -10,6 +10,7 @@ found. `build_figure` returns the figure (tests read its data series); `plot_tra
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, Literal
 
 from .engine import Event, Trace
@@ -381,11 +382,19 @@ def _wrap(text: str, width: int) -> str:
 
 
 def plot_trace(trace: Trace, target: str) -> None:
+    """Write the dry-run's position and velocity plot to a PNG or SVG file."""
+    _save(lambda: build_figure(trace), target)
+
+
+def _save(build: Callable[[], Figure], target: str) -> None:
+    """Build a figure and write it to `target`: only .png and .svg names are taken, and the figure is
+    closed again whether or not the file could be written."""
     if not target.lower().endswith((".png", ".svg")):
         raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
-    figure = build_figure(trace)
+    _use_matplotlib()
     import matplotlib.pyplot as plt
 
+    figure = build()
     try:
         figure.savefig(target, dpi=100)
     finally:
@@ -685,13 +694,4 @@ def _at(axis: AxisRun, time: float) -> float:
 
 def plot_machine(run: MachineRun, target: str) -> None:
     """Write the machine dry-run's timeline and position plots to a PNG or SVG file."""
-    if not target.lower().endswith((".png", ".svg")):
-        raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
-    _use_matplotlib()
-    import matplotlib.pyplot as plt
-
-    figure = build_machine_figure(run)
-    try:
-        figure.savefig(target, dpi=100)
-    finally:
-        plt.close(figure)
+    _save(lambda: build_machine_figure(run), target)

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from .. import dryrun
 from . import Registry, Screen, write_json
+from .plot import write_plot
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -156,6 +157,13 @@ def machine_json(run: MachineRun, sweep: dict[str, Any] | None = None) -> dict[s
 
 def as_json(report: MachineDryRun, screen: Screen) -> None:
     write_json(machine_json(report.run, report.sweep), screen, strict=True)
+
+
+def plot(report: MachineDryRun, target: str) -> None:
+    """The run's timeline (a lane per axis) and positions, written to `target` (PNG or SVG)."""
+    from ..plot import plot_machine
+
+    write_plot(lambda file: plot_machine(report.run, file), target)
 
 
 # --- text ---------------------------------------------------------------------------------------
