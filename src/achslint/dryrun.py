@@ -161,24 +161,9 @@ def dry_run(
 
 
 def run(simulator: Simulator, start: float | None = None, cam_shift: float = 0.0) -> Trace:
-    """One G74 of the axis as the CNC answers it. With homing DISABLED (P-AXIS-00299) the CNC refuses a G74 that
-    names the axis, whatever its encoder: an absolute axis keeps a valid position, yet the G74 still ends with the
-    error (the machine run stops the program there too, LIS604), so the dry-run of it is refused, not "not
-    required"."""
-    trace = simulator.run(start=start, cam_shift=cam_shift)
-    values = simulator.values
-    if values.homing_type == "DISABLED":
-        why = (
-            "its absolute position is valid without homing: leave it out of G74"
-            if simulator.strategy.setup.absolute
-            else "the axis is incremental (kenngr.abs_pos_gueltig 0), so it can never be homed (LIS308)"
-        )
-        trace.outcome = "failed"
-        trace.failure = (
-            "homing is DISABLED (kenngr.homing.homing_type): the CNC refuses a G74 that names this axis "
-            f"(P-ERR-50685 / P-ERR-60313); {why}"
-        )
-    return trace
+    """One G74 of the axis as the CNC answers it: the strategy's sequence (with homing DISABLED the G74 is
+    refused, whatever the encoder)."""
+    return simulator.run(start=start, cam_shift=cam_shift)
 
 
 def annotate(simulator: Simulator, trace: Trace) -> None:

@@ -185,7 +185,7 @@ class Simulator:
         self.scenario = scenario
         self.rotary = setup.rotary
         self.unit = setup.unit
-        self.direction = setup.direction
+        self.direction = strategy.direction
         self.acceleration, self.acceleration_source = _acceleration(strategy, scenario)
         self.fast = setup.fast
         self.slow = setup.slow
@@ -394,7 +394,7 @@ class Simulator:
                 f"[{low:g}, {high:g}] {unit}",
             )
         elif not low <= final <= high:
-            what = "after retracting from the stop" if self.strategy.id == "fixed_stop" else "after braking"
+            what = "after retracting from the stop" if self.strategy.definition.retracts else "after braking"
             trace.warn(
                 "LIS317",
                 f"{what} the axis stands at {final:.6g} {unit}, outside the software limits "
@@ -925,7 +925,7 @@ class Simulator:
 
     def fixed_stop(self, trace: Trace, x: float, cam_shift: float = 0.0) -> Trace:
         values, gear = self.values, self.strategy.gear
-        s = 1 if values.get("kenngr.homing.torq_homing_dir") else -1
+        s = self.direction  # torq_homing_dir
         speed = values.number(f"getriebe[{gear}].homing.torq_move_velocity") * VELOCITY
         acceleration = values.number(f"getriebe[{gear}].homing.torq_move_acceleration")
         if speed <= 0 or acceleration <= 0:
@@ -1296,19 +1296,10 @@ def _dir(s: int) -> str:
 
 def _acceleration(strategy: HomingStrategy, scenario: Scenario) -> tuple[float | None, str]:
     """The acceleration the strategy's moves use, and where it comes from (shown in the header and JSON)."""
-    setup = strategy.setup
-    if strategy.id == "fixed_stop":
-        return setup.torq_acceleration, "getriebe[i].homing.torq_move_acceleration (P-AXIS-00334)"
-    if strategy.controlled_by == "drive":
-        drive = scenario.drive
-        if drive is None:
-            return None, "the drive's own (not simulated without a [drive] table)"
-        return drive.acceleration, "the drive's ([drive] acceleration of the scenario)"
-    acceleration = setup.acceleration
-    source = {
-        "a_ref": "getriebe[i].a_ref (P-AXIS-00285)",
-        "fallback": "a_ref is 0: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) (P-AXIS-00005/00006, §3.2.4)",
-        "default ramps": "spindle default ramps: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) "
-        "(P-AXIS-00005/00006; a_ref is for axis types T and R, §2.3.2.1)",
-    }[acceleration.source]
-    return acceleration.value or 1.0, source
+    acceleration = strategy.acceleration
+    if acceleration is not None:
+        return acceleration.ramp, acceleration.words
+    drive = scenario.drive
+    if drive is None:
+        return None, "the drive's own (not simulated without a [drive] table)"
+    return drive.acceleration, "the drive's ([drive] acceleration of the scenario)"

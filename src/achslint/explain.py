@@ -62,6 +62,15 @@ class PhaseInfo(TypedDict):
     text: str
 
 
+class CommandedInfo(TypedDict):
+    """What a G74 that names the axis runs (the same strategy as at power-up except on an absolute axis)."""
+
+    id: str
+    title: str
+    description: str
+    phases: list[PhaseInfo]
+
+
 class SourceInfo(TypedDict):
     kind: str
     line: int | None
@@ -87,6 +96,7 @@ class ListReport(TypedDict):
     axis: AxisInfo
     strategy: StrategyInfo
     phases: list[PhaseInfo]
+    commanded: CommandedInfo
     corrections: list[CorrectionData]
     parameters: list[ParameterRow]
 
@@ -137,11 +147,10 @@ def _speed_words(value: float | None, axis_type: str) -> str:
     return describe(value, unit)
 
 
-def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
-    """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs, after its corrections."""
-    values = resolve_bytes(data, name, defaults)
-    strategy = classify(values, gear)
-    axis_type = values.axis_type
+def phase_infos(strategy: HomingStrategy) -> list[PhaseInfo]:
+    """The strategy's phases in words, numbered, with their speeds in list and human units."""
+    axis_type = strategy.setup.axis_type
+    unit = "um/s" if axis_type == "T" else "0.001deg/s"
     phases: list[PhaseInfo] = []
     for number, phase in enumerate(strategy.phases, 1):
         speed = _speed_words(phase.velocity, axis_type)
@@ -163,16 +172,25 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
                 "direction": phase.direction,
                 "velocity_parameter": phase.velocity_parameter,
                 "velocity": phase.velocity,
-                "velocity_human": to_human(phase.velocity, "um/s" if axis_type == "T" else "0.001deg/s")
-                if phase.velocity
-                else None,
+                "velocity_human": to_human(phase.velocity, unit) if phase.velocity else None,
                 "ends_when": phase.ends_when,
                 "note": phase.note,
                 "text": text,
             }
         )
+    return phases
+
+
+def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
+    """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs after its corrections, at
+    power-up (`strategy`, `phases`) and when a G74 names the axis (`commanded`)."""
+    values = resolve_bytes(data, name, defaults)
+    strategy = classify(values, gear)
+    commanded = classify(values, gear, commanded=True)
+    axis_type = values.axis_type
+    phases = phase_infos(strategy)
     parameters = [parameter_row(values, strategy, path) for path in homing_parameter_paths(gear)]
-    acceleration = strategy.setup.acceleration
+    acceleration = strategy.acceleration
     return {
         "version": 1,
         "file": name,
@@ -196,10 +214,16 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
             "variants": strategy.variants,
             "ends_with_braking": strategy.definition.ends_with_braking,
             "acceleration": {"value": acceleration.value, "source": acceleration.source}
-            if strategy.moves and strategy.controlled_by == "cnc" and strategy.id != "fixed_stop"
+            if strategy.moves and strategy.controlled_by == "cnc" and acceleration is not None
             else None,
         },
         "phases": phases,
+        "commanded": {
+            "id": commanded.id,
+            "title": commanded.title,
+            "description": commanded.description,
+            "phases": phases if commanded.definition is strategy.definition else phase_infos(commanded),
+        },
         "corrections": [c.as_dict() for c in values.corrections],
         "parameters": parameters,
     }

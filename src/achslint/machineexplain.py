@@ -1,8 +1,8 @@
 """`achslint explain hochlauf.lis [--program rfp.nc]`: the axes of a machine and the order they home in.
 
 `explain_machine` returns plain data (output/explain.py renders it as text or JSON): per axis its programmed name, its
-logical number, its axis and drive type, the homing strategy the CNC runs (from the homing registry, after
-the CNC's load-time corrections) and its part in a gantry; with a program, the homing order block by block
+logical number, its axis and drive type, the homing strategy the CNC runs at power-up and the one a G74 that
+names it runs (from the homing registry, after the CNC's load-time corrections) and its part in a gantry; with a program, the homing order block by block
 and the program findings (LIS6xx).
 """
 
@@ -35,6 +35,7 @@ def _gantry(axis: MachineAxis, machine: Machine) -> dict[str, Any] | None:
 def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
     values = axis.resolved
     strategy = classify(values, gear)
+    commanded = classify(values, gear, commanded=True)
     log_name = values.get("kopf.log_achs_name")
     return {
         "name": axis.name,
@@ -51,6 +52,7 @@ def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
         "homing_type": values.homing_type,
         "homing_type_set": not values.homing_type_is_default,
         "strategy": {"id": strategy.id, "title": strategy.title},
+        "commanded": {"id": commanded.id, "title": commanded.title},  # what a G74 that names the axis runs
         "absolute": bool(values.get("kenngr.abs_pos_gueltig")),
         "gantry": _gantry(axis, machine),
         "corrections": [c.as_dict() for c in values.corrections],

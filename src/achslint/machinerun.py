@@ -41,7 +41,7 @@ from typing import Any
 
 from .dryrun import DryRunRefused, annotate, refusal
 from .engine import Segment, Simulator, Trace
-from .homing import VELOCITY, HomingSetup, HomingStrategy, classify, strategies
+from .homing import VELOCITY, HomingStrategy, classify
 from .machinemodel import (
     AxisWord,
     HomingBlock,
@@ -191,25 +191,6 @@ class MachineRun:
 # --- preparing the axes -------------------------------------------------------------------------
 
 
-def _commanded_strategy(values: Any) -> HomingStrategy:
-    """The strategy G74 runs: as classified, except that an absolute encoder does not stop G74 from running
-    the axis's homing type (P-AXIS-00299 remark; only IGNORE_ABS_POS and DISABLED keep it from moving)."""
-    strategy = classify(values)
-    if strategy.id != "absolute":
-        return strategy
-    for definition in strategies():
-        if definition.id != "absolute" and definition.matches(values):
-            setup = HomingSetup(values, 0)
-            return HomingStrategy(
-                definition,
-                setup,
-                definition.describe(values),
-                definition.phases(setup),
-                definition.variants(setup),
-            )
-    return strategy  # pragma: no cover - the last strategy matches every axis
-
-
 class _Axis:
     """One axis prepared for many runs: strategy, completed scenario, simulator, move dynamics."""
 
@@ -217,7 +198,7 @@ class _Axis:
         values = axis.resolved
         self.axis = axis
         self.name = axis.name
-        self.strategy = _commanded_strategy(values)
+        self.strategy = classify(values, commanded=True)  # what a G74 that names the axis runs
         setup = self.strategy.setup
         given = scenario.given(axis.name)
         where = scenario.table(axis.name) if axis.name in scenario.axes else scenario.where
@@ -311,7 +292,7 @@ class MachinePlan:
 
     def suppressed(self, name: str) -> bool:
         """A gantry slave whose own homing is suppressed (it is homed with its master)."""
-        return name in self.master and self.axes[name].strategy.id == "gantry_slave"
+        return name in self.master and self.axes[name].strategy.definition.homed_with_master
 
     def run(
         self, starts: Mapping[str, float] | None = None, cam_shifts: Mapping[str, float] | None = None
@@ -623,7 +604,7 @@ class _Runner:
                 self._fail(index, word.at, name, plan.uncoupled[name], t, "gantry coupling without a master")
                 return False
             prepared = plan.axes[name]
-            if prepared.strategy.id == "disabled":
+            if prepared.strategy.definition.refuses_g74:
                 self._fail(
                     index,
                     word.at,
@@ -730,7 +711,7 @@ class _Runner:
                     "stood still while its group homed" if others_move else "did not move",
                 )
             )
-            if others_move and plan.axes[name].strategy.id == "ignore_abs_pos":
+            if others_move and plan.axes[name].strategy.definition.skipped_by_g74:
                 message = f"{name} {COLLISION_NOTE} ({', '.join(group.moving)} moving)"
                 axes[name].warn("LIS607", message)
                 self.result.warn("LIS607", message, words[0].at)
@@ -807,7 +788,7 @@ class _Runner:
             if trace.outcome == "not_required":
                 run.outcome = "homed"
                 run.offset = 0.0 if run.offset is None else run.offset
-            elif plan.axes[name].strategy.id == "ignore_abs_pos":
+            elif plan.axes[name].strategy.definition.skipped_by_g74:
                 run.outcome = "skipped"
                 if plan.axes[name].absolute and run.offset is None:
                     run.offset = 0.0  # the absolute encoder gives the position

@@ -166,7 +166,7 @@ def default_scenario(
 ) -> Scenario:
     """The scenario completed with the documented default geometry for the strategy's axis."""
     setup = strategy.setup
-    direction = setup.torq_direction if strategy.id == "fixed_stop" else setup.direction
+    direction = strategy.direction
     braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
     return complete(
         given,
@@ -178,7 +178,7 @@ def default_scenario(
         braking=braking,
         modulo=setup.modulo,
         spindle=setup.spindle,
-        armed_on_exit=strategy.id == "spindle_flying_cam",
+        armed_on_exit=strategy.definition.arms_on_cam_exit,
     )
 
 

@@ -1,6 +1,8 @@
 """Homing: the strategy registry, the homing value object and the strategies' data.
 
-    classify(axis) -> HomingStrategy      first registered strategy whose `matches` holds
+    classify(axis, gear, commanded=False) -> HomingStrategy
+                                          first registered strategy whose `matches` holds: at
+                                          power-up, or (commanded) what a G74 naming the axis runs
     effect(strategy, axis, path) -> Effect whether a parameter takes effect, and why
     HomingSetup(axis, gear)               the axis's homing values in mm and seconds
 

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from ..engine import Simulator, Trace
     from ..resolved import ResolvedAxis
-    from .setup import HomingSetup
+    from .setup import Acceleration, HomingSetup
 
     # simulate(simulator, trace, start position, cam shift) -> trace: the engine sequence of a strategy
     Simulate = Callable[[Simulator, Trace, float, float], Trace]
@@ -61,12 +61,44 @@ class StrategyDef:
     with_zero_pulse: bool = False
     one_phase: bool = False
     reference_speed: str | None = None  # getriebe member of the speed at which the reference is taken
-    ends_with_braking: bool = (
-        True  # the axis brakes beyond the reference (not for retraction / flying homing)
-    )
+    # How the axis comes to rest after the reference event. By default it brakes and stands beyond the
+    # reference by its braking distance; `retracts`: it backs off from a fixed stop by a set distance;
+    # `flying`: a spindle that references on the fly and keeps turning (§2.3.2.1).
+    retracts: bool = False
+    flying: bool = False
+    # The parameter whose value the reference event gets (generic path).
+    reference_parameter: str = "getriebe[i].pos_refpkt"
+    # Where the zero-pulse logic is armed: where the cam is reached (§2.6), or, for flying homing of a
+    # spindle with cam, where the cam changes from operated to not operated (§2.3.2.1).
+    arms_on_cam_exit: bool = False
+    # The zero pulse is the only reference signal (no cam to fall back on): without one nothing marks
+    # the reference (LIS318).
+    needs_zero_pulse: bool = False
+    # What a G74 that names the axis does. `power_up_only`: the strategy describes only the axis at power-up
+    # (an absolute encoder, §3.5 type IV); a G74 naming it runs the next strategy that matches
+    # (P-AXIS-00299 remark). `refuses_g74`: the G74 ends with an error (P-ERR-50685). `skipped_by_g74`: the
+    # G74 leaves the axis standing while the other axes of its group move.
+    power_up_only: bool = False
+    refuses_g74: bool = False
+    skipped_by_g74: bool = False
+    # Homed together with its gantry master, never on its own (P-AXIS-00074).
+    homed_with_master: bool = False
+    # The direction of the homing moves (+1 / -1) and their acceleration (None: the drive's own).
+    direction: Callable[[HomingSetup], int] = lambda setup: setup.direction
+    acceleration: Callable[[HomingSetup], Acceleration | None] = lambda setup: setup.acceleration
     variants: Callable[[HomingSetup], list[str]] = lambda setup: []
     # which engine sequence runs this strategy
     simulate: Simulate = lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped")
+
+    @property
+    def ends_with_braking(self) -> bool:
+        """The axis brakes after the reference event and stands beyond it (not after retraction or on the fly)."""
+        return not (self.retracts or self.flying)
+
+    @property
+    def reverses(self) -> bool:
+        """Three-phase homing: on the cam the axis reverses to leave it, then approaches it again (§2.3.1)."""
+        return self.with_cam and not self.one_phase
 
 
 @dataclass
@@ -110,6 +142,16 @@ class HomingStrategy:
     @property
     def one_phase(self) -> bool:
         return self.definition.one_phase
+
+    @property
+    def direction(self) -> int:
+        """+1 or -1: the direction of the homing moves (towards the cam, the zero pulse or the fixed stop)."""
+        return self.definition.direction(self.setup)
+
+    @property
+    def acceleration(self) -> Acceleration | None:
+        """The acceleration of the homing moves and where it comes from; None when the drive uses its own."""
+        return self.definition.acceleration(self.setup)
 
     @property
     def falling_edge(self) -> bool:

@@ -48,9 +48,16 @@ def by_id(strategy_id: str) -> StrategyDef:
     raise KeyError(strategy_id)
 
 
-def classify(axis: ResolvedAxis, gear: int = 0) -> HomingStrategy:
-    """The strategy the CNC runs for the axis (gear stage `gear` for speeds)."""
+def classify(axis: ResolvedAxis, gear: int = 0, *, commanded: bool = False) -> HomingStrategy:
+    """The strategy of the axis (gear stage `gear` for speeds): the one place a strategy is chosen.
+
+    By default what the axis does at power-up, as `lint`, `explain` and the single-axis dry-run report it;
+    `commanded=True` gives what a G74 that names the axis runs. The two differ only for an axis whose strategy
+    is `power_up_only` (an absolute encoder): its position is valid at power-up, yet a G74 naming it still runs
+    its homing type (P-AXIS-00299 remark), i.e. the next strategy that matches."""
     for definition in strategies():
+        if commanded and definition.power_up_only:
+            continue
         if definition.matches(axis):
             setup = HomingSetup(axis, gear)
             return HomingStrategy(

@@ -14,14 +14,39 @@ POSITION = 1e-4  # 0.1 µm or 0.0001° per list unit
 VELOCITY = 1e-3  # µm/s -> mm/s, 0.001°/s -> °/s
 
 
+# Where an acceleration of the homing moves comes from, in words (the dry-run's header and JSON).
+_SOURCES = {
+    "a_ref": "getriebe[i].a_ref (P-AXIS-00285)",
+    "fallback": "a_ref is 0: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) (P-AXIS-00005/00006, §3.2.4)",
+    "default ramps": "spindle default ramps: min(lslope_profil.a_grenz_stufe_1, a_grenz_stufe_2) "
+    "(P-AXIS-00005/00006; a_ref is for axis types T and R, §2.3.2.1)",
+    "torq_move_acceleration": "getriebe[i].homing.torq_move_acceleration (P-AXIS-00334)",
+}
+
+
 @dataclass(frozen=True)
 class Acceleration:
     value: float  # mm/s² or °/s²
-    source: str  # "a_ref", "fallback" (min of the linear slope's rapid accelerations) or "default ramps"
+    # "a_ref", "fallback" (min of the linear slope's rapid accelerations), "default ramps" (spindles) or
+    # "torq_move_acceleration" (homing to a fixed stop)
+    source: str
 
     @property
     def fallback(self) -> bool:
-        return self.source != "a_ref"
+        """The homing acceleration is not a_ref of its own but the CNC's stand-in (LIS404)."""
+        return self.source in ("fallback", "default ramps")
+
+    @property
+    def words(self) -> str:
+        return _SOURCES[self.source]
+
+    @property
+    def ramp(self) -> float:
+        """What the simulated moves use. A homing acceleration of 0 (a_ref and both slopes unset) is taken as
+        1 unit/s² so the axis still moves; fixed-stop homing reports a torq_move_acceleration of 0 itself."""
+        if self.value or self.source == "torq_move_acceleration":
+            return self.value
+        return 1.0
 
 
 class HomingSetup:
@@ -181,6 +206,11 @@ class HomingSetup:
     @cached_property
     def torq_acceleration(self) -> float:
         return float(self.speed("homing.torq_move_acceleration"))
+
+    @cached_property
+    def torq_ramp(self) -> Acceleration:
+        """The acceleration of the moves to and from the fixed stop (P-AXIS-00334)."""
+        return Acceleration(self.torq_acceleration, "torq_move_acceleration")
 
     def distance(self, path: str) -> float:
         """A length parameter in mm (degrees)."""

@@ -38,6 +38,12 @@ def list_text(report: ListReport, screen: Screen) -> None:
     console.print(strategy["description"])
     for variant in strategy["variants"]:
         console.print(f"  • {variant}")
+    commanded = report["commanded"]
+    if commanded["id"] != strategy["id"]:
+        console.print(Text(f"A G74 that names the axis runs: {commanded['title']}", style="bold"))
+        console.print(commanded["description"])
+        for phase in commanded["phases"]:
+            console.print("  " + phase["text"])
     if report["phases"]:
         console.print(Text(f"Phases (gear stage {report['gear']}):", style="bold"))
         for phase in report["phases"]:
@@ -141,7 +147,8 @@ def machine_text(report: dict[str, Any], screen: Screen) -> None:
             str(row["logical_number"]),
             row["axis_type"],
             f"{row['drive_type']} {row['drive']}",
-            f"{row['strategy']['title']} ({row['homing_type']})",
+            f"{row['strategy']['title']} ({row['homing_type']})"
+            + (f"; a G74 runs {row['commanded']['title']}" if row["commanded"] != row["strategy"] else ""),
             _gantry_words(row["gantry"]),
         ]
         if program:

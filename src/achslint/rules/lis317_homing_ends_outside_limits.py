@@ -77,20 +77,12 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     if not strategy.moves or strategy.controlled_by != "cnc" or values.axis_type == "S":
         return
     probe = Simulator(values, strategy, default_scenario(strategy, cycle_time_us=ctx.options.cycle_time_us))
-    if strategy.id == "fixed_stop":
-        # Only the distances matter: put the stop where detection is certain.
-        low = values.number("kenngr.homing.torq_min_distance") * 1e-4
-        probe.scenario.fixed_stop = probe.scenario.start_position + (
-            1 if values.get("kenngr.homing.torq_homing_dir") else -1
-        ) * (low + 1.0)
-        probe.scenario.limit_switches = (-1e12, 1e12)
+    # Only the distances matter: a fixed stop (read by fixed-stop homing alone) where detection is certain.
+    low = values.number("kenngr.homing.torq_min_distance") * 1e-4
+    probe.scenario.fixed_stop = probe.scenario.start_position + strategy.direction * (low + 1.0)
     trace = probe.run()
     probe.check_soft_limits(trace)
+    reference = strategy.definition.reference_parameter.replace("[i]", f"[{strategy.gear}]")
     for warning in trace.warnings:
         if warning["code"] == CODE:
-            paths = (
-                ["kenngr.homing.torq_homing_position"]
-                if strategy.id == "fixed_stop"
-                else [f"getriebe[{strategy.gear}].pos_refpkt"]
-            )
-            yield ctx.cross(CODE, warning["message"], [*paths, "kenngr.swe_neg", "kenngr.swe_pos"])
+            yield ctx.cross(CODE, warning["message"], [reference, "kenngr.swe_neg", "kenngr.swe_pos"])

@@ -57,7 +57,11 @@ NO_CAM, NO_PULSE = "kenngr.ref_ohne_nocken", "kenngr.homing_without_zero_pulse"
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     strategy = ctx.strategy
-    if strategy.id == "zero_pulse_only" and not strategy.setup.zero_pulse and ctx.effective(NO_CAM, NO_PULSE):
+    if (
+        strategy.definition.needs_zero_pulse
+        and not strategy.setup.zero_pulse
+        and ctx.effective(NO_CAM, NO_PULSE)
+    ):
         yield ctx.cross(
             CODE,
             f"{ctx.show(NO_CAM)} (no reference cam) and {ctx.show(NO_PULSE)} (no zero pulse): nothing marks the "

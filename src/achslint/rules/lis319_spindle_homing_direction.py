@@ -64,7 +64,7 @@ HOMING, PREFERRED, RESTRICTED = "kenngr.ref_richt", "kenngr.beweg_richt", "kenng
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
-    if not ctx.strategy.id.startswith("spindle_flying") or not values.get(RESTRICTED):
+    if not ctx.strategy.definition.flying or not values.get(RESTRICTED):
         return
     if bool(values.get(PREFERRED)) != bool(values.get(HOMING)) and ctx.effective(HOMING):
         yield ctx.cross(

@@ -57,7 +57,7 @@ KEINE_AUTO_RPF = 0x100
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     values, strategy = ctx.values, ctx.strategy
-    if values.axis_type != "S" or strategy.id != "cam_zero_pulse":
+    if values.axis_type != "S" or not strategy.definition.reverses:
         return
     mode = values.get("kenngr.achs_mode")
     if isinstance(mode, int) and mode & KEINE_AUTO_RPF:

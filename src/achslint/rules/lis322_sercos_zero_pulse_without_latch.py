@@ -75,7 +75,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         or not strategy.with_zero_pulse
     ):
         return
-    if setup.overflow or setup.simulated or strategy.id.startswith("spindle"):
+    if setup.overflow or setup.simulated or strategy.definition.flying:
         return
     if values.get("antr.sercos.drive_supports_cnc_homing") or values.get("kenngr.echtzeit_bit_nr"):
         return

@@ -53,7 +53,8 @@ SUMMARY = "One-phase homing with a cam (advised against by the manual)"
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     strategy = ctx.strategy
-    if strategy.id.startswith("one_phase"):
+    # One phase with a cam that never reverses (a flying spindle turns on until it leaves the cam instead).
+    if strategy.one_phase and strategy.with_cam and not strategy.definition.flying:
         yield ctx.cross(
             CODE,
             "one-phase homing with a reference cam (ref_ohne_rev 1, ref_ohne_nocken 0): the axis must never start on "

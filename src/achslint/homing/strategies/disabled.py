@@ -9,6 +9,7 @@ from ..parameters import EVERYWHERE
 
 if TYPE_CHECKING:
     from ...resolved import ResolvedAxis
+    from ..setup import HomingSetup
 
 
 def _describe(axis: ResolvedAxis) -> str:
@@ -21,6 +22,20 @@ def _describe(axis: ResolvedAxis) -> str:
     return text
 
 
+def _refused(setup: HomingSetup) -> str:
+    """Why a G74 naming the axis fails: the CNC refuses it whatever the encoder; an absolute axis keeps a valid
+    position all the same (the machine run stops the program there too, LIS604)."""
+    why = (
+        "its absolute position is valid without homing: leave it out of G74"
+        if setup.absolute
+        else "the axis is incremental (kenngr.abs_pos_gueltig 0), so it can never be homed (LIS308)"
+    )
+    return (
+        "homing is DISABLED (kenngr.homing.homing_type): the CNC refuses a G74 that names this axis "
+        f"(P-ERR-50685 / P-ERR-60313); {why}"
+    )
+
+
 STRATEGY = StrategyDef(
     id="disabled",
     title="homing disabled",
@@ -30,9 +45,6 @@ STRATEGY = StrategyDef(
     parameters=EVERYWHERE,
     example="kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED\n",
     unused="homing is disabled for this axis",
-    simulate=lambda sim, trace, x, cam_shift: (
-        sim.stand_still(trace, "not_required")
-        if sim.strategy.setup.absolute
-        else sim.stand_still(trace, "failed", "homing is DISABLED on an incremental axis: G74 is refused")
-    ),
+    refuses_g74=True,
+    simulate=lambda sim, trace, x, cam_shift: sim.stand_still(trace, "failed", _refused(sim.strategy.setup)),
 )

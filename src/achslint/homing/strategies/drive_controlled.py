@@ -37,5 +37,6 @@ STRATEGY = StrategyDef(
     },
     example="kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\n",
     unused="drive-controlled homing: the drive's own parameters define the sequence (§2.2)",
+    acceleration=lambda setup: None,  # the drive's own (the scenario's [drive] table describes it)
     simulate=lambda sim, trace, x, cam_shift: sim.drive_sequence(trace, x, cam_shift),
 )

@@ -90,6 +90,9 @@ STRATEGY = StrategyDef(
     ),
     phases=_phases,
     unused="fixed-stop homing uses only its own torq_* parameters",
-    ends_with_braking=False,
+    retracts=True,
+    reference_parameter="kenngr.homing.torq_homing_position",
+    direction=lambda setup: setup.torq_direction,
+    acceleration=lambda setup: setup.torq_ramp,
     simulate=lambda sim, trace, x, cam_shift: sim.fixed_stop(trace, x),
 )

@@ -35,6 +35,7 @@ STRATEGY = StrategyDef(
     },
     example="kenngr.gantry_ax_nr 1\nkenngr.gantry_slave_no_homing 1\n",
     unused="the gantry master's homing references this slave; its own sequence parameters are not used",
+    homed_with_master=True,
     simulate=lambda sim, trace, x, cam_shift: sim.stand_still(
         trace, "skipped", note="the gantry master's homing references this slave; simulate the master"
     ),

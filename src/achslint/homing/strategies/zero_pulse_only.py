@@ -40,6 +40,7 @@ STRATEGY = StrategyDef(
     with_zero_pulse=True,
     one_phase=True,
     reference_speed="vb_reflow",
+    needs_zero_pulse=True,
     variants=_sequence.variants,
     unused="there is no reference cam and no fast search phase (§3.5, type II)",
     simulate=lambda sim, trace, x, cam_shift: sim.zero_pulse_only(trace, x),
