@@ -72,9 +72,11 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "output.dryrun",
             "output.machine",
             "output.diff",
+            "output.fmt",
         ),
     ),
     ("output: registry", ("output.reporters",)),
+    ("output: lint's report around its format", ("output.lint",)),
     ("output: the registry's first name", ("reporters",)),
     # the public API (the package re-exports it) and the editor
     ("api", ("achslint", "api", "lsp.*")),

@@ -11,7 +11,7 @@ import functools
 import gc
 import os
 import sys
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from enum import Enum
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn, TextIO, get_args
@@ -41,11 +41,6 @@ def _choices(name: str, values: Iterable[str]) -> type[Enum]:
 
 
 if TYPE_CHECKING:
-    from rich.console import Console
-    from rich.progress import Progress, TaskID
-
-    from .api import FormatOutcome
-    from .linter import FileResult
     from .output import Screen
 
 if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
@@ -274,6 +269,8 @@ def lint(
     """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .api import LintRequest, OutputIsInput, run_lint
     from .config import ConfigError, Overrides
+    from .output import OutputFailed
+    from .output import lint as shown
 
     try:
         overrides = Overrides(
@@ -312,7 +309,7 @@ def lint(
     )
     quiet = quiet or silent
     try:
-        with _progress(quiet) as progress:
+        with shown.progress(quiet) as progress:
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
     except (ConfigError, OutputIsInput) as exc:
         _fail(str(exc))
@@ -321,25 +318,26 @@ def lint(
         _fail(_nothing_found(paths))
     report_stream = sys.stdout
     if fix:
-        report_stream = _report_fixes(outcome.results, show_diff, quiet)
+        report_stream = shown.write_fixes(outcome.results, show_diff)
+        if not quiet:
+            typer.echo(shown.fix_count(outcome.results, show_diff), err=True)
     if not silent:
-        with _destination(output_file, report_stream) as stream:
-            if statistics and REPORTERS[fmt].text:
-                _print_statistics(outcome.results, stream)
-            else:
-                from .output.reporters import get
-
-                get(fmt)(
+        try:
+            with shown.destination(output_file, report_stream) as stream:
+                shown.write_report(
                     outcome.results,
+                    fmt,
                     stream,
                     color=_use_color(color, stream),
                     sources=outcome.sources,
-                    docs_url=_docs_url(docs_url, config),
+                    docs_url=lambda: _docs_url(docs_url, config),
+                    statistics=statistics,
+                    quiet=quiet,
+                    fixing=fix,
+                    failed=bool(outcome.errors),
                 )
-                if REPORTERS[fmt].text and not quiet:
-                    _summary(outcome.results, stream, fix, bool(outcome.errors))
-                if statistics:  # a machine format's output stays one document; the counts go to stderr
-                    _print_statistics(outcome.results, sys.stderr)
+        except OutputFailed as exc:
+            _fail(str(exc))
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
     raise typer.Exit(EXIT_FINDINGS if outcome.failing and not exit_zero else EXIT_OK)
@@ -360,52 +358,6 @@ def _not_over_inputs(output: str, option: str, inputs: Iterable[str | None]) -> 
         refuse_output_over_input(output, [Path(path) for path in inputs if path and path != "-"], option)
     except OutputIsInput as exc:
         _fail(str(exc))
-
-
-class _destination:
-    """The report stream: --output-file opens a UTF-8 file (never the console's code page), else `stream`."""
-
-    def __init__(self, path: str | None, stream: TextIO) -> None:
-        self.path, self.stream = path, stream
-        self.file: TextIO | None = None
-
-    def __enter__(self) -> TextIO:
-        if self.path is None:
-            return self.stream
-        try:
-            self.file = open(self.path, "w", encoding="utf-8", newline="\n")
-        except OSError as exc:
-            from .files import reason
-
-            _fail(f"cannot write {self.path}: {reason(exc)}")
-        return self.file
-
-    def __exit__(self, *exc: object) -> None:
-        if self.file is not None:
-            self.file.close()
-
-
-def _summary(results: list[FileResult], stream: TextIO, fixing: bool, failed: bool = False) -> None:
-    """ruff's closing lines: "All checks passed!" (never when something could not be checked: `failed`),
-    or how many findings a fix would remove."""
-    if not any(r.diagnostics for r in results):
-        if not failed and not any(r.error for r in results):
-            stream.write("All checks passed!\n")
-        return
-    if fixing:
-        return
-    safe = sum(
-        1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability == "safe"
-    )
-    unsafe = sum(
-        1 for r in results for d in r.diagnostics if d.fix is not None and d.fix.applicability != "safe"
-    )
-    if safe or unsafe:
-        more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""
-        if safe:
-            stream.write(f"{safe} fixable with --fix{more}\n")
-        else:
-            stream.write(f"{unsafe} fixable with --fix --unsafe-fixes\n")
 
 
 def _docs_url(given: str | None, config_file: str | None) -> str | None:
@@ -441,70 +393,6 @@ def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
             _say(f"note: {message}")
 
 
-def _report_fixes(results: list[FileResult], show_diff: bool, quiet: bool) -> TextIO:
-    """Print diffs or fixed standard input; returns where the diagnostics go (stderr when stdout holds content)."""
-    stream = sys.stdout
-    for result in results:
-        if show_diff and result.diff:
-            sys.stdout.write(result.diff)
-        if result.fixed_data is not None:
-            sys.stdout.flush()
-            sys.stdout.buffer.write(result.fixed_data)
-            stream = sys.stderr
-    if show_diff:
-        stream = sys.stderr
-    fixed = sum(r.fixed for r in results)
-    if not quiet:
-        verb = "would fix" if show_diff else "fixed"
-        typer.echo(f"{verb} {fixed} diagnostic{'s' if fixed != 1 else ''}", err=True)
-    return stream
-
-
-class _progress:
-    """A rich progress bar on stderr for long runs on a terminal; otherwise nothing."""
-
-    MIN_FILES = 50
-
-    def __init__(self, quiet: bool):
-        self.enabled = not quiet and sys.stderr.isatty()
-        self.bar: Progress | None = None
-        self.task: TaskID | None = None
-
-    def __enter__(self) -> Callable[[int], None] | None:
-        return self.advance if self.enabled else None
-
-    def advance(self, total: int) -> None:
-        if self.bar is None:
-            if total < self.MIN_FILES:
-                self.enabled = False
-                return
-            from rich.console import Console
-            from rich.progress import Progress
-
-            self.bar = Progress(console=Console(stderr=True), transient=True)
-            self.bar.start()
-            self.task = self.bar.add_task("linting", total=total)
-        if self.task is not None:
-            self.bar.advance(self.task)
-
-    def __exit__(self, *exc: object) -> None:
-        if self.bar is not None:
-            self.bar.stop()
-
-
-def _print_statistics(results: list[FileResult], stream: TextIO) -> None:
-    from collections import Counter
-
-    from .rules import registry
-
-    counts = Counter(d.code for r in results for d in r.diagnostics)
-    rules = registry()
-    for code, count in sorted(counts.items(), key=lambda item: (-item[1], item[0])):
-        rule = rules.get(code)
-        name = rule.name if rule else ""
-        stream.write(f"{count:6d}  {code}  {name}\n")
-
-
 @app.command()
 def fmt(
     paths: list[str] = typer.Argument(
@@ -530,6 +418,8 @@ def fmt(
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
     from .api import FormatRequest, run_format
     from .config import ConfigError
+    from .output import Screen
+    from .output import fmt as shown
 
     mode = "diff" if diff else "check" if check else "write"
     try:
@@ -539,41 +429,14 @@ def fmt(
     if not outcome.found and not outcome.errors and not allow_empty:
         _tell([], outcome.notes, quiet)
         _fail(_nothing_found(paths))
-    for result in outcome.results:
-        if result.output is not None:
-            sys.stdout.buffer.write(result.output)
-        elif result.diff:
-            typer.echo(result.diff, nl=False)
-        elif result.changed and not quiet and (result.written or mode == "check"):
-            typer.echo(_shown(f"{'would reformat' if mode == 'check' else 'reformatted'} {result.name}"))
+    shown.write_results(outcome, mode, quiet, Screen(echo=typer.echo))
     _tell(outcome.errors, outcome.notes, quiet)
-    stdin_only = all(result.output is not None for result in outcome.results)
-    if not quiet and mode != "diff" and outcome.results and (mode == "check" or not stdin_only):
-        typer.echo(_format_summary(outcome, mode), err=True)
+    closing = shown.summary(outcome, mode, quiet)
+    if closing is not None:
+        typer.echo(closing, err=True)
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
     raise typer.Exit(EXIT_FINDINGS if outcome.changed and mode != "write" else EXIT_OK)
-
-
-def _format_summary(outcome: FormatOutcome, mode: str) -> str:
-    def files(count: int) -> str:
-        return f"{count} file{'s' if count != 1 else ''}"
-
-    unchanged = len(outcome.results) - outcome.changed
-    if mode == "check":
-        return f"{files(outcome.changed)} would be reformatted, {unchanged} left unchanged"
-    # only what was really written counts; refused or failed writes are errors above
-    summary = f"{files(outcome.written)} reformatted, {unchanged} left unchanged"
-    missed = (
-        outcome.changed - outcome.written - sum(r.output is not None and r.changed for r in outcome.results)
-    )
-    return summary + (f", {missed} not written" if missed > 0 else "")
-
-
-def _shown(text: str) -> str:
-    from .display import printable
-
-    return printable(text)
 
 
 @app.command()
@@ -704,20 +567,6 @@ def _one_list(path: Path, name: str) -> bytes:
         _fail(f"cannot read {name}: {reason(exc)}")
     except UnreadableInput as exc:
         _fail(str(exc))
-
-
-def _console(color: bool) -> Console:
-    """A rich console for text output; when piped, lines are not wrapped and tables are 160 wide."""
-    from rich.console import Console
-
-    piped = not sys.stdout.isatty()
-    return Console(
-        force_terminal=color,
-        no_color=not color,
-        highlight=False,
-        soft_wrap=piped,
-        width=160 if piped else None,
-    )
 
 
 def _pair(text: str | None, name: str) -> tuple[float, float] | None:

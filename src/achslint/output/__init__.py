@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable, Mapping
-from typing import TYPE_CHECKING, TextIO, TypeVar
+from typing import TYPE_CHECKING, Protocol, TextIO, TypeVar
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -33,6 +33,12 @@ class OutputFailed(Exception):
     """An output file that could not be written: the message is the one line the user sees."""
 
 
+class Echo(Protocol):
+    """Writes a text and, unless `nl` is false, a newline (`typer.echo` is one)."""
+
+    def __call__(self, message: str, *, nl: bool = True) -> object: ...
+
+
 class Screen:
     """Where a command's report goes: whole texts through `echo` (one call, newline added), tables and
     styled lines through a rich console.
@@ -43,21 +49,25 @@ class Screen:
     lines are not wrapped and its tables are 160 columns wide.
     """
 
-    def __init__(
-        self, color: bool = False, file: TextIO | None = None, echo: Callable[[str], object] | None = None
-    ) -> None:
+    def __init__(self, color: bool = False, file: TextIO | None = None, echo: Echo | None = None) -> None:
         self.color = color
         self.file = file
         self._echo = echo
         self._console: Console | None = None
 
-    def echo(self, text: str) -> None:
+    def echo(self, text: str, *, newline: bool = True) -> None:
         if self._echo is not None:
-            self._echo(text)
+            self._echo(text, nl=newline)
             return
         stream = self.file or sys.stdout
-        stream.write(text + "\n")
+        stream.write(text + "\n" if newline else text)
         stream.flush()
+
+    def write_bytes(self, data: bytes) -> None:
+        """Bytes as they are (a fixed or formatted list read from standard input), after any pending text."""
+        stream = self.file or sys.stdout
+        stream.flush()
+        stream.buffer.write(data)
 
     @property
     def console(self) -> Console:
