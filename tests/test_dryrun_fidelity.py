@@ -18,15 +18,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from achslint.cli import main
-from achslint.dryrun import (
-    DryRunRefused,
-    dry_run,
-    prepare,
-    render,
-    sweep,
-    sweep_words,
-    trace_json,
-)
+from achslint.dryrun import DryRunRefused, dry_run, prepare, sweep
+from achslint.output.dryrun import render, sweep_words, trace_json
 from achslint.scenario import ScenarioError, ScenarioInput, parse_input
 
 from .conftest import FIXTURES, examples

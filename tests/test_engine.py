@@ -9,7 +9,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from achslint.dryrun import dry_run, prepare, sweep, trace_json
+from achslint.dryrun import dry_run, prepare, sweep
+from achslint.output.dryrun import trace_json
 from achslint.scenario import ScenarioInput
 
 from .conftest import examples

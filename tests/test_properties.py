@@ -10,10 +10,11 @@ from hypothesis import strategies as st
 
 import achslint
 from achslint.decode import UnreadableInput, decode
-from achslint.dryrun import dry_run, trace_json
+from achslint.dryrun import dry_run
 from achslint.explain import explain_list
 from achslint.linter import lint_file
 from achslint.listdiff import diff_lists
+from achslint.output.dryrun import trace_json
 from achslint.reporters import REPORTERS, get
 from achslint.scenario import ScenarioError
 from achslint.syntax import parse_bytes

@@ -12,18 +12,16 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .. import dryrun
+from ..dryrun import finite_document as _finite
 from . import Registry, Screen, write_json
+from .dryrun import json_number as _round
+from .dryrun import number_text as _num
 from .plot import write_plot
 
 if TYPE_CHECKING:
     from rich.console import Console
 
     from ..machinerun import AxisPhase, AxisRun, BlockRun, MachineRun
-
-_round = dryrun.json_number
-_num = dryrun.number_text
-_finite = dryrun.finite_document
 
 
 @dataclass(frozen=True)
