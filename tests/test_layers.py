@@ -73,6 +73,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "output.machine",
             "output.diff",
             "output.fmt",
+            "output.config",
         ),
     ),
     ("output: registry", ("output.reporters",)),

@@ -770,9 +770,8 @@ def config_command(
     ),
 ) -> None:
     """Show the configuration that applies to a path."""
-    import json
-
     from .config import ConfigError, discover, load_file
+    from .output.config import as_text
 
     if not show:
         _fail("nothing to do; use `achslint config --show [PATH]`")
@@ -780,8 +779,7 @@ def config_command(
         resolved = load_file(Path(config)) if config else discover(Path(path))
     except ConfigError as exc:
         _fail(str(exc))
-    typer.echo(f"# configuration: {resolved.path or 'built-in defaults'}")
-    typer.echo(json.dumps(resolved.settings.as_file_keys(), indent=2, ensure_ascii=False))
+    as_text(resolved, _screen(Color.never))
 
 
 class SchemaOutput(str, Enum):
@@ -810,7 +808,7 @@ def schema(
     ),
 ) -> None:
     """Print a JSON Schema: of the axis parameter model, or of the lint JSON output."""
-    import json
+    from .output import write_json
 
     if output == SchemaOutput.lint:
         from .output.reporters.json_format import SCHEMA as document
@@ -818,7 +816,7 @@ def schema(
         from .model import json_schema
 
         document = json_schema()
-    typer.echo(json.dumps(document, indent=2, ensure_ascii=False))
+    write_json(document, _screen(Color.never))
 
 
 def main(argv: list[str] | None = None) -> int:
