@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from achslint.dryrun import dry_run
-from achslint.engine import Trace
+from achslint.homing.motion import Trace
 from achslint.scenario import ScenarioInput
 
 # Conventional drive, linear axis, homing negative: fast 100 mm/s, slow 10 mm/s, 500 mm/s².

@@ -42,12 +42,16 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     # one axis's typed values, the CNC's corrections, and the resolved axis that applies them
     ("axis", ("facts", "analysis", "corrections")),
     ("axis: resolved", ("resolved",)),
-    ("homing: data", ("homing.base", "homing.parameters", "homing.setup")),
-    ("homing: strategies", ("homing.strategies.*",)),
-    ("homing: registry", ("homing.registry", "homing")),
+    # homing: the axis's values in mm and s, the geometry a simulation assumes, the motion, the strategy (its
+    # data names the sequence that simulates it), the sequences, the strategies, the registry that picks one
+    ("homing: setup", ("homing.setup",)),
     ("homing: scenario", ("scenario",)),
     ("homing: scenario input", ("scenario_input",)),
-    ("homing: simulation", ("engine", "dryrun")),
+    ("homing: motion", ("homing.motion",)),
+    ("homing: strategy", ("homing.base", "homing.parameters")),
+    ("homing: sequences", ("homing.sequences.*",)),
+    ("homing: strategies", ("homing.strategies.*",)),
+    ("homing: registry", ("homing.registry", "homing")),
     ("machine", ("machinemodel", "machine", "channel", "ncprogram", "machinebuild")),
     ("rules: what a rule sees", ("context",)),
     ("rules", ("rules.*",)),
@@ -58,7 +62,17 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("model fields", ("model_generated",)),
     (
         "products",
-        ("model", "explain", "machinerun", "machinescenario", "machineexplain", "listdiff", "fmt", "docs"),
+        (
+            "model",
+            "explain",
+            "dryrun",
+            "machinerun",
+            "machinescenario",
+            "machineexplain",
+            "listdiff",
+            "fmt",
+            "docs",
+        ),
     ),
     # every format of every command: the screen they write to, the formats, lint's registry of them
     ("output: screen", ("output",)),
@@ -91,14 +105,8 @@ ALLOWED = frozenset(
     {
         # the axis: the CNC's corrections are typed against the axis that applies them
         "corrections -> resolved",
-        # homing: the strategy data names the engine's types; the scenario loads its pydantic input on use
-        "homing.base -> engine",
+        # homing: the scenario loads its pydantic input on use
         "scenario -> scenario_input",
-        # dry-run asks two rules whether the CNC refuses the homing
-        "dryrun -> config",
-        "dryrun -> context",
-        "dryrun -> rules.lis306_torq_drive_type",
-        "dryrun -> rules.lis319_spindle_homing_direction",
         # the machine runs its own rule loop; building a machine goes through the API
         "machine -> context",
         "machine -> rules",

@@ -5,8 +5,10 @@ configuration's `scenario` table, then the scenario file, then the
 command-line options; `cycle-time-us` of the configuration as the cycle),
 refuses what the CNC would not run (LIS306, LIS319) and scenarios that do not
 fit the axis (a `[drive]` table on an axis that does not home drive-controlled),
-runs the engine, adds the analyses (LIS317 soft limits, LIS405 from the engine,
-every CNC correction as a warning with its P-ERR id) and sweeps start positions
+runs the strategy's sequence (homing/sequences/ over homing/motion.py), puts the
+facts the simulation found in the words of their rules (LIS317 soft limits, LIS402
+start on the cam, LIS405 zero pulse near the arming point), adds every CNC
+correction as a warning with its P-ERR id, and sweeps start positions
 and cam jitters. `output/dryrun.py` renders the run as a table or as JSON (its
 schema is there), `plot.py` draws it.
 """
@@ -22,10 +24,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .engine import Simulator, Trace
 from .homing import classify
+from .homing.motion import Fact, Simulator, SoftLimitOvershoot, StartOnCam, Trace, TraceWarning
 from .resolved import ResolvedAxis, plain, resolve_bytes
-from .scenario import ScenarioError, default_scenario, parse_input
+from .rules import lis317_homing_ends_outside_limits as lis317
+from .rules import lis402_one_phase_with_cam as lis402
+from .rules import lis405_zero_pulse_near_cam_edge as lis405
+from .scenario import ScenarioError, parse_input
 
 if TYPE_CHECKING:
     from .catalogue import Value
@@ -94,7 +99,7 @@ def _simulator(
             f"scenario: the [drive] table describes drive-controlled homing, but {name} homes "
             f"{strategy.title} (homing type {values.homing_type}): remove the [drive] table"
         )
-    return Simulator(values, strategy, default_scenario(strategy, given, cycle_time_us))
+    return Simulator(values, strategy, strategy.default_scenario(given, cycle_time_us))
 
 
 def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None:
@@ -140,8 +145,7 @@ def dry_run(
     if refused:
         raise DryRunRefused(refused)
     trace = run(simulator)
-    simulator.check_soft_limits(trace)
-    annotate(simulator, trace)
+    finish(simulator, trace)
     return DryRun(simulator.values, simulator, trace)
 
 
@@ -149,6 +153,23 @@ def run(simulator: Simulator, start: float | None = None, cam_shift: float = 0.0
     """One G74 of the axis as the CNC answers it: the strategy's sequence (with homing DISABLED the G74 is
     refused, whatever the encoder)."""
     return simulator.run(start=start, cam_shift=cam_shift)
+
+
+def finish(simulator: Simulator, trace: Trace) -> None:
+    """What a dry-run adds to a simulated trace, in this order: the soft-limit check, every fact of the trace in
+    the words of the rule it belongs to, and the notes on the CNC's corrections and stand-ins."""
+    simulator.check_soft_limits(trace)
+    trace.warnings.extend(finding(fact) for fact in trace.facts)
+    annotate(simulator, trace)
+
+
+def finding(fact: Fact) -> TraceWarning:
+    """A fact of the simulation as the finding of its rule."""
+    if isinstance(fact, SoftLimitOvershoot):
+        return {"code": lis317.CODE, "message": lis317.message(fact)}
+    if isinstance(fact, StartOnCam):
+        return {"code": lis402.CODE, "message": lis402.start_on_cam(fact)}
+    return {"code": lis405.CODE, "message": lis405.message(fact)}
 
 
 def annotate(simulator: Simulator, trace: Trace) -> None:

@@ -3,9 +3,9 @@
 How the program runs (TF5200 homing manual §2.2, P-AXIS-00074, P-AXIS-00299):
 
 * A `G74` block homes its axes in sequence groups: the axes with the lowest sequence number first, all of
-  them at the same time, each with the single-axis engine (engine.py, in the axis's own units: mm, or
-  degrees on rotary axes and spindles); the next group starts when the slowest axis of the group has
-  stopped. A flying spindle ends its group at its reference event and keeps turning.
+  them at the same time, each with the single-axis simulation (the strategy's sequence over
+  homing/motion.py, in the axis's own units: mm, or degrees on rotary axes and spindles); the next group
+  starts when the slowest axis of the group has stopped. A flying spindle ends its group at its reference event and keeps turning.
 * A move block (`G00`/`G01`, `G90`/`G91`, `F` in mm/min) is one straight interpolated move of all the axes
   it names, from rest to rest with a trapezoidal speed profile: at F (G01) or at the axes' rapid speed
   `getriebe[0].vb_eilgang` (G00), each axis within its `dynamik.vb_max` (and `vb_not_referenced` while it
@@ -39,9 +39,9 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
-from .dryrun import DryRunRefused, annotate, refusal
-from .engine import Segment, Simulator, Trace
+from .dryrun import DryRunRefused, finish, refusal
 from .homing import VELOCITY, HomingStrategy, classify
+from .homing.motion import Segment, Simulator, Trace
 from .machinemodel import (
     AxisWord,
     HomingBlock,
@@ -55,7 +55,7 @@ from .machinemodel import (
 from .machinescenario import MachineScenario
 from .rules.lis507_gantry_master_chain import CODE as CHAIN_CODE
 from .rules.lis507_gantry_master_chain import CouplingFault, circle_words, coupling_faults
-from .scenario import Scenario, ScenarioError, default_scenario
+from .scenario import Scenario, ScenarioError
 
 VERSION = 1
 DISABLED_ERROR = "P-ERR-50685"
@@ -208,7 +208,7 @@ class _Axis:
                 f"{self.strategy.title} (homing type {values.homing_type}): remove the [drive] table"
             )
         try:
-            self.scenario = default_scenario(self.strategy, given, cycle_time_us)
+            self.scenario = self.strategy.default_scenario(given, cycle_time_us)
         except ScenarioError as exc:
             raise ScenarioError(f"{where}: {str(exc).removeprefix('scenario: ')}") from None
         self.simulator = Simulator(values, self.strategy, self.scenario)
@@ -724,8 +724,7 @@ class _Runner:
         prepared = plan.axes[name]
         x = self.x[name] if x is None else x
         trace = prepared.simulator.run(start=x, cam_shift=self.shifts.get(name, 0.0))
-        prepared.simulator.check_soft_limits(trace)
-        annotate(prepared.simulator, trace)
+        finish(prepared.simulator, trace)
         phases = [
             AxisPhase(
                 p.name,

@@ -13,7 +13,7 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, Literal
 
-from .engine import Event, Trace
+from .homing.motion import Event, Trace
 
 if TYPE_CHECKING:
     from matplotlib.artist import Artist

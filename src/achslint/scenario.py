@@ -36,7 +36,6 @@ from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 if TYPE_CHECKING:
     from pydantic import BaseModel
 
-    from .homing import HomingStrategy
     from .scenario_input import DriveInput, ScenarioInput, SearchInput
 
 __all__ = ["DriveInput", "Scenario", "ScenarioError", "ScenarioInput", "SearchInput"]
@@ -159,27 +158,6 @@ def parse_input(data: object, where: str = "scenario") -> ScenarioInput:
                 message = item["msg"].removeprefix("Value error, ")
                 problems.append(f"`{key}`: {message}" if loc else message)
         raise ScenarioError(f"{where}: " + "; ".join(problems).replace("\n", " ")) from None
-
-
-def default_scenario(
-    strategy: HomingStrategy, given: ScenarioInput | None = None, cycle_time_us: int = 1000
-) -> Scenario:
-    """The scenario completed with the documented default geometry for the strategy's axis."""
-    setup = strategy.setup
-    direction = strategy.direction
-    braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
-    return complete(
-        given,
-        direction=direction,
-        rotary=setup.rotary,
-        soft_limits=setup.soft_limits,
-        cycle_time=cycle_time_us / 1e6,
-        zero_pulse=strategy.with_zero_pulse,
-        braking=braking,
-        modulo=setup.modulo,
-        spindle=setup.spindle,
-        armed_on_exit=strategy.definition.arms_on_cam_exit,
-    )
 
 
 def complete(

@@ -5,6 +5,10 @@
                                           power-up, or (commanded) what a G74 naming the axis runs
     effect(strategy, axis, path) -> Effect whether a parameter takes effect, and why
     HomingSetup(axis, gear)               the axis's homing values in mm and seconds
+    motion.Simulator(axis, strategy, scenario).run() -> Trace
+                                          the analytic simulation: the strategy's sequence
+                                          (sequences/) over the axis's motion; the trace's facts
+                                          are worded by the rules they belong to
 
 Rules, `explain` and `dry-run` all import from here; adding a strategy means one
 module in `strategies/`, one line in `registry.STRATEGY_MODULES` and fixtures.

@@ -8,12 +8,16 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from ..scenario import Scenario, complete
+
 if TYPE_CHECKING:
-    from ..engine import Simulator, Trace
     from ..resolved import ResolvedAxis
+    from ..scenario_input import ScenarioInput
+    from .motion import Simulator, Trace
     from .setup import Acceleration, HomingSetup
 
-    # simulate(simulator, trace, start position, cam shift) -> trace: the engine sequence of a strategy
+    # simulate(simulator, trace, start position, cam shift) -> trace: the sequence a strategy runs
+    # (one of homing/sequences/)
     Simulate = Callable[[Simulator, Trace, float, float], Trace]
 
 POSITIVE, NEGATIVE = "positive", "negative"
@@ -87,7 +91,7 @@ class StrategyDef:
     direction: Callable[[HomingSetup], int] = lambda setup: setup.direction
     acceleration: Callable[[HomingSetup], Acceleration | None] = lambda setup: setup.acceleration
     variants: Callable[[HomingSetup], list[str]] = lambda setup: []
-    # which engine sequence runs this strategy
+    # the sequence (homing/sequences/) that simulates this strategy
     simulate: Simulate = lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped")
 
     @property
@@ -154,12 +158,38 @@ class HomingStrategy:
         return self.definition.acceleration(self.setup)
 
     @property
+    def retracts(self) -> bool:
+        return self.definition.retracts
+
+    @property
     def falling_edge(self) -> bool:
         return self.setup.falling_edge and self.with_cam
 
     @property
     def moves(self) -> bool:
         return bool(self.phases)
+
+    def simulate(self, simulator: Simulator, trace: Trace, start: float, cam_shift: float) -> Trace:
+        """Run the strategy's sequence from `start`, with the cam moved by `cam_shift` (its jitter)."""
+        return self.definition.simulate(simulator, trace, start, cam_shift)
+
+    def default_scenario(self, given: ScenarioInput | None = None, cycle_time_us: int = 1000) -> Scenario:
+        """The scenario `given` (or none) completed with the documented default geometry (scenario.py) for this
+        strategy's axis: the cam in its homing direction, zero pulses where the logic is armed, its limits."""
+        setup = self.setup
+        braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
+        return complete(
+            given,
+            direction=self.direction,
+            rotary=setup.rotary,
+            soft_limits=setup.soft_limits,
+            cycle_time=cycle_time_us / 1e6,
+            zero_pulse=self.with_zero_pulse,
+            braking=braking,
+            modulo=setup.modulo,
+            spindle=setup.spindle,
+            armed_on_exit=self.definition.arms_on_cam_exit,
+        )
 
 
 def opposite(direction: str) -> str:

@@ -52,6 +52,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from ..context import Context
     from ..diagnostics import Diagnostic
+    from ..homing.motion import SoftLimitOvershoot
 
 CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
@@ -69,20 +70,31 @@ PARAMETERS = (
 SUMMARY = "Homing ends outside the software limits (braking or retraction)"
 
 
+def message(fact: SoftLimitOvershoot) -> str:
+    """The finding in words, for lint and the dry-run alike."""
+    low, high = fact.limits
+    unit = fact.unit
+    if fact.reference_outside:
+        return f"the reference value {fact.value:g} {unit} lies outside the software limits [{low:g}, {high:g}] {unit}"
+    what = "after retracting from the stop" if fact.retracted else "after braking"
+    return (
+        f"{what} the axis stands at {fact.final:.6g} {unit}, outside the software limits "
+        f"[{low:g}, {high:g}] {unit}: move the reference position inside by at least "
+        f"{abs(fact.final - fact.value):.4g} {unit}"
+    )
+
+
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    from ..engine import Simulator
-    from ..scenario import default_scenario
+    from ..homing.motion import Simulator
 
     values, strategy = ctx.values, ctx.strategy
     if not strategy.moves or strategy.controlled_by != "cnc" or values.axis_type == "S":
         return
-    probe = Simulator(values, strategy, default_scenario(strategy, cycle_time_us=ctx.options.cycle_time_us))
+    probe = Simulator(values, strategy, strategy.default_scenario(cycle_time_us=ctx.options.cycle_time_us))
     # Only the distances matter: a fixed stop (read by fixed-stop homing alone) where detection is certain.
     low = values.number("kenngr.homing.torq_min_distance") * 1e-4
     probe.scenario.fixed_stop = probe.scenario.start_position + strategy.direction * (low + 1.0)
-    trace = probe.run()
-    probe.check_soft_limits(trace)
-    reference = strategy.definition.reference_parameter.replace("[i]", f"[{strategy.gear}]")
-    for warning in trace.warnings:
-        if warning["code"] == CODE:
-            yield ctx.cross(CODE, warning["message"], [reference, "kenngr.swe_neg", "kenngr.swe_pos"])
+    fact = probe.check_soft_limits(probe.run())
+    if fact is not None:
+        reference = strategy.definition.reference_parameter.replace("[i]", f"[{strategy.gear}]")
+        yield ctx.cross(CODE, message(fact), [reference, "kenngr.swe_neg", "kenngr.swe_pos"])

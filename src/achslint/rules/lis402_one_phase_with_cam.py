@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from ..context import Context
     from ..diagnostics import Diagnostic
+    from ..homing.motion import StartOnCam
 
 CODE = "LIS402"
 NAME = "one-phase-with-cam"
@@ -49,6 +50,11 @@ SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_ohne_rev", "kenngr.ref_ohne_nocken")  # parameters this rule reads
 SUMMARY = "One-phase homing with a cam (advised against by the manual)"
+
+
+def start_on_cam(fact: StartOnCam) -> str:
+    """What the dry-run reports when such an axis starts on the cam (where it stood: `fact.position`)."""
+    return "the axis starts on the reference cam: one-phase homing references without leaving it, at the wrong place"
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

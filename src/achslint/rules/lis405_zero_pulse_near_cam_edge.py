@@ -78,11 +78,54 @@ control cycle at the speed the cam is crossed plus the scenario's `cam_jitter`.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from ..homing.setup import POSITION
+
+if TYPE_CHECKING:
+    from ..homing.motion import PulseMargin
+
 CODE = "LIS405"
 NAME = "zero-pulse-near-cam-edge"
 SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Zero pulse too close to the cam edge: the reference can jump by one revolution (dry-run)"
 
-# Found by the homing simulation (engine.Simulator), not by linting a list: `achslint dry-run` reports it.
+# Found by the homing simulation (a PulseMargin fact of the trace), not by linting a list: `achslint dry-run`
+# reports it in these words.
 PRODUCED_BY = "dry-run"
+
+
+def message(fact: PulseMargin) -> str:
+    unit = fact.unit
+    side = (
+        f"{fact.ahead:.4g} {unit} after" if fact.ahead < fact.margin else f"{fact.behind:.4g} {unit} before"
+    )
+    return (
+        f"a zero pulse lies {side} the point where the zero-pulse logic is armed (one encoder revolution = "
+        f"{fact.period:g} {unit}); the cam jitter and the sampling of the cam edge ({fact.margin:.4g} {unit}) can "
+        f"arm it on either side, so the reference can jump by one revolution. Set "
+        f"kenngr.shift_offset_zero_pulse_activation to about {round(fact.wanted / POSITION)} "
+        f"(= {fact.wanted:.4g} {unit}) to put the pulse half a revolution away; {_reference_moves(fact)}"
+    )
+
+
+def _reference_moves(fact: PulseMargin) -> str:
+    """What that shift does to the reference, and the pos_refpkt that keeps the axis's coordinates."""
+    unit = fact.unit
+    if not fact.periods:
+        return "the reference stays on the same zero pulse, so pos_refpkt keeps its value"
+    if fact.modulo and abs(fact.moved) < 1e-9 * fact.period:
+        return (
+            f"the reference moves by whole revolutions only, to the same position within "
+            f"[{fact.modulo[0]:g}, {fact.modulo[1]:g}) {unit}, so pos_refpkt keeps its value"
+        )
+    count = abs(fact.periods)
+    how_many = "one zero-pulse period" if count == 1 else f"{count} zero-pulse periods"
+    way = "in" if fact.periods > 0 else "against"
+    value = fact.reference_value
+    return (
+        f"the reference then moves {abs(fact.moved):.6g} {unit} ({how_many}) {way} the homing direction: correct "
+        f"getriebe[{fact.gear}].pos_refpkt by {fact.moved:+.6g} {unit}, to about "
+        f"{round(value / POSITION)} (= {value:.6g} {unit}), so the axis keeps its coordinates"
+    )

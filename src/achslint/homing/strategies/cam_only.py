@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..base import StrategyDef
 from ..parameters import CAM, CAM_EDGE, SEQUENCE
+from ..sequences import cam
 from . import _sequence
 from ._three_phases import THREE_PHASE_SPEEDS, describe, phases
 
@@ -23,5 +24,5 @@ STRATEGY = StrategyDef(
     reference_speed="vb_reflow",
     variants=_sequence.variants,
     unused="there is no zero pulse: the cam edge is the reference (§3.5, type I)",
-    simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
+    simulate=cam.three_phases,
 )

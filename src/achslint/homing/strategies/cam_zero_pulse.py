@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import StrategyDef
 from ..parameters import CAM, CAM_AND_ZERO_PULSE, SEQUENCE, ZERO_PULSE
+from ..sequences import cam
 from . import _sequence
 from ._three_phases import THREE_PHASE_SPEEDS, describe, phases
 
@@ -29,7 +30,7 @@ STRATEGY = StrategyDef(
     reference_speed="vb_reflow",
     variants=_sequence.variants,
     unused="not part of three-phase homing on the cam and the zero pulse",
-    simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
+    simulate=cam.three_phases,
 )
 
 

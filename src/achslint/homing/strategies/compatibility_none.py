@@ -5,6 +5,7 @@ from __future__ import annotations
 from ...resolved import DriveType
 from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
+from ..sequences import adopt
 
 STRATEGY = StrategyDef(
     id="none",
@@ -27,5 +28,5 @@ STRATEGY = StrategyDef(
     },
     example="kenngr.homing.homing_type NONE\n",
     unused="compatibility mode NONE only adopts pos_refpkt",
-    simulate=lambda sim, trace, x, cam_shift: sim.adopt(trace, x),
+    simulate=adopt.run,
 )

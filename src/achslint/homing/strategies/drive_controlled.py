@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
+from ..sequences import drive
 
 if TYPE_CHECKING:
     from ...resolved import ResolvedAxis
@@ -38,5 +39,5 @@ STRATEGY = StrategyDef(
     example="kenngr.antr_typ 2\nkenngr.homing.homing_type DRIVE_CONTROLLED\n",
     unused="drive-controlled homing: the drive's own parameters define the sequence (§2.2)",
     acceleration=lambda setup: None,  # the drive's own (the scenario's [drive] table describes it)
-    simulate=lambda sim, trace, x, cam_shift: sim.drive_sequence(trace, x, cam_shift),
+    simulate=drive.run,
 )

@@ -8,6 +8,7 @@ from ...resolved import DriveType, ResolvedAxis
 from ...units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use, opposite
 from ..parameters import CNC_MOVES
+from ..sequences import fixed_stop
 
 if TYPE_CHECKING:
     from ..setup import HomingSetup
@@ -94,5 +95,5 @@ STRATEGY = StrategyDef(
     reference_parameter="kenngr.homing.torq_homing_position",
     direction=lambda setup: setup.torq_direction,
     acceleration=lambda setup: setup.torq_ramp,
-    simulate=lambda sim, trace, x, cam_shift: sim.fixed_stop(trace, x),
+    simulate=fixed_stop.run,
 )

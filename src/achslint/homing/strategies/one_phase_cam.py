@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import Phase, StrategyDef, Use
 from ..parameters import CAM, CAM_EDGE, SEQUENCE
+from ..sequences import cam
 from . import _sequence
 
 if TYPE_CHECKING:
@@ -52,5 +53,5 @@ STRATEGY = StrategyDef(
     reference_speed="vb_refmax",
     variants=_sequence.variants,
     unused="one-phase homing on the cam edge has no slow phase and no move off the cam",
-    simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
+    simulate=cam.one_phase,
 )

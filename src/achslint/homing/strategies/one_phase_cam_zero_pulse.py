@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import Phase, StrategyDef, Use
 from ..parameters import CAM, CAM_AND_ZERO_PULSE, SEQUENCE, ZERO_PULSE
+from ..sequences import cam
 from . import _sequence
 
 if TYPE_CHECKING:
@@ -74,7 +75,7 @@ STRATEGY = StrategyDef(
     reference_speed="vb_reflow",
     variants=_sequence.variants,
     unused="one-phase homing never reverses, so it has no move off the cam",
-    simulate=lambda sim, trace, x, cam_shift: sim.cam_sequence(trace, x, cam_shift),
+    simulate=cam.one_phase,
 )
 
 

@@ -8,6 +8,7 @@ from ...resolved import DriveType
 from ...units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use
 from ..parameters import CNC_MOVES, SEQUENCE
+from ..sequences import simulated
 
 if TYPE_CHECKING:
     from ..setup import HomingSetup
@@ -60,5 +61,5 @@ STRATEGY = StrategyDef(
     one_phase=True,
     reference_speed="vb_reflow",
     unused="simulated drives home in one phase over rpf_weg_bis_nip; the other homing parameters are ignored (§3.4)",
-    simulate=lambda sim, trace, x, cam_shift: sim.simulated(trace, x),
+    simulate=simulated.run,
 )

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import Phase, StrategyDef, Use
 from ..parameters import CAM, SEQUENCE
+from ..sequences import flying
 from . import _sequence
 
 if TYPE_CHECKING:
@@ -59,5 +60,5 @@ STRATEGY = StrategyDef(
     arms_on_cam_exit=True,
     variants=_sequence.variants,
     unused="flying spindle homing reads only the cam, the zero pulse and vb_reflow",
-    simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
+    simulate=flying.run,
 )

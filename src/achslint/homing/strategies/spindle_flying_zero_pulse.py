@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import Phase, StrategyDef, Use
 from ..parameters import SEQUENCE
+from ..sequences import flying
 from . import _sequence
 
 if TYPE_CHECKING:
@@ -50,5 +51,5 @@ STRATEGY = StrategyDef(
     needs_zero_pulse=True,
     variants=_sequence.variants,
     unused="flying spindle homing without cam reads only the zero pulse and vb_reflow",
-    simulate=lambda sim, trace, x, cam_shift: sim.flying(trace, x, cam_shift),
+    simulate=flying.run,
 )

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..base import Phase, StrategyDef
 from ..parameters import SEQUENCE, ZERO_PULSE
+from ..sequences import zero_pulse
 from . import _sequence
 
 if TYPE_CHECKING:
@@ -43,5 +44,5 @@ STRATEGY = StrategyDef(
     needs_zero_pulse=True,
     variants=_sequence.variants,
     unused="there is no reference cam and no fast search phase (§3.5, type II)",
-    simulate=lambda sim, trace, x, cam_shift: sim.zero_pulse_only(trace, x),
+    simulate=zero_pulse.run,
 )
