@@ -41,7 +41,7 @@ from typing import Any
 
 from .dryrun import DryRunRefused, finish, refusal
 from .homing import VELOCITY, HomingStrategy, classify
-from .homing.motion import Segment, Simulator, Trace
+from .homing.motion import Segment, Simulator, Trace, trapezoid
 from .machinemodel import (
     AxisWord,
     HomingBlock,
@@ -444,14 +444,6 @@ def _cut(phases: list[AxisPhase], t: float, braking: float, why: str) -> bool:
         kept.append(phase)
     phases[:] = kept
     return cut
-
-
-def _trapezoid(length: float, speed: float, acceleration: float) -> tuple[float, float, float]:
-    """(peak speed, acceleration time, cruise time) of a rest-to-rest move (triangular when short)."""
-    peak = min(speed, math.sqrt(length * acceleration))
-    t_acc = peak / acceleration
-    cruise = max((length - peak * peak / acceleration) / peak, 0.0) if peak else 0.0
-    return peak, t_acc, cruise
 
 
 def _time_at(distance: float, length: float, peak: float, t_acc: float, cruise: float, a: float) -> float:
@@ -913,7 +905,7 @@ class _Runner:
         if speed <= 0:
             self._fail(index, block.at, None, "the feed is 0: the axes do not move", t, "no feed")
             return t
-        peak, t_acc, cruise = _trapezoid(length, speed, acceleration)
+        peak, t_acc, cruise = trapezoid(length, speed, acceleration)
         duration = 2 * t_acc + cruise
         # A hardware limit switch (scenario) on the way stops the move: all axes brake.
         stop: tuple[float, str] | None = None

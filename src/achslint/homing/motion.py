@@ -550,21 +550,28 @@ def point_to_point(
     """A move of a known length from rest to rest (triangular when too short to reach the speed)."""
     if distance <= 0:
         return x, t
-    peak = min(speed, math.sqrt(distance * a))
-    t_acc = peak / a
-    cruise = (distance - peak * peak / a) / peak if peak else 0.0
+    peak, t_acc, cruise = trapezoid(distance, speed, a)
     segments = [Segment(t, t + t_acc, x, 0.0, s * a)]
     x1 = x + s * peak * peak / (2 * a)
     if cruise > 0:
         segments.append(Segment(t + t_acc, t + t_acc + cruise, x1, s * peak, 0.0))
-    t2 = t + t_acc + max(cruise, 0.0)
-    x2 = x1 + s * peak * max(cruise, 0.0)
+    t2 = t + t_acc + cruise
+    x2 = x1 + s * peak * cruise
     segments.append(Segment(t2, t2 + t_acc, x2, s * peak, -s * a))
     x_end = x + s * distance
     trace.phases.append(
         PhaseRecord(name, direction_word(s), speed, x, x_end, t, t2 + t_acc, ended_by, segments)
     )
     return x_end, t2 + t_acc
+
+
+def trapezoid(length: float, speed: float, acceleration: float) -> tuple[float, float, float]:
+    """(peak speed, acceleration time, cruise time) of a rest-to-rest move over `length` that accelerates and
+    brakes with `acceleration` (triangular when too short to reach `speed`)."""
+    peak = min(speed, math.sqrt(length * acceleration))
+    t_acc = peak / acceleration
+    cruise = max((length - peak * peak / acceleration) / peak, 0.0) if peak else 0.0
+    return peak, t_acc, cruise
 
 
 def direction_word(s: int) -> str:
