@@ -94,12 +94,7 @@ def _simulator(
     values: ResolvedAxis, name: str, given: ScenarioInput | None, gear: int, cycle_time_us: int
 ) -> Simulator:
     strategy = classify(values, gear)
-    if given is not None and given.drive is not None and strategy.controlled_by != "drive":
-        raise ScenarioError(
-            f"scenario: the [drive] table describes drive-controlled homing, but {name} homes "
-            f"{strategy.title} (homing type {values.homing_type}): remove the [drive] table"
-        )
-    return Simulator(values, strategy, strategy.default_scenario(given, cycle_time_us))
+    return Simulator(values, strategy, strategy.default_scenario(given, cycle_time_us, name=name))
 
 
 def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None:

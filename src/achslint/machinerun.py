@@ -202,13 +202,8 @@ class _Axis:
         setup = self.strategy.setup
         given = scenario.given(axis.name)
         where = scenario.table(axis.name) if axis.name in scenario.axes else scenario.where
-        if getattr(given, "drive", None) is not None and self.strategy.controlled_by != "drive":
-            raise ScenarioError(
-                f"{where}: the [drive] table describes drive-controlled homing, but {axis.name} homes "
-                f"{self.strategy.title} (homing type {values.homing_type}): remove the [drive] table"
-            )
         try:
-            self.scenario = self.strategy.default_scenario(given, cycle_time_us)
+            self.scenario = self.strategy.default_scenario(given, cycle_time_us, name=axis.name)
         except ScenarioError as exc:
             raise ScenarioError(f"{where}: {str(exc).removeprefix('scenario: ')}") from None
         self.simulator = Simulator(values, self.strategy, self.scenario)

@@ -8,7 +8,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from ..scenario import Scenario, complete
+from ..scenario import Scenario, ScenarioError, complete
 
 if TYPE_CHECKING:
     from ..resolved import ResolvedAxis
@@ -173,10 +173,18 @@ class HomingStrategy:
         """Run the strategy's sequence from `start`, with the cam moved by `cam_shift` (its jitter)."""
         return self.definition.simulate(simulator, trace, start, cam_shift)
 
-    def default_scenario(self, given: ScenarioInput | None = None, cycle_time_us: int = 1000) -> Scenario:
+    def default_scenario(
+        self, given: ScenarioInput | None = None, cycle_time_us: int = 1000, *, name: str = "the axis"
+    ) -> Scenario:
         """The scenario `given` (or none) completed with the documented default geometry (scenario.py) for this
-        strategy's axis: the cam in its homing direction, zero pulses where the logic is armed, its limits."""
+        strategy's axis `name`: the cam in its homing direction, zero pulses where the logic is armed, its
+        limits. A `[drive]` table, which describes drive-controlled homing, is a ScenarioError on another axis."""
         setup = self.setup
+        if given is not None and given.drive is not None and self.controlled_by != "drive":
+            raise ScenarioError(
+                f"scenario: the [drive] table describes drive-controlled homing, but {name} homes "
+                f"{self.title} (homing type {setup.homing_type}): remove the [drive] table"
+            )
         braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
         return complete(
             given,
