@@ -18,25 +18,29 @@ the renderers load rich when they draw.
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable, Mapping
-from typing import TYPE_CHECKING, Protocol, TextIO, TypeVar
+from typing import TYPE_CHECKING, TextIO
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # names for the type checker only: the CLI imports this module on every start
+    from collections.abc import Callable, Mapping
+    from typing import Protocol, TypeVar
+
     from rich.console import Console
 
-FORMATS = ("text", "json")  # the --format choices of explain, dry-run and diff
+    R = TypeVar("R")
+    Renderer = Callable[[R, "Screen"], None]
+    Registry = Mapping[str, Renderer[R]]  # format name -> renderer, one per command (or kind of report)
 
-R = TypeVar("R")
+    class Echo(Protocol):
+        """Writes a text and, unless `nl` is false, a newline (`typer.echo` is one)."""
+
+        def __call__(self, message: str, *, nl: bool = True) -> object: ...
+
+
+FORMATS = ("text", "json")  # the --format choices of explain, dry-run and diff
 
 
 class OutputFailed(Exception):
     """An output file that could not be written: the message is the one line the user sees."""
-
-
-class Echo(Protocol):
-    """Writes a text and, unless `nl` is false, a newline (`typer.echo` is one)."""
-
-    def __call__(self, message: str, *, nl: bool = True) -> object: ...
 
 
 class Screen:
@@ -84,10 +88,6 @@ class Screen:
                 width=160 if piped else None,
             )
         return self._console
-
-
-Renderer = Callable[[R, Screen], None]
-Registry = Mapping[str, Renderer[R]]  # format name -> renderer, one per command (or kind of report)
 
 
 def write_json(document: object, screen: Screen, *, strict: bool = False) -> None:

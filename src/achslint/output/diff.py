@@ -6,10 +6,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from . import Registry, Screen, write_json
+from . import Screen, write_json
 
 if TYPE_CHECKING:
     from ..listdiff import DiffReport
+    from . import Registry
 
 
 def as_text(report: DiffReport, screen: Screen) -> None:

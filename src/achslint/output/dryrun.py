@@ -24,13 +24,14 @@ from typing import TYPE_CHECKING, Any
 
 from ..dryrun import finite_document
 from ..resolved import plain
-from . import Registry, Screen, write_json
+from . import Screen, write_json
 from .plot import write_plot
 
 if TYPE_CHECKING:
     from rich.console import Console
 
     from ..dryrun import DryRun
+    from . import Registry
 
 
 @dataclass(frozen=True)

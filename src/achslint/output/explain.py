@@ -9,10 +9,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from . import Registry, Screen, write_json
+from . import Screen, write_json
 
 if TYPE_CHECKING:
     from ..explain import ListReport, ParameterCard
+    from . import Registry
 
 
 def list_text(report: ListReport, screen: Screen) -> None:

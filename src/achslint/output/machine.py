@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from ..dryrun import finite_document as _finite
-from . import Registry, Screen, write_json
+from . import Screen, write_json
 from .dryrun import json_number as _round
 from .dryrun import number_text as _num
 from .plot import write_plot
@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from rich.console import Console
 
     from ..machinerun import AxisPhase, AxisRun, BlockRun, MachineRun
+    from . import Registry
 
 
 @dataclass(frozen=True)

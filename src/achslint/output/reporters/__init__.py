@@ -8,17 +8,23 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Protocol, TextIO
 
 
-@dataclass(frozen=True)
 class Reporter:
-    """An output format: the module with its `report` function, and what the report needs."""
+    """An output format: the module with its `report` function, and what the report needs.
 
-    module: str
-    text: bool = False  # for people: `--statistics` replaces it, the closing summary lines follow it
-    needs_source: bool = False  # shows the lines of the list (the linter keeps them only when asked)
+    A plain class, not a dataclass: every lint loads this registry, and making a dataclass at import
+    costs more than the rest of the module."""
+
+    __slots__ = ("module", "needs_source", "text")
+
+    def __init__(self, module: str, *, text: bool = False, needs_source: bool = False) -> None:
+        self.module = module
+        self.text = text  # for people: `--statistics` replaces it, the closing summary lines follow it
+        self.needs_source = (
+            needs_source  # shows the lines of the list (the linter keeps them only when asked)
+        )
 
 
 if TYPE_CHECKING:
