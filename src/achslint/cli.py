@@ -1,7 +1,9 @@
-"""Command-line interface: flags -> settings -> api call -> exit code.
+"""Command-line interface: flags -> request or settings -> library call -> output registry -> exit code.
 
-Heavy imports (lark, rich, pydantic, the rules) happen inside the commands so
-that `--help` and `--version` stay fast.
+What a command prints is rendered in `achslint.output` (a registry per command from `--format` to
+renderer); here are only the options, the one-line failures and the exit codes. Heavy imports (lark,
+rich, pydantic, the rules, a command's output module) happen inside the commands so that `--help` and
+`--version` stay fast.
 """
 
 from __future__ import annotations
