@@ -17,7 +17,7 @@ import pytest
 from achslint.context import Context
 from achslint.dryrun import DryRunRefused, dry_run, prepare
 from achslint.explain import explain_list
-from achslint.homing import by_id, classify, strategies
+from achslint.homing.registry import by_id, classify, strategies
 from achslint.machinebuild import build_machine
 from achslint.machineexplain import explain_machine
 from achslint.machinemodel import Machine, MachineAxis
