@@ -186,12 +186,19 @@ def test_noqa_in_program_comments(tmp_path):
         result = cli("lint", str(program), "--machine", str(PORTAL), "--format", "json", "--exit-zero")
         return [(d["line"], d["code"]) for d in json.loads(result.stdout)["diagnostics"]]
 
+    # Line 3's `noqa: LIS602` suppresses nothing, so it is itself a finding (LIS009), as in a list.
     assert reported(body.replace(" (noqa: LIS606)", "").replace(" ; lift first, noqa: LIS606", "")) == [
         (1, "LIS606"),
         (2, "LIS606"),
         (3, "LIS606"),
+        (3, "LIS009"),
         (5, "LIS606"),
     ]  # without the directives (line 4's bare noqa stays): every move of Z before N60
-    assert reported(body) == [(3, "LIS606"), (5, "LIS606")]
-    assert reported("; achslint: noqa: LIS606\n" + body) == []
-    assert reported("(achslint: noqa: LIS602)\n" + body) == [(4, "LIS606"), (6, "LIS606")]
+    assert reported(body) == [(3, "LIS606"), (3, "LIS009"), (5, "LIS606")]
+    assert reported("; achslint: noqa: LIS606\n" + body) == [(4, "LIS009")]
+    assert reported("(achslint: noqa: LIS602)\n" + body) == [
+        (1, "LIS009"),
+        (4, "LIS606"),
+        (4, "LIS009"),
+        (6, "LIS606"),
+    ]

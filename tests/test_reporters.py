@@ -44,7 +44,6 @@ TWO_RULES = {
         fix="sometimes",
         summary=f"Summary of {name}.",
         doc=f"{name}\n\nWhat\n----\nWhat {name} finds.\n\nWhy\n---\nWhy it matters.\n",
-        check=None,
         module=ModuleType(name),
     )
     for code, name, severity in (("LIS101", "fixture-one", "warning"), ("LIS203", "fixture-two", "error"))

@@ -35,6 +35,7 @@ from .files import (
     same_file,
     write_atomically,
 )
+from .lintengine import Policy, enabled_checks, run
 from .linter import (
     NOT_A_LIST,
     FileResult,
@@ -43,7 +44,8 @@ from .linter import (
     lint_file,
     looks_like_a_list,
 )
-from .machine import check_machines, is_default_list, is_startup_list, read_startup
+from .machine import is_default_list, is_startup_list, machines, read_startup
+from .rules import Scope as RuleScope
 from .syntax import parse_bytes, split_lines
 
 if TYPE_CHECKING:
@@ -208,12 +210,8 @@ class LintRun:
         Only when a machine-level rule is selected; links that lead out of the folder are not followed,
         and nothing about these files is reported (their own problems belong to their own run).
         """
-        from .rules import registry
-
         settings = self.settings_for(Target(key, folder / "x", self.config_for(folder / "x")))
-        if not any(
-            rule.check_machine and settings.selection.enabled(code) for code, rule in registry().items()
-        ):
+        if not enabled_checks(RuleScope.MACHINE, settings.policy):
             return
         quiet = Discovery()
         for file in self._walk(folder, Scope.of([folder]), quiet, recursive=False):
@@ -323,7 +321,7 @@ class LintRun:
         by_name = {result.name: result for result in results}
         hidden = {result.name for _, result in context}
         groups: dict[str, list[Member]] = {}
-        settings = {}
+        settings: dict[str, FileSettings] = {}
         pairs = [*context, *zip(targets, results, strict=False)]
         for target, result in pairs:
             if target.path is not None and is_default_list(target.path):
@@ -332,22 +330,28 @@ class LintRun:
                 for summary in [result.summary] if result.summary is not None else result.summaries:
                     groups.setdefault(target.machine, []).append((result.name, summary))
                 settings[result.name] = self.settings_for(target)
+
+        def settings_of(path: str) -> FileSettings:  # a start-up list's own configuration too
+            if path not in settings:
+                settings[path] = self.settings_for(Target(path, Path(path), self.config_for(Path(path))))
+            return settings[path]
+
+        policies: dict[str, Policy] = {}
+
+        def policy_of(path: str) -> Policy:
+            if path not in policies:
+                policies[path] = settings_of(path).policy
+            return policies[path]
+
         extra: dict[str, FileResult] = {}
-        for code, d in check_machines(groups, self.startups):
-            if d.path in hidden:
-                continue
-            chosen = settings.get(d.path) or self.settings_for(
-                Target(d.path, Path(d.path), self.config_for(Path(d.path)))
-            )
-            if not chosen.selection.enabled(code):
-                continue
-            override = chosen.severity.get(code)
-            if override:
-                d.severity = Severity(override)
-            owner = by_name.get(d.path) or extra.setdefault(
-                d.path, FileResult(d.path, [], fail_on=chosen.fail_on)
-            )
-            owner.diagnostics.append(d)
+        for machine in machines(groups, self.startups):
+            for d in run(RuleScope.MACHINE, machine, policy_of):
+                if d.path in hidden:
+                    continue
+                owner = by_name.get(d.path) or extra.setdefault(
+                    d.path, FileResult(d.path, [], fail_on=settings_of(d.path).fail_on)
+                )
+                owner.diagnostics.append(d)
         for result in [*by_name.values(), *extra.values()]:
             result.diagnostics.sort(key=Diagnostic.sort_key)
             if (

@@ -1,7 +1,7 @@
-"""The lint engine: one readable loop from bytes to sorted diagnostics.
+"""Lint of one list, or of the lists of one XML file: bytes -> parsed list -> the lint engine.
 
-parse -> run every enabled rule -> severity overrides -> `noqa` suppressions
-      -> rules about suppressions (LIS009) -> sort
+parse -> `lintengine.run` (enabled rules -> `noqa` suppressions -> LIS009 -> severity overrides -> sort)
+      -> a `FileResult` with what the machine step needs (`machine.summary`)
 """
 
 from __future__ import annotations
@@ -10,33 +10,20 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from . import machine, suppression
+from . import machine
 from .config import Settings
 from .context import Context
 from .decode import UnreadableInput
 from .diagnostics import Diagnostic, Severity
 from .files import is_xml
-from .rules import matches, registry
+from .lintengine import Policy, run
+from .rules import Scope
+from .suppression import Suppressions
 from .syntax import ASSIGNMENT, END, ListFile, parse_bytes
 
 if TYPE_CHECKING:
     from .machine import Member, Summary
     from .xmlinput import EmbeddedList
-
-
-@dataclass
-class Selection:
-    """Which rules run: ruff-style select / extend-select / ignore by code or prefix."""
-
-    select: list[str] | None = None
-    extend_select: list[str] = field(default_factory=list)
-    ignore: list[str] = field(default_factory=list)
-
-    def enabled(self, code: str) -> bool:
-        chosen = self.select if self.select else ["ALL"]
-        if not (matches(code, chosen) or matches(code, self.extend_select)):
-            return False
-        return not matches(code, self.ignore)
 
 
 @dataclass
@@ -60,13 +47,10 @@ class FileSettings:
         return cls(Settings(select=select, ignore=list(ignore or [])), keep_source=keep_source)
 
     @property
-    def selection(self) -> Selection:
+    def policy(self) -> Policy:
+        """Which rules run for this file, and the severities its configuration sets."""
         s = self.settings
-        return Selection(s.select, list(s.extend_select), [*s.ignore, *self.ignored_here])
-
-    @property
-    def severity(self) -> dict[str, str]:
-        return dict(self.settings.severity)
+        return Policy.of(s.select, s.extend_select, [*s.ignore, *self.ignored_here], s.severity)
 
     @property
     def fail_on(self) -> str:
@@ -158,33 +142,20 @@ def _check_file(
     ctx = Context(
         name, file, settings.settings, embedded=embedded, default_file=default_file, default_list=partial
     )
-    rules = registry()
-
-    def enabled(code: str) -> bool:
-        return settings.selection.enabled(code) and not (partial and rules[code].needs_whole_axis)
-
-    diagnostics: list[Diagnostic] = []
-    for code, rule in rules.items():
-        if rule.check is not None and enabled(code):
-            diagnostics.extend(rule.check(ctx))
-    directives = suppression.directives(file)
-    if directives:
-        diagnostics = suppression.apply(diagnostics, directives)
-    for code, rule in rules.items():
-        if rule.check_after is not None and enabled(code):
-            diagnostics.extend(rule.check_after(ctx, directives, enabled))
-    for diagnostic in diagnostics:
-        override = settings.severity.get(diagnostic.code)
-        if override:
-            diagnostic.severity = Severity(override)
-    diagnostics.sort(key=Diagnostic.sort_key)
+    diagnostics = run(
+        Scope.LIST,
+        (ctx,),
+        settings.policy,
+        suppressions=Suppressions.of_list(file, name),
+        whole_axis=not partial,
+    )
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
     return FileResult(
         name,
         diagnostics,
         None,
         lines,
-        summary=machine.summary(ctx),
+        summary=machine.summary(ctx.values),
         context=ctx if settings.keep_context else None,
     )
 
@@ -235,9 +206,7 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
             d.fix = None  # edits refer to the embedded text; XML files are not rewritten
             diagnostics.append(d)
     if len(members) > 1 and settings.machine_in_file:  # a TwinCAT project: its axes form one machine
-        for code, rule in registry().items():
-            if rule.check_machine is not None and settings.selection.enabled(code):
-                diagnostics.extend(rule.check_machine(members, []))
+        diagnostics.extend(run(Scope.MACHINE, (members, []), settings.policy))
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
     return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])

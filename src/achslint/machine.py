@@ -5,7 +5,7 @@ entries `achs_mds[i]`, with `default_achs_mds` applied under each of them the
 way the CNC loads them), or else the axis lists of one folder. Each linted list
 contributes a small summary (logical axis number, axis name, gantry settings,
 with their lines); rules with a `check_machine(members, startups)` function
-compare the summaries.
+compare the summaries, run by the lint engine over each machine `machines` gives.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from .diagnostics import Diagnostic, Related, Severity
 from .files import Scope, inside, not_a_list_file, read_list
 
 if TYPE_CHECKING:
-    from .context import Context
+    from .resolved import ResolvedAxis
 
 STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
 
@@ -155,9 +155,8 @@ def read_startup(
     return startup
 
 
-def summary(ctx: Context) -> Summary:
-    """What the machine checks need from one axis list (small and picklable)."""
-    values = ctx.values
+def summary(values: ResolvedAxis) -> Summary:
+    """What the machine checks need from one axis list, resolved (small and picklable)."""
 
     def at(path: str) -> tuple[int, int] | None:
         setting = values.in_list(path)
@@ -235,25 +234,17 @@ def gantry_pairs(members: list[Member]) -> Iterator[tuple[Member, Member | None]
             yield (name, info), (master if master is not None and master[1] is not info else None)
 
 
-def check_machines(
+def machines(
     groups: dict[str, list[Member]], startups: list[Startup]
-) -> Iterator[tuple[str, Diagnostic]]:
-    """Every machine-level rule over every machine, as (code, finding).
+) -> Iterator[tuple[list[Member], list[Startup]]]:
+    """Every machine to check, as (its members, its start-up lists): what the machine-level rules get.
 
     `groups` holds each machine's members (list name, `summary`) by machine key: the path of the start-up
-    list that names them, or their folder. A start-up list none of whose axis lists was read is still
-    checked on its own (its entries may all be missing).
+    list that names them, or their folder. A start-up list none of whose axis lists was read is still a
+    machine of its own (its entries may all be missing).
     """
-    from .rules import registry
-
-    rules = [(code, rule.check_machine) for code, rule in registry().items() if rule.check_machine]
     for key, members in groups.items():
-        own = [startup for startup in startups if str(startup.path) == key]
-        for code, check in rules:
-            for found in check(members, own):
-                yield code, found
+        yield members, [startup for startup in startups if str(startup.path) == key]
     for startup in startups:
         if str(startup.path) not in groups:
-            for code, check in rules:
-                for found in check([], [startup]):
-                    yield code, found
+            yield [], [startup]

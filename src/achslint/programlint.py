@@ -1,7 +1,8 @@
 """Lint of homing programs against a machine: `achslint lint rfp.nc --machine hochlauf.lis` (LIS6xx).
 
 A program rule is a module with a `check_program(program, machine)` generator of diagnostics (see
-`rules/__init__.py`); this module reads the program and the machine, runs the enabled program rules and
+`rules/__init__.py`); this module reads the program and the machine, runs the program rules through the
+lint engine (with the `noqa` directives of the program's comments, so LIS009 reports the unused ones) and
 hands back an ordinary `FileResult`, so every output format reports program findings like list findings.
 The helpers the rules share live here too: where each axis stands (homed or not) before each block.
 """
@@ -14,9 +15,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Related, Severity
+from .lintengine import run
 from .linter import FileResult, FileSettings
 from .machinemodel import HomingBlock, Location, Machine, MachineAxis, MoveBlock, Program
-from .suppression import apply_in_program
+from .rules import Scope
+from .suppression import Suppressions
 from .syntax import split_lines
 
 if TYPE_CHECKING:
@@ -104,20 +107,9 @@ def steps(program: Program, machine: Machine) -> Iterator[Step]:
 def check_program(
     program: Program, machine: Machine, settings: FileSettings | None = None
 ) -> list[Diagnostic]:
-    """The findings of the enabled program rules (LIS6xx), severities overridden as configured, sorted."""
-    from .rules import registry
-
-    settings = settings or FileSettings()
-    found: list[Diagnostic] = []
-    for code, rule in registry().items():
-        if rule.check_program is not None and settings.selection.enabled(code):
-            found.extend(rule.check_program(program, machine))
-    for finding in found:
-        override = settings.severity.get(finding.code)
-        if override:
-            finding.severity = Severity(override)
-    found.sort(key=Diagnostic.sort_key)
-    return found
+    """The findings of the enabled program rules (LIS6xx), severities overridden as configured, sorted; no
+    `noqa` applied (`lint_program_on` applies the program's)."""
+    return run(Scope.PROGRAM, (program, machine), (settings or FileSettings()).policy)
 
 
 def lint_program(
@@ -159,9 +151,10 @@ def lint_program_on(
     except OSError as exc:
         return FileResult(shown, [], f"cannot read {shown}: {reason(exc)}")
     program = read_program(data, shown)
-    found = check_program(program, machine, settings)
-    text = split_lines(program_text(data) or "") if found else []
-    found = apply_in_program(found, text)
+    text = split_lines(program_text(data) or "")
+    found = run(
+        Scope.PROGRAM, (program, machine), settings.policy, suppressions=Suppressions.of_program(text, shown)
+    )
     lines = text if found and settings.keep_source else []
     return FileResult(shown, found, None, lines, fail_on=settings.fail_on)
 
@@ -197,4 +190,4 @@ def _not_checked(paths: list[str], why: str) -> tuple[list[FileResult], list[str
     """Programs that could not be checked: each is an unreadable result (so no format reports the run as
     clean), and the reason is one error line per program."""
     errors = [f"{path}: {why}" for path in paths]
-    return [FileResult(path, [], error) for path, error in zip(paths, errors)], errors
+    return [FileResult(path, [], error) for path, error in zip(paths, errors, strict=True)], errors

@@ -2,14 +2,21 @@
 
 A rule is a module with `CODE`, `NAME`, `SEVERITY`, `FIX` ("none", "safe",
 "unsafe" or "sometimes"), `SUMMARY`, a docstring with the sections
-What / Why / Example / Use instead / Reference, and a `check(ctx)` generator
-of diagnostics — or, for rules about the other rules' results (LIS009), a
-`check_after(ctx, directives, enabled)` generator that runs after
-suppressions were applied, or — for machine-level rules (LIS5xx) — a
-`check_machine(members, startups)` generator over the summaries of a machine's
-axis lists, or — for homing-program rules (LIS6xx) — a `check_program(program,
-machine)` generator over a program read against a machine (`programlint`).
-`achslint rule CODE` prints that docstring.
+What / Why / Example / Use instead / Reference, and one check function for
+each scope it takes part in; the function's name says the scope and what it
+is given:
+
+    check(ctx)                          LIST: one axis list (`context.Context`)
+    check_machine(members, startups)    MACHINE: the summaries of a machine's axis
+                                        lists and its start-up lists (LIS5xx)
+    check_program(program, machine)     PROGRAM: a homing program read against a
+                                        machine (LIS6xx)
+    check_after(suppressions, enabled)  AFTER: what the `noqa` directives of a list
+                                        or a program suppressed (LIS009)
+
+Every check is a generator of diagnostics and runs in the one lint engine
+(`lintengine.run`), which also selects the rules, applies the suppressions and
+the severity overrides. `achslint rule CODE` prints the docstring.
 """
 
 from __future__ import annotations
@@ -18,27 +25,26 @@ import importlib
 import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from enum import Enum
 from functools import cached_property, lru_cache
 from types import ModuleType
-from typing import TYPE_CHECKING, Any
 
 from ..diagnostics import Diagnostic, Severity
 
-if TYPE_CHECKING:
-    from ..context import Context
-    from ..machine import Startup
-    from ..machinemodel import Machine, Program
-    from ..suppression import Directive
 
-# A list of a machine for the machine-level rules: its name and what `machine.summary` took from it.
-MachineMember = tuple[str, dict[str, Any]]
-# The kinds of rule function (see the module docstring).
-Check = Callable[["Context"], Iterable[Diagnostic]]
-CheckAfter = Callable[["Context", "list[Directive]", Callable[[str], bool]], Iterable[Diagnostic]]
-CheckMachine = Callable[[list[MachineMember], "list[Startup]"], Iterable[Diagnostic]]
-# Program rules (LIS6xx) import the machine and program modules inside check_program: a lint of lists
-# imports every rule module, and should not pay for what only NC programs need.
-CheckProgram = Callable[["Program", "Machine"], Iterable[Diagnostic]]
+class Scope(Enum):
+    """What a check looks at; the value is the name of the rule module's function for it."""
+
+    LIST = "check"
+    MACHINE = "check_machine"
+    PROGRAM = "check_program"
+    AFTER = "check_after"
+
+
+# A rule's check for one scope, called with that scope's subject (see the module docstring). Program
+# rules (LIS6xx) import the machine and program modules inside check_program: a lint of lists imports every
+# rule module, and should not pay for what only NC programs need.
+Check = Callable[..., Iterable[Diagnostic]]
 
 RULE_MODULES = (
     "lis001_syntax_error",
@@ -124,13 +130,18 @@ class Rule:
     fix: str
     summary: str
     doc: str
-    check: Check | None
     module: ModuleType
+    checks: tuple[tuple[Scope, Check], ...] = ()  # one check per scope the rule takes part in
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
-    check_after: CheckAfter | None = None
-    check_machine: CheckMachine | None = None
-    check_program: CheckProgram | None = None  # LIS6xx: check_program(program, machine), see programlint
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
+
+    @property
+    def scopes(self) -> tuple[Scope, ...]:
+        return tuple(scope for scope, _ in self.checks)
+
+    def checker(self, scope: Scope) -> Check | None:
+        """The rule's check for `scope`, or None when the rule does not look at that scope."""
+        return next((check for own, check in self.checks if own is scope), None)
 
     @property
     def needs_whole_axis(self) -> bool:
@@ -163,12 +174,11 @@ def registry() -> dict[str, Rule]:
             fix=module.FIX,
             summary=module.SUMMARY,
             doc=(module.__doc__ or "").strip(),
-            check=getattr(module, "check", None),
             module=module,
+            checks=tuple(
+                (scope, getattr(module, scope.value)) for scope in Scope if hasattr(module, scope.value)
+            ),
             parameters=tuple(getattr(module, "PARAMETERS", ())),
-            check_after=getattr(module, "check_after", None),
-            check_machine=getattr(module, "check_machine", None),
-            check_program=getattr(module, "check_program", None),
             produced_by=getattr(module, "PRODUCED_BY", "lint"),
         )
     return rules

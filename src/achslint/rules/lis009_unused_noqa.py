@@ -3,9 +3,13 @@ What
 ----
 A `noqa` suppression that suppresses nothing: an end-of-line `# noqa: CODE`
 on a line without such a diagnostic, or a file-level `# achslint: noqa: CODE`
-in a file without one. Codes of rules that are not selected in this run are
-not counted as unused. A code that is no rule code at all (`LIS3O2` with a
-letter O, `LIS9999`) is reported as unknown, with the closest codes.
+in a file without one. The same holds in NC homing programs checked against a
+machine (`lint rfp.nc --machine hochlauf.lis`): a `(noqa: CODE)` or
+`; noqa: CODE` in a block's comment that suppresses no finding of that block,
+or a comment line `; achslint: noqa: CODE` with no such finding in the
+program. Codes of rules that are not selected in this run are not counted as
+unused. A code that is no rule code at all (`LIS3O2` with a letter O,
+`LIS9999`) is reported as unknown, with the closest codes.
 
 Why
 ---
@@ -35,10 +39,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
+from ..diagnostics import Diagnostic, Severity
+
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
-    from ..suppression import Directive
+    from ..suppression import Directive, Suppressions
 
 CODE = "LIS009"
 NAME = "unused-noqa"
@@ -47,17 +51,15 @@ FIX = "none"
 SUMMARY = "Suppression comment that suppresses nothing"
 
 
-def check_after(
-    ctx: Context, directives: list[Directive], enabled: Callable[[str], bool]
-) -> Iterator[Diagnostic]:
-    """Runs after the other rules and the suppressions, with every `noqa` directive of the file."""
+def check_after(suppressions: Suppressions, enabled: Callable[[str], bool]) -> Iterator[Diagnostic]:
+    """Runs after the other rules and the suppressions, with every `noqa` directive of the list or program."""
     from . import known_codes, selector_problem
 
     known = known_codes()
-    for directive in directives:
+    for directive in suppressions.directives:
         if directive.codes is None:
             if not directive.used:
-                yield _report(ctx, directive, "this `noqa` suppresses no diagnostic; remove it")
+                yield _report(suppressions, directive, "this `noqa` suppresses no diagnostic; remove it")
             continue
         for code in directive.codes:
             if code not in known:
@@ -65,7 +67,7 @@ def check_after(
                 # The did-you-mean part; a prefix (`LIS3`) picks rules elsewhere but is no code for noqa.
                 hint = problem.split("; ", 1)[1] if problem else "noqa takes full codes such as LIS302"
                 yield _report(
-                    ctx,
+                    suppressions,
                     directive,
                     f"`noqa` names the unknown code `{code}`, which suppresses nothing; {hint}",
                 )
@@ -75,12 +77,21 @@ def check_after(
         if unused:
             where = "in this file" if directive.file_level else "on this line"
             yield _report(
-                ctx,
+                suppressions,
                 directive,
                 f"`noqa` for {', '.join(unused)} suppresses nothing {where}; remove "
                 f"{'it' if len(unused) == len(directive.codes) else 'those codes'}",
             )
 
 
-def _report(ctx: Context, directive: Directive, message: str) -> Diagnostic:
-    return ctx.report(CODE, directive.line, message, column=directive.column, end_column=directive.end_column)
+def _report(suppressions: Suppressions, directive: Directive, message: str) -> Diagnostic:
+    return Diagnostic(
+        suppressions.path,
+        directive.line,
+        directive.column,
+        directive.line,
+        directive.end_column,
+        CODE,
+        Severity(SEVERITY),
+        message,
+    )

@@ -49,7 +49,7 @@ from ..units import describe
 
 if TYPE_CHECKING:
     from ..context import Context
-    from . import MachineMember
+    from ..machine import Member
 
 CODE = "LIS316"
 NAME = "gantry-slave-no-homing"
@@ -73,7 +73,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         )
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     by_number = {info["achs_nr"]: (name, info) for name, info in members}
     for name, info in members:
         master = by_number.get(info["gantry_ax_nr"]) if info["gantry_ax_nr"] else None

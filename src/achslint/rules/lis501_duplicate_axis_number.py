@@ -50,7 +50,7 @@ from ..diagnostics import Diagnostic
 from ..machine import Startup, repeated_values
 
 if TYPE_CHECKING:
-    from . import MachineMember
+    from ..machine import Member
 
 CODE = "LIS501"
 NAME = "duplicate-axis-number"
@@ -60,7 +60,7 @@ PARAMETERS = ("kopf.achs_nr",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same logical axis number"
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     yield from repeated_values(
         CODE,
         members,

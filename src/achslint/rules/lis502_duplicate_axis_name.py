@@ -48,7 +48,7 @@ from ..diagnostics import Diagnostic
 from ..machine import Startup, repeated_values
 
 if TYPE_CHECKING:
-    from . import MachineMember
+    from ..machine import Member
 
 CODE = "LIS502"
 NAME = "duplicate-axis-name"
@@ -58,7 +58,7 @@ PARAMETERS = ("kopf.log_achs_name",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same axis name"
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     yield from repeated_values(
         CODE,
         members,

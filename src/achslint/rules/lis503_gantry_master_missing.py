@@ -49,7 +49,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..machine import Startup, diagnostic
 
 if TYPE_CHECKING:
-    from . import MachineMember
+    from ..machine import Member
 
 CODE = "LIS503"
 NAME = "gantry-master-missing"
@@ -59,7 +59,7 @@ PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule rea
 SUMMARY = "Gantry slave whose master axis is not in the machine"
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     numbers = {info["achs_nr"] for _, info in members}
     for member in members:
         master = member[1]["gantry_ax_nr"]

@@ -56,8 +56,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..files import same_file
 
 if TYPE_CHECKING:
-    from ..machine import Startup
-    from . import MachineMember
+    from ..machine import Member, Startup
 
 CODE = "LIS504"
 NAME = "missing-list"
@@ -73,7 +72,7 @@ _KINDS = {
 }
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     for startup in startups:
         defaults = [entry for entry in (startup.default, startup.default_channel) if entry is not None]
         for entry in [*defaults, *startup.axes, *startup.channels]:

@@ -66,7 +66,7 @@ from ..diagnostics import Diagnostic, Related, Severity
 from ..machine import Startup, diagnostic, gantry_pairs
 
 if TYPE_CHECKING:
-    from . import MachineMember
+    from ..machine import Member
 
 CODE = "LIS510"
 NAME = "gantry-homing-type-mismatch"
@@ -80,7 +80,7 @@ PARAMETERS = (
 SUMMARY = "Gantry master and slave with different homing types"
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     for slave, master in gantry_pairs(members):
         if master is None or slave[1]["homing_type"] == master[1]["homing_type"]:
             continue
@@ -97,14 +97,14 @@ def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iter
         )
 
 
-def advice(master: MachineMember) -> str:
+def advice(master: Member) -> str:
     kind = master[1]["homing_type"]
     if kind == "DRIVE_CONTROLLED":  # what the master runs is itself refused for a gantry (LIS511)
         return "Choose one homing type other than DRIVE_CONTROLLED for both lists (P-ERR-50429, LIS511)"
     return f"Use {kind} in both lists"
 
 
-def homing(member: MachineMember) -> str:
+def homing(member: Member) -> str:
     """`with TORQ`, or `with DRIVE_CONTROLLED (kenngr.homing.homing_type not written in its list)`."""
     info = member[1]
     unset = "" if info["homing_type_at"] else " (kenngr.homing.homing_type not written in its list)"

@@ -75,7 +75,7 @@ from ..diagnostics import Diagnostic, Related, Severity
 from ..machine import Startup, diagnostic, gantry_pairs
 
 if TYPE_CHECKING:
-    from . import MachineMember
+    from ..machine import Member
 
 CODE = "LIS511"
 NAME = "gantry-drive-controlled-homing"
@@ -91,8 +91,8 @@ SUMMARY = "Drive-controlled homing on a gantry pair"
 DRIVE = "DRIVE_CONTROLLED"
 
 
-def check_machine(members: list[MachineMember], startups: list[Startup]) -> Iterator[Diagnostic]:
-    slaves: dict[int, tuple[MachineMember, list[MachineMember]]] = {}  # by id of the master's summary
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+    slaves: dict[int, tuple[Member, list[Member]]] = {}  # by id of the master's summary
     for slave, master in gantry_pairs(members):
         if master is not None:
             slaves.setdefault(id(master[1]), (master, []))[1].append(slave)
@@ -115,7 +115,7 @@ def _slave(name: str, info: dict[str, Any]) -> Related:
     return Related(name, line, column, "kenngr.gantry_ax_nr", "slave")
 
 
-def _finding(member: MachineMember, who: str, related: list[Related]) -> Diagnostic:
+def _finding(member: Member, who: str, related: list[Related]) -> Diagnostic:
     written = member[1]["homing_type_at"]
     how = "" if written else " (kenngr.homing.homing_type not written in this list)"
     return diagnostic(
