@@ -204,3 +204,11 @@ def test_the_id_walk_sees_equality_membership_and_prefix_tests() -> None:
         'e = {"id": strategy.id}\n'  # reporting the id is fine
     )
     assert _strategy_id_tests(ast.parse(source), {"fixed_stop", "disabled", "absolute"}) == [1, 2, 3]
+
+
+def test_the_package_keeps_naming_the_registry_function_once_the_strategies_are_loaded() -> None:
+    import achslint.homing
+    from achslint.homing import registry
+
+    classify(resolve_bytes(b"kenngr.antr_typ 1\nEnde\n", "x.lis"))  # loads every module of homing/strategies/
+    assert achslint.homing.strategies is registry.strategies

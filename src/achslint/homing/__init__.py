@@ -14,6 +14,9 @@ Rules, `explain` and `dry-run` all import from here; adding a strategy means one
 module in `strategies/`, one line in `registry.STRATEGY_MODULES` and fixtures.
 """
 
+# The subpackage `strategies` is loaded before the function of that name is bound here: loading it later (the
+# registry imports its modules on first use) would make `achslint.homing.strategies` the package.
+from . import strategies as _strategy_modules  # noqa: F401
 from .base import NEGATIVE, POSITIVE, HomingStrategy, Phase, StrategyDef, Use
 from .parameters import HOMING_PARAMETERS
 from .registry import (
