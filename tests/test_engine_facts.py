@@ -21,27 +21,9 @@ from achslint.rules import lis405_zero_pulse_near_cam_edge as lis405
 from achslint.scenario import ScenarioInput
 from achslint.syntax import parse_bytes
 
+from .engine_scene import SCENE, listed
+
 HOMING = Path(__file__).resolve().parents[1] / "src" / "achslint" / "homing"
-
-# Conventional drive, homing negative: fast 100 mm/s, slow 10 mm/s, 500 mm/s², pos_refpkt -950 mm.
-AXIS = (
-    "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
-    "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
-    "getriebe[0].pos_refpkt -9500000\n"
-)
-SCENE = {
-    "start_position": 0.0,
-    "cam": (-120.0, -100.0),
-    "zero_pulse_period": 5.0,
-    "zero_pulse_phase": -102.5,
-    "hardware_latch": True,
-    "cycle_time_ms": 1.0,
-    "limit_switches": (-1010.0, 1010.0),
-}
-
-
-def listed(extra: str = "") -> bytes:
-    return (AXIS + extra + "Ende\n").encode()
 
 
 def test_a_pulse_near_the_arming_point_is_a_fact_with_the_numbers_lis405_words() -> None:
