@@ -1,10 +1,36 @@
-"""The real entry point (`python -m achslint`), real files on disk, exit codes."""
+"""The real entry point (`python -m achslint`), real files on disk, exit codes: version and bare command,
+colour, option and configuration mistakes, files that cannot be written, the crash guard."""
 
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
+from pathlib import Path
+from subprocess import CompletedProcess
+
+import pytest
+
+from achslint import __version__
 
 from .conftest import FIXTURES
+
+Cli = Callable[..., CompletedProcess]
+X_AXIS = str(FIXTURES / "lists" / "achsmds1.lis")
+BROKEN_CONFIG = "select = [\n"
+
+
+def err(result: CompletedProcess) -> str:
+    return result.stderr.decode()
+
+
+def out(result: CompletedProcess) -> str:
+    return result.stdout.decode()
+
+
+def bad_list(folder: Path) -> Path:
+    path = folder / "achsmds1.lis"
+    path.write_text("kopf.achs_nr  1\nkenngr.ref_richt  7\nEnd\n", encoding="latin-1")
+    return path
 
 
 def test_bundled_lists_lint_clean(cli):
@@ -150,3 +176,78 @@ def test_cycle_time_and_tolerance_options_drive_lis403(cli):
     assert ": LIS403 [warning]" in run()
     assert run("--repeatability-tolerance-um", "150") == "All checks passed!\n"
     assert "about 200 µm" in run("--repeatability-tolerance-um", "150", "--cycle-time-us", "2000")
+
+
+def test_version_and_bare_command(cli: Cli) -> None:
+    version = cli("--version")
+    assert version.returncode == 0 and out(version) == f"achslint {__version__}\n"
+    bare = cli()
+    assert bare.returncode == 2
+    assert "Usage: achslint [OPTIONS] COMMAND [ARGS]..." in out(bare)  # the help is the answer
+
+
+def test_force_color_colours_the_report(cli: Cli, tmp_path: Path) -> None:
+    path = bad_list(tmp_path)
+    coloured = cli("lint", str(path), "--format", "full", env={"NO_COLOR": None, "FORCE_COLOR": "1"})
+    plain = cli("lint", str(path), "--format", "full")
+    assert coloured.returncode == plain.returncode == 1
+    assert "\x1b[" in out(coloured) and "\x1b[" not in out(plain)
+
+
+def test_unsafe_fixes_need_fix_or_diff(cli: Cli, tmp_path: Path) -> None:
+    result = cli("lint", str(bad_list(tmp_path)), "--unsafe-fixes")
+    assert result.returncode == 2
+    assert "--unsafe-fixes goes with --fix or --diff" in err(result)
+
+
+def test_quiet_fix_says_nothing_about_the_count(cli: Cli, tmp_path: Path) -> None:
+    path = bad_list(tmp_path)
+    result = cli("lint", str(path), "--fix", "--quiet")
+    assert result.returncode == 1  # the wrong type is not fixable
+    assert "fixed" not in err(result)
+    assert path.read_text(encoding="latin-1").endswith("Ende\n")
+
+
+def test_an_output_file_that_cannot_be_written_is_exit_2(cli: Cli, tmp_path: Path) -> None:
+    target = tmp_path / "missing" / "report.txt"
+    result = cli("lint", str(bad_list(tmp_path)), "--output-file", str(target))
+    assert result.returncode == 2
+    assert f"cannot write {target}: no such file or directory" in err(result)
+
+
+def test_a_broken_configuration_in_the_working_directory_stops_the_report(
+    cli: Cli, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    lists, here = tmp_path / "lists", tmp_path / "here"
+    lists.mkdir(), here.mkdir()
+    (here / ".achslint.toml").write_text(BROKEN_CONFIG, encoding="utf-8")
+    monkeypatch.chdir(here)
+    result = cli("lint", str(bad_list(lists)))  # the docs URL is a setting of the working directory
+    assert result.returncode == 2
+    assert ".achslint.toml" in err(result) and "Traceback" not in err(result)
+
+
+def test_fmt_and_config_with_a_broken_configuration_are_exit_2(cli: Cli, tmp_path: Path) -> None:
+    (tmp_path / ".achslint.toml").write_text(BROKEN_CONFIG, encoding="utf-8")
+    path = bad_list(tmp_path)
+    for args in (("fmt", str(path)), ("config", "--show", str(path))):
+        result = cli(*args)
+        assert result.returncode == 2, args
+        assert str(tmp_path / ".achslint.toml") in err(result), args
+    nothing = cli("config", str(path))
+    assert nothing.returncode == 2
+    assert "nothing to do; use `achslint config --show [PATH]`" in err(nothing)
+
+
+def test_an_internal_error_is_one_line_unless_debugging(cli: Cli, monkeypatch: pytest.MonkeyPatch) -> None:
+    def broken(*args: object, **kwargs: object) -> None:
+        raise RuntimeError("something unexpected")
+
+    monkeypatch.setattr("achslint.api.run_lint", broken)
+    result = cli("lint", X_AXIS)
+    assert result.returncode == 2
+    assert err(result) == (
+        "achslint: internal error: RuntimeError: something unexpected (run with --debug for details)\n"
+    )
+    with pytest.raises(RuntimeError, match="something unexpected"):
+        cli("lint", X_AXIS, "--debug")

@@ -81,3 +81,28 @@ def test_plot_png_and_svg(cli, tmp_path):
     assert cli("dry-run", X_AXIS, "--plot", str(svg)).returncode == 0
     assert b"<svg" in svg.read_bytes()[:500]
     assert cli("dry-run", X_AXIS, "--plot", str(tmp_path / "homing.gif")).returncode == 2
+
+
+def test_dry_run_scenarios_that_cannot_be_read(cli, tmp_path):
+    folder = cli("dry-run", X_AXIS, "--scenario", str(tmp_path))
+    assert folder.returncode == 2
+    assert (
+        folder.stderr.decode() == f"achslint: cannot read scenario {tmp_path}: it is a folder, not a file\n"
+    )
+    latin = tmp_path / "scenario.toml"
+    latin.write_bytes("# Nocken bei -100 µm\ncam = [-120.0, -100.0]\n".encode("latin-1"))
+    not_utf8 = cli("dry-run", X_AXIS, "--scenario", str(latin))
+    assert not_utf8.returncode == 2
+    assert (
+        not_utf8.stderr.decode()
+        == f"achslint: {latin}: scenario is not UTF-8 text (byte 19); save it as UTF-8\n"
+    )
+
+
+def test_dry_run_sweep_as_text(cli):
+    result = cli("dry-run", X_AXIS, "--sweep", "20", "--cam-jitter", "0.01")
+    assert result.returncode == 1  # some starts of the assumed geometry run into a limit switch
+    text = result.stdout.decode()
+    assert "NOTE: the sweep runs in an ASSUMED geometry" in text
+    assert "Sweep of 20 runs (start between -1010 and 1010 mm): failed ×" in text
+    assert "  failed: limit switch reached ×" in text
