@@ -1,4 +1,5 @@
-"""`achslint server` end to end: a real LSP client (pytest-lsp) talks to the server over stdio."""
+"""`achslint server` end to end: a real LSP client (pytest-lsp) talks to the server over stdio; a second
+server answers a plain client (plain text, no snippets, UTF-8 positions)."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ import os
 import random
 import shutil
 import sys
+from collections.abc import AsyncIterator
 from pathlib import Path
 
 import pytest
@@ -472,3 +474,207 @@ async def test_random_bytes_give_diagnostics_never_a_crash(client: LanguageClien
     uri = open_doc(client, folder / "random" / "achsmds_ok.lis", "kopf.achs_nr  1\nEnd\n")
     assert "LIS004" in codes(await diagnostics_when(client, uri))
     close_doc(client, uri)
+
+
+# -- a plain client: plain-text hovers, no snippets, UTF-8 positions, no inlay hints --------------------------
+# Its own server: requests for documents it does not know or cannot offer anything for; saves, watched files
+# and settings that change what is published.
+
+PLAIN_CLIENT = lsp.ClientCapabilities(
+    general=lsp.GeneralClientCapabilities(position_encodings=[lsp.PositionEncodingKind.Utf8]),
+    text_document=lsp.TextDocumentClientCapabilities(
+        hover=lsp.HoverClientCapabilities(content_format=[lsp.MarkupKind.PlainText]),
+        completion=lsp.CompletionClientCapabilities(
+            completion_list=lsp.CompletionListCapabilities(item_defaults=["editRange"])
+        ),
+    ),
+)
+XML = (
+    '<?xml version="1.0" encoding="utf-8"?>\n'
+    "<TcSmItem>\n"
+    "  <AchsMds><![CDATA[kopf.achs_nr  1\n"
+    "kenngr.ref_richt  1\n"
+    "Ende\n"
+    "]]></AchsMds>\n"
+    "</TcSmItem>\n"
+)
+
+
+@pytest_lsp.fixture(
+    scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "achslint", "server"])
+)
+async def plain_client(
+    lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory
+) -> AsyncIterator[None]:
+    root = tmp_path_factory.mktemp("plain")
+    await lsp_client.initialize_session(
+        lsp.InitializeParams(
+            capabilities=PLAIN_CLIENT, root_uri=root.as_uri(), initialization_options={"debounceMs": 0}
+        )
+    )
+    yield
+    await lsp_client.shutdown_session()
+
+
+def document(uri: str) -> lsp.TextDocumentIdentifier:
+    return lsp.TextDocumentIdentifier(uri)
+
+
+ALL = lsp.Range(lsp.Position(0, 0), lsp.Position(20, 0))
+FORMAT = lsp.FormattingOptions(4, True)
+
+
+async def test_plain_text_hover_utf8_positions_and_an_edit_range_default(
+    plain_client: LanguageClient, tmp_path: Path
+) -> None:
+    uri = open_doc(plain_client, tmp_path / "achsmds1.lis", "kenngr.ref_richt  µ\nkenngr.achs_typ  1\nEnde\n")
+    [wrong] = await diagnostics_when(plain_client, uri, lambda f: bool(f))
+    assert wrong.code == "LIS201"
+    # the value starts at code point 18; `µ` is one code point but two UTF-8 bytes
+    assert (wrong.range.start.character, wrong.range.end.character) == (18, 20)
+    hover = await plain_client.text_document_hover_async(lsp.HoverParams(document(uri), lsp.Position(1, 3)))
+    assert hover.contents.kind == lsp.MarkupKind.PlainText
+    assert (
+        hover.contents.value.startswith("P-AXIS-00018 kenngr.achs_typ\n") and "**" not in hover.contents.value
+    )
+    found = await plain_client.text_document_completion_async(
+        lsp.CompletionParams(document(uri), lsp.Position(1, len("kenngr.achs")))
+    )
+    assert found.item_defaults.edit_range == lsp.Range(lsp.Position(1, 0), lsp.Position(1, 11))
+    assert all(i.text_edit is None for i in found.items)
+    assert all(i.insert_text_format != lsp.InsertTextFormat.Snippet for i in found.items)  # not supported
+    hints = await plain_client.text_document_inlay_hint_async(lsp.InlayHintParams(document(uri), ALL))
+    assert list(hints) == []  # inlay hints are off unless the editor turns them on
+    close_doc(plain_client, uri)
+
+
+async def test_requests_for_documents_the_server_does_not_know(
+    plain_client: LanguageClient, tmp_path: Path
+) -> None:
+    uri = (tmp_path / "never-opened.lis").as_uri()
+    where = lsp.Position(0, 0)
+    change(plain_client, uri, 2, "kopf.achs_nr  1\n")  # ignored: not open
+    assert await plain_client.text_document_hover_async(lsp.HoverParams(document(uri), where)) is None
+    assert (
+        await plain_client.text_document_completion_async(lsp.CompletionParams(document(uri), where)) is None
+    )
+    actions = lsp.CodeActionParams(document(uri), ALL, lsp.CodeActionContext([]))
+    assert list(await plain_client.text_document_code_action_async(actions)) == []
+    assert (
+        list(
+            await plain_client.text_document_formatting_async(
+                lsp.DocumentFormattingParams(document(uri), FORMAT)
+            )
+        )
+        == []
+    )
+    assert (
+        list(await plain_client.text_document_definition_async(lsp.DefinitionParams(document(uri), where)))
+        == []
+    )
+    assert (
+        list(await plain_client.text_document_inlay_hint_async(lsp.InlayHintParams(document(uri), ALL))) == []
+    )
+    assert uri not in plain_client.diagnostics
+
+
+async def test_xml_documents_offer_diagnostics_and_hovers_only(
+    plain_client: LanguageClient, tmp_path: Path
+) -> None:
+    uri = open_doc(plain_client, tmp_path / "Axis_X.xti", XML, language="xml")
+    assert await diagnostics_when(plain_client, uri) == []
+    hover = await plain_client.text_document_hover_async(lsp.HoverParams(document(uri), lsp.Position(3, 3)))
+    assert hover.contents.value.startswith("P-AXIS-00158 kenngr.ref_richt")
+    outside = await plain_client.text_document_hover_async(lsp.HoverParams(document(uri), lsp.Position(1, 3)))
+    assert outside is None  # <TcSmItem>: not a line of the list
+    where = lsp.Position(3, 3)
+    assert (
+        await plain_client.text_document_completion_async(lsp.CompletionParams(document(uri), where)) is None
+    )
+    assert (
+        list(
+            await plain_client.text_document_formatting_async(
+                lsp.DocumentFormattingParams(document(uri), FORMAT)
+            )
+        )
+        == []
+    )
+    assert (
+        list(await plain_client.text_document_document_symbol_async(lsp.DocumentSymbolParams(document(uri))))
+        == []
+    )
+    assert (
+        list(await plain_client.text_document_definition_async(lsp.DefinitionParams(document(uri), where)))
+        == []
+    )
+    # an edit that breaks the XML: one error, and nothing to hover
+    change(plain_client, uri, 2, XML.replace("]]>", ""))
+    [broken] = await diagnostics_when(plain_client, uri, lambda f: bool(f))
+    assert "not well-formed XML" in broken.message and broken.severity == lsp.DiagnosticSeverity.Error
+    assert await plain_client.text_document_hover_async(lsp.HoverParams(document(uri), where)) is None
+    close_doc(plain_client, uri)
+
+
+async def test_saving_a_configuration_or_a_change_on_disk_republishes(
+    plain_client: LanguageClient, tmp_path: Path
+) -> None:
+    path = tmp_path / "achsmds1.lis"
+    text = "kopf.achs_nr  1\nkenngr.ref_richt  7\nEnd\n"
+    path.write_text(text, encoding="latin-1")
+    uri = open_doc(plain_client, path, text)
+    assert codes(await diagnostics_when(plain_client, uri)) == ["LIS004", "LIS201"]
+    config = tmp_path / ".achslint.toml"
+    config.write_text('ignore = ["LIS201"]\n', encoding="utf-8")
+    plain_client.diagnostics.pop(uri)
+    plain_client.text_document_did_save(lsp.DidSaveTextDocumentParams(document(config.as_uri())))
+    assert codes(await diagnostics_when(plain_client, uri)) == ["LIS004"]
+    config.write_text('ignore = ["LIS004"]\n', encoding="utf-8")
+    plain_client.diagnostics.pop(uri)
+    plain_client.workspace_did_change_watched_files(
+        lsp.DidChangeWatchedFilesParams([lsp.FileEvent(config.as_uri(), lsp.FileChangeType.Changed)])
+    )
+    assert codes(await diagnostics_when(plain_client, uri)) == ["LIS201"]
+    config.unlink()
+    plain_client.diagnostics.pop(uri)
+    plain_client.workspace_did_change_configuration(lsp.DidChangeConfigurationParams(settings=None))
+    assert codes(await diagnostics_when(plain_client, uri)) == ["LIS004", "LIS201"]
+    # saving a list that is not open changes nothing; saving the open list checks it at once
+    plain_client.text_document_did_save(
+        lsp.DidSaveTextDocumentParams(document((tmp_path / "other.lis").as_uri()))
+    )
+    plain_client.diagnostics.pop(uri)
+    plain_client.text_document_did_save(lsp.DidSaveTextDocumentParams(document(uri)))
+    assert codes(await diagnostics_when(plain_client, uri)) == ["LIS004", "LIS201"]
+    close_doc(plain_client, uri)
+
+
+async def test_after_quick_edits_the_last_text_counts(plain_client: LanguageClient, tmp_path: Path) -> None:
+    plain_client.workspace_did_change_configuration(
+        lsp.DidChangeConfigurationParams({"debounceMs": 50, "inlayHints": True})
+    )
+    try:
+        uri = open_doc(plain_client, tmp_path / "achsmds1.lis", "kopf.achs_nr  1\nEnde\n")
+        assert await diagnostics_when(plain_client, uri) == []
+        plain_client.diagnostics.pop(uri)
+        change(plain_client, uri, 2, "kopf.achs_nr  1\nEnd\n")
+        change(plain_client, uri, 3, "kopf.achs_nr  1\nkopf.achs_nr  2\nEnde\n")
+        assert codes(await diagnostics_when(plain_client, uri)) == ["LIS005"]
+        # closing a list with a check still pending clears its diagnostics for good
+        change(plain_client, uri, 4, "kopf.achs_nr  1\nEnd\n")
+        close_doc(plain_client, uri)
+        assert await diagnostics_when(plain_client, uri, lambda f: not f) == []
+        untitled = "untitled:Untitled-1"
+        plain_client.text_document_did_open(
+            lsp.DidOpenTextDocumentParams(
+                lsp.TextDocumentItem(untitled, "achsmds", 1, "kopf.achs_nr 1\nEnd\n")
+            )
+        )
+        assert codes(await diagnostics_when(plain_client, untitled)) == ["LIS004"]
+        close_doc(plain_client, untitled)
+        assert await diagnostics_when(plain_client, untitled, lambda f: not f) == []
+        hints = await plain_client.text_document_inlay_hint_async(
+            lsp.InlayHintParams(document(untitled), ALL)
+        )
+        assert list(hints) == []  # closed: nothing to show
+    finally:
+        plain_client.workspace_did_change_configuration(lsp.DidChangeConfigurationParams({"debounceMs": 0}))
