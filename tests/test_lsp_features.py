@@ -1,6 +1,7 @@
-"""The language server's answers computed in-process: `lsp.session` (what a document's findings and
-machine are) and `lsp.features` (hover, completion, code actions, formatting, definitions, inlay hints)
-for the cases the end-to-end tests in test_lsp.py do not reach."""
+"""The language server's answers, computed in this process without a client: what the session makes of a
+document (its findings, its configuration, its machine: start-up lists, default lists, neighbours on disk
+or in open buffers) and what the features answer for it (hover, rule documentation links, code actions,
+completion, formatting, definitions, inlay hints). test_lsp.py runs the server end to end."""
 
 from __future__ import annotations
 
