@@ -451,24 +451,33 @@ async def test_random_bytes_give_diagnostics_never_a_crash(client: LanguageClien
         uri = open_doc(client, folder / "random" / f"achsmds{number}.lis", text)
         found = await diagnostics_when(client, uri)
         assert found, f"sample {number}"
+        lines = text.count("\n") + text.count("\r") + 1  # an upper bound of the LSP lines
         for line in (0, 1, 5):
-            await hover_at(client, uri, line, 3)
-            await client.text_document_completion_async(
-                lsp.CompletionParams(lsp.TextDocumentIdentifier(uri), lsp.Position(line, 3))
+            where = lsp.Position(line, 3)
+            hover = await client.text_document_hover_async(
+                lsp.HoverParams(lsp.TextDocumentIdentifier(uri), where)
             )
-        await client.text_document_formatting_async(
+            assert hover is None or hover.contents.value  # a card with words, or nothing
+            offered = await client.text_document_completion_async(
+                lsp.CompletionParams(lsp.TextDocumentIdentifier(uri), where)
+            )
+            assert offered is None or all(item.label for item in offered.items)
+        edits = await client.text_document_formatting_async(
             lsp.DocumentFormattingParams(lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True))
         )
-        await client.text_document_document_symbol_async(
+        assert all(0 <= e.range.start.line <= e.range.end.line <= lines for e in edits or [])
+        symbols = await client.text_document_document_symbol_async(
             lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri))
         )
-        await client.text_document_code_action_async(
+        assert all(symbol.name for symbol in symbols or [])
+        actions = await client.text_document_code_action_async(
             lsp.CodeActionParams(
                 lsp.TextDocumentIdentifier(uri),
                 lsp.Range(lsp.Position(0, 0), lsp.Position(3, 0)),
                 lsp.CodeActionContext([]),
             )
         )
+        assert all(action.title for action in actions or [])
         close_doc(client, uri)
     # still alive and still right
     uri = open_doc(client, folder / "random" / "achsmds_ok.lis", "kopf.achs_nr  1\nEnd\n")

@@ -59,9 +59,18 @@ def test_references_normalise_the_id_and_limit_the_digits():
 
 @settings(max_examples=examples(100))
 @given(st.text(max_size=60))
-def test_no_text_makes_a_parser_raise(text):
-    for parse in (parse_int, parse_hex, parse_real, parse_reference):
-        parse(text)
+def test_any_text_is_a_number_or_a_stated_problem(text):
+    for parse, kind in (
+        (parse_int, int),
+        (parse_hex, int),
+        (parse_real, float),
+        (parse_reference, Reference),
+    ):
+        value = parse(text)
+        if isinstance(value, NumberProblem):
+            assert value.reason in ("digits", "range", "syntax") and str(value), (parse.__name__, text)
+        else:
+            assert isinstance(value, kind), (parse.__name__, text, value)
 
 
 def test_unit_formatting_takes_any_value():

@@ -107,11 +107,20 @@ def test_cli_never_prints_a_traceback(data):
     assert b"Traceback" not in result.stderr
 
 
+def _refusal(error: Exception) -> str:
+    """The message of a refusal, checked: what the CLI prints after `achslint: ` is one line with words."""
+    message = str(error)
+    assert message.strip() and "\n" not in message, repr(message)
+    return message
+
+
 def _readable_or_refused(call):
-    """Run `call`; the only acceptable failure is input that is not a list at all (UTF-16/32)."""
+    """Run `call`; the only acceptable failure is input that is not a list at all (UTF-16/32, binary),
+    refused with a one-line message."""
     try:
         return call()
-    except UnreadableInput:
+    except UnreadableInput as refusal:
+        _refusal(refusal)
         return None
 
 
@@ -129,18 +138,26 @@ def test_any_bytes_give_a_typed_model_or_a_clear_refusal(data):
 
 @settings(max_examples=examples(100), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(RAW, RAW)
-def test_any_bytes_explain_diff_and_dry_run_without_exception(data, other):
+def test_any_bytes_explain_diff_and_dry_run_give_a_report_or_a_refusal(data, other):
     report = _readable_or_refused(lambda: explain_list(data, "fuzz.lis"))
     if report is not None:
         json.dumps(report)  # the JSON output of `explain` must always be serialisable
+        assert report["file"] == "fuzz.lis" and report["strategy"]["id"]
+        assert isinstance(report["phases"], list)
     diff = _readable_or_refused(lambda: diff_lists(data, "a.lis", other, "b.lis"))
     if diff is not None:
         json.dumps(diff)
+        assert (diff["a"], diff["b"]) == ("a.lis", "b.lis")
+        assert all(d["parameter"] for d in diff["differences"])
     try:
         run = dry_run(data, "fuzz.lis")
-    except (UnreadableInput, ScenarioError):  # refused with a message the CLI prints
+    except (UnreadableInput, ScenarioError) as refusal:  # refused with a message the CLI prints
+        _refusal(refusal)
         return
-    json.dumps(trace_json(run))
+    trace = trace_json(run)
+    json.dumps(trace)
+    assert trace["strategy"]["id"] and isinstance(trace["phases"], list)
+    assert trace["outcome"] != "failed" or trace["failure"]  # a failed run says why
 
 
 XML_PIECES = st.sampled_from(
