@@ -1,6 +1,6 @@
 """The axis and the scene the dry-run engine tests work their numbers out on (test_engine.py,
-test_engine_facts.py), and the drive-side homing set-up: one copy, so a hand-computed figure in one file
-means the same axis as in the other.
+test_engine_facts.py, test_dryrun_fidelity.py), and the drive-side homing set-up: one copy, so a hand-computed
+figure in one file means the same axis as in the others.
 
 AXIS: a conventional drive (antr_typ 1), linear, homing negative (ref_richt 0), fast off the cam; fast
 100 mm/s (vb_refmax), slow 10 mm/s (vb_reflow), 500 mm/s² (a_ref), pos_refpkt -950 mm. Ramps are

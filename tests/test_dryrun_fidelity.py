@@ -23,12 +23,10 @@ from achslint.output.dryrun import render, sweep_words, trace_json
 from achslint.scenario import ScenarioError, ScenarioInput, parse_input
 
 from .conftest import FIXTURES, examples
+from .engine_scene import AXIS as SHARED_AXIS
+from .engine_scene import SCENE, approx
 
 X_AXIS = FIXTURES / "lists" / "achsmds1.lis"
-
-
-def approx(value, expected, tolerance=1e-9):
-    return value == pytest.approx(expected, abs=tolerance)
 
 
 # --- spindles: modulo and flying homing (§2.3.2.1) --------------------------------------------------
@@ -176,19 +174,8 @@ def test_rotary_modulo_axis_reaches_a_cam_behind_it_without_limit_switches():
 
 # --- the CNC's corrections are what the simulation uses, and they show ---------------------------
 
-AXIS = (
-    "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"
-    "getriebe[0].vb_refmax 100000\ngetriebe[0].vb_reflow 10000\ngetriebe[0].a_ref 500\n"
-)
-SCENE = {
-    "start_position": 0.0,
-    "cam": (-120.0, -100.0),
-    "zero_pulse_period": 5.0,
-    "zero_pulse_phase": -102.5,
-    "hardware_latch": True,
-    "cycle_time_ms": 1.0,
-    "limit_switches": (-1010.0, 1010.0),
-}
+# The axis of engine_scene without its pos_refpkt (so the reference value is the default 0), in its scene.
+AXIS = SHARED_AXIS.replace("getriebe[0].pos_refpkt -9500000\n", "")
 
 
 def linear(extra: str = "", **scene):
