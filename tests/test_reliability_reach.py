@@ -305,7 +305,7 @@ def test_5_files_over_their_size_limit_are_refused(tmp_path, name, limit, args):
         stream.truncate(limit + 1)
     result = _run(tmp_path, *args)
     assert result.returncode == 2
-    assert b"more than the" in result.stderr and name.encode() in result.stderr
+    assert b"achslint reads" in result.stderr and name.encode() in result.stderr
 
 
 def test_5_the_reader_reads_at_most_the_limit(tmp_path):
@@ -394,3 +394,40 @@ def test_11_text_with_a_lone_surrogate_is_linted_not_a_crash():
     found = lint_text("kopf.achs_nr 1\nkopf.na\ud800me 1\nEnde\n")
     assert [(d.code, d.line) for d in found] == [("LIS001", 2)]  # `?` in a name: not a parameter line
     assert xml_bytes('<?xml version="1.0" encoding="latin-1"?><a>\ud800</a>').endswith(b"<a>?</a>")
+
+
+@pytest.mark.parametrize(
+    ("setting", "words"),
+    [
+        ('cnc-root = "a\\u0000b"', "NUL character"),
+        ('homing-programs = ["\\u0000.nc"]', "NUL character"),
+    ],
+)
+def test_3_a_nul_in_a_configured_path_is_a_configuration_error(tmp_path, setting, words):
+    """Found by a review: an internal error (ValueError: embedded null byte) before."""
+    (tmp_path / "achslint.toml").write_text(setting + "\n")
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    result = _run(tmp_path, "lint", "achsmds1.lis")
+    assert result.returncode == 2
+    assert words.encode() in result.stderr and b"internal error" not in result.stderr
+
+
+def test_4_an_over_long_homing_program_name_is_one_short_line(tmp_path):
+    """Found by a review: OSError (file name too long) as an internal error, echoing the whole name."""
+    repository = _programs_repository(tmp_path, '"' + "b" * 5000 + '.nc"')
+    result = _run(repository, "lint", "listen/hochlauf.lis")
+    assert result.returncode == 2
+    message = result.stderr.decode()
+    assert "a name too long for the file system" in message and "internal error" not in message
+    assert len(message) < 400
+
+
+def test_5_an_oversize_channel_list_or_axis_list_entry_is_a_finding(tmp_path):
+    """Found by a review: a 20 GB channel list passed as "All checks passed!"."""
+    startup = _machine(tmp_path, entries="sda_mds[0]  ./listen/sda_mds1.lis\nachs_mds[1]  ./listen/big.lis\n")
+    for name in ("sda_mds1.lis", "big.lis"):
+        with open(tmp_path / "listen" / name, "wb") as stream:
+            stream.truncate(LIST_LIMIT + 1)
+    result = _run(tmp_path, "lint", str(startup.relative_to(tmp_path)), "--format", "json")
+    messages = _lis504(result)
+    assert len(messages) == 2 and all("larger than the 64 MB achslint reads" in m for m in messages)

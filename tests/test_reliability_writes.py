@@ -182,17 +182,34 @@ def test_1_a_failed_restore_is_said_plainly(tmp_path, monkeypatch):
     target.write_bytes(MESSY)
     os.link(target, tmp_path / "copy.lis")
     calls = []
+    real = os.pwrite
 
-    def failing(fd: int, data: bytes, offset: int) -> int:
+    def failing(fd: int, data, offset: int) -> int:
         calls.append(offset)
+        if len(calls) == 1:  # the first 3 bytes of the new text go in, then the disk is full
+            return real(fd, bytes(data[:3]), offset)
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(files.os, "pwrite", failing)
     with pytest.raises(WriteFailed) as caught:
         write_atomically(target, MESSY + b"more", expected=MESSY)
-    assert "no space left" in str(caught.value).lower() or "No space" in str(caught.value)
+    assert "No space left on device" in str(caught.value)
     assert "version control or a backup" in str(caught.value)
-    assert len(calls) == 2  # the write, then the attempt to put the old bytes back
+    assert calls == [0, 3, 0]  # the write, its continuation, then the attempt to put 3 old bytes back
+
+
+def test_1_a_list_larger_than_the_limit_is_restored_where_it_was_written(tmp_path):
+    """The file-size limit lies inside the old content: only the bytes written before the write stopped
+    are put back (writing the whole old content again would hit the same limit and wrongly report the
+    list as damaged)."""
+    original = b"kopf.achs_nr 1\n" + b"kenngr.achs_typ     1\n" * 400 + b"Ende\n"
+    target = tmp_path / "achsmds1.lis"
+    target.write_bytes(original)
+    os.link(target, tmp_path / "copy.lis")
+    done = _achslint("fmt", "achsmds1.lis", cwd=tmp_path, **_limited(len(original) // 2))
+    assert target.read_bytes() == original
+    assert done.returncode == 2
+    assert "its old content was put back" in done.stderr
 
 
 # -- 2. -o/--output-file naming an input --------------------------------------------------------------
@@ -271,3 +288,55 @@ def test_write_failed_is_an_os_error_with_the_cause():
     failure = WriteFailed(Path("a.lis"), OSError(27, "File too large"), UNCHANGED)
     assert isinstance(failure, OSError) and failure.errno == 27
     assert str(failure) == f"cannot write a.lis: File too large; {UNCHANGED}"
+
+
+def _sdk_like(folder: Path) -> None:
+    """A machine with a channel list and default lists, in the SDK layout."""
+    listen = folder / "listen"
+    listen.mkdir(parents=True)
+    (listen / "achsmds1.lis").write_text("kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n")
+    (listen / "default_mds.lis").write_text("kopf.achs_nr 0\nEnde\n")
+    (listen / "sda_mds1.lis").write_text(
+        "gruppe[0].achsen[0].log_achs_nr 1\ngruppe[0].achsen[0].bezeichnung X\nEnde\n"
+    )
+    (listen / "default_sda.lis").write_text("Ende\n")
+    (listen / "hochlauf.lis").write_text(
+        "default_sda_mds ./listen/default_sda.lis\nsda_mds[0] ./listen/sda_mds1.lis\n"
+        "default_achs_mds ./listen/default_mds.lis\nachs_mds[0] ./listen/achsmds1.lis\nEnde\n"
+    )
+    (folder / "pyproject.toml").write_text("[tool.achslint]\nignore = []\n")
+    (folder / "rfp.nc").write_text("%\nN10 G74 X1\nM30\n")
+
+
+@pytest.mark.parametrize(
+    ("args", "output"),
+    [
+        (("lint", "listen/hochlauf.lis"), "pyproject.toml"),  # the configuration found for the lists
+        (("lint", "listen/achsmds1.lis"), "pyproject.toml"),
+        (("lint", "listen/hochlauf.lis"), "listen/sda_mds1.lis"),  # channel lists the start-up list names
+        (("lint", "listen/hochlauf.lis"), "listen/default_sda.lis"),
+        (("lint", "rfp.nc", "--machine", "listen/hochlauf.lis"), "listen/achsmds1.lis"),  # --machine's lists
+        (("lint", "rfp.nc", "--machine", "listen/hochlauf.lis"), "listen/default_sda.lis"),
+    ],
+)
+def test_2_output_file_over_any_file_the_run_reads(cli, tmp_path, monkeypatch, args, output):
+    """Found by a review: the configuration, the channel lists and the lists of --machine were not
+    protected, and the report replaced them."""
+    monkeypatch.chdir(tmp_path)
+    _sdk_like(tmp_path)
+    before = (tmp_path / output).read_bytes()
+    done = cli(*args, "-o", output)
+    assert done.returncode == 2, done.stderr
+    assert b"--output-file" in done.stderr
+    assert (tmp_path / output).read_bytes() == before
+
+
+@pytest.mark.parametrize("target", ["listen/default_sda.lis", "listen/default_mds.lis", "pyproject.toml"])
+def test_2_machine_plot_over_any_file_of_the_machine(cli, tmp_path, monkeypatch, target):
+    monkeypatch.chdir(tmp_path)
+    _sdk_like(tmp_path)
+    os.link(tmp_path / target, tmp_path / "p.svg")
+    before = (tmp_path / target).read_bytes()
+    done = cli("dry-run", "listen/hochlauf.lis", "--program", "rfp.nc", "--plot", "p.svg")
+    assert done.returncode == 2 and b"--plot" in done.stderr
+    assert (tmp_path / target).read_bytes() == before

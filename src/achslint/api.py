@@ -22,6 +22,7 @@ from .config import (
 from .decode import UnreadableInput, decode, text_bytes
 from .diagnostics import Diagnostic, Severity
 from .files import (
+    MISSING,
     ChangedOnDisk,
     Refused,
     Scope,
@@ -372,9 +373,11 @@ class LintRun:
     def run(self, stdin: BinaryIO | None = None, progress: Progress | None = None) -> LintOutcome:
         found = self.discover()
         if self.request.output is not None:
-            read = [t.path for t in [*found.targets, *found.context] if t.path is not None]
-            read += [t.defaults for t in found.targets if t.defaults is not None]
-            read += [s.path for s in self.startups]
+            every = [*found.targets, *found.context]
+            read = [t.path for t in every if t.path is not None]
+            read += [t.defaults for t in every if t.defaults is not None]
+            read += [t.config.path for t in every if t.config.path is not None]
+            read += [path for startup in self.startups for path in startup_files(startup)]
             refuse_output_over_input(self.request.output, read)
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
@@ -593,7 +596,13 @@ def run_lint(
     """
     if request.output is not None:
         named = [*request.paths, *(p for p in (request.machine, request.config_file) if p is not None)]
-        refuse_output_over_input(request.output, [Path(p) for p in named if p != "-"])
+        read = [Path(p) for p in named if p != "-"]
+        if request.machine is not None and any(is_program(path) for path in request.paths):
+            root = Path(request.overrides.cnc_root) if request.overrides.cnc_root else None
+            read += machine_files(Path(request.machine), root, request.config_file)
+        if request.config_file is None:  # the report's settings (docs-url) come from the working directory's
+            read += [path for path in [discover(Path.cwd()).path] if path is not None]
+        refuse_output_over_input(request.output, read)
     programs = [path for path in request.paths if is_program(path)]
     rest = [path for path in request.paths if not is_program(path)]
     run = LintRun(replace(request, paths=rest))
@@ -608,6 +617,26 @@ def run_lint(
         outcome.errors.extend(errors)
     _configured_programs(run, {os.path.realpath(path) for path in programs}, outcome)
     return outcome
+
+
+def startup_files(startup: Startup) -> list[Path]:
+    """Every file a start-up list leads achslint to read: itself and the lists its entries name."""
+    entries = [startup.default, startup.default_channel, *startup.axes, *startup.channels]
+    return [startup.path, *(entry.path for entry in entries if entry is not None and entry.path is not None)]
+
+
+def machine_files(startup: Path, cnc_root: Path | None = None, config_file: str | None = None) -> list[Path]:
+    """The files a machine's start-up list leads achslint to read, with the configuration that applies to
+    it (`config_file`, else the one found above it; its `cnc-root` unless `cnc_root` is given): for the
+    check that a report or plot file is none of them. Nothing when the start-up list cannot be read (the
+    run says so itself). Raises `ConfigError`."""
+    config = load_file(Path(config_file)) if config_file else discover(startup)
+    root = cnc_root or config.cnc_root()
+    try:
+        files = startup_files(read_startup(startup, None, root, "as given" if root else ""))
+    except (OSError, UnreadableInput):
+        return []
+    return files + ([config.path] if config.path is not None else [])
 
 
 def refuse_output_over_input(output: str, inputs: Iterable[Path], option: str = "--output-file") -> None:
@@ -653,10 +682,12 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
             continue
         for path in todo:
             done.add(os.path.realpath(path))
-            if not path.exists():
-                outcome.errors.append(
-                    f"{config.path}: homing-programs names {path.name}, but {_shown(path)} does not exist"
+            missing = not_a_list_file(path)
+            if missing in MISSING:
+                name = (
+                    path.name if len(path.name) <= 80 else f"{path.name[:60]}… ({len(path.name)} characters)"
                 )
+                outcome.errors.append(f"{config.path}: homing-programs names {name}: {missing}")
                 continue
             problem = _not_a_program(path)
             if problem is not None:

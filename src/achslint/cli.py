@@ -352,6 +352,16 @@ def _patterns(values: list[str] | None) -> list[str] | None:
     return [part.strip() for value in values for part in value.split(",") if part.strip()]
 
 
+def _machine_inputs(startup: str, config: str | None) -> list[str]:
+    from .api import machine_files
+    from .config import ConfigError
+
+    try:
+        return [str(path) for path in machine_files(Path(startup), config_file=config)]
+    except ConfigError as exc:
+        _fail(str(exc))
+
+
 def _not_over_inputs(output: str, option: str, inputs: Iterable[str | None]) -> None:
     """Exit 2 when the file an option writes is one of the files the command reads."""
     from .api import OutputIsInput, refuse_output_over_input
@@ -639,6 +649,8 @@ def dry_run_command(
     """Simulate the configured homing before a real axis moves."""
     if plot:
         _not_over_inputs(plot, "--plot", [file, program, scenario, config])
+        if program is not None:  # the machine: every list its start-up list names, and its configuration
+            _not_over_inputs(plot, "--plot", _machine_inputs(file, config))
     if program is not None:
         single = [start, cam, zero_pulse_period, zero_pulse_phase, latch, cycle_time_ms, limit_switches]
         if any(v is not None for v in [*single, fixed_stop, cam_jitter]) or gear:
@@ -727,9 +739,6 @@ def _machine_dry_run(
         _fail(str(exc))
     report = shown.MachineDryRun(run, summary)
     if plot:
-        machine = run.machine
-        lists = [axis.list_path for axis in [*machine.axes.values(), *machine.other_axes]]
-        _not_over_inputs(plot, "--plot", [str(path) for path in [*lists, machine.channel_list] if path])
         try:
             shown.plot(report, plot)
         except OutputFailed as exc:

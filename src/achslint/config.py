@@ -332,6 +332,10 @@ def _check_contained(path: Path, settings: Settings) -> None:
     named = [("cnc-root", settings.cnc_root)] if settings.cnc_root is not None else []
     named += [("homing-programs", program) for program in settings.homing_programs]
     for key, value in named:
+        if "\x00" in value:
+            raise ConfigError(
+                f"configuration error in {path}: key `{key}`: a path cannot hold a NUL character (\\u0000)"
+            )
         target = named_path(path, value)
         if not target.is_relative_to(repository):
             problem = f"lies outside {repository}"

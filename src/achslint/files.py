@@ -108,6 +108,15 @@ def _kernel_file_systems() -> tuple[Path, ...]:
     return tuple(real_path(Path(root)) for root in KERNEL_FILE_SYSTEMS)
 
 
+# What `not_a_list_file` says when there is no file to read at all (as opposed to one that is refused).
+MISSING = (
+    "no such file or directory",
+    "a part of the path is not a folder",
+    "a name too long for the file system",
+    "a symbolic link to a file that does not exist",
+)
+
+
 def not_a_list_file(path: Path) -> str | None:
     """Why `path` cannot be read as a list (missing, a loop, a FIFO, ...); None when it is a regular file."""
     try:
@@ -121,6 +130,8 @@ def not_a_list_file(path: Path) -> str | None:
     kind = _kind(info.st_mode)
     if kind is not None:
         return f"{kind}, not a regular file"
+    if info.st_size > LIST_LIMIT:
+        return f"a file larger than the {_megabytes(LIST_LIMIT)} achslint reads for a list"
     target = real_path(path)
     if any(target == root or root in target.parents for root in _kernel_file_systems()):
         return "a file of the operating system (/proc, /sys, /dev), not an axis list"
@@ -289,26 +300,32 @@ def _write_in_place(target: Path, shown: Path, data: bytes, expected: bytes | No
                 f"{shown} changed while achslint was working on it; nothing written, run again"
             )
         fd = stream.fileno()
+        progress = [0]
         try:
-            _write_all(fd, data)
+            _write_all(fd, data, progress)
             os.ftruncate(fd, len(data))
             os.fsync(fd)
         except OSError as exc:
-            restored = _restore(fd, old)
+            restored = _restore(fd, old, progress[0])
             raise WriteFailed(shown, exc, RESTORED if restored else DAMAGED) from None
 
 
-def _write_all(fd: int, data: bytes) -> None:
-    """Write all of `data` from the start of the file (a short write is continued, an error raised)."""
+def _write_all(fd: int, data: bytes, progress: list[int] | None = None) -> None:
+    """Write all of `data` from the start of the file (a short write is continued, an error raised);
+    `progress[0]` says how many bytes are written when it stops."""
     view, offset = memoryview(data), 0
     while offset < len(view):
         offset += os.pwrite(fd, view[offset:], offset)
+        if progress is not None:
+            progress[0] = offset
 
 
-def _restore(fd: int, old: bytes) -> bool:
-    """Put `old` back as the whole content of an open file; whether that worked."""
+def _restore(fd: int, old: bytes, written: int) -> bool:
+    """Put `old` back as the whole content of an open file of which the first `written` bytes were
+    overwritten; whether that worked. Only those bytes are written again (within the old length: their
+    blocks are still allocated), and the file is cut back to its old length."""
     try:
-        _write_all(fd, old)  # within the old length: those blocks are still allocated
+        _write_all(fd, old[:written])
         os.ftruncate(fd, len(old))
         os.fsync(fd)
     except OSError:

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .diagnostics import Diagnostic, Related, Severity
-from .files import Scope, inside, not_a_list_file, read_list
+from .files import MISSING, Scope, inside, not_a_list_file, read_list
 
 if TYPE_CHECKING:
     from .resolved import ResolvedAxis
@@ -64,14 +64,6 @@ def is_default_list(path: Path) -> bool:
     return fnmatch.fnmatch(path.name.lower(), "default*mds*.lis")
 
 
-_MISSING = (
-    "no such file or directory",
-    "a part of the path is not a folder",
-    "a name too long for the file system",
-    "a symbolic link to a file that does not exist",
-)
-
-
 def _entry_path(raw: str) -> Path:
     """An entry as a path: quotes dropped, Windows separators read as folder separators."""
     text = raw.strip().strip('"')
@@ -114,7 +106,7 @@ def _resolve(
         what = "it is a symbolic link that leads outside" if linked else "it lies outside"
         return None, f"{what} the CNC root {root} ({root_origin})", target
     problem = not_a_list_file(target)
-    if problem in _MISSING:
+    if problem in MISSING:
         return None, None, target
     if problem is not None:
         return None, f"it is {problem}" if problem.startswith("a ") else problem, target
