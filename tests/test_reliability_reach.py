@@ -431,3 +431,11 @@ def test_5_an_oversize_channel_list_or_axis_list_entry_is_a_finding(tmp_path):
     result = _run(tmp_path, "lint", str(startup.relative_to(tmp_path)), "--format", "json")
     messages = _lis504(result)
     assert len(messages) == 2 and all("larger than the 64 MB achslint reads" in m for m in messages)
+
+
+def test_5_a_fifo_entry_is_not_advised_to_be_named_on_the_command_line(tmp_path):
+    """Found by a review: naming a FIFO on the command line is refused too, so that advice led nowhere."""
+    startup = _machine(tmp_path, entries="achs_mds[1]  ./listen/pipe.lis\n")
+    os.mkfifo(tmp_path / "listen" / "pipe.lis")
+    [message] = _lis504(_run(tmp_path, "lint", str(startup.relative_to(tmp_path)), "--format", "json"))
+    assert "a FIFO, not a regular file" in message and message.endswith("name a regular list file there")

@@ -86,7 +86,11 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
                 severity, message = (
                     Severity.WARNING,
                     f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {entry.refused}; "
-                    "set --cnc-root or name the list (or its folder) on the command line to check it",
+                    + (
+                        "set --cnc-root or name the list (or its folder) on the command line to check it"
+                        if "outside the CNC root" in entry.refused
+                        else "name a regular list file there"
+                    ),
                 )
             elif entry.path is None:
                 severity, message = (
