@@ -439,3 +439,15 @@ def test_5_a_fifo_entry_is_not_advised_to_be_named_on_the_command_line(tmp_path)
     os.mkfifo(tmp_path / "listen" / "pipe.lis")
     [message] = _lis504(_run(tmp_path, "lint", str(startup.relative_to(tmp_path)), "--format", "json"))
     assert "a FIFO, not a regular file" in message and message.endswith("name a regular list file there")
+
+
+def test_a_linked_folder_leading_outside_is_skipped_with_a_note(tmp_path):
+    """Found by a review: the README promises a note for links that lead outside; a linked folder had none."""
+    (tmp_path / "out").mkdir()
+    (tmp_path / "out" / "achsmds9.lis").write_text(f"kopf.achs_nr 9\n{SECRET} 1\nEnde\n")
+    (tmp_path / "d").mkdir()
+    (tmp_path / "d" / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    (tmp_path / "d" / "sub").symlink_to(tmp_path / "out", target_is_directory=True)
+    result = _run(tmp_path, "lint", "d", "--format", "concise")
+    assert b"d/sub: skipped, it links to" in result.stderr and b"outside the paths given" in result.stderr
+    assert SECRET.encode() not in result.stdout + result.stderr

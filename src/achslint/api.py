@@ -263,6 +263,12 @@ class LintRun:
 
         for root, dirs, files in os.walk(folder, onerror=unreadable):
             dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
+            for name in dirs:  # os.walk does not enter linked folders; one that leads outside is said
+                linked = Path(root) / name
+                if os.path.islink(linked) and not scope.contains(linked):
+                    found.notes.append(
+                        f"{linked}: skipped, it links to {real_path(linked)}, outside the paths given"
+                    )
             config = self.config_for(Path(root) / "x")
             include = self.request.overrides.apply(config.settings).include
             for name in sorted(files):
