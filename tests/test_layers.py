@@ -53,7 +53,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("homing: strategies", ("homing.strategies.*",)),
     ("homing: registry", ("homing.registry", "homing")),
     ("machine", ("machinemodel", "machine", "channel", "ncprogram", "machinebuild")),
-    ("rules: what a rule sees", ("context",)),
+    ("rules: what a rule sees", ("context", "programcontext")),
     ("rules", ("rules.*",)),
     ("rules: registry", ("rules",)),
     ("lint", ("lintengine", "linter", "config", "suppression", "fixer", "programlint")),
@@ -112,18 +112,9 @@ ALLOWED = frozenset(
         # what a rule sees reads the lint settings and the registry's severities
         "context -> config",
         "context -> rules",
-        # rules reach up to the registry, the suppression model and the program lint
+        # LIS009 reads the registry's codes and the suppression model
         "rules.lis009_unused_noqa -> rules",
         "rules.lis009_unused_noqa -> suppression",
-        "rules.lis601_program_text -> programlint",
-        "rules.lis602_unknown_axis -> programlint",
-        "rules.lis603_axis_twice_in_g74 -> programlint",
-        "rules.lis604_disabled_axis_homed -> programlint",
-        "rules.lis605_gantry_slave_alone -> programlint",
-        "rules.lis606_move_before_homing -> programlint",
-        "rules.lis607_ignored_axis_beside_moving_axes -> programlint",
-        # the program lint goes through the API
-        "programlint -> api",
         # the model's base class builds the model
         "model_base -> model",
         # the SARIF format reads the package's version

@@ -617,7 +617,11 @@ def run_lint(
         from .programlint import lint_programs
 
         results, errors = lint_programs(
-            programs, request, lambda path: run.settings_for(Target(str(path), path, run.config_for(path)))
+            programs,
+            Path(request.machine) if request.machine is not None else None,
+            lambda path: run.settings_for(Target(str(path), path, run.config_for(path))),
+            cnc_root=Path(request.overrides.cnc_root) if request.overrides.cnc_root else None,
+            channel=request.channel,
         )
         outcome.results.extend(results)
         outcome.errors.extend(errors)

@@ -14,7 +14,8 @@ from typing import Any
 from .catalogue import AXIS_TYPE_NAMES
 from .homing import classify
 from .machinemodel import HomingBlock, Machine, MachineAxis, MoveBlock, Program, SkippedBlock
-from .programlint import check_program, homed_from_start, homes_with_master
+from .programcontext import homed_from_start, homes_with_master
+from .programlint import check_program
 
 VERSION = 1
 

@@ -66,7 +66,7 @@ SUMMARY = "Homing program text the CNC cannot run as written"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programlint import diagnostic
+    from ..programcontext import diagnostic
 
     for problem in program.problems:
         yield diagnostic(CODE, problem.at, problem.message, Severity.ERROR)

@@ -73,7 +73,7 @@ SUMMARY = "Program names an axis the machine does not have"
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
     from ..machinemodel import HomingBlock, MoveBlock
-    from ..programlint import diagnostic
+    from ..programcontext import diagnostic
 
     names = sorted(machine.axes)
     for block in program.blocks:

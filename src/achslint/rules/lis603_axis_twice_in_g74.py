@@ -67,7 +67,7 @@ SUMMARY = "G74 names the same axis twice"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programlint import diagnostic, homing_blocks
+    from ..programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):
         first: dict[str, AxisWord] = {}

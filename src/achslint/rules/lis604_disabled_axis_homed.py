@@ -75,7 +75,7 @@ SUMMARY = "G74 commands an axis whose homing is DISABLED"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programlint import diagnostic, homing_blocks
+    from ..programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):
         for word in block.words:

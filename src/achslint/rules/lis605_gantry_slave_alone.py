@@ -78,7 +78,7 @@ SUMMARY = "Gantry slave homed before its master"
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
     from ..machinemodel import HomingBlock
-    from ..programlint import defined, diagnostic, steps
+    from ..programcontext import defined, diagnostic, steps
 
     for step in steps(program, machine):
         block = step.block

@@ -76,7 +76,7 @@ SUMMARY = "Move of an axis that is not homed yet"
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
     from ..machinemodel import MoveBlock
-    from ..programlint import diagnostic, steps
+    from ..programcontext import diagnostic, steps
 
     for step in steps(program, machine):
         block = step.block

@@ -77,7 +77,7 @@ _STILL = ("IGNORE_ABS_POS", "DISABLED")
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programlint import diagnostic, homing_blocks
+    from ..programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):
         named = [(word, machine.axes.get(word.name)) for word in block.words]
