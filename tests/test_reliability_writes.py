@@ -43,7 +43,8 @@ def _limited(size: int) -> dict:
 def _achslint(*args: str, cwd: Path, **extra) -> subprocess.CompletedProcess:
     env = {**os.environ, "NO_COLOR": "1", "HOME": str(cwd)}
     env.pop("FORCE_COLOR", None)
-    env.pop("COVERAGE_PROCESS_START", None)  # the child may run as another user: no coverage files
+    for name in [name for name in env if name.startswith("COVERAGE_")]:
+        env.pop(name)  # the child cannot write its coverage data past the file-size limit
     return subprocess.run(
         [sys.executable, "-m", "achslint", *args],
         capture_output=True,
