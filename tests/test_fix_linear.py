@@ -80,3 +80,16 @@ def test_many_edits_apply_in_one_pass_like_one_by_one():
         line = expected[edit.line - 1]
         expected[edit.line - 1] = edit.content + line[edit.end_column - 1 :]
     assert fixed.text == "\n".join(expected)
+
+
+def test_an_insertion_and_a_replacement_at_one_place_apply_in_text_order():
+    """Found by review: a replacement taken before an insertion at its start duplicated text."""
+    source = decode(b"kenngr.abc 1\nkenngr.xyz 2\n")
+    replace_name = Fix("safe", "x", (Edit(2, 1, 2, 11, "kenngr.XYZ"),))
+    insert_line = Fix("safe", "x", (Edit(2, 1, 2, 1, "# new\n"),))
+    fixed, applied = apply_edits(source, [replace_name, insert_line])
+    assert applied == 2
+    assert fixed.text == "kenngr.abc 1\n# new\nkenngr.XYZ 2\n"
+    overlapping = Fix("safe", "x", (Edit(2, 1, 2, 2, "K"),))
+    _, applied = apply_edits(source, [insert_line, replace_name, overlapping])
+    assert applied == 2  # the one-character replacement overlaps the name's

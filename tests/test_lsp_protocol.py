@@ -530,3 +530,11 @@ def test_random_frames_never_make_the_server_deaf(initialized: bool, pieces: lis
     answers = [m for m in messages_in(output.getvalue()) if m.get("id") == "final"]
     assert len(answers) == 1
     assert not [r for r in records if r.exc_info or "Traceback" in r.getMessage()]
+
+
+def test_a_length_of_thousands_of_digits_is_refused_and_the_next_message_read():
+    """Found by review: 4,301 digits made int() raise, and the server stopped reading its client."""
+    frame = b"Content-Length: %d\r\n\r\n" % len(BODY) + BODY
+    items = read_all(b"Content-Length: " + b"9" * 5000 + b"\r\n\r\n" + frame)
+    assert items[-1] == BODY
+    assert any(isinstance(item, Skipped) for item in items)

@@ -451,3 +451,18 @@ def test_a_linked_folder_leading_outside_is_skipped_with_a_note(tmp_path):
     result = _run(tmp_path, "lint", "d", "--format", "concise")
     assert b"d/sub: skipped, it links to" in result.stderr and b"outside the paths given" in result.stderr
     assert SECRET.encode() not in result.stdout + result.stderr
+
+
+@pytest.mark.parametrize(
+    "speeds", ["getriebe[0].vb_refmax 0\ngetriebe[0].vb_reflow 100", "getriebe[0].vb_refmax 0"]
+)
+def test_a_homing_speed_of_zero_is_a_finding_and_a_failed_dry_run_not_a_crash(tmp_path, speeds):
+    """Found by review: ZeroDivisionError stopped the whole lint (LIS317 simulates) and the dry-run."""
+    (tmp_path / "achsmds1.lis").write_text(f"kopf.achs_nr 1\nkenngr.antr_typ 1\n{speeds}\nEnde\n")
+    linted = _run(tmp_path, "lint", "achsmds1.lis", "--format", "json")
+    assert b"internal error" not in linted.stderr and linted.returncode in (0, 1)
+    assert json.loads(linted.stdout)["summary"]["unreadable"] == []
+    ran = _run(tmp_path, "dry-run", "achsmds1.lis", "--format", "json")
+    assert b"internal error" not in ran.stderr
+    document = json.loads(ran.stdout)
+    assert document["outcome"] == "failed" and "cannot move" in document["failure"]

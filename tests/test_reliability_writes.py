@@ -341,3 +341,24 @@ def test_2_machine_plot_over_any_file_of_the_machine(cli, tmp_path, monkeypatch,
     done = cli("dry-run", "listen/hochlauf.lis", "--program", "rfp.nc", "--plot", "p.svg")
     assert done.returncode == 2 and b"--plot" in done.stderr
     assert (tmp_path / target).read_bytes() == before
+
+
+def test_1_a_failure_after_a_shorter_text_was_written_puts_the_whole_old_text_back(tmp_path, monkeypatch):
+    """Found by review: the new text is shorter, the truncation went through, then fsync failed (EIO, or a
+    quota reported late on NFS): only the first bytes went back and the rest of the list became NULs."""
+    old = b"kopf.achs_nr     1\n" + b"kenngr.achs_typ  1\n" * 5 + b"Ende\n"
+    target = tmp_path / "achsmds1.lis"
+    target.write_bytes(old)
+    os.link(target, tmp_path / "copy.lis")
+    real, calls = os.fsync, []
+
+    def failing_once(fd: int) -> None:
+        calls.append(fd)
+        if len(calls) == 1:
+            raise OSError(5, "Input/output error")
+        real(fd)
+
+    monkeypatch.setattr(files.os, "fsync", failing_once)
+    with pytest.raises(WriteFailed, match="its old content was put back"):
+        write_atomically(target, b"kopf.achs_nr 1\nEnde\n", expected=old)
+    assert target.read_bytes() == old

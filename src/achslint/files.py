@@ -304,6 +304,7 @@ def _write_in_place(target: Path, shown: Path, data: bytes, expected: bytes | No
         try:
             _write_all(fd, data, progress)
             os.ftruncate(fd, len(data))
+            progress[0] = max(progress[0], len(old))  # a shorter text has cut the old tail off too
             os.fsync(fd)
         except OSError as exc:
             restored = _restore(fd, old, progress[0])
@@ -322,8 +323,8 @@ def _write_all(fd: int, data: bytes, progress: list[int] | None = None) -> None:
 
 def _restore(fd: int, old: bytes, written: int) -> bool:
     """Put `old` back as the whole content of an open file of which the first `written` bytes were
-    overwritten; whether that worked. Only those bytes are written again (within the old length: their
-    blocks are still allocated), and the file is cut back to its old length."""
+    overwritten (or cut off); whether that worked. Only those bytes are written again — a file-size limit
+    inside the old content is not crossed again — and the file is cut back to its old length."""
     try:
         _write_all(fd, old[:written])
         os.ftruncate(fd, len(old))

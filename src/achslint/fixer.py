@@ -48,7 +48,7 @@ def _offsets(text: str) -> list[int]:
 
 def _overlaps(spans: list[tuple[int, int, str]], start: int, end: int) -> bool:
     """Whether [start, end) overlaps one of the sorted, disjoint `spans` (only the neighbours can)."""
-    index = bisect.bisect_left(spans, start, key=lambda taken: taken[0])
+    index = bisect.bisect_left(spans, (start, end), key=_order)
     before = spans[index - 1] if index else None
     after = spans[index] if index < len(spans) else None
     return bool(
@@ -56,8 +56,13 @@ def _overlaps(spans: list[tuple[int, int, str]], start: int, end: int) -> bool:
     )
 
 
+def _order(span: tuple[int, int, str]) -> tuple[int, int]:
+    """Spans in text order; an insertion before a replacement that starts where it does."""
+    return span[0], span[1]
+
+
 def _overlap_each_other(ranges: list[tuple[int, int, str]]) -> bool:
-    ordered = sorted(ranges, key=lambda span: span[0])
+    ordered = sorted(ranges, key=_order)
     return any(first[1] > second[0] for first, second in itertools.pairwise(ordered))
 
 
@@ -66,7 +71,7 @@ def apply_edits(source: SourceText, fixes: Iterable[Fix]) -> tuple[SourceText, i
     text = source.text
     starts = _offsets(text)
     bom = source.bom
-    spans: list[tuple[int, int, str]] = []  # kept sorted by start: the overlap test is a bisection
+    spans: list[tuple[int, int, str]] = []  # kept in text order (`_order`): the overlap test bisects
     applied = 0
     for fix in fixes:
         if fix.remove_bom:
@@ -81,7 +86,7 @@ def apply_edits(source: SourceText, fixes: Iterable[Fix]) -> tuple[SourceText, i
         if any(_overlaps(spans, start, end) for start, end, _ in ranges) or _overlap_each_other(ranges):
             continue  # overlaps an edit already taken: next round
         for span in ranges:
-            bisect.insort(spans, span, key=lambda taken: taken[0])
+            bisect.insort(spans, span, key=_order)
         applied += 1
     pieces, done = [], 0  # one pass over the text: a list with thousands of fixes stays linear
     for start, end, content in spans:

@@ -220,12 +220,22 @@ class Trace:
         self.warnings.append({"code": code, "message": message})
 
 
+class NoMotion(Exception):
+    """A move asked for at a speed or an acceleration that is not above 0: the axis cannot get anywhere."""
+
+    def __init__(self, speed: float, acceleration: float) -> None:
+        super().__init__(speed, acceleration)
+        self.speed, self.acceleration = speed, acceleration
+
+
 class Ramp:
     """A move from rest at (t0, x0) in direction s with speed v and acceleration a, until it is stopped."""
 
     __slots__ = ("a", "d_acc", "s", "t0", "t_acc", "v", "x0")
 
     def __init__(self, t0: float, x0: float, s: int, v: float, a: float) -> None:
+        if not (v > 0 and a > 0):  # also NaN
+            raise NoMotion(v, a)
         self.t0, self.x0, self.s, self.v, self.a = t0, x0, s, v, a
         self.t_acc = v / a
         self.d_acc = v * v / (2 * a)
@@ -474,7 +484,17 @@ class Simulator:
         trace = Trace(self.strategy, self.scenario, self.unit, self.acceleration, self.acceleration_source)
         x = self.scenario.start_position if start is None else start
         self.start = x
-        return self.strategy.simulate(self, trace, x, cam_shift)
+        try:
+            return self.strategy.simulate(self, trace, x, cam_shift)
+        except NoMotion as stuck:
+            unit = f"{self.unit}/s"
+            return self.stand_still(
+                trace,
+                "failed",
+                f"the axis cannot move: a homing move at {stuck.speed:g} {unit} with an acceleration of "
+                f"{stuck.acceleration:g} {unit}² never gets anywhere (homing speeds and acceleration "
+                "must be above 0)",
+            )
 
     def check_soft_limits(self, trace: Trace) -> SoftLimitOvershoot | None:
         """The reference value or the position after homing outside the software limits (not on spindles, whose

@@ -18,6 +18,8 @@ This module does not import pygls: it is tested on its own.
 
 from __future__ import annotations
 
+import sys
+
 import re
 from dataclasses import dataclass
 from typing import BinaryIO
@@ -160,7 +162,10 @@ class FrameReader:
                     headers, block_bytes = 0, 0
                 value = found.group(1)
                 length, bad_length = (
-                    (int(value), None) if value.isdigit() and value.isascii() else (None, value)
+                    # 20 digits and more are over any limit (and Python will not convert 4,300 of them)
+                    (int(value) if len(value) < 20 else sys.maxsize, None)
+                    if value.isdigit() and value.isascii()
+                    else (None, value)
                 )
             elif not _HEADER.match(line):
                 self._noise += block_bytes + len(line) + 1

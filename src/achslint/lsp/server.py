@@ -401,6 +401,9 @@ class AchslintServer(LanguageServer):
             self._worker.submit(functools.partial(self._lint_now, uri))
 
     def lint_all(self) -> None:
+        """Lint every open document again (settings or files changed): fix-all edits computed under the
+        old ones no longer hold."""
+        self._fixes.clear()
         for uri in list(self.documents):
             self.lint(uri)
 
