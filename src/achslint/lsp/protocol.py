@@ -18,9 +18,8 @@ This module does not import pygls: it is tested on its own.
 
 from __future__ import annotations
 
-import sys
-
 import re
+import sys
 from dataclasses import dataclass
 from typing import BinaryIO
 
