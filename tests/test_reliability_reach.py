@@ -466,3 +466,24 @@ def test_a_homing_speed_of_zero_is_a_finding_and_a_failed_dry_run_not_a_crash(tm
     assert b"internal error" not in ran.stderr
     document = json.loads(ran.stdout)
     assert document["outcome"] == "failed" and "cannot move" in document["failure"]
+
+
+@pytest.mark.parametrize("kind", ["sparse", "proc"])
+def test_5_a_configuration_refused_at_discovery_is_named_as_a_configuration(tmp_path, kind):
+    """Found by a review: the refusal called it a list (and gave the 64 MB limit of lists)."""
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    config = tmp_path / "achslint.toml"
+    if kind == "sparse":
+        with open(config, "wb") as stream:
+            stream.truncate(SETTINGS_LIMIT + 1)
+    else:
+        config.symlink_to("/proc/self/environ")
+    result = _run(tmp_path, "lint", "achsmds1.lis")
+    assert result.returncode == 2
+    message = result.stderr.decode()
+    words = (
+        "larger than the 4 MB achslint reads for a configuration"
+        if kind == "sparse"
+        else "not a configuration"
+    )
+    assert words in message and "list" not in message.replace("achsmds1.lis", "")

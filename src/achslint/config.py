@@ -383,7 +383,7 @@ def _has_table(pyproject: Path) -> bool:
 
 @lru_cache(maxsize=256)
 def _config_in(folder: Path) -> Path | None:
-    from .files import not_a_list_file
+    from .files import SETTINGS_LIMIT, not_a_list_file
 
     for name in CONFIG_NAMES:
         candidate = folder / name
@@ -393,7 +393,7 @@ def _config_in(folder: Path) -> Path | None:
             continue
         if not exists:
             continue
-        problem = not_a_list_file(candidate)
+        problem = not_a_list_file(candidate, limit=SETTINGS_LIMIT, what="a configuration")
         if problem is not None and problem != "permission denied":
             # a FIFO, a device or a dangling link where a configuration belongs: it may be meant to
             # apply, and skipping it silently would lint with other settings than the project's

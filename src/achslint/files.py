@@ -117,8 +117,9 @@ MISSING = (
 )
 
 
-def not_a_list_file(path: Path) -> str | None:
-    """Why `path` cannot be read as a list (missing, a loop, a FIFO, ...); None when it is a regular file."""
+def not_a_list_file(path: Path, *, limit: int | None = None, what: str = "a list") -> str | None:
+    """Why `path` cannot be read as a list (missing, a loop, a FIFO, larger than `limit`, ...); None when it
+    is a regular file achslint reads. `what` names the kind of file in the messages."""
     try:
         info = os.stat(path)
     except OSError as exc:
@@ -130,11 +131,12 @@ def not_a_list_file(path: Path) -> str | None:
     kind = _kind(info.st_mode)
     if kind is not None:
         return f"{kind}, not a regular file"
-    if info.st_size > LIST_LIMIT:
-        return f"a file larger than the {_megabytes(LIST_LIMIT)} achslint reads for a list"
+    limit = LIST_LIMIT if limit is None else limit
+    if info.st_size > limit:
+        return f"a file larger than the {_megabytes(limit)} achslint reads for {what}"
     target = real_path(path)
     if any(target == root or root in target.parents for root in _kernel_file_systems()):
-        return "a file of the operating system (/proc, /sys, /dev), not an axis list"
+        return f"a file of the operating system (/proc, /sys, /dev), not {'an axis list' if what == 'a list' else what}"
     return None
 
 
