@@ -413,10 +413,10 @@ class AchslintServer(LanguageServer):
         if taken is None:
             return  # closed meanwhile
         document, generation = taken
-        self.session.open(document)
         analysis: Analysis | None = None
         peers: list[str] = []
-        try:
+        try:  # whatever fails, the loop hears back: requests waiting for this analysis must not hang
+            self.session.open(document)
             snapshot, found, peers = self.session.diagnostics(uri)
             if snapshot is not None:
                 analysis = Analysis(generation, document, snapshot, found)
