@@ -364,3 +364,84 @@ def test_timeline_invariants_from_any_start(starts):
     else:
         assert run.blocks[run.failure.block].outcome == "failed"
         assert all(b.outcome == "not_run" for b in run.blocks[run.failure.block + 1 :])
+
+
+# A modulo rotary axis (achs_typ 2, MODULO bit 0x4 of achs_mode, P-AXIS-00015; range 0..360°, the defaults
+# of modulou/moduloo) homed like LINEAR, with a move acceleration of 100 °/s² (a_grenz_stufe_1/2).
+ROTARY = (
+    "kenngr.achs_typ 2\nkenngr.achs_mode 0x4\n"
+    + LINEAR
+    + "getriebe[0].lslope_profil.a_grenz_stufe_1 100\ngetriebe[0].lslope_profil.a_grenz_stufe_2 100\n"
+)
+ROTARY_GEOMETRY = {"cam": [240.0, 270.0], "zero_pulse_period": 360.0, "zero_pulse_phase": 250.0}
+
+
+def test_g90_on_a_modulo_axis_goes_the_short_way():
+    from achslint.output.machine import machine_json
+
+    machine = make_machine(make_axis("A", 4, ROTARY))
+    program = Program(
+        PROGRAM,
+        [
+            g74(1, 10, ("A", 1)),
+            g01(2, 20, 600.0, ("A", 350.0)),
+            g01(3, 30, 600.0, ("A", 10.0)),
+            g01(4, 40, 600.0, ("A", 190.0)),
+            g01(5, 50, 600.0, ("A", -30.0), absolute=False),
+        ],
+    )
+    run = run_machine(machine, program, scenario({"A": ROTARY_GEOMETRY}))
+    a = run.axes["A"]
+    assert a.outcome == "homed" and run.failure is None
+    moves = [p for p in a.phases if p.kind == "move"]
+    assert len(moves) == 4
+    across, half, back = moves[1], moves[2], moves[3]
+    # N30 G90 A10 from 350°: the short way is +20° (10 - 350 = -340 ≡ +20 mod 360), not -340°.
+    # F600 is 10 °/s; a = 100 °/s²: 0.1 s and 0.5° to full speed, so 20/10 + 10/100 = 2.1 s
+    # (the long way, -340°, would take 340/10 + 0.1 = 34.1 s).
+    assert across.direction == "positive"
+    assert close(across.end_position - across.start_position, 20.0)
+    assert close(across.end_time - across.start_time, 2.1)
+    assert close(run.blocks[2].end_time - run.blocks[2].start_time, 2.1)
+    # N40 G90 A190 from 10°: exactly half a revolution, taken the positive way: 180/10 + 0.1 = 18.1 s.
+    assert half.direction == "positive"
+    assert close(half.end_position - half.start_position, 180.0)
+    assert close(half.end_time - half.start_time, 18.1)
+    # N50 G91 A-30 from 190°: an incremental move goes as written, -30° to 160°: 30/10 + 0.1 = 3.1 s.
+    assert back.direction == "negative" and close(back.end_time - back.start_time, 3.1)
+    assert close(a.final_position, 160.0)
+    # The report shows every position within [0, 360), in actual values: the reference pulse at 250°
+    # becomes 0.1°, so homed = actual + 110.1 (mod 360). The run counts on (N30 from -120.1 to -100.1);
+    # the report shows N30 from 350 - 110.1 = 239.9° to 10 - 110.1 + 360 = 259.9°, N40 on to
+    # 190 - 110.1 = 79.9° and N50 back to 160 - 110.1 = 49.9°.
+    assert close(across.start_position, -120.1) and close(across.end_position, -100.1)
+    document = machine_json(run)
+    (axis,) = document["axes"]
+    shown = [(p["start_position"], p["end_position"]) for p in axis["phases"] if p["kind"] == "move"]
+    assert [(round(x, 6), round(y, 6)) for x, y in shown[1:]] == [(239.9, 259.9), (259.9, 79.9), (79.9, 49.9)]
+    assert close(axis["reference"]["position"], 250.0) and close(axis["position"], 49.9)
+    assert close(axis["final_position"], 160.0)
+
+
+def test_plot_shows_a_modulo_axis_within_its_range():
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from achslint.plot import build_machine_figure
+
+    machine = make_machine(make_axis("A", 4, ROTARY))
+    program = Program(PROGRAM, [g74(1, 10, ("A", 1)), g01(2, 20, 600.0, ("A", 10.0))])
+    run = run_machine(machine, program, scenario({"A": ROTARY_GEOMETRY}))
+    # Homed at 0 (actual 249.9°, see above), N20 G90 A10 turns +10° to actual 259.9°. The homing itself
+    # runs from 0 down to -110.1 (actual values counting on): below 0 the curve continues at 360 - ...,
+    # broken once where it passes 0°, never drawn across the panel.
+    figure = build_machine_figure(run)
+    try:
+        (line,) = [ln for ax in figure.axes for ln in ax.get_lines() if ln.get_gid() == "position A"]
+        ys = [float(y) for y in line.get_ydata()]
+    finally:
+        plt.close(figure)
+    shown = [y for y in ys if not math.isnan(y)]
+    assert all(0.0 <= y < 360.0 for y in shown)
+    assert sum(math.isnan(y) for y in ys) == 1
+    assert close(shown[0], 0.0) and close(shown[-1], 259.9)

@@ -11,6 +11,11 @@ How the program runs (TF5200 homing manual §2.2, P-AXIS-00074, P-AXIS-00299):
   `getriebe[0].vb_eilgang` (G00), each axis within its `dynamik.vb_max` (and `vb_not_referenced` while it
   is not homed), with the linear slope's acceleration min(`lslope_profil.a_grenz_stufe_1`, `_stufe_2`)
   of each axis, scaled to the path so that no axis exceeds its own.
+* A `G90` word of a modulo rotary axis (MODULO bit of `kenngr.achs_mode`, P-AXIS-00015; range
+  `getriebe[0].modulou..moduloo`, P-AXIS-00127/00126) is a position within one revolution, reached the
+  short way (the ISG convention for a modulo axis programmed without a direction word): from 350° to `A10`
+  the axis turns +20°, not -340°; exactly half a revolution away it turns in the positive direction.
+  The positions the run reports for such an axis are wrapped into its modulo range.
 * Positions carry over from block to block. Before an axis is homed they are its actual values (the
   scenario's frame, as in the single-axis dry-run); the homing gives the offset to the homed frame, in
   which `G90` targets of a homed axis are read. After homing the axis stands where its braking left it.
@@ -111,16 +116,21 @@ class AxisRun:
     def homed(self) -> bool:
         return self.offset is not None
 
+    def shown(self, position: float) -> float:
+        """A position as the run reports it: on a modulo axis wrapped into its modulo range [low, high),
+        elsewhere unchanged (the run itself counts on past the range, so a move's distance is its end minus
+        its start)."""
+        modulo = self.strategy.setup.modulo
+        if not modulo:
+            return position
+        return _wrap(position, modulo)
+
     @property
     def final_position(self) -> float | None:
         """Where the axis stands at the end in the homed frame (None while it is not homed)."""
         if self.offset is None:
             return None
-        value = self.position + self.offset
-        modulo = self.strategy.setup.modulo
-        if modulo:
-            value = modulo[0] + (value - modulo[0]) % (modulo[1] - modulo[0])
-        return value
+        return self.shown(self.position + self.offset)
 
     def warn(self, code: str | None, message: str) -> None:
         self.warnings.append({"code": code, "message": message})
@@ -394,6 +404,21 @@ def _num(value: float) -> str:
     """A computed number (a position, a limit) to four decimals."""
     text = f"{value:.4f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
+
+
+def _wrap(position: float, modulo: tuple[float, float]) -> float:
+    """A position brought into the modulo range [low, high)."""
+    low, high = modulo
+    value = low + (position - low) % (high - low)
+    return low if value >= high else value  # a rounding of -1e-17 % 360 gives 360 itself
+
+
+def _short_way(distance: float, modulo: tuple[float, float]) -> float:
+    """The signed travel of a modulo axis to a position `distance` ahead of it (any number of revolutions):
+    the shorter way round, within (-half, +half] of a revolution; a half revolution goes the positive way."""
+    revolution = modulo[1] - modulo[0]
+    ahead = distance % revolution  # [0, revolution)
+    return ahead - revolution if ahead > revolution / 2 else ahead
 
 
 def _dir(s: float) -> str | None:
@@ -854,7 +879,10 @@ class _Runner:
                 continue
             run = axes[name]
             x = self.x[name]
-            if block.absolute:
+            if block.absolute and prepared.modulo:
+                # where the word puts the axis, in the frame the word is read in (homed, or actual values)
+                target = x + _short_way(word.value - (x + (run.offset or 0.0)), prepared.modulo)
+            elif block.absolute:
                 target = word.value - run.offset if run.offset is not None else word.value
             else:
                 target = x + word.value

@@ -569,6 +569,8 @@ def build_machine_figure(run: MachineRun) -> Any:
         # standing before, between and after its phases
         times = [0.0, *times, max(run.total_time, times[-1])]
         positions = [axis.start_position, *positions, positions[-1]]
+        if axis.strategy.setup.modulo:
+            times, positions = _wrapped(axis, times, positions)
         panel.plot(times, positions, color="black", linewidth=1.2, gid=f"position {axis.name}")
         if axis.reference is not None:
             panel.plot(
@@ -576,7 +578,7 @@ def build_machine_figure(run: MachineRun) -> Any:
                 [
                     axis.reference["position"]
                     if not axis.strategy.setup.modulo
-                    else _at(axis, axis.reference["time"])
+                    else axis.shown(_at(axis, axis.reference["time"]))
                 ],
                 marker="*",
                 markersize=10,
@@ -682,6 +684,24 @@ def _rectangles(
     vertices = [[(x, y), (x, y + h), (x + w, y + h), (x + w, y)] for x, y, w, h in boxes]
     collection = PolyCollection(vertices, transform=transform or panel.transData, **style)
     panel.add_collection(collection, autolim=False)
+
+
+def _wrapped(axis: AxisRun, times: list[float], positions: list[float]) -> tuple[list[float], list[float]]:
+    """A modulo axis's position curve within its modulo range: where it passes an end of the range (its
+    revolution count changes), the line is broken by a NaN point instead of drawn across the panel."""
+    low, high = axis.strategy.setup.modulo or (0.0, 1.0)
+    out_t: list[float] = []
+    out_x: list[float] = []
+    turn: int | None = None
+    for t, x in zip(times, positions, strict=True):
+        now = math.floor((x - low) / (high - low))
+        if turn is not None and now != turn:
+            out_t.append(t)
+            out_x.append(math.nan)
+        turn = now
+        out_t.append(t)
+        out_x.append(axis.shown(x))
+    return out_t, out_x
 
 
 def _at(axis: AxisRun, time: float) -> float:

@@ -4,7 +4,9 @@ axis's phases, then the sweep when `--sweep` asked for one.
 The JSON document (`"version": 1, "kind": "machine dry-run"`) is described in docs/dry-run/machine.md.
 Times are seconds from the program start; positions are per axis in its own unit (`axes[].unit`: mm, or
 degrees on rotary axes and spindles); phase positions and `reference.position` are actual values before
-homing (the scenario's frame), `final_position` is in the homed frame. Numbers are always finite.
+homing (the scenario's frame), `final_position` is in the homed frame. On modulo axes (spindles, modulo
+rotary axes) every position is shown within the modulo range, so a move's way is its `direction`, not the
+difference of its positions. Numbers are always finite.
 """
 
 from __future__ import annotations
@@ -44,16 +46,17 @@ OUTCOME_WORDS = {
 }
 
 
-def _phase_json(phase: AxisPhase) -> dict[str, Any]:
+def _phase_json(phase: AxisPhase, axis: AxisRun) -> dict[str, Any]:
     r = _round
+    shown = axis.shown
     return {
         "name": phase.name,
         "kind": phase.kind,
         "block": phase.block,
         "start_time": r(phase.start_time),
         "end_time": r(phase.end_time),
-        "start_position": r(phase.start_position),
-        "end_position": r(phase.end_position),
+        "start_position": r(shown(phase.start_position)),
+        "end_position": r(shown(phase.end_position)),
         "velocity": r(phase.velocity),
         "direction": phase.direction,
         "ended_by": phase.ended_by,
@@ -71,8 +74,8 @@ def _axis_json(axis: AxisRun) -> dict[str, Any]:
         "strategy": {"id": axis.strategy.id, "description": axis.strategy.title},
         "gantry": None if axis.gantry is None else {"role": axis.gantry[0], "partner": axis.gantry[1]},
         "scenario": axis.scenario.as_dict(),
-        "start_position": r(axis.start_position),
-        "position": r(axis.position),
+        "start_position": r(axis.shown(axis.start_position)),
+        "position": r(axis.shown(axis.position)),
         "final_position": r(axis.final_position),
         "homed": axis.homed,
         "ends_moving": axis.ends_moving,
@@ -82,11 +85,11 @@ def _axis_json(axis: AxisRun) -> dict[str, Any]:
         if reference is None
         else {
             "kind": reference["kind"],
-            "position": r(reference["position"]),
+            "position": r(axis.shown(reference["position"])),
             "value": r(reference["value"]),
             "time": r(reference["time"]),
         },
-        "phases": [_phase_json(p) for p in axis.phases],
+        "phases": [_phase_json(p, axis) for p in axis.phases],
         "warnings": axis.warnings,
     }
 
@@ -281,14 +284,14 @@ def _render_axis(axis: AxisRun, console: Console) -> None:
     if axis.reference is not None:
         ref = axis.reference
         head += Text(
-            f" — reference {ref['kind']} at {_num(ref['position'])} {unit} becomes {_num(ref['value'])} {unit} "
+            f" — reference {ref['kind']} at {_num(axis.shown(ref['position']))} {unit} becomes {_num(ref['value'])} {unit} "
             f"at {_num(ref['time'], 3)} s"
         )
     if axis.final_position is not None:
         moving = ", turning on" if axis.ends_moving else ""
         head += Text(f"; stands at {_num(axis.final_position)} {unit}{moving}")
     elif axis.outcome != "not_commanded" or axis.phases:
-        head += Text(f"; stands at {_num(axis.position)} {unit} (actual value, not homed)")
+        head += Text(f"; stands at {_num(axis.shown(axis.position))} {unit} (actual value, not homed)")
     if axis.failure and axis.outcome in ("failed", "aborted"):
         head += Text(f" — {axis.failure}", style="red")
     console.print(head)
@@ -298,7 +301,8 @@ def _render_axis(axis: AxisRun, console: Console) -> None:
             Text(
                 f"  {_num(phase.start_time, 3, fixed=True):>9} - {_num(phase.end_time, 3, fixed=True):>9} s  "
                 f"{sign} {_speed(phase.velocity):>8} {unit}/s  "
-                f"{_num(phase.start_position, fixed=True)} -> {_num(phase.end_position, fixed=True)} {unit}  "
+                f"{_num(axis.shown(phase.start_position), fixed=True)} -> "
+                f"{_num(axis.shown(phase.end_position), fixed=True)} {unit}  "
             )
             + Text(phase.name)
             + Text(f"; {phase.ended_by}", style="dim")
