@@ -9,7 +9,12 @@ value is listed as "assumed" in the output:
 * the axis starts at 0;
 * the reference cam begins 100 (mm or °) away from the start in the homing
   direction and is 20 wide, or three braking distances at the fast homing speed
-  when that is wider (so the axis can stop on it);
+  when that is wider (so the axis can stop on it). On an axis too short for
+  that (homing would run into a limit switch before it is referenced) the cam
+  moves closer and becomes narrower: the first of a few smaller cams between
+  the start and the software limit with which homing completes (`fitted_cams`);
+  when none does, the default cam stays and the output says that no assumed
+  geometry fits the axis;
 * zero pulses repeat every 5 mm (10° on rotary axes, once per revolution on
   spindles) and the first one after
   the cam edge lies half a period behind it (the manual's recommendation);
@@ -53,6 +58,7 @@ MIN_PERIOD = 0.001  # 1 µm (or 0.001°)
 CYCLE_TIME_US = (50, 100_000)  # the CNC cycle: 0.05 ms to 100 ms (the configuration's cycle-time bounds too)
 CYCLE_MS = (CYCLE_TIME_US[0] / 1000, CYCLE_TIME_US[1] / 1000)
 MAX_RATE = 1e9  # velocities and accelerations per second
+DEFAULT_CAM_DISTANCE = 100.0  # from the start to the cam's near edge, mm or °
 
 
 _T = TypeVar("_T")
@@ -172,12 +178,14 @@ def complete(
     modulo: tuple[float, float] | None = None,
     spindle: bool = False,
     armed_on_exit: bool = False,
+    cam_place: tuple[float, float] | None = None,
 ) -> Scenario:
     """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry.
 
     On a modulo axis (spindle, rotary axis with MODULO) positions recur every revolution: there are no limit
     switches unless the scenario names them, a spindle has one zero pulse per revolution, and the cam must be
-    narrower than a revolution. Raises ScenarioError for values beyond the unit's plausibility bound."""
+    narrower than a revolution. `cam_place` (distance from the start to the cam, width) replaces the default
+    cam when the scenario names none. Raises ScenarioError for values beyond the unit's plausibility bound."""
     unit = "deg" if rotary else "mm"
     _check_bounds(given, unit)
     revolution = modulo[1] - modulo[0] if modulo else 0.0
@@ -194,8 +202,8 @@ def complete(
     cam = getattr(given, "cam", None)
     if cam is None:
         assumed.append("cam")
-        near = start + direction * 100.0
-        width = max(20.0, 3 * braking)
+        distance, width = cam_place or (DEFAULT_CAM_DISTANCE, max(20.0, 3 * braking))
+        near = start + direction * distance
         if revolution:
             width = min(width, revolution / 2)
         cam = (near - width, near) if direction < 0 else (near, near + width)
@@ -240,6 +248,28 @@ def complete(
         assumed,
         modulo,
     )
+
+
+def fitted_cams(
+    start: float, direction: int, soft_limits: tuple[float, float], braking: float
+) -> list[tuple[float, float]]:
+    """Smaller cams for an axis too short for the default one, largest first: (distance from the start to
+    the cam, width), each ending at the software limit in the homing direction at the latest. The cam lies
+    half, a quarter or a tenth of the room between start and limit away; it is as wide as the default
+    (20, or three fast braking distances) where that fits, else it fills the rest of the room or half of it.
+    None when the start is not inside the software limits."""
+    low, high = soft_limits
+    room = high - start if direction > 0 else start - low
+    if not low <= start <= high or room <= 0:
+        return []
+    wide = max(20.0, 3 * braking)
+    places: list[tuple[float, float]] = []
+    for distance in (room / 2, room / 4, room / 10):
+        rest = room - distance
+        for width in (min(wide, rest), min(wide, rest / 2)):
+            if width > 0 and (distance, width) not in places:
+                places.append((distance, width))
+    return places
 
 
 def _check_bounds(given: ScenarioInput | None, unit: str) -> None:

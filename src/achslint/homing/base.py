@@ -8,7 +8,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from ..scenario import Scenario, ScenarioError, complete
+from ..scenario import Scenario, ScenarioError, complete, fitted_cams
 
 if TYPE_CHECKING:
     from ..resolved import ResolvedAxis
@@ -186,18 +186,52 @@ class HomingStrategy:
                 f"{self.title} (homing type {setup.homing_type}): remove the [drive] table"
             )
         braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
-        return complete(
-            given,
-            direction=self.direction,
-            rotary=setup.rotary,
-            soft_limits=setup.soft_limits,
-            cycle_time=cycle_time_us / 1e6,
-            zero_pulse=self.with_zero_pulse,
-            braking=braking,
-            modulo=setup.modulo,
-            spindle=setup.spindle,
-            armed_on_exit=self.definition.arms_on_cam_exit,
+
+        def build(cam_place: tuple[float, float] | None = None) -> Scenario:
+            return complete(
+                given,
+                direction=self.direction,
+                rotary=setup.rotary,
+                soft_limits=setup.soft_limits,
+                cycle_time=cycle_time_us / 1e6,
+                zero_pulse=self.with_zero_pulse,
+                braking=braking,
+                modulo=setup.modulo,
+                spindle=setup.spindle,
+                armed_on_exit=self.definition.arms_on_cam_exit,
+                cam_place=cam_place,
+            )
+
+        scenario = build()
+        if not self.cam_may_move(scenario) or not geometry_failure(self.trial(scenario).failure):
+            return scenario
+        for place in fitted_cams(scenario.start_position, self.direction, setup.soft_limits, braking):
+            fitted = build(place)
+            if self.trial(fitted).reference is not None:
+                return fitted
+        return scenario  # nothing fits: the default stays, and the run says where it stops
+
+    def cam_may_move(self, scenario: Scenario) -> bool:
+        """The cam is assumed and may be moved to fit the axis: CNC-controlled homing on a cam of a linear or
+        non-modulo axis (a modulo axis meets its cam every revolution)."""
+        return (
+            "cam" in scenario.assumed
+            and self.definition.with_cam
+            and self.controlled_by == "cnc"
+            and self.moves
+            and scenario.modulo is None
         )
+
+    def trial(self, scenario: Scenario) -> Trace:
+        """Homing simulated with this geometry, to see whether it fits the axis."""
+        from .motion import Simulator
+
+        return Simulator(self.setup.axis, self, scenario).run()
+
+
+def geometry_failure(failure: str | None) -> bool:
+    """A failed run that ran out of travel (limit switch, homing_max_movement_dist) before its event."""
+    return failure is not None and ("limit switch" in failure or "homing_max_movement_dist" in failure)
 
 
 def opposite(direction: str) -> str:
