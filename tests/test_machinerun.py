@@ -442,6 +442,9 @@ def test_plot_shows_a_modulo_axis_within_its_range():
     finally:
         plt.close(figure)
     shown = [y for y in ys if not math.isnan(y)]
-    assert all(0.0 <= y < 360.0 for y in shown)
+    assert all(0.0 <= y <= 360.0 for y in shown)
     assert sum(math.isnan(y) for y in ys) == 1
+    # the line is drawn up to the end of the range and on from the other end (downwards: 0, then 360)
+    gap = next(i for i, y in enumerate(ys) if math.isnan(y))
+    assert (ys[gap - 1], ys[gap + 1]) == (0.0, 360.0)
     assert close(shown[0], 0.0) and close(shown[-1], 259.9)

@@ -690,15 +690,21 @@ def _wrapped(axis: AxisRun, times: list[float], positions: list[float]) -> tuple
     """A modulo axis's position curve within its modulo range: where it passes an end of the range (its
     revolution count changes), the line is broken by a NaN point instead of drawn across the panel."""
     low, high = axis.strategy.setup.modulo or (0.0, 1.0)
+    span = high - low
     out_t: list[float] = []
     out_x: list[float] = []
-    turn: int | None = None
+    previous: tuple[float, float, int] | None = None
     for t, x in zip(times, positions, strict=True):
-        now = math.floor((x - low) / (high - low))
-        if turn is not None and now != turn:
-            out_t.append(t)
-            out_x.append(math.nan)
-        turn = now
+        now = math.floor((x - low) / span)
+        if previous is not None and now != previous[2]:
+            t0, x0, turn = previous
+            step = 1 if now > turn else -1
+            for crossed in range(turn + (step > 0), now + (step > 0), step):  # every end passed on the way
+                edge = low + crossed * span
+                at = t0 + (edge - x0) / (x - x0) * (t - t0)  # the samples are joined by straight lines
+                out_t += [at, at, at]
+                out_x += [high if step > 0 else low, math.nan, low if step > 0 else high]
+        previous = (t, x, now)
         out_t.append(t)
         out_x.append(axis.shown(x))
     return out_t, out_x
