@@ -21,6 +21,7 @@ from .config import (
 )
 from .decode import UnreadableInput, decode, text_bytes
 from .diagnostics import Diagnostic, Severity
+from .display import shortened
 from .files import (
     MISSING,
     ChangedOnDisk,
@@ -683,7 +684,7 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
         if run.request.output is not None:
             refuse_output_over_input(run.request.output, todo)
         from .machinebuild import MachineError, build_machine  # only for machines with programs
-        from .programlint import lint_program_on
+        from .programlint import lint_program_bytes
 
         try:
             machine = build_machine(startup, cnc_root=cnc_root)
@@ -694,39 +695,36 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
             done.add(os.path.realpath(path))
             missing = not_a_list_file(path)
             if missing in MISSING:
-                name = (
-                    path.name if len(path.name) <= 80 else f"{path.name[:60]}… ({len(path.name)} characters)"
+                outcome.errors.append(
+                    f"{config.path}: homing-programs names {shortened(path.name)}: {missing}"
                 )
-                outcome.errors.append(f"{config.path}: homing-programs names {name}: {missing}")
                 continue
-            problem = _not_a_program(path)
-            if problem is not None:
+            data, problem = _configured_program(path)
+            if data is None:
                 outcome.errors.append(
                     f"configuration error in {config.path}: key `homing-programs`: {problem}"
                 )
                 continue
             settings = run.settings_for(Target(str(path), path, run.config_for(path)))
-            result = lint_program_on(path, machine, name=_shown(path), settings=settings)
-            if result.error:
-                outcome.errors.append(result.error)
+            result = lint_program_bytes(data, machine, _shown(path), settings)
             outcome.results.append(result)
 
 
-def _not_a_program(path: Path) -> str | None:
-    """Why a file a configuration names as a homing program is not one (not a regular file, too large,
-    binary or UTF-16); None when it is text achslint can check. Its lines are never shown."""
+def _configured_program(path: Path) -> tuple[bytes | None, str]:
+    """(the bytes, "") of a file a configuration names as a homing program, read once; (None, why) when it
+    is none (not a regular file, too large, binary or UTF-16). Its lines are never shown."""
     from .files import read_program_file
     from .ncprogram import program_text
 
     try:
         data = read_program_file(path)
     except Refused as exc:
-        return str(exc)
+        return None, str(exc)
     except OSError as exc:
-        return f"cannot read {_shown(path)}: {reason(exc)}"
+        return None, f"cannot read {_shown(path)}: {reason(exc)}"
     if program_text(data) is None:
-        return f"{_shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
-    return None
+        return None, f"{_shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
+    return data, ""
 
 
 @dataclass

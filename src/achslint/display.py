@@ -59,3 +59,11 @@ def _unicode_document(value: object) -> object:
     if isinstance(value, (list, tuple)):
         return [_unicode_document(item) for item in value]
     return value
+
+
+def shortened(text: str, limit: int = 80, keep: int = 60) -> str:
+    """`text` as a message shows it: whole up to `limit` characters, else its first `keep` and its length
+    (a 5,000-character name or number is not worth repeating)."""
+    if len(text) <= limit:
+        return text
+    return f"{text[:keep]}… ({len(text):,} characters)"

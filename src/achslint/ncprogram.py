@@ -19,6 +19,7 @@ import math
 import re
 from dataclasses import dataclass, field
 
+from .display import shortened
 from .machinemodel import (
     AxisWord,
     HomingBlock,
@@ -354,9 +355,7 @@ SHOWN_CHARACTERS = 40
 
 
 def _short(text: str) -> str:
-    if len(text) <= SHOWN_CHARACTERS:
-        return text
-    return f"{text[: SHOWN_CHARACTERS // 2]}… ({len(text):,} characters)"
+    return shortened(text, SHOWN_CHARACTERS, SHOWN_CHARACTERS // 2)
 
 
 def _junk_message(piece: str) -> str:

@@ -54,7 +54,6 @@ def lint_program_on(
 ) -> FileResult:
     """Lint one homing program against a machine that is already built."""
     from .files import Refused, not_a_list_file, read_program_file, reason
-    from .ncprogram import program_text, read_program
 
     shown = name or str(path)
     settings = settings or FileSettings()
@@ -67,13 +66,20 @@ def lint_program_on(
         return FileResult(shown, [], str(exc))
     except OSError as exc:
         return FileResult(shown, [], f"cannot read {shown}: {reason(exc)}")
-    program = read_program(data, shown)
+    return lint_program_bytes(data, machine, shown, settings)
+
+
+def lint_program_bytes(data: bytes, machine: Machine, name: str, settings: FileSettings) -> FileResult:
+    """Lint the bytes of one homing program (already read) against a machine that is already built."""
+    from .ncprogram import program_text, read_program
+
+    program = read_program(data, name)
     text = split_lines(program_text(data) or "")
     found = run(
-        Scope.PROGRAM, (program, machine), settings.policy, suppressions=Suppressions.of_program(text, shown)
+        Scope.PROGRAM, (program, machine), settings.policy, suppressions=Suppressions.of_program(text, name)
     )
     lines = text if found and settings.keep_source else []
-    return FileResult(shown, found, None, lines, fail_on=settings.fail_on)
+    return FileResult(name, found, None, lines, fail_on=settings.fail_on)
 
 
 def lint_programs(
