@@ -328,6 +328,8 @@ def _check_contained(path: Path, settings: Settings) -> None:
     """Paths a configuration names stay inside its repository: a pull request that changes the
     configuration must not make achslint read (and quote) files elsewhere on the machine that runs it.
     `homing-programs` must also name NC programs (`.nc`)."""
+    from .files import inside
+
     repository = repository_of(path)
     named = [("cnc-root", settings.cnc_root)] if settings.cnc_root is not None else []
     named += [("homing-programs", program) for program in settings.homing_programs]
@@ -339,7 +341,7 @@ def _check_contained(path: Path, settings: Settings) -> None:
         target = named_path(path, value)
         if not target.is_relative_to(repository):
             problem = f"lies outside {repository}"
-        elif not Path(os.path.realpath(target)).is_relative_to(os.path.realpath(repository)):
+        elif not inside(target, repository):  # links followed
             problem = f"leads outside {repository} through a symbolic link"
         else:
             problem = ""
