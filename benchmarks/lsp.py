@@ -59,7 +59,7 @@ def median_ms(samples: list[float]) -> float:
 def bare_parse_ms(text: str, runs: int) -> float:
     from lark import Lark
 
-    from achslint.syntax import _grammar_text
+    from achslint.syntax.parser import _grammar_text
 
     bare = Lark(_grammar_text(), parser="lalr", lexer="contextual", maybe_placeholders=False)
     samples = []
@@ -413,7 +413,7 @@ def edits_linear(size: int) -> bool:
 def unknown_names() -> bool:
     """LIS101 on 1,000 distinct unknown names (the closest-name search), in-process, searched afresh each run."""
     from achslint.catalogue import catalogue
-    from achslint.linter import lint_file
+    from achslint.linting.linter import lint_file
 
     data = unknown_list(1000).encode("ascii")
     samples = []

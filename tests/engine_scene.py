@@ -17,7 +17,7 @@ import pytest
 
 from achslint.dryrun import dry_run
 from achslint.homing.motion import Trace
-from achslint.scenario import ScenarioInput
+from achslint.homing.scenario import ScenarioInput
 
 AXIS = (
     "kenngr.antr_typ 1\nkenngr.ref_richt 0\nkenngr.fast_from_cam 1\n"

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.catalogue import catalogue
-from achslint.closest import close_matches, ratio_bound
+from achslint.core.closest import close_matches, ratio_bound
 from achslint.rules.lis101_unknown_parameter import _clear_winner
 
 from .conftest import examples

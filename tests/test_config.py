@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from achslint.config import ConfigError, Settings, discover, load_file
+from achslint.linting.config import ConfigError, Settings, discover, load_file
 
 BAD_SPEED = b"kenngr.antr_typ 1\nlr_hw[0].cam_direct_access 0\ngetriebe[0].a_ref 500\ngetriebe[0].vb_refmax 20000\ngetriebe[0].vb_reflow 100000\nEnde\n"  # LIS302
 UNKNOWN = b"kenngr.ref_ricth 1\nEnde\n"  # LIS101
@@ -162,7 +162,7 @@ def test_overrides_name_only_settings_and_survive_a_trip_to_a_worker_process():
 
     import pytest
 
-    from achslint.config import Overrides, Settings
+    from achslint.linting.config import Overrides, Settings
 
     given = Overrides(ignore=["LIS101"], extend_exclude=["old/*"], fail_on="warning")
     assert given.fail_on == "warning" and given.select is None

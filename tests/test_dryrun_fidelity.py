@@ -19,8 +19,8 @@ from hypothesis import strategies as st
 
 from achslint.cli import main
 from achslint.dryrun import DryRunRefused, dry_run, prepare, sweep
+from achslint.homing.scenario import ScenarioError, ScenarioInput, parse_input
 from achslint.output.dryrun import render, sweep_words, trace_json
-from achslint.scenario import ScenarioError, ScenarioInput, parse_input
 
 from .conftest import FIXTURES, examples
 from .engine_scene import AXIS as SHARED_AXIS
@@ -576,7 +576,7 @@ def test_plot_png_has_size_and_is_not_blank(tmp_path):
 
 def test_plot_series_reference_limits_and_failure():
     pytest.importorskip("matplotlib")
-    from achslint.plot import build_figure
+    from achslint.output.figures import build_figure
 
     trace = linear(
         "getriebe[0].pos_refpkt -9500000\nkenngr.swe_neg -10000000\nkenngr.swe_pos 10000000\n",

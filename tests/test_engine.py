@@ -10,8 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.dryrun import dry_run, prepare, sweep
+from achslint.homing.scenario import ScenarioInput
 from achslint.output.dryrun import trace_json
-from achslint.scenario import ScenarioInput
 
 from .conftest import examples
 from .engine_scene import AXIS, SCENE, approx, drive_run, run
@@ -200,7 +200,7 @@ def test_one_phase_homing_with_the_cam_behind_the_start_ends_at_the_limit_switch
 
 
 def test_explain_and_dry_run_agree_on_where_one_phase_homing_arms_the_logic():
-    from achslint.explain import explain_list
+    from achslint.explanation import explain_list
 
     text = (AXIS + ONE_PHASE + "kenngr.shift_offset_zero_pulse_activation 30000\nEnde\n").encode()
     phases = explain_list(text, "axis.lis")["phases"]

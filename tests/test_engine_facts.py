@@ -12,14 +12,14 @@ from pathlib import Path
 
 import pytest
 
-from achslint.context import Context
 from achslint.dryrun import dry_run, prepare
 from achslint.homing.motion import PulseMargin, SoftLimitOvershoot, StartOnCam
+from achslint.homing.scenario import ScenarioInput
 from achslint.rules import lis317_homing_ends_outside_limits as lis317
 from achslint.rules import lis402_one_phase_with_cam as lis402
 from achslint.rules import lis405_zero_pulse_near_cam_edge as lis405
-from achslint.scenario import ScenarioInput
-from achslint.syntax import parse_bytes
+from achslint.rules.context import Context
+from achslint.syntax.parser import parse_bytes
 
 from .engine_scene import SCENE, listed
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from achslint.fixer import fix_bytes
-from achslint.linter import FileSettings
+from achslint.linting.fixer import fix_bytes
+from achslint.linting.linter import FileSettings
 
 from .conftest import FIXTURES
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import random
 
-from achslint import fixer
-from achslint.decode import decode
-from achslint.diagnostics import Edit, Fix
-from achslint.fixer import MAX_CHECKS, apply_edits, fix_bytes
+from achslint.core.decode import decode
+from achslint.core.diagnostics import Edit, Fix
+from achslint.linting import fixer
+from achslint.linting.fixer import MAX_CHECKS, apply_edits, fix_bytes
 
 SAFE = b"kenngr.homing.homing_type CNC_CONROLLED\n"  # a typo fixed into a value the drive supports
 RISKY = b"kenngr.homing.homing_type DRIVE_CONROLLED\n"  # fixed into one a conventional drive cannot run

@@ -7,8 +7,8 @@ from collections import Counter
 
 import pytest
 
-from achslint.fixer import behaviour, fix_bytes
-from achslint.linter import lint_file
+from achslint.linting.fixer import behaviour, fix_bytes
+from achslint.linting.linter import lint_file
 
 from .conftest import FIXTURES
 

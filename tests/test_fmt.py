@@ -8,7 +8,7 @@ import stat
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from achslint.decode import decode
+from achslint.core.decode import decode
 from achslint.fmt import format_bytes
 
 from .conftest import FIXTURES, examples

@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from achslint import syntax
 from achslint.fmt import FmtOptions, canonical_text, changed_lines, detect_style, format_bytes, format_text
+from achslint.syntax import parser as syntax
 
 from .conftest import FIXTURES, examples
 from .test_fmt import PIECES, tokens

@@ -7,14 +7,14 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import achslint
-from achslint.context import Context
+from achslint.axis.resolved import resolve_bytes
 from achslint.dryrun import DryRunRefused, dry_run, prepare
-from achslint.explain import explain_list
+from achslint.explanation import explain_list
 from achslint.homing import STRATEGY_MODULES, strategies
-from achslint.linter import FileSettings, lint_file
-from achslint.resolved import resolve_bytes
+from achslint.linting.linter import FileSettings, lint_file
 from achslint.rules import registry
-from achslint.syntax import parse_bytes
+from achslint.rules.context import Context
+from achslint.syntax.parser import parse_bytes
 
 from .conftest import FIXTURES, examples
 

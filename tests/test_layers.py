@@ -23,9 +23,9 @@ from pathlib import Path
 
 import pytest
 
+from achslint.axis.resolved import resolve_bytes
 from achslint.homing.base import StrategyDef
 from achslint.homing.registry import classify, strategies
-from achslint.resolved import resolve_bytes
 
 from .conftest import FIXTURES, ROOT, run_cli
 
@@ -36,39 +36,49 @@ PACKAGE = ROOT / "src" / "achslint"
 # ending in `.*` puts every module of that package (its `__init__` too, unless named on its own) there.
 LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     # reading and writing files, text, what a finding is, how values are shown
-    ("core", ("files", "decode", "signals", "diagnostics", "display", "tomlfile", "closest")),
-    ("syntax", ("syntax", "numbers", "xmlinput")),
-    ("catalogue", ("catalogue", "units")),
+    ("core", ("core.*",)),
+    ("syntax", ("syntax.*",)),
+    ("catalogue", ("catalogue.*",)),
     # one axis's typed values, the CNC's corrections, and the resolved axis that applies them
-    ("axis", ("facts", "analysis", "corrections")),
-    ("axis: resolved", ("resolved",)),
+    ("axis", ("axis.facts", "axis.analysis", "axis.corrections", "axis")),
+    ("axis: resolved", ("axis.resolved",)),
     # homing: the axis's values in mm and s, the geometry a simulation assumes, the motion, the strategy (its
     # data names the sequence that simulates it), the sequences, the strategies, the registry that picks one
     ("homing: setup", ("homing.setup",)),
-    ("homing: scenario", ("scenario",)),
-    ("homing: scenario input", ("scenario_input",)),
+    ("homing: scenario", ("homing.scenario",)),
+    ("homing: scenario input", ("homing.scenario_input",)),
     ("homing: motion", ("homing.motion",)),
     ("homing: strategy", ("homing.base", "homing.parameters")),
     ("homing: sequences", ("homing.sequences.*",)),
     ("homing: strategies", ("homing.strategies.*",)),
     ("homing: registry", ("homing.registry", "homing")),
-    ("machine", ("machinemodel", "machine", "channel", "ncprogram", "machinebuild")),
-    ("rules: what a rule sees", ("context", "programcontext")),
+    (
+        "machine",
+        (
+            "machine.model",
+            "machine.startup",
+            "machine.channel",
+            "machine.program",
+            "machine.build",
+            "machine",
+        ),
+    ),
+    ("rules: what a rule sees", ("rules.context", "rules.programcontext")),
     ("rules", ("rules.*",)),
     ("rules: registry", ("rules",)),
-    ("lint", ("lintengine", "linter", "config", "suppression", "fixer", "programlint")),
+    ("lint", ("linting.*",)),
     # products built on the stages below: the model, explanations, machine runs, diff, layout, rule docs
-    ("model base", ("model_base",)),
-    ("model fields", ("model_generated",)),
+    ("model base", ("model.base",)),
+    ("model fields", ("model.generated",)),
     (
         "products",
         (
             "model",
-            "explain",
+            "explanation",
             "dryrun",
-            "machinerun",
-            "machinescenario",
-            "machineexplain",
+            "machine.run",
+            "machine.scenario",
+            "machine.explain",
             "listdiff",
             "fmt",
             "docs",
@@ -80,7 +90,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         "output: formats",
         (
             "output.reporters.*",
-            "plot",
+            "output.figures",
             "output.plot",
             "output.explain",
             "output.dryrun",
@@ -104,23 +114,23 @@ LAYER_OF = {module: number for number, (_, names) in enumerate(LAYERS) for modul
 ALLOWED = frozenset(
     {
         # the axis: the CNC's corrections are typed against the axis that applies them
-        "corrections -> resolved",
+        "axis.corrections -> axis.resolved",
         # homing: the scenario loads its pydantic input on use
-        "scenario -> scenario_input",
+        "homing.scenario -> homing.scenario_input",
         # building a machine goes through the API
-        "machinebuild -> api",
+        "machine.build -> api",
         # what a rule sees reads the lint settings and the registry's severities
-        "context -> config",
-        "context -> rules",
+        "rules.context -> linting.config",
+        "rules.context -> rules",
         # LIS009 reads the registry's codes and the suppression model
         "rules.lis009_unused_noqa -> rules",
-        "rules.lis009_unused_noqa -> suppression",
+        "rules.lis009_unused_noqa -> linting.suppression",
         # the model's base class builds the model
-        "model_base -> model",
+        "model.base -> model",
         # the SARIF format reads the package's version
         "output.reporters.sarif -> achslint",
         # the XML reader looks parameters up in the catalogue
-        "xmlinput -> catalogue",
+        "syntax.xmlinput -> catalogue",
     }
 )
 

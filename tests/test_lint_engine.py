@@ -10,13 +10,13 @@ import ast
 import json
 from pathlib import Path
 
-from achslint.config import Settings
-from achslint.diagnostics import Diagnostic, Severity
-from achslint.lintengine import Policy, enabled_checks, enabled_codes, run
-from achslint.linter import FileSettings, lint_file
+from achslint.core.diagnostics import Diagnostic, Severity
+from achslint.linting.config import Settings
+from achslint.linting.engine import Policy, enabled_checks, enabled_codes, run
+from achslint.linting.linter import FileSettings, lint_file
+from achslint.linting.suppression import Suppressions
 from achslint.rules import Scope, registry
-from achslint.suppression import Suppressions
-from achslint.syntax import parse_text
+from achslint.syntax.parser import parse_text
 
 from .conftest import FIXTURES, ROOT, run_cli
 
@@ -137,7 +137,7 @@ def test_a_default_list_runs_no_rule_that_judges_a_whole_axis() -> None:
 
 
 def test_run_applies_noqa_then_judges_it_then_overrides_and_sorts() -> None:
-    from achslint.context import Context
+    from achslint.rules.context import Context
 
     text = (
         "kenngr.ref_ricth 1   # noqa: LIS101\n"  # an unknown name, suppressed
@@ -177,13 +177,13 @@ def test_machine_findings_take_the_policy_of_their_own_file() -> None:
 
 
 def test_only_the_engine_calls_rule_checks() -> None:
-    """No module outside the engine runs rules itself: `Rule.checker` is read in lintengine.py only."""
+    """No module outside the engine runs rules itself: `Rule.checker` is read in linting/engine.py only."""
     callers = []
     for path in sorted((ROOT / "src" / "achslint").rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         if any(isinstance(n, ast.Attribute) and n.attr == "checker" for n in ast.walk(tree)):
             callers.append(path.relative_to(ROOT / "src" / "achslint").as_posix())
-    assert callers == ["lintengine.py"]
+    assert callers == ["linting/engine.py"]
 
 
 def _diagnostic(line: int, code: str) -> Diagnostic:

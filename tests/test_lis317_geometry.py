@@ -11,9 +11,9 @@ import pytest
 
 from achslint import dryrun
 from achslint.api import lint_text
+from achslint.axis.resolved import resolve_bytes
 from achslint.homing.registry import classify
-from achslint.resolved import resolve_bytes
-from achslint.scenario import fitted_cams
+from achslint.homing.scenario import fitted_cams
 
 # Limits -50..50 mm, homing positive, slow speed 50 mm/s, a_ref 100 mm/s²; fast speed vb_refmax default
 # 83.333 mm/s.

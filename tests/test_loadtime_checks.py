@@ -13,11 +13,11 @@ import pytest
 
 from achslint import lint
 from achslint.api import LintRequest, run_lint
-from achslint.config import Overrides
+from achslint.axis.resolved import resolve_bytes
 from achslint.dryrun import dry_run
-from achslint.explain import explain_list
-from achslint.resolved import resolve_bytes
-from achslint.scenario_input import ScenarioInput
+from achslint.explanation import explain_list
+from achslint.homing.scenario_input import ScenarioInput
+from achslint.linting.config import Overrides
 
 
 def listed(text: str) -> bytes:

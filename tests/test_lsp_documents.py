@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.lsp.documents import Document, LineCache
-from achslint.syntax import parse_text, split_lines
+from achslint.syntax.parser import parse_text, split_lines
 
 from .conftest import examples
 

@@ -15,12 +15,12 @@ pytest.importorskip("lsprotocol", reason="the lsp extra is not installed")
 
 from lsprotocol import types as lsp
 
-from achslint.diagnostics import Diagnostic, Severity
+from achslint.core.diagnostics import Diagnostic, Severity
 from achslint.docs import rules_markdown
 from achslint.lsp import features
 from achslint.lsp.documents import Document
 from achslint.lsp.session import ClientSettings, Session, Snapshot, xml_bytes
-from achslint.machine import StartupEntry
+from achslint.machine.startup import StartupEntry
 
 EVERYWHERE = lsp.Range(lsp.Position(0, 0), lsp.Position(99, 0))
 

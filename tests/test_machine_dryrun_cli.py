@@ -160,8 +160,8 @@ def test_timeline_figure_marks_lanes_groups_and_failure(tmp_path):
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    from achslint.machinerun import machine_dry_run
-    from achslint.plot import build_machine_figure
+    from achslint.machine.run import machine_dry_run
+    from achslint.output.figures import build_machine_figure
 
     program = tmp_path / "rfp.nc"
     program.write_text("N10 G74 Z1\nN20 G74 X1 Y1\n")

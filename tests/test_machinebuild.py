@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from achslint.channel import read_channel_list
-from achslint.machinebuild import MachineError, build_machine
+from achslint.machine.build import MachineError, build_machine
+from achslint.machine.channel import read_channel_list
 
 from .conftest import FIXTURES
 

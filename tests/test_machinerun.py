@@ -9,8 +9,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from achslint.axis.resolved import resolve_bytes
 from achslint.dryrun import DryRunRefused
-from achslint.machinemodel import (
+from achslint.homing.scenario import ScenarioError
+from achslint.machine.model import (
     AxisWord,
     HomingBlock,
     Location,
@@ -21,10 +23,8 @@ from achslint.machinemodel import (
     ProgramProblem,
     SkippedBlock,
 )
-from achslint.machinerun import MachinePlan, run_machine, sweep
-from achslint.machinescenario import parse_machine_scenario
-from achslint.resolved import resolve_bytes
-from achslint.scenario import ScenarioError
+from achslint.machine.run import MachinePlan, run_machine, sweep
+from achslint.machine.scenario import parse_machine_scenario
 
 from .conftest import examples
 
@@ -427,7 +427,7 @@ def test_plot_shows_a_modulo_axis_within_its_range():
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    from achslint.plot import build_machine_figure
+    from achslint.output.figures import build_machine_figure
 
     machine = make_machine(make_axis("A", 4, ROTARY))
     program = Program(PROGRAM, [g74(1, 10, ("A", 1)), g01(2, 20, 600.0, ("A", 10.0))])

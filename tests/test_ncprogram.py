@@ -5,8 +5,8 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from achslint.machinemodel import HomingBlock, Location, MoveBlock, SkippedBlock
-from achslint.ncprogram import read_program
+from achslint.machine.model import HomingBlock, Location, MoveBlock, SkippedBlock
+from achslint.machine.program import read_program
 
 from .conftest import examples
 

@@ -7,8 +7,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from achslint.catalogue import catalogue
-from achslint.linter import lint_file
-from achslint.numbers import (
+from achslint.catalogue.units import describe, to_human
+from achslint.linting.linter import lint_file
+from achslint.syntax.numbers import (
     NumberProblem,
     Reference,
     as_float,
@@ -17,7 +18,6 @@ from achslint.numbers import (
     parse_real,
     parse_reference,
 )
-from achslint.units import describe, to_human
 
 from .conftest import examples
 

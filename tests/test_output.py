@@ -15,7 +15,7 @@ import pytest
 
 from achslint.catalogue import catalogue
 from achslint.cli import ExplainFormat
-from achslint.explain import explain_list, parameter_card
+from achslint.explanation import explain_list, parameter_card
 from achslint.listdiff import diff_lists
 from achslint.output import FORMATS, OutputFailed, Screen
 from achslint.output import diff as diff_output
@@ -116,7 +116,7 @@ def test_a_plot_that_cannot_be_written_is_one_line(error: OSError, shown: str) -
 
 
 def test_a_plot_file_name_that_is_no_image_is_refused_before_drawing(tmp_path: Path) -> None:
-    from achslint.plot import plot_trace
+    from achslint.output.figures import plot_trace
 
     drawn: list[str] = []
 

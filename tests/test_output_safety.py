@@ -9,9 +9,9 @@ import re
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from achslint.diagnostics import Diagnostic, Fix, Related, Severity
-from achslint.display import printable
-from achslint.linter import FileResult, lint_file
+from achslint.core.diagnostics import Diagnostic, Fix, Related, Severity
+from achslint.core.display import printable
+from achslint.linting.linter import FileResult, lint_file
 from achslint.reporters import REPORTERS, get
 
 from .conftest import examples, jenkins_junit_errors

@@ -28,7 +28,7 @@ def test_without_jobs_processes_start_only_for_enough_text(tmp_path, monkeypatch
     import os
 
     from achslint import api
-    from achslint.config import Overrides
+    from achslint.linting.config import Overrides
 
     started: list[int] = []
 

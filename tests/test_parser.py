@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from achslint import syntax
-from achslint.decode import UnreadableInput, decode
-from achslint.syntax import parse_bytes, parse_text
+from achslint.core.decode import UnreadableInput, decode
+from achslint.syntax import parser as syntax
+from achslint.syntax.parser import parse_bytes, parse_text
 
 from .conftest import FIXTURES
 
@@ -106,7 +106,7 @@ def test_split_path_and_pattern():
 
 
 GRAMMAR_PROBE = (
-    "from achslint.syntax import parse_text\n"
+    "from achslint.syntax.parser import parse_text\n"
     "print([line.kind for line in parse_text('kopf.achs_nr 1\\nEnde\\n').lines])\n"
 )
 

@@ -6,9 +6,9 @@ import json
 
 import pytest
 
-from achslint.machinebuild import build_machine
-from achslint.ncprogram import read_program
-from achslint.programlint import check_program
+from achslint.linting.program import check_program
+from achslint.machine.build import build_machine
+from achslint.machine.program import read_program
 
 from .conftest import FIXTURES, run_cli
 

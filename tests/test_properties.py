@@ -9,15 +9,15 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import achslint
-from achslint.decode import UnreadableInput, decode
+from achslint.core.decode import UnreadableInput, decode
 from achslint.dryrun import dry_run
-from achslint.explain import explain_list
-from achslint.linter import lint_file
+from achslint.explanation import explain_list
+from achslint.homing.scenario import ScenarioError
+from achslint.linting.linter import lint_file
 from achslint.listdiff import diff_lists
 from achslint.output.dryrun import trace_json
 from achslint.reporters import REPORTERS, get
-from achslint.scenario import ScenarioError
-from achslint.syntax import parse_bytes
+from achslint.syntax.parser import parse_bytes
 
 from .conftest import examples, run_cli
 

@@ -6,7 +6,7 @@ import pkgutil
 import re
 
 import achslint.rules as rules_package
-from achslint.diagnostics import Severity
+from achslint.core.diagnostics import Severity
 from achslint.docs import rules_markdown
 from achslint.rules import RULE_MODULES, SECTIONS, registry
 
@@ -14,7 +14,7 @@ from .conftest import ROOT
 
 
 def test_every_rule_module_is_registered():
-    on_disk = {m.name for m in pkgutil.iter_modules(rules_package.__path__) if not m.name.startswith("_")}
+    on_disk = {m.name for m in pkgutil.iter_modules(rules_package.__path__) if m.name.startswith("lis")}
     assert on_disk == set(RULE_MODULES)
 
 

@@ -21,12 +21,12 @@ from subprocess import CompletedProcess
 
 import pytest
 
-from achslint import files
 from achslint.catalogue import catalogue
 from achslint.cli import main
-from achslint.files import ChangedOnDisk, Refused, not_a_list_file, write_atomically
-from achslint.linter import lint_file
-from achslint.signals import Stopped, stopping_on_signals
+from achslint.core import files
+from achslint.core.files import ChangedOnDisk, Refused, not_a_list_file, write_atomically
+from achslint.core.signals import Stopped, stopping_on_signals
+from achslint.linting.linter import lint_file
 
 from .conftest import jenkins_junit_errors
 

@@ -16,13 +16,13 @@ from typing import Any
 import pytest
 
 from achslint.cli import main
-from achslint.decode import UnreadableInput
-from achslint.machinebuild import build_machine
-from achslint.machinemodel import HomingBlock, MoveBlock, Program
-from achslint.machinerun import MachineRun, run_machine
-from achslint.machinescenario import read_machine_scenario
-from achslint.ncprogram import read_program
-from achslint.xmlinput import extract, source_text
+from achslint.core.decode import UnreadableInput
+from achslint.machine.build import build_machine
+from achslint.machine.model import HomingBlock, MoveBlock, Program
+from achslint.machine.program import read_program
+from achslint.machine.run import MachineRun, run_machine
+from achslint.machine.scenario import read_machine_scenario
+from achslint.syntax.xmlinput import extract, source_text
 
 from .conftest import ROOT
 
@@ -83,7 +83,7 @@ def test_the_list_beside_an_unusable_xml_is_linted_with_its_folder(run, tmp_path
 
 def test_an_own_handler_error_is_not_blamed_on_the_encoding(monkeypatch):
     # The encoding refusal covers what expat raises before the first element, not a fault of ours later.
-    from achslint import xmlinput
+    from achslint.syntax import xmlinput
 
     def broken(self, *args):
         raise ValueError("a bug")
@@ -203,7 +203,7 @@ def test_the_timeline_draws_each_kind_of_mark_once_however_many_blocks():
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    from achslint.plot import LABEL_GAP, build_machine_figure
+    from achslint.output.figures import LABEL_GAP, build_machine_figure
 
     short, long = _example_run(6), _example_run(30)
     figures = [build_machine_figure(short), build_machine_figure(long)]

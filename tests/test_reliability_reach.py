@@ -16,9 +16,9 @@ from pathlib import Path
 
 import pytest
 
-from achslint.config import ConfigError, forget_cached, load_file, repository_of
-from achslint.files import LIST_LIMIT, PROGRAM_LIMIT, SETTINGS_LIMIT, Refused, read_list
-from achslint.machine import default_cnc_root, read_startup
+from achslint.core.files import LIST_LIMIT, PROGRAM_LIMIT, SETTINGS_LIMIT, Refused, read_list
+from achslint.linting.config import ConfigError, forget_cached, load_file, repository_of
+from achslint.machine.startup import default_cnc_root, read_startup
 
 from .conftest import run_cli
 

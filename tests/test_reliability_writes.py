@@ -19,8 +19,8 @@ from pathlib import Path
 
 import pytest
 
-from achslint import files
-from achslint.files import UNCHANGED, WriteFailed, write_atomically
+from achslint.core import files
+from achslint.core.files import UNCHANGED, WriteFailed, write_atomically
 
 MESSY = b"kopf.achs_nr 1\nkenngr.achs_typ     1\nEnde\n"  # fmt aligns it: the new text is longer
 BROKEN_END = b"kopf.achs_nr     1\nkenngr.achs_typ  1\nEnd\n"  # lint --fix writes `Ende`: one byte more

@@ -12,8 +12,8 @@ from types import ModuleType
 
 import pytest
 
-from achslint.diagnostics import Severity
-from achslint.linter import lint_file
+from achslint.core.diagnostics import Severity
+from achslint.linting.linter import lint_file
 from achslint.reporters import REPORTERS, get, sarif
 from achslint.rules import Rule
 
@@ -120,8 +120,8 @@ def test_github_annotations_escape_and_point_at_lines(results):
 
 
 def test_github_escapes_percent_newlines_and_property_separators():
-    from achslint.diagnostics import Diagnostic, Severity
-    from achslint.linter import FileResult
+    from achslint.core.diagnostics import Diagnostic, Severity
+    from achslint.linting.linter import FileResult
 
     d = Diagnostic("dir,a:b.lis", 3, 1, 3, 5, "LIS202", Severity.ERROR, "150 % is\ntoo much")
     stream = io.StringIO()

@@ -10,11 +10,11 @@ from pydantic import ValidationError
 
 import achslint
 from achslint import lint_text
-from achslint.corrections import encoder_revolution
+from achslint.axis.corrections import encoder_revolution
+from achslint.axis.resolved import resolve_bytes
 from achslint.dryrun import dry_run
-from achslint.explain import explain_list
+from achslint.explanation import explain_list
 from achslint.model import axis_model, dumps
-from achslint.resolved import resolve_bytes
 
 from .conftest import FIXTURES
 

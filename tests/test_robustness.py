@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 
 from achslint.api import LintRequest, LintRun
-from achslint.files import ChangedOnDisk, write_atomically
-from achslint.linter import lint_file
+from achslint.core.files import ChangedOnDisk, write_atomically
+from achslint.linting.linter import lint_file
 
 MB = 1 << 20
 MESSAGE_LIMIT = 400  # a message names a huge line, it does not repeat it

@@ -22,8 +22,8 @@ import pytest
 
 from achslint import lint
 from achslint.api import LintRequest, run_lint
-from achslint.config import Overrides
-from achslint.diagnostics import Diagnostic, Severity
+from achslint.core.diagnostics import Diagnostic, Severity
+from achslint.linting.config import Overrides
 from achslint.rules import Rule, registry
 
 BLOCK = re.compile(r"^```[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
@@ -87,7 +87,7 @@ def dry_run_findings(rule: Rule, blocks: list[str], names: list[str | None]) -> 
     """A rule only the dry-run reports (LIS405): its section holds one list and one `scenario.toml`; the
     dry-run's warnings stand in for findings (code and message only)."""
     from achslint.dryrun import dry_run
-    from achslint.scenario import parse_input
+    from achslint.homing.scenario import parse_input
 
     try:
         import tomllib

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from achslint.config import forget_cached
+from achslint.linting.config import forget_cached
 
 from .conftest import FIXTURES
 from .test_strictness import run_in

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
-from achslint.analysis import analyse
+from achslint.axis.analysis import analyse
+from achslint.axis.resolved import ResolvedAxis
 from achslint.homing import NEGATIVE, POSITIVE, classify, effect
-from achslint.resolved import ResolvedAxis
-from achslint.syntax import parse_text
+from achslint.syntax.parser import parse_text
 
 
 def values_of(text: str) -> ResolvedAxis:

@@ -14,18 +14,18 @@ from pathlib import Path
 
 import pytest
 
-from achslint.context import Context
+from achslint.axis.resolved import resolve_bytes
 from achslint.dryrun import DryRunRefused, dry_run, prepare
-from achslint.explain import explain_list
+from achslint.explanation import explain_list
 from achslint.homing.registry import by_id, classify, strategies
-from achslint.machinebuild import build_machine
-from achslint.machineexplain import explain_machine
-from achslint.machinemodel import Machine, MachineAxis
-from achslint.machinerun import run_machine
-from achslint.machinescenario import MachineScenario
-from achslint.ncprogram import read_program
-from achslint.resolved import resolve_bytes
-from achslint.syntax import parse_bytes
+from achslint.machine.build import build_machine
+from achslint.machine.explain import explain_machine
+from achslint.machine.model import Machine, MachineAxis
+from achslint.machine.program import read_program
+from achslint.machine.run import run_machine
+from achslint.machine.scenario import MachineScenario
+from achslint.rules.context import Context
+from achslint.syntax.parser import parse_bytes
 
 from .conftest import FIXTURES, run_cli
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from achslint import lint_text
-from achslint.config import ConfigError, discover
+from achslint.linting.config import ConfigError, discover
 
 from .conftest import FIXTURES, run_cli
 

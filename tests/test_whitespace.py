@@ -11,11 +11,11 @@ import re
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from achslint.decode import decode
-from achslint.fixer import fix_bytes
+from achslint.core.decode import decode
 from achslint.fmt import format_bytes, unified_diff
-from achslint.linter import lint_file
-from achslint.syntax import parse_text, split_lines
+from achslint.linting.fixer import fix_bytes
+from achslint.linting.linter import lint_file
+from achslint.syntax.parser import parse_text, split_lines
 
 from .conftest import examples
 

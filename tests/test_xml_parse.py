@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import pytest
 
-from achslint.decode import UnreadableInput
-from achslint.linter import lint_file
-from achslint.xmlinput import extract, single_list, source_text
+from achslint.core.decode import UnreadableInput
+from achslint.linting.linter import lint_file
+from achslint.syntax.xmlinput import extract, single_list, source_text
 
 AXIS = (
     "<IsgAxisDef><AchsMds><![CDATA[kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n]]></AchsMds></IsgAxisDef>\n"

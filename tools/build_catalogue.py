@@ -1,4 +1,4 @@
-"""Build src/achslint/data/catalogue.json from the parameter table kept in this repository.
+"""Build src/achslint/catalogue/data/catalogue.json from the parameter table kept in this repository.
 
 Usage:
     python tools/build_catalogue.py            # tools/catalogue/params.tsv -> catalogue.json (+ model)
@@ -12,7 +12,7 @@ short title, array bounds, axis types, restart flag and the manual page. Its ran
 manual's range notation; this script turns it into structured bounds once, so that the linter never
 parses it at run time. Everything the table cannot express (our own one-line descriptions, extra
 aliases, known misspellings, achs_mode bits, parameters the table lacks) comes from
-`tools/catalogue_overrides.toml`. The typed model (`src/achslint/model_generated.py`) is generated
+`tools/catalogue_overrides.toml`. The typed model (`src/achslint/model/generated.py`) is generated
 from the catalogue in the same run. Runs on Python 3.10 and later.
 """
 
@@ -37,7 +37,7 @@ from achslint.catalogue import TYPE_LIMITS  # noqa: E402  (the one table of inte
 
 TABLE = ROOT / "tools" / "catalogue" / "params.tsv"
 OVERRIDES = ROOT / "tools" / "catalogue_overrides.toml"
-OUTPUT = ROOT / "src" / "achslint" / "data" / "catalogue.json"
+OUTPUT = ROOT / "src" / "achslint" / "catalogue" / "data" / "catalogue.json"
 COLUMNS = (
     "id",
     "path",

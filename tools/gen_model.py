@@ -1,4 +1,4 @@
-"""Generate src/achslint/model_generated.py: the typed axis model as plain pydantic classes.
+"""Generate src/achslint/model/generated.py: the typed axis model as plain pydantic classes.
 
 Usage:
     python tools/gen_model.py           # rewrite the module from the catalogue
@@ -8,7 +8,7 @@ Usage:
 structure (`kopf`, `kenngr.homing`, `getriebe[0..5]`, `antr.sercos`, ...): one class per group, one
 field per parameter with its type, bounds, default and description, so that IDEs and type checkers
 see every field. Runtime behaviour (cross-rule validation, sources, corrections) lives in
-`achslint.model_base.AxisBase`, the root class's base.
+`achslint.model.base.AxisBase`, the root class's base.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ sys.path.insert(0, str(ROOT / "src"))
 from achslint.catalogue import BOOL, INTEGER, REAL, SYMBOL, Parameter, catalogue  # noqa: E402
 from achslint.model import field_name  # noqa: E402  (the runtime model resolves paths by the same names)
 
-OUTPUT = ROOT / "src" / "achslint" / "model_generated.py"
+OUTPUT = ROOT / "src" / "achslint" / "model" / "generated.py"
 
 
 @dataclass
@@ -176,7 +176,7 @@ def model_source() -> str:
         "# ruff: noqa: E501\n"
         "from typing import List, Literal, Optional, Union\n\n"
         "from pydantic import BaseModel, ConfigDict, Field\n\n"
-        "from .model_base import AxisBase\n\n"
+        "from .base import AxisBase\n\n"
         "# Catalogue paths kept as one field of their parent group: path -> (written rest, field name).\n"
         f"JOINED = {{\n{joined_text}}}\n\n\n"
         "class _Group(BaseModel):\n"

@@ -51,7 +51,7 @@ def lint_fixture(path: Path, select: list[str] | None) -> list:
     """Every diagnostic of a fixture, linted as the CLI lints it: a machine folder through its start-up list
     when it has one."""
     from achslint.api import LintRequest, run_lint
-    from achslint.config import Overrides
+    from achslint.linting.config import Overrides
 
     target = path
     if path.is_dir():
@@ -86,8 +86,8 @@ def _relative(message: str, base: Path) -> str:
 
 
 def _fix_diff(diagnostic, base: Path) -> list[str]:
-    from achslint.decode import decode
-    from achslint.fixer import apply_edits
+    from achslint.core.decode import decode
+    from achslint.linting.fixer import apply_edits
 
     path = Path(diagnostic.path)
     source = decode(path.read_bytes())
@@ -106,7 +106,7 @@ def _fix_diff(diagnostic, base: Path) -> list[str]:
 def dry_run_warnings(rule_dir: Path, kind: str = "bad") -> list[str]:
     """For a rule only the dry-run reports (LIS405): its warnings on `<kind>.lis` with `<kind>.toml`."""
     from achslint.dryrun import dry_run
-    from achslint.scenario import read_scenario
+    from achslint.homing.scenario import read_scenario
 
     data = (rule_dir / f"{kind}.lis").read_bytes()
     trace = dry_run(data, f"{kind}.lis", read_scenario(rule_dir / f"{kind}.toml")).trace

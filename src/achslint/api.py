@@ -9,20 +9,10 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
-from .config import (
-    PROGRAM_SUFFIXES,
-    ConfigError,
-    Overrides,
-    ResolvedConfig,
-    discover,
-    load_file,
-    matches_glob,
-    named_path,
-)
-from .decode import UnreadableInput, decode, text_bytes
-from .diagnostics import Diagnostic, Severity
-from .display import shortened
-from .files import (
+from .core.decode import UnreadableInput, decode, text_bytes
+from .core.diagnostics import Diagnostic, Severity
+from .core.display import shortened
+from .core.files import (
     MISSING,
     ChangedOnDisk,
     Refused,
@@ -37,8 +27,18 @@ from .files import (
     same_file,
     write_atomically,
 )
-from .lintengine import Policy, enabled_checks, run
-from .linter import (
+from .linting.config import (
+    PROGRAM_SUFFIXES,
+    ConfigError,
+    Overrides,
+    ResolvedConfig,
+    discover,
+    load_file,
+    matches_glob,
+    named_path,
+)
+from .linting.engine import Policy, enabled_checks, run
+from .linting.linter import (
     NOT_A_LIST,
     FileResult,
     FileSettings,
@@ -46,15 +46,15 @@ from .linter import (
     lint_file,
     looks_like_a_list,
 )
-from .machine import is_default_list, is_startup_list, machines, read_startup
+from .machine.startup import is_default_list, is_startup_list, machines, read_startup
 from .rules import Scope as RuleScope
-from .syntax import parse_bytes, split_lines
+from .syntax.parser import parse_bytes, split_lines
 
 if TYPE_CHECKING:
     from .dryrun import DryRun
-    from .explain import ListReport
-    from .machine import Member, Startup
-    from .model_base import AxisBase
+    from .explanation import ListReport
+    from .machine.startup import Member, Startup
+    from .model.base import AxisBase
 
 # A list given to the library functions: a path (str or PathLike) or the list's bytes.
 Source = str | os.PathLike[str] | bytes
@@ -303,7 +303,7 @@ class LintRun:
     @staticmethod
     def _axis_xml(path: Path, found: Discovery) -> bool:
         """Whether an XML file found in a folder may hold axis lists; the others get a note."""
-        from .xmlinput import may_hold_axis_list, root_element
+        from .syntax.xmlinput import may_hold_axis_list, root_element
 
         try:
             data = read_list(path)
@@ -397,7 +397,7 @@ class LintRun:
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD and (self.request.jobs or _enough_text(work)):
             from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
 
-            from .signals import install
+            from .core.signals import install
 
             pool = ProcessPoolExecutor(max_workers=jobs, initializer=install)
             try:
@@ -526,8 +526,8 @@ def _process(
     fix, unsafe, show_diff = mode
     if not fix:
         return lint_file(data, name, settings, defaults)
-    from .fixer import fix_bytes
     from .fmt import unified_diff
+    from .linting.fixer import fix_bytes
 
     outcome = fix_bytes(data, name, settings, unsafe=unsafe)
     result = outcome.result
@@ -567,7 +567,7 @@ def read_one_list(path: Path, name: str) -> bytes:
         raise Refused(f"{name}: {problem}")
     data = read_list(path)
     if is_xml(name):
-        from .xmlinput import single_list
+        from .syntax.xmlinput import single_list
 
         return single_list(data, name)
     if not looks_like_a_list(parse_bytes(data, name)):
@@ -615,7 +615,7 @@ def run_lint(
     run = LintRun(replace(request, paths=rest))
     outcome = run.run(stdin, progress) if rest or not programs else LintOutcome([], [])
     if programs:
-        from .programlint import lint_programs
+        from .linting.program import lint_programs
 
         results, errors = lint_programs(
             programs,
@@ -683,8 +683,8 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
             continue
         if run.request.output is not None:
             refuse_output_over_input(run.request.output, todo)
-        from .machinebuild import MachineError, build_machine  # only for machines with programs
-        from .programlint import lint_program_bytes
+        from .linting.program import lint_program_bytes
+        from .machine.build import MachineError, build_machine  # only for machines with programs
 
         try:
             machine = build_machine(startup, cnc_root=cnc_root)
@@ -713,8 +713,8 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
 def _configured_program(path: Path) -> tuple[bytes | None, str]:
     """(the bytes, "") of a file a configuration names as a homing program, read once; (None, why) when it
     is none (not a regular file, too large, binary or UTF-16). Its lines are never shown."""
-    from .files import read_program_file
-    from .ncprogram import program_text
+    from .core.files import read_program_file
+    from .machine.program import program_text
 
     try:
         data = read_program_file(path)
@@ -903,7 +903,7 @@ def dumps(model: AxisBase) -> str:
 
 def explain(source: Source, *, gear: int = 0, defaults: Source | None = None) -> ListReport:
     """What `achslint explain FILE --format json` prints: strategy, phases, corrections, homing parameters."""
-    from .explain import explain_list
+    from .explanation import explain_list
 
     data, name = _as_bytes(source)
     return explain_list(data, name, gear, _as_bytes(defaults)[0] if defaults is not None else None)
@@ -913,7 +913,7 @@ def dry_run(source: Source, scenario: dict[str, Any] | None = None, *, gear: int
     """Simulate the homing of a list (path or bytes); `scenario` as in a scenario file (mm / degrees,
     seconds). Returns the run: `.trace` holds the phases, events and the outcome."""
     from .dryrun import dry_run as simulate
-    from .scenario import parse_input
+    from .homing.scenario import parse_input
 
     data, name = _as_bytes(source)
     return simulate(data, name, parse_input(dict(scenario or {}), "scenario"), gear=gear)

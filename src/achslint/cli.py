@@ -21,10 +21,10 @@ from typing import TYPE_CHECKING, Any, NoReturn, TextIO, get_args
 import typer
 
 from . import __version__
-from .config import MAX_TOLERANCE_UM, SeverityName
-from .config import UnknownParameters as UnknownParametersChoice
+from .homing.scenario import CYCLE_TIME_US
+from .linting.config import MAX_TOLERANCE_UM, SeverityName
+from .linting.config import UnknownParameters as UnknownParametersChoice
 from .output.reporters import REPORTERS
-from .scenario import CYCLE_TIME_US
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
@@ -69,7 +69,7 @@ class UsageError(Exception):
 
 def _say(message: str) -> None:
     """One line on stderr, with control characters from file names and lists shown escaped."""
-    from .display import printable
+    from .core.display import printable
 
     typer.echo(f"achslint: {printable(message)}", err=True)
 
@@ -80,7 +80,7 @@ def _fail(message: str) -> NoReturn:
 
 
 def _codes(values: list[str] | None, option: str) -> list[str]:
-    from .config import parse_codes
+    from .linting.config import parse_codes
 
     try:
         return parse_codes(values or [])
@@ -90,7 +90,7 @@ def _codes(values: list[str] | None, option: str) -> list[str]:
 
 def _folder(text: str, option: str) -> str:
     """An existing folder given on the command line, made absolute."""
-    from .files import is_folder
+    from .core.files import is_folder
 
     if not is_folder(Path(text)):
         raise UsageError(f"{option} {text}: not a folder")
@@ -270,7 +270,7 @@ def lint(
 ) -> None:
     """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .api import LintRequest, OutputIsInput, run_lint
-    from .config import ConfigError, Overrides
+    from .linting.config import ConfigError, Overrides
     from .output import OutputFailed
     from .output import lint as shown
 
@@ -354,7 +354,7 @@ def _patterns(values: list[str] | None) -> list[str] | None:
 
 def _machine_inputs(startup: str, config: str | None) -> list[str]:
     from .api import machine_files
-    from .config import ConfigError
+    from .linting.config import ConfigError
 
     try:
         return [str(path) for path in machine_files(Path(startup), config_file=config)]
@@ -378,7 +378,7 @@ def _docs_url(given: str | None, config_file: str | None) -> str | None:
         if not given.startswith(("http://", "https://")):
             _fail(f"--docs-url {given}: give an absolute http(s) address")
         return given
-    from .config import ConfigError, discover, load_file
+    from .linting.config import ConfigError, discover, load_file
 
     try:
         return (load_file(Path(config_file)) if config_file else discover(Path.cwd())).settings.docs_url
@@ -429,7 +429,7 @@ def fmt(
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
     from .api import FormatRequest, run_format
-    from .config import ConfigError
+    from .linting.config import ConfigError
     from .output import Screen
     from .output import fmt as shown
 
@@ -502,9 +502,9 @@ def explain(
 ) -> None:
     """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
 
-    from .explain import explain_list, parameter_card
-    from .files import not_a_list_file
-    from .machine import is_startup_list
+    from .core.files import not_a_list_file
+    from .explanation import explain_list, parameter_card
+    from .machine.startup import is_startup_list
     from .output import explain as shown
 
     path = Path(target)
@@ -541,9 +541,9 @@ def _machine_report(
     path: Path, program: str | None, channel: int, cnc_root: str | None, gear: int
 ) -> dict[str, Any]:
     """`explain hochlauf.lis`: the machine's axes (and a program's homing order), or a one-line failure."""
-    from .files import reason
-    from .machinebuild import MachineError
-    from .machineexplain import explain_startup
+    from .core.files import reason
+    from .machine.build import MachineError
+    from .machine.explain import explain_startup
 
     try:
         root = Path(_folder(cnc_root, "--cnc-root")) if cnc_root is not None else None
@@ -568,8 +568,8 @@ NOT_A_FILE = (
 def _one_list(path: Path, name: str) -> bytes:
     """The one axis list in a file, or a one-line failure (exit 2)."""
     from .api import read_one_list
-    from .decode import UnreadableInput
-    from .files import Refused, reason
+    from .core.decode import UnreadableInput
+    from .core.files import Refused, reason
 
     try:
         return read_one_list(path, name)
@@ -662,12 +662,12 @@ def dry_run_command(
         )
         return
 
-    from .decode import UnreadableInput
+    from .core.decode import UnreadableInput
+    from .core.files import reason
     from .dryrun import DryRunRefused, dry_run, scenario_input, sweep
-    from .files import reason
+    from .homing.scenario import ScenarioError
     from .output import OutputFailed
     from .output import dryrun as shown
-    from .scenario import ScenarioError
 
     try:
         options = {
@@ -720,11 +720,11 @@ def _machine_dry_run(
 ) -> None:
     """`dry-run hochlauf.lis --program rfp.nc`: the homing program over the whole machine."""
     from .dryrun import DryRunRefused
-    from .machinebuild import MachineError
-    from .machinerun import machine_dry_run
+    from .homing.scenario import ScenarioError
+    from .machine.build import MachineError
+    from .machine.run import machine_dry_run
     from .output import OutputFailed
     from .output import machine as shown
-    from .scenario import ScenarioError
 
     try:
         run, summary = machine_dry_run(
@@ -781,7 +781,7 @@ def config_command(
     ),
 ) -> None:
     """Show the configuration that applies to a path."""
-    from .config import ConfigError, discover, load_file
+    from .linting.config import ConfigError, discover, load_file
     from .output.config import as_text
 
     if not show:
@@ -837,7 +837,7 @@ def main(argv: list[str] | None = None) -> int:
     as `achslint: error: ...` with a hint, signals as "interrupted" / "terminated" with 128 + the signal
     number, anything unexpected as an internal error.
     """
-    from .signals import Stopped, stopping_on_signals
+    from .core.signals import Stopped, stopping_on_signals
 
     args = sys.argv[1:] if argv is None else list(argv)
     _tolerant_streams()

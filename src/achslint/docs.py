@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .diagnostics import rule_url
+from .core.diagnostics import rule_url
 from .rules import SECTIONS, Rule, registry
 
 

@@ -24,18 +24,18 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from .axis.resolved import ResolvedAxis, plain, resolve_bytes
 from .homing import classify
 from .homing.motion import Fact, Simulator, SoftLimitOvershoot, StartOnCam, Trace, TraceWarning
-from .resolved import ResolvedAxis, plain, resolve_bytes
+from .homing.scenario import ScenarioError, parse_input
 from .rules import lis317_homing_ends_outside_limits as lis317
 from .rules import lis402_one_phase_with_cam as lis402
 from .rules import lis405_zero_pulse_near_cam_edge as lis405
-from .scenario import ScenarioError, parse_input
 
 if TYPE_CHECKING:
     from .catalogue import Value
-    from .context import Context
-    from .scenario_input import ScenarioInput
+    from .homing.scenario_input import ScenarioInput
+    from .rules.context import Context
 
 # Rules whose finding means the CNC does not run the homing at all: the dry-run refuses with their text.
 REFUSING_RULES = ("lis306_torq_drive_type", "lis319_spindle_homing_direction")
@@ -58,8 +58,8 @@ def scenario_input(
     """The scenario a dry run uses and the cycle time: the configuration's `scenario` table (found next to the
     list, or `config`), then the scenario file, then the command-line options (each later source wins, key by
     key; a `[drive]` table as a whole). Each source is validated on its own, so errors name it."""
-    from .config import ConfigError, discover, load_file
-    from .tomlfile import read_toml
+    from .core.tomlfile import read_toml
+    from .linting.config import ConfigError, discover, load_file
 
     try:
         resolved = load_file(config) if config else discover(file)
@@ -104,8 +104,8 @@ def refusal(data: bytes, name: str, defaults: bytes | None = None) -> str | None
 
 def _context(data: bytes, name: str, defaults: bytes | None) -> Context:
     """The list read once, as the rules see it; its `values` are the resolved axis (as resolve_bytes)."""
-    from .context import Context
-    from .syntax import parse_bytes
+    from .rules.context import Context
+    from .syntax.parser import parse_bytes
 
     return Context(
         name,

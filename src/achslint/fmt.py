@@ -51,9 +51,9 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
-from . import syntax
-from .config import KEEP, LEFT, RIGHT, FmtOptions
-from .decode import decode
+from .core.decode import decode
+from .linting.config import KEEP, LEFT, RIGHT, FmtOptions
+from .syntax import parser as syntax
 
 NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
 BLANKS = " \t"

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from typing import TypedDict
 
-from .resolved import ResolvedAxis, plain, resolve_bytes
-from .units import to_human, unit_label
+from .axis.resolved import ResolvedAxis, plain, resolve_bytes
+from .catalogue.units import to_human, unit_label
 
 
 class Difference(TypedDict):

@@ -8,12 +8,12 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from ..scenario import Scenario, ScenarioError, complete, fitted_cams
+from .scenario import Scenario, ScenarioError, complete, fitted_cams
 
 if TYPE_CHECKING:
-    from ..resolved import ResolvedAxis
-    from ..scenario_input import ScenarioInput
+    from ..axis.resolved import ResolvedAxis
     from .motion import Simulator, Trace
+    from .scenario_input import ScenarioInput
     from .setup import Acceleration, HomingSetup
 
     # simulate(simulator, trace, start position, cam shift) -> trace: the sequence a strategy runs

@@ -36,8 +36,8 @@ from typing import TYPE_CHECKING, Protocol, TypedDict
 from .setup import POSITION, VELOCITY
 
 if TYPE_CHECKING:
-    from ..resolved import ResolvedAxis
-    from ..scenario import Scenario
+    from ..axis.resolved import ResolvedAxis
+    from .scenario import Scenario
     from .setup import Acceleration, HomingSetup
 
 INF = math.inf

@@ -8,8 +8,8 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
+from ..axis.resolved import ResolvedAxis
 from ..catalogue import AXIS_TYPE_NAMES
-from ..resolved import ResolvedAxis
 from .base import HomingStrategy, StrategyDef
 from .parameters import HOMING_PARAMETERS, SELECTORS
 from .setup import HomingSetup

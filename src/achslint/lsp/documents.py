@@ -15,7 +15,7 @@ import copy
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..syntax import BLANK, END, Line, ListFile, parse_text, split_lines
+from ..syntax.parser import BLANK, END, Line, ListFile, parse_text, split_lines
 
 BOM = "\ufeff"
 

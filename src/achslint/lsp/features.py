@@ -17,7 +17,6 @@ from typing import TYPE_CHECKING
 
 from lsprotocol import types as lsp
 
-from .. import syntax
 from ..catalogue import (
     BOOL,
     INTEGER,
@@ -26,19 +25,20 @@ from ..catalogue import (
     catalogue,
     fill_indices,
 )
-from ..diagnostics import Diagnostic, Fix, Severity
-from ..numbers import Reference
+from ..catalogue.units import describe, unit_label
+from ..core.diagnostics import Diagnostic, Fix, Severity
 from ..rules import registry
-from ..units import describe, unit_label
+from ..syntax import parser as syntax
+from ..syntax.numbers import Reference
 from .documents import Document, units
 from .textdiff import changed_blocks
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
-    from ..config import FmtOptions
-    from ..context import Context
-    from ..machine import StartupEntry
-    from ..resolved import ResolvedAxis
+    from ..axis.analysis import Setting
+    from ..axis.resolved import ResolvedAxis
+    from ..linting.config import FmtOptions
+    from ..machine.startup import StartupEntry
+    from ..rules.context import Context
     from .session import Snapshot
 
 SEVERITY = {
@@ -222,7 +222,7 @@ def setting_of(context: Context | None, line: syntax.Line) -> Setting | None:
 
 
 def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
-    from ..explain import parameter_card
+    from ..explanation import parameter_card
 
     card = parameter_card(parameter)
     b = (lambda s: f"**{s}**") if markdown else (lambda s: s)
@@ -268,7 +268,7 @@ def value_words(values: ResolvedAxis, path: str) -> str:
 
 def axis_lines(context: Context, path: str, markdown: bool = True) -> list[str]:
     """This list's value of a parameter: human units, where it comes from, correction, effect."""
-    from ..explain import parameter_row
+    from ..explanation import parameter_row
     from ..homing.registry import is_homing_parameter
 
     values = context.values
@@ -622,7 +622,7 @@ def _line_start(document: Document, old: list[str], index: int) -> lsp.Position:
 def noqa_edit(document: Document, file: syntax.ListFile | None, d: Diagnostic) -> lsp.TextEdit | None:
     """Where `noqa: CODE` goes: into the line's trailing comment, else a new comment after the value
     (`#` after a number or reference, `(` after text, where only `(` starts a comment)."""
-    from ..suppression import LINE_NOQA
+    from ..linting.suppression import LINE_NOQA
 
     if file is None or not 1 <= d.line <= len(file.lines):
         return None
@@ -849,7 +849,7 @@ def definition(
 
 def inlay_hints(document: Document, snapshot: Snapshot | None, request: lsp.Range) -> list[lsp.InlayHint]:
     """Human units after raw numeric values (`20000` → `= 20 mm/s = 1.2 m/min`)."""
-    from ..units import to_human
+    from ..catalogue.units import to_human
 
     context = snapshot.context if snapshot is not None else None
     if context is None:

@@ -39,7 +39,7 @@ from pygls.protocol.json_rpc import JsonRPCNotification, JsonRPCRequestMessage
 from pygls.uris import to_fs_path
 
 from .. import __version__
-from ..files import is_xml
+from ..core.files import is_xml
 from . import features
 from .documents import Document
 from .protocol import FrameReader, Skipped
@@ -47,11 +47,11 @@ from .session import ClientSettings, Session, Snapshot
 from .worker import Latest, Worker
 
 if TYPE_CHECKING:
-    from ..config import FmtOptions
-    from ..context import Context
-    from ..diagnostics import Diagnostic
-    from ..machine import StartupEntry
-    from ..syntax import ListFile
+    from ..core.diagnostics import Diagnostic
+    from ..linting.config import FmtOptions
+    from ..machine.startup import StartupEntry
+    from ..rules.context import Context
+    from ..syntax.parser import ListFile
 
 log = logging.getLogger("achslint.lsp")
 _T = TypeVar("_T")
@@ -717,10 +717,10 @@ def _xml_target(
 ) -> tuple[Context | None, ListFile, int, int] | None:
     """The embedded list, its context and the list position under an XML position (TwinCAT CDATA, ISG XML).
     Lints the embedded list: runs on the worker."""
-    from ..decode import UnreadableInput
-    from ..linter import lint_parsed
-    from ..syntax import parse_text
-    from ..xmlinput import extract
+    from ..core.decode import UnreadableInput
+    from ..linting.linter import lint_parsed
+    from ..syntax.parser import parse_text
+    from ..syntax.xmlinput import extract
     from .session import xml_bytes
 
     try:
@@ -816,7 +816,7 @@ async def _formatted(
     ls: AchslintServer, uri: str, edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]]
 ) -> list[lsp.TextEdit]:
     """Formatting edits for the document's current text (not XML, not a start-up list), on the worker."""
-    from ..machine import is_startup_list
+    from ..machine.startup import is_startup_list
 
     document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
@@ -869,7 +869,7 @@ async def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams) 
 @feature(lsp.TEXT_DOCUMENT_DEFINITION)
 @guarded(default=list)
 async def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[lsp.Location]:
-    from ..syntax import parse_text
+    from ..syntax.parser import parse_text
 
     uri = params.text_document.uri
     analysis = await ls.analysis(uri)
@@ -884,7 +884,7 @@ async def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[l
         snapshot = Snapshot(snapshot.version, copy.text, snapshot.result, parsed, startup=True)
 
     def entries() -> list[StartupEntry]:
-        from ..machine import read_startup
+        from ..machine.startup import read_startup
 
         if document.path is None:  # not a file: no start-up list
             return []

@@ -18,7 +18,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..api import LintRequest, LintRun, Target, file_settings
-from ..config import (
+from ..core.decode import UnreadableInput, text_bytes
+from ..core.diagnostics import Diagnostic, Severity
+from ..core.files import is_xml, not_a_list_file, read_list, starts_with_bom
+from ..linting.config import (
     ConfigError,
     Overrides,
     ResolvedConfig,
@@ -27,16 +30,13 @@ from ..config import (
     matches_glob,
     parse_codes,
 )
-from ..decode import UnreadableInput, text_bytes
-from ..diagnostics import Diagnostic, Severity
-from ..files import is_xml, not_a_list_file, read_list, starts_with_bom
-from ..linter import FileResult, FileSettings, lint_file, lint_parsed
-from ..machine import Startup, is_startup_list, read_startup
-from ..syntax import ListFile, parse_bytes
+from ..linting.linter import FileResult, FileSettings, lint_file, lint_parsed
+from ..machine.startup import Startup, is_startup_list, read_startup
+from ..syntax.parser import ListFile, parse_bytes
 from .documents import Document
 
 if TYPE_CHECKING:
-    from ..context import Context
+    from ..rules.context import Context
 
 
 @dataclass
@@ -178,7 +178,7 @@ class Session:
 
     def forget_disk(self) -> None:
         """Files changed on disk (or a configuration did): read them again next time."""
-        from .. import config
+        from ..linting import config
 
         self._disk.clear()
         self._machines.clear()
@@ -204,7 +204,7 @@ class Session:
     def fixed_text(self, document: Document) -> str | None:
         """The document's text with every safe fix applied, as `achslint lint --fix` would write it; None
         when no fix applies."""
-        from ..fixer import fix_bytes
+        from ..linting.fixer import fix_bytes
 
         config, _ = self.config_for(document)
         settings = self.file_settings(config, document.path, document.name)

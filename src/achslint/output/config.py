@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from . import Screen, write_json
 
 if TYPE_CHECKING:
-    from ..config import ResolvedConfig
+    from ..linting.config import ResolvedConfig
 
 
 def as_text(resolved: ResolvedConfig, screen: Screen) -> None:

@@ -22,8 +22,8 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from ..axis.resolved import plain
 from ..dryrun import finite_document
-from ..resolved import plain
 from . import Screen, write_json
 from .plot import write_plot
 
@@ -59,7 +59,7 @@ def as_json(report: AxisDryRun, screen: Screen) -> None:
 
 def plot(report: AxisDryRun, target: str) -> None:
     """The run's position and velocity over time, written to `target` (PNG or SVG)."""
-    from ..plot import plot_trace
+    from .figures import plot_trace
 
     write_plot(lambda file: plot_trace(report.run.trace, file), target)
 

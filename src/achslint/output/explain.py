@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 from . import Screen, write_json
 
 if TYPE_CHECKING:
-    from ..explain import ListReport, ParameterCard
+    from ..explanation import ListReport, ParameterCard
     from . import Registry
 
 

@@ -38,7 +38,7 @@ class Formatting(Protocol):
 def write_results(outcome: Formatting, mode: str, quiet: bool, screen: Screen) -> None:
     """Standard input formatted, a file's diff (`--diff`), or one line per file that was (`--check`: would
     be) reformatted; those lines not when `quiet`."""
-    from ..display import printable
+    from ..core.display import printable
 
     for result in outcome.results:
         if result.output is not None:

@@ -13,7 +13,7 @@ from .reporters import REPORTERS, get
 if TYPE_CHECKING:
     from rich.progress import Progress, TaskID
 
-    from ..linter import FileResult
+    from ..linting.linter import FileResult
 
 
 class destination:
@@ -30,7 +30,7 @@ class destination:
         try:
             self.file = open(self.path, "w", encoding="utf-8", newline="\n")
         except OSError as exc:
-            from ..files import reason
+            from ..core.files import reason
 
             raise OutputFailed(f"cannot write {self.path}: {reason(exc)}") from None
         return self.file

@@ -23,7 +23,7 @@ from .plot import write_plot
 if TYPE_CHECKING:
     from rich.console import Console
 
-    from ..machinerun import AxisPhase, AxisRun, BlockRun, MachineRun
+    from ..machine.run import AxisPhase, AxisRun, BlockRun, MachineRun
     from . import Registry
 
 
@@ -163,7 +163,7 @@ def as_json(report: MachineDryRun, screen: Screen) -> None:
 
 def plot(report: MachineDryRun, target: str) -> None:
     """The run's timeline (a lane per axis) and positions, written to `target` (PNG or SVG)."""
-    from ..plot import plot_machine
+    from .figures import plot_machine
 
     write_plot(lambda file: plot_machine(report.run, file), target)
 

@@ -1,4 +1,4 @@
-"""`dry-run --plot FILE`: the figure of a run written as PNG or SVG (figures drawn by `achslint.plot`).
+"""`dry-run --plot FILE`: the figure of a run written as PNG or SVG (figures drawn by `achslint.output.figures`).
 
 Both dry-runs come through `write_plot`: a name that is neither .png nor .svg, a missing matplotlib or a
 file that cannot be written become one `OutputFailed` line for the user.
@@ -13,8 +13,8 @@ from . import OutputFailed
 
 def write_plot(draw: Callable[[str], None], target: str) -> None:
     """`draw(target)` (`plot.plot_trace` or `plot.plot_machine` with their run), refusals as `OutputFailed`."""
-    from ..files import reason
-    from ..plot import PlotUnavailable
+    from ..core.files import reason
+    from .figures import PlotUnavailable
 
     try:
         draw(target)

@@ -29,7 +29,7 @@ from enum import Enum
 from functools import cached_property, lru_cache
 from types import ModuleType
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 
 class Scope(Enum):

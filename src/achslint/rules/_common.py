@@ -5,14 +5,14 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from typing import TYPE_CHECKING, TypeVar
 
+from ..axis.facts import ValueFact
 from ..catalogue import BOOL, INTEGER, REAL, SYMBOL, Parameter
-from ..diagnostics import Diagnostic, Edit, Fix
-from ..facts import ValueFact
+from ..core.diagnostics import Diagnostic, Edit, Fix
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
-    from ..context import Context
-    from ..syntax import Line
+    from ..axis.analysis import Setting
+    from ..syntax.parser import Line
+    from .context import Context
 
 F = TypeVar("F", bound=ValueFact)
 

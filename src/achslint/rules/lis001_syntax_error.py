@@ -40,11 +40,11 @@ import re
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from .. import syntax
+from ..syntax import parser as syntax
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS001"
 NAME = "syntax-error"

@@ -35,11 +35,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from .. import syntax
-from ..diagnostics import Diagnostic, Related
+from ..core.diagnostics import Diagnostic, Related
+from ..syntax import parser as syntax
 
 if TYPE_CHECKING:
-    from ..context import Context
+    from .context import Context
 
 CODE = "LIS003"
 NAME = "content-after-end"

@@ -34,11 +34,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from .. import syntax
-from ..diagnostics import Diagnostic, Edit, Fix
+from ..core.diagnostics import Diagnostic, Edit, Fix
+from ..syntax import parser as syntax
 
 if TYPE_CHECKING:
-    from ..context import Context
+    from .context import Context
 
 CODE = "LIS004"
 NAME = "misspelt-end-marker"

@@ -39,10 +39,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Fix
+from ..core.diagnostics import Diagnostic, Fix
 
 if TYPE_CHECKING:
-    from ..context import Context
+    from .context import Context
 
 CODE = "LIS006"
 NAME = "byte-order-mark"

@@ -39,10 +39,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..suppression import Directive, Suppressions
+    from ..linting.suppression import Directive, Suppressions
 
 CODE = "LIS009"
 NAME = "unused-noqa"

@@ -40,15 +40,15 @@ import difflib
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from .. import syntax
 from ..catalogue import fill_indices
-from ..closest import ratio_bound
-from ..diagnostics import Diagnostic, Severity
+from ..core.closest import ratio_bound
+from ..core.diagnostics import Diagnostic, Severity
+from ..syntax import parser as syntax
 from ._common import replace_path_fix
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
-    from ..context import Context
+    from ..axis.analysis import Setting
+    from .context import Context
 
 CODE = "LIS101"
 NAME = "unknown-parameter"

@@ -35,8 +35,8 @@ from typing import TYPE_CHECKING
 from ._common import known_settings, replace_path_fix
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS102"
 NAME = "old-syntax"

@@ -48,8 +48,8 @@ from ..catalogue import AXIS_TYPE_NAMES
 from ._common import known_settings
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS105"
 NAME = "not-effective-for-drive"

@@ -37,14 +37,14 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..facts import MissingValue, NotBoolean, RealForInteger, TextForNumber
+from ..axis.facts import MissingValue, NotBoolean, RealForInteger, TextForNumber
 from ._common import expected, value_facts
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
+    from ..axis.analysis import Setting
     from ..catalogue import Parameter
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS201"
 NAME = "wrong-type"

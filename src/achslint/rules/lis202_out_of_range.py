@@ -41,15 +41,15 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..facts import NotAccepted, NotPositive, OutOfRange, UnusableNumber
-from ..units import describe
+from ..axis.facts import NotAccepted, NotPositive, OutOfRange, UnusableNumber
+from ..catalogue.units import describe
 from ._common import expected, value_facts
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
+    from ..axis.analysis import Setting
     from ..catalogue import Parameter
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS202"
 NAME = "out-of-range"

@@ -36,14 +36,14 @@ from collections.abc import Iterator
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
-from ..facts import UnknownSymbol
+from ..axis.facts import UnknownSymbol
 from ._common import value_facts
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
+    from ..axis.analysis import Setting
     from ..catalogue import Parameter
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS203"
 NAME = "unknown-symbol"

@@ -35,15 +35,15 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..facts import BadReference
-from ..units import unit_label
+from ..axis.facts import BadReference
+from ..catalogue.units import unit_label
 from ._common import value_facts
 
 if TYPE_CHECKING:
-    from ..analysis import Setting
+    from ..axis.analysis import Setting
     from ..catalogue import Parameter
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS205"
 NAME = "bad-reference"

@@ -43,11 +43,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..corrections import CAPPED_SPEEDS
+from ..axis.corrections import CAPPED_SPEEDS
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS303"
 NAME = "refmax-above-limits"

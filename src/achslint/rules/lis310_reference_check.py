@@ -43,8 +43,8 @@ from typing import TYPE_CHECKING
 from ._common import known_settings
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS310"
 NAME = "reference-check"

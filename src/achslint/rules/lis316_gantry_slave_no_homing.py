@@ -43,13 +43,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
-from ..diagnostics import Diagnostic, Related, Severity
-from ..machine import Startup, diagnostic
-from ..units import describe
+from ..catalogue.units import describe
+from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import Startup, diagnostic
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..machine import Member
+    from ..machine.startup import Member
+    from .context import Context
 
 CODE = "LIS316"
 NAME = "gantry-slave-no-homing"

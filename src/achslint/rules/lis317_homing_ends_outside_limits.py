@@ -63,10 +63,10 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
     from ..homing.motion import SoftLimitOvershoot
-    from ..scenario import Scenario
+    from ..homing.scenario import Scenario
+    from .context import Context
 
 CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
@@ -99,7 +99,7 @@ def message(fact: SoftLimitOvershoot) -> str:
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    from ..diagnostics import Severity
+    from ..core.diagnostics import Severity
     from ..homing.base import geometry_failure
     from ..homing.motion import Simulator
 

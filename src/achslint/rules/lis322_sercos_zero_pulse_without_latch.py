@@ -45,11 +45,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..resolved import DriveType
+from ..axis.resolved import DriveType
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS322"
 NAME = "sercos-zero-pulse-without-latch"

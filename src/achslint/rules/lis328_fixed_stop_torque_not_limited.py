@@ -53,11 +53,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..resolved import CANOPEN, SERCOS
+from ..axis.resolved import CANOPEN, SERCOS
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS328"
 NAME = "fixed-stop-torque-not-limited"

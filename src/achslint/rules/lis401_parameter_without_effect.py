@@ -48,8 +48,8 @@ from ..homing import HOMING_PARAMETERS, is_homing_parameter
 from ._common import known_settings
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS401"
 NAME = "parameter-without-effect"

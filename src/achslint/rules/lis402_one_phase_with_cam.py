@@ -40,9 +40,9 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
     from ..homing.motion import StartOnCam
+    from .context import Context
 
 CODE = "LIS402"
 NAME = "one-phase-with-cam"

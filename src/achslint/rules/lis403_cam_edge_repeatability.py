@@ -46,11 +46,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..units import describe
+from ..catalogue.units import describe
 
 if TYPE_CHECKING:
-    from ..context import Context
-    from ..diagnostics import Diagnostic
+    from ..core.diagnostics import Diagnostic
+    from .context import Context
 
 CODE = "LIS403"
 NAME = "cam-edge-repeatability"

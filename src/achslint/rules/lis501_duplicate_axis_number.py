@@ -46,11 +46,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic
-from ..machine import Startup, repeated_values
+from ..core.diagnostics import Diagnostic
+from ..machine.startup import Startup, repeated_values
 
 if TYPE_CHECKING:
-    from ..machine import Member
+    from ..machine.startup import Member
 
 CODE = "LIS501"
 NAME = "duplicate-axis-number"

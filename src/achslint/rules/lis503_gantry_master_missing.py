@@ -45,11 +45,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
-from ..machine import Startup, diagnostic
+from ..core.diagnostics import Diagnostic, Severity
+from ..machine.startup import Startup, diagnostic
 
 if TYPE_CHECKING:
-    from ..machine import Member
+    from ..machine.startup import Member
 
 CODE = "LIS503"
 NAME = "gantry-master-missing"

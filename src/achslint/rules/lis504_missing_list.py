@@ -52,11 +52,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
-from ..files import same_file
+from ..core.diagnostics import Diagnostic, Severity
+from ..core.files import same_file
 
 if TYPE_CHECKING:
-    from ..machine import Member, Startup
+    from ..machine.startup import Member, Startup
 
 CODE = "LIS504"
 NAME = "missing-list"

@@ -59,11 +59,11 @@ from collections.abc import Hashable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
 
-from ..diagnostics import Diagnostic, Related, Severity
-from ..machine import Startup, diagnostic
+from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import Startup, diagnostic
 
 if TYPE_CHECKING:
-    from ..machine import Member
+    from ..machine.startup import Member
 
 CODE = "LIS507"
 NAME = "gantry-master-chain"

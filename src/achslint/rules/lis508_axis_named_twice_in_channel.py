@@ -72,10 +72,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Related, Severity
+from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machine import Member, Startup
+    from ..machine.startup import Member, Startup
 
 CODE = "LIS508"
 NAME = "axis-named-twice-in-channel"
@@ -87,7 +87,7 @@ SUMMARY = "Channel list gives one logical axis two different names"
 def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     if not any(startup.channels for startup in startups):
         return
-    from ..machinebuild import read_channel_entry  # only for start-up lists that name a channel list
+    from ..machine.build import read_channel_entry  # only for start-up lists that name a channel list
 
     read: set[str] = set()
     for startup in startups:

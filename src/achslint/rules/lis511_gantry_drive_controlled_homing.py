@@ -71,11 +71,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
-from ..diagnostics import Diagnostic, Related, Severity
-from ..machine import Startup, diagnostic, gantry_pairs
+from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import Startup, diagnostic, gantry_pairs
 
 if TYPE_CHECKING:
-    from ..machine import Member
+    from ..machine.startup import Member
 
 CODE = "LIS511"
 NAME = "gantry-drive-controlled-homing"

@@ -53,10 +53,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import Machine, Program
+    from ..machine.model import Machine, Program
 
 CODE = "LIS601"
 NAME = "program-text"
@@ -66,7 +66,7 @@ SUMMARY = "Homing program text the CNC cannot run as written"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programcontext import diagnostic
+    from .programcontext import diagnostic
 
     for problem in program.problems:
         yield diagnostic(CODE, problem.at, problem.message, Severity.ERROR)

@@ -59,10 +59,10 @@ import difflib
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import Machine, Program
+    from ..machine.model import Machine, Program
 
 CODE = "LIS602"
 NAME = "unknown-axis"
@@ -72,8 +72,8 @@ SUMMARY = "Program names an axis the machine does not have"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..machinemodel import HomingBlock, MoveBlock
-    from ..programcontext import diagnostic
+    from ..machine.model import HomingBlock, MoveBlock
+    from .programcontext import diagnostic
 
     names = sorted(machine.axes)
     for block in program.blocks:

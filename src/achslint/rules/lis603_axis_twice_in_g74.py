@@ -54,10 +54,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Related, Severity
+from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import AxisWord, Machine, Program
+    from ..machine.model import AxisWord, Machine, Program
 
 CODE = "LIS603"
 NAME = "axis-twice-in-g74"
@@ -67,7 +67,7 @@ SUMMARY = "G74 names the same axis twice"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programcontext import diagnostic, homing_blocks
+    from .programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):
         first: dict[str, AxisWord] = {}

@@ -62,10 +62,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Related, Severity
+from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import Machine, Program
+    from ..machine.model import Machine, Program
 
 CODE = "LIS604"
 NAME = "disabled-axis-homed"
@@ -75,7 +75,7 @@ SUMMARY = "G74 commands an axis whose homing is DISABLED"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programcontext import diagnostic, homing_blocks
+    from .programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):
         for word in block.words:

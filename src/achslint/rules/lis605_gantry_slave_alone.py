@@ -64,10 +64,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import Machine, Program
+    from ..machine.model import Machine, Program
 
 CODE = "LIS605"
 NAME = "gantry-slave-alone"
@@ -77,8 +77,8 @@ SUMMARY = "Gantry slave homed before its master"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..machinemodel import HomingBlock
-    from ..programcontext import defined, diagnostic, steps
+    from ..machine.model import HomingBlock
+    from .programcontext import defined, diagnostic, steps
 
     for step in steps(program, machine):
         block = step.block

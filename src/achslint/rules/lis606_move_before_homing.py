@@ -62,10 +62,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import Machine, Program
+    from ..machine.model import Machine, Program
 
 CODE = "LIS606"
 NAME = "move-before-homing"
@@ -75,8 +75,8 @@ SUMMARY = "Move of an axis that is not homed yet"
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..machinemodel import MoveBlock
-    from ..programcontext import diagnostic, steps
+    from ..machine.model import MoveBlock
+    from .programcontext import diagnostic, steps
 
     for step in steps(program, machine):
         block = step.block

@@ -62,10 +62,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machinemodel import Machine, Program
+    from ..machine.model import Machine, Program
 
 CODE = "LIS607"
 NAME = "ignored-axis-beside-moving-axes"
@@ -77,7 +77,7 @@ _STILL = ("IGNORE_ABS_POS", "DISABLED")
 
 
 def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
-    from ..programcontext import diagnostic, homing_blocks
+    from .programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):
         named = [(word, machine.axes.get(word.name)) for word in block.words]

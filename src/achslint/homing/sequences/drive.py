@@ -20,7 +20,7 @@ from ..motion import (
 )
 
 if TYPE_CHECKING:
-    from ...scenario_input import DriveInput, SearchInput
+    from ..scenario_input import DriveInput, SearchInput
 
 EARLY_TRIGGER = 0.005  # s: a search whose trigger comes sooner is refused by the drive
 # A drive search's trigger: the distance from x in direction s to its next edge (active at the start or not).

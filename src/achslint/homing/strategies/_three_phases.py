@@ -8,7 +8,7 @@ from ..base import Phase, Use, opposite
 from . import _sequence
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
     from ..setup import HomingSetup
 
 THREE_PHASE_SPEEDS = {

@@ -11,7 +11,7 @@ from . import _sequence
 from ._three_phases import THREE_PHASE_SPEEDS, describe, phases
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
 
 STRATEGY = StrategyDef(
     id="cam_zero_pulse",

@@ -8,7 +8,7 @@ from ..base import StrategyDef
 from ..parameters import EVERYWHERE
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
     from ..setup import HomingSetup
 
 

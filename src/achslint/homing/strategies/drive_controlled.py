@@ -9,7 +9,7 @@ from ..parameters import EVERYWHERE
 from ..sequences import drive
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
 
 
 def _writes_position(axis: ResolvedAxis) -> bool:

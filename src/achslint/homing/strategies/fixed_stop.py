@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ...resolved import DriveType, ResolvedAxis
-from ...units import describe
+from ...axis.resolved import DriveType, ResolvedAxis
+from ...catalogue.units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use, opposite
 from ..parameters import CNC_MOVES
 from ..sequences import fixed_stop

@@ -8,7 +8,7 @@ from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
 
 
 def _matches(axis: ResolvedAxis) -> bool:

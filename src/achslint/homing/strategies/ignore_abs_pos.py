@@ -8,7 +8,7 @@ from ..base import StrategyDef
 from ..parameters import EVERYWHERE
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
 
 
 def _describe(axis: ResolvedAxis) -> str:

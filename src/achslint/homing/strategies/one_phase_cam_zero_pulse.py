@@ -10,7 +10,7 @@ from ..sequences import cam
 from . import _sequence
 
 if TYPE_CHECKING:
-    from ...resolved import ResolvedAxis
+    from ...axis.resolved import ResolvedAxis
     from ..setup import HomingSetup
 
 _SPEEDS = (

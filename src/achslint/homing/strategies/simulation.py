@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ...resolved import DriveType
-from ...units import describe
+from ...axis.resolved import DriveType
+from ...catalogue.units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use
 from ..parameters import CNC_MOVES, SEQUENCE
 from ..sequences import simulated

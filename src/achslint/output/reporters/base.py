@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Protocol, TextIO
 
 if TYPE_CHECKING:
-    from ...diagnostics import Diagnostic
+    from ...core.diagnostics import Diagnostic
 
 
 class LintResult(Protocol):
@@ -26,6 +26,6 @@ class LintResult(Protocol):
 
 def write_json(document: object, stream: TextIO) -> None:
     """The machine formats that are JSON (json, sarif, gitlab) write through here: strict JSON, one document."""
-    from ...display import json_text
+    from ...core.display import json_text
 
     stream.write(json_text(document) + "\n")

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TextIO
 
-from ...display import printable
+from ...core.display import printable
 
 if TYPE_CHECKING:
     from .base import LintResult

@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TextIO
 
-from ...diagnostics import Diagnostic, Severity
-from ...display import printable
+from ...core.diagnostics import Diagnostic, Severity
+from ...core.display import printable
 
 if TYPE_CHECKING:
     from .base import LintResult

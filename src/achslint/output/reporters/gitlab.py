@@ -6,7 +6,7 @@ import hashlib
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TextIO, TypedDict
 
-from ...diagnostics import Severity
+from ...core.diagnostics import Severity
 from .base import write_json
 
 if TYPE_CHECKING:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TextIO, TypedDict
 
-from ...diagnostics import Diagnostic, rule_url
+from ...core.diagnostics import Diagnostic, rule_url
 from .base import write_json
 
 if TYPE_CHECKING:

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 from urllib.parse import quote
 
 from ... import __version__
-from ...diagnostics import Diagnostic, Severity, rule_url
+from ...core.diagnostics import Diagnostic, Severity, rule_url
 from .base import write_json
 
 if TYPE_CHECKING:

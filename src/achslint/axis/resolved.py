@@ -1,0 +1,308 @@
+"""The resolved axis: what the CNC ends up running for one axis.
+
+The CNC fills an axis the same way each time, and so does this module:
+
+1. its built-in default,
+2. the default axis list (`default_achs_mds` of the start-up list), if any,
+3. the axis list itself, where the later of two assignments wins,
+4. parameter references (`P-AXIS-00212.0`) resolved to the referenced value,
+5. the CNC's own load-time corrections (a homing type the drive cannot run,
+   speeds above the limit for unreferenced axes, ...), each recorded as a
+   `Correction` with the value written, the value used and the CNC message.
+
+Values the CNC would reject (wrong type, out of range) do not count. Every
+command reads this one object: the rules, `explain`, `dry-run`, `diff`, the
+typed model and the editor. `written(path)` gives the value before the
+corrections, `get(path)` the value the CNC uses.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import IntEnum
+from typing import TypedDict
+
+from ..catalogue import AXIS_TYPE_CODES, Catalogue, Parameter, Value, catalogue, fill_indices
+from ..syntax.parser import path_pattern
+from .analysis import Analysis, Reference, Setting
+
+
+@dataclass(frozen=True, slots=True)
+class Origin:
+    """Where a value came from: an assignment (in the list or the default list) or the default."""
+
+    kind: str  # "list", "default list" or "default"
+    setting: Setting | None = None
+    file: str | None = None
+
+    def __str__(self) -> str:
+        if self.setting is None:
+            return "default"
+        where = f"line {self.setting.line.number}"
+        return where if self.kind == "list" else f"{self.file} {where} (default list)"
+
+
+DEFAULT_ORIGIN = Origin("default")
+
+
+class CorrectionData(TypedDict):
+    """A correction as JSON (`explain --format json`, `dry-run --format json`)."""
+
+    parameter: str
+    written: int | float | str | None
+    used: int | float | str | None
+    error: str
+    reason: str
+    source: str
+    line: int | None
+
+
+@dataclass(frozen=True, slots=True)
+class Correction:
+    """A value the CNC replaces while it loads the list, and the message it gives."""
+
+    parameter: str  # canonical path
+    written: Value | None  # the value of the layers (references resolved)
+    used: Value  # the value the CNC runs with
+    error: str  # the CNC message id, e.g. P-ERR-110421
+    reason: str  # why, in our words
+    origin: Origin = DEFAULT_ORIGIN
+
+    def as_dict(self) -> CorrectionData:
+        setting = self.origin.setting
+        return {
+            "parameter": self.parameter,
+            "written": plain(self.written),
+            "used": plain(self.used),
+            "error": self.error,
+            "reason": self.reason,
+            "source": self.origin.kind,
+            "line": setting.line.number if setting else None,
+        }
+
+
+def plain(value: Value | None) -> int | float | str | None:
+    """A value for JSON and tables: booleans as 0 and 1, as lists write them."""
+    return int(value) if isinstance(value, bool) else value
+
+
+def numeric(value: Value | None, path: str) -> float:
+    """A numeric parameter's value as stored (int, float, or a bool as 0/1); TypeError for anything else.
+
+    Every numeric parameter has a number: a converted value or its catalogue default. A parameter without
+    one (no default, or a symbol without a code) is a catalogue error, not a list error.
+    """
+    if isinstance(value, (int, float)):
+        return value
+    raise TypeError(f"{path} has no numeric value ({value!r})")
+
+
+class DriveType(IntEnum):
+    """P-AXIS-00020 drive type codes (compare equal to the numbers written in lists)."""
+
+    CONVENTIONAL = 1
+    SERCOS = 2
+    PROFIDRIVE = 3
+    SIMULATION = 4
+    LIGHTBUS = 5
+    TERMINAL = 6
+    REALTIME_ETHERNET = 7
+    CANOPEN = 8
+    GENERIC = 9
+    VIRTUAL = 16
+    DSE = 17
+    CAN_BUS = 32
+
+
+SERCOS, SIMULATION, LIGHTBUS, CANOPEN = (
+    DriveType.SERCOS,
+    DriveType.SIMULATION,
+    DriveType.LIGHTBUS,
+    DriveType.CANOPEN,
+)
+
+
+class ResolvedAxis:
+    """Typed values of one axis by canonical concrete path, after layering, references and corrections."""
+
+    def __init__(
+        self, analysis: Analysis, defaults: Analysis | None = None, cat: Catalogue | None = None
+    ) -> None:
+        self.catalogue = cat or catalogue()
+        self.analysis = analysis
+        self._values: dict[str, Value | Reference] = {}
+        self._origins: dict[str, Origin] = {}
+        self._stages: dict[str, set[int]] | None = None
+        self._corrected: dict[str, Correction] = {}
+        layers = [(defaults, "default list"), (analysis, "list")] if defaults else [(analysis, "list")]
+        for layer, kind in layers:
+            for setting in layer.settings:
+                path = setting.canonical  # not None for known settings
+                if path is not None and not setting.problems and setting.value is not None:
+                    self._values[path] = setting.value
+                    self._origins[path] = Origin(kind, setting, layer.file.name)
+        from .corrections import apply
+
+        apply(self)
+
+    # -- lookups ---------------------------------------------------------------------------
+    def parameter(self, path: str) -> Parameter:
+        resolved = self.catalogue.resolve(path)
+        if resolved is None:
+            pattern, _ = path_pattern(path)
+            raise KeyError(f"not a catalogue parameter: {path} ({pattern})")
+        return resolved.parameter
+
+    def get(self, path: str) -> Value | None:
+        """The value the CNC uses (typed): corrected, references followed, the default when unset."""
+        correction = self._corrected.get(path)
+        if correction is not None:
+            return correction.used
+        return self.written(path)
+
+    def number(self, path: str) -> float:
+        """The value the CNC uses of a numeric parameter (see `numeric`)."""
+        return numeric(self.get(path), path)
+
+    def written_number(self, path: str) -> float:
+        """The value of a numeric parameter before the CNC's corrections (see `numeric`)."""
+        return numeric(self.written(path), path)
+
+    def written(self, path: str, _depth: int = 0) -> Value | None:
+        """The value before the CNC's corrections (references followed, the default when unset)."""
+        value = self._values.get(path)
+        if isinstance(value, Reference):
+            return self._follow(path, value, _depth)
+        if value is not None:
+            return value
+        return self.parameter(path).typed_default
+
+    def referenced(self, path: str, reference: Reference) -> str:
+        """The canonical concrete path a reference written at `path` points to (`P-AXIS-00212.0`)."""
+        target = self.catalogue.by_id[reference.target]
+        count = target.path.count("[i]")
+        if count:
+            _, own = path_pattern(path)
+            indices = (
+                ((reference.index,) + (0,) * (count - 1))
+                if reference.index is not None
+                else (own + (0,) * count)[:count]
+            )
+        else:
+            indices = ()
+        return fill_indices(target.path, indices)
+
+    def _follow(self, path: str, reference: Reference, depth: int) -> Value | None:
+        if depth > 8:  # a reference cycle; LIS205 reports self-references
+            return self.parameter(path).typed_default
+        concrete = self.referenced(path, reference)
+        correction = self._corrected.get(concrete)
+        return correction.used if correction is not None else self.written(concrete, depth + 1)
+
+    def origin(self, path: str) -> Origin:
+        return self._origins.get(path, DEFAULT_ORIGIN)
+
+    def setting(self, path: str) -> Setting | None:
+        """The assignment that produced the value, if it was set in a list."""
+        return self._origins.get(path, DEFAULT_ORIGIN).setting
+
+    def is_set(self, path: str) -> bool:
+        return path in self._origins
+
+    def in_list(self, path: str) -> Setting | None:
+        """The assignment in the axis list itself (not the default list), if any."""
+        origin = self._origins.get(path)
+        return origin.setting if origin and origin.kind == "list" else None
+
+    def set_paths(self) -> list[str]:
+        """Canonical paths assigned in the list or the default list."""
+        return list(self._origins)
+
+    def gear_stages_set(self, *members: str) -> list[int]:
+        """Gear stages (0..5) in which any of the given `getriebe[i].…` members is set."""
+        if self._stages is None:
+            self._stages = {}
+            for path in self._origins:
+                pattern, indices = path_pattern(path)
+                if pattern.startswith("getriebe[i].") and indices:
+                    self._stages.setdefault(pattern[len("getriebe[i].") :], set()).add(indices[0])
+        stages: set[int] = set()
+        for member in members:
+            stages |= self._stages.get(member, set())
+        return sorted(stages)
+
+    # -- corrections ---------------------------------------------------------------------------
+    def correct(self, path: str, used: Value, error: str, reason: str) -> None:
+        """Record a load-time correction of the CNC (called by `corrections.apply`)."""
+        self._corrected[path] = Correction(path, self.written(path), used, error, reason, self.origin(path))
+
+    @property
+    def corrections(self) -> list[Correction]:
+        return list(self._corrected.values())
+
+    def correction(self, path: str) -> Correction | None:
+        return self._corrected.get(path)
+
+    # -- the axis as a whole -----------------------------------------------------------------
+    @property
+    def axis_type(self) -> str:
+        """ "T" (linear), "R" (rotary) or "S" (spindle); the CNC assumes linear when unset."""
+        value = self.get("kenngr.achs_typ")  # a symbol (ACHSTYP_ROTATOR)
+        code = self.parameter("kenngr.achs_typ").symbol_codes.get(value) if isinstance(value, str) else value
+        return AXIS_TYPE_CODES.get(code, "T") if isinstance(code, int) else "T"
+
+    @property
+    def drive_type(self) -> int:
+        return int(self.number("kenngr.antr_typ"))
+
+    @property
+    def drive_type_known(self) -> bool:
+        return self.is_set("kenngr.antr_typ")
+
+    def drive_name(self, code: int | None = None) -> str:
+        code = self.drive_type if code is None else code
+        return self.catalogue.drive_type_names.get(code, f"drive type {code}")
+
+    @property
+    def homing_type(self) -> str:
+        """The homing type in force: as set (after corrections), or the drive type's default (P-AXIS-00299 table)."""
+        value = self.get("kenngr.homing.homing_type")
+        if value is None or value == "DRIVE_DEFAULT":
+            return default_homing_type(self.drive_type)
+        return str(value)  # a symbol
+
+    @property
+    def homing_type_is_default(self) -> bool:
+        return (
+            not self.is_set("kenngr.homing.homing_type")
+            or self.written("kenngr.homing.homing_type") == "DRIVE_DEFAULT"
+        )
+
+
+def resolve_bytes(data: bytes, name: str, defaults: bytes | None = None) -> ResolvedAxis:
+    """The resolved axis of a list's bytes, with an optional default list underneath."""
+    from ..syntax.parser import parse_bytes
+    from .analysis import analyse
+
+    default_analysis = analyse(parse_bytes(defaults, "default list")) if defaults is not None else None
+    return ResolvedAxis(analyse(parse_bytes(data, name)), default_analysis)
+
+
+def default_homing_type(drive_type: int) -> str:
+    """The homing type a drive type uses when none is configured (P-AXIS-00299 table)."""
+    return "DRIVE_CONTROLLED" if drive_type == SERCOS else "CNC_CONTROLLED"
+
+
+# Drive types that only home CNC-controlled (P-AXIS-00299 table, plus the conventional drive).
+CNC_ONLY_DRIVES = frozenset(
+    {
+        DriveType.CONVENTIONAL,
+        DriveType.PROFIDRIVE,
+        SIMULATION,
+        LIGHTBUS,
+        DriveType.TERMINAL,
+        DriveType.REALTIME_ETHERNET,
+    }
+)
+# Drive types with encoder-overflow homing (P-AXIS-00354/00355 drive types; §3.1.1.2).
+OVERFLOW_DRIVES = frozenset({SERCOS, LIGHTBUS, CANOPEN})

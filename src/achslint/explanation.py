@@ -1,0 +1,312 @@
+"""`achslint explain`: what an axis list configures for homing, and parameter cards.
+
+`explain_list` returns plain data (output/explain.py renders it as text or JSON): the
+homing strategy with its phases in words, and every homing parameter with its
+value, where it came from, its unit and human unit, and whether it takes effect
+under the strategy, with the reason.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, TypedDict
+
+from .axis.resolved import CorrectionData, plain, resolve_bytes
+from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, Scalar, Value, catalogue
+from .catalogue.units import describe, to_human, unit_label
+from .homing import HOMING_PARAMETERS, classify, effect, homing_parameter_paths, strategies_reading
+from .rules import registry
+
+if TYPE_CHECKING:
+    from .axis.resolved import ResolvedAxis
+    from .homing import HomingStrategy
+
+# The JSON documents of `achslint explain --format json` (a list, or a parameter card).
+
+
+class AxisInfo(TypedDict):
+    name: Value | None
+    number: Value | None
+    axis_type: str
+    drive_type: int
+    drive: str
+    drive_type_set: bool
+    homing_type: str
+    homing_type_set: bool
+
+
+class AccelerationInfo(TypedDict):
+    value: float
+    source: str
+
+
+class StrategyInfo(TypedDict):
+    id: str
+    title: str
+    description: str
+    controlled_by: str
+    manual_type: str | None
+    variants: list[str]
+    ends_with_braking: bool
+    acceleration: AccelerationInfo | None
+
+
+class PhaseInfo(TypedDict):
+    number: int
+    name: str
+    direction: str | None
+    velocity_parameter: str | None
+    velocity: float | None
+    velocity_human: str | None
+    ends_when: str
+    note: str
+    text: str
+
+
+class CommandedInfo(TypedDict):
+    """What a G74 that names the axis runs (the same strategy as at power-up except on an absolute axis)."""
+
+    id: str
+    title: str
+    description: str
+    phases: list[PhaseInfo]
+
+
+class SourceInfo(TypedDict):
+    kind: str
+    line: int | None
+
+
+class ParameterRow(TypedDict):
+    parameter: str
+    p_axis: str
+    value: int | float | str | None
+    written: int | float | str | None
+    correction: str | None
+    unit: str | None
+    human: str | None
+    source: SourceInfo
+    effective: bool
+    reason: str
+
+
+class ListReport(TypedDict):
+    version: int
+    file: str
+    gear: int
+    axis: AxisInfo
+    strategy: StrategyInfo
+    phases: list[PhaseInfo]
+    commanded: CommandedInfo
+    corrections: list[CorrectionData]
+    parameters: list[ParameterRow]
+
+
+class AliasInfo(TypedDict):
+    path: str
+    kind: str
+
+
+class RangeInfo(TypedDict):
+    min: float | None
+    max: float | None
+
+
+class StrategyUse(TypedDict):
+    id: str
+    title: str
+    example: str
+
+
+class ParameterCard(TypedDict):
+    p_axis: str
+    path: str
+    aliases: list[AliasInfo]
+    type: str
+    range: str | None
+    checked_range: RangeInfo | None
+    accepted_values: list[int] | None
+    symbols: list[str] | None
+    max_length: int | None
+    default: Scalar
+    units: dict[str, str] | None
+    index_bounds: list[list[int]] | None
+    drive_types: list[str] | None
+    axis_types: list[str] | None
+    restart_required: bool
+    description: str
+    manual_title: str | None
+    manual: str | None
+    strategies: list[StrategyUse] | None
+    rules: list[str]
+
+
+def _speed_words(value: float | None, axis_type: str) -> str:
+    if value is None:
+        return ""
+    unit = "um/s" if axis_type == "T" else "0.001deg/s"
+    return describe(value, unit)
+
+
+def phase_infos(strategy: HomingStrategy) -> list[PhaseInfo]:
+    """The strategy's phases in words, numbered, with their speeds in list and human units."""
+    axis_type = strategy.setup.axis_type
+    unit = "um/s" if axis_type == "T" else "0.001deg/s"
+    phases: list[PhaseInfo] = []
+    for number, phase in enumerate(strategy.phases, 1):
+        speed = _speed_words(phase.velocity, axis_type)
+        where = phase.velocity_parameter or ""
+        if phase.velocity == 0:
+            text = f"{number}. {phase.name}: no move, {where} is 0" + (
+                f" — {phase.note}" if phase.note else ""
+            )
+        else:
+            text = (
+                f"{number}. {phase.name}: move {phase.direction} at {speed} ({where}) until {phase.ends_when}"
+            )
+            if phase.note:
+                text += f" — {phase.note}"
+        phases.append(
+            {
+                "number": number,
+                "name": phase.name,
+                "direction": phase.direction,
+                "velocity_parameter": phase.velocity_parameter,
+                "velocity": phase.velocity,
+                "velocity_human": to_human(phase.velocity, unit) if phase.velocity else None,
+                "ends_when": phase.ends_when,
+                "note": phase.note,
+                "text": text,
+            }
+        )
+    return phases
+
+
+def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
+    """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs after its corrections, at
+    power-up (`strategy`, `phases`) and when a G74 names the axis (`commanded`)."""
+    values = resolve_bytes(data, name, defaults)
+    strategy = classify(values, gear)
+    commanded = classify(values, gear, commanded=True)
+    axis_type = values.axis_type
+    phases = phase_infos(strategy)
+    parameters = [parameter_row(values, strategy, path) for path in homing_parameter_paths(gear)]
+    acceleration = strategy.acceleration
+    return {
+        "version": 1,
+        "file": name,
+        "gear": gear,
+        "axis": {
+            "name": values.get("kopf.log_achs_name"),
+            "number": values.get("kopf.achs_nr"),
+            "axis_type": AXIS_TYPE_NAMES[axis_type],
+            "drive_type": values.drive_type,
+            "drive": values.drive_name(),
+            "drive_type_set": values.drive_type_known,
+            "homing_type": values.homing_type,
+            "homing_type_set": not values.homing_type_is_default,
+        },
+        "strategy": {
+            "id": strategy.id,
+            "title": strategy.title,
+            "description": strategy.description,
+            "controlled_by": strategy.controlled_by,
+            "manual_type": strategy.manual_type,
+            "variants": strategy.variants,
+            "ends_with_braking": strategy.definition.ends_with_braking,
+            "acceleration": {"value": acceleration.value, "source": acceleration.source}
+            if strategy.moves and strategy.controlled_by == "cnc" and acceleration is not None
+            else None,
+        },
+        "phases": phases,
+        "commanded": {
+            "id": commanded.id,
+            "title": commanded.title,
+            "description": commanded.description,
+            "phases": phases if commanded.definition is strategy.definition else phase_infos(commanded),
+        },
+        "corrections": [c.as_dict() for c in values.corrections],
+        "parameters": parameters,
+    }
+
+
+def parameter_row(values: ResolvedAxis, strategy: HomingStrategy, path: str) -> ParameterRow:
+    """One parameter of the axis (canonical path): value, unit, human unit, source, correction and effect."""
+    parameter = values.parameter(path)
+    value = values.get(path)
+    unit = parameter.unit(values.axis_type)
+    origin = values.origin(path)
+    found = effect(strategy, values, path)
+    correction = values.correction(path)
+    return {
+        "parameter": path,
+        "p_axis": parameter.id,
+        "value": plain(value),
+        "written": plain(correction.written) if correction else None,
+        "correction": correction.error if correction else None,
+        "unit": unit_label(unit) or None,
+        "human": to_human(value, unit)
+        if isinstance(value, (int, float)) and not isinstance(value, bool)
+        else None,
+        "source": {"kind": origin.kind, "line": origin.setting.line.number if origin.setting else None},
+        "effective": found.effective,
+        "reason": found.reason,
+    }
+
+
+# --- parameter cards --------------------------------------------------------------------------
+
+
+def strategies_using(parameter: Parameter) -> list[StrategyUse] | None:
+    """The registered strategies that read a homing parameter (title and example); None for other parameters."""
+    generic = parameter.path.replace("lr_hw[i]", "lr_hw[0]")
+    if generic not in HOMING_PARAMETERS:
+        return None
+    return [{"id": d.id, "title": d.title, "example": d.example} for d in strategies_reading(generic)]
+
+
+def rules_checking(parameter: Parameter) -> list[str]:
+    codes: list[str] = []
+    kind = parameter.kind
+    if kind in (BOOL, INTEGER, REAL, SYMBOL):
+        codes.append("LIS201")
+    if kind in (INTEGER, REAL):
+        codes.append("LIS202")
+    if kind == SYMBOL or parameter.symbols:
+        codes.append("LIS203")
+    if parameter.max_length:
+        codes.append("LIS206")
+    if parameter.id == "P-AXIS-00015":
+        codes.append("LIS204")
+    for code, rule in registry().items():
+        if parameter.path in rule.parameters and code not in codes:
+            codes.append(code)
+    return codes
+
+
+def parameter_card(parameter: Parameter) -> ParameterCard:
+    low, high = parameter.limits
+    drives = catalogue().drive_type_names
+    return {
+        "p_axis": parameter.id,
+        "path": parameter.path,
+        "aliases": [{"path": a.path, "kind": a.kind} for a in parameter.aliases],
+        "type": parameter.type,
+        "range": parameter.range_text or None,
+        "checked_range": None if low is None and high is None else {"min": low, "max": high},
+        "accepted_values": list(parameter.allowed) or None,
+        "symbols": list(parameter.symbols) or None,
+        "max_length": parameter.max_length,
+        "default": plain(parameter.typed_default)
+        if parameter.typed_default is not None
+        else parameter.default,
+        "units": {AXIS_TYPE_NAMES[k]: unit_label(v) for k, v in parameter.units.items() if v} or None,
+        "index_bounds": [list(b) for b in parameter.index_bounds] or None,
+        "drive_types": [f"{code} {drives.get(code, '')}".strip() for code in parameter.drive_types] or None,
+        "axis_types": [AXIS_TYPE_NAMES[a] for a in parameter.axis_types] or None,
+        "restart_required": parameter.restart,
+        "description": parameter.summary,
+        "manual_title": parameter.title or None,
+        "manual": parameter.source or None,
+        "strategies": strategies_using(parameter),
+        "rules": rules_checking(parameter),
+    }

@@ -1,0 +1,477 @@
+"""Configuration files: `[tool.achslint]` in pyproject.toml, achslint.toml or .achslint.toml.
+
+The configuration that applies to a list is the nearest one found walking up
+from the list's folder (`.achslint.toml` before `achslint.toml` before a
+pyproject.toml that has a `[tool.achslint]` table); `--config FILE` replaces
+the search. Keys are validated with pydantic: an unknown key or a bad value is
+a configuration error (exit code 2) naming the file and the key.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+from dataclasses import MISSING, asdict, dataclass, field, fields, is_dataclass, replace
+from functools import lru_cache
+from pathlib import Path, PurePosixPath
+from typing import TYPE_CHECKING, Any, Literal
+
+from ..homing.scenario import CYCLE_TIME_US
+
+if TYPE_CHECKING:
+    from pydantic import ValidationError
+
+CONFIG_NAMES = (".achslint.toml", "achslint.toml", "pyproject.toml")
+
+
+class ConfigError(Exception):
+    """A configuration file that cannot be used (exit code 2)."""
+
+
+def parse_codes(values: list[str]) -> list[str]:
+    """Rule codes and prefixes (each value may hold several, comma-separated), upper-cased.
+
+    Raises `ValueError` for one that picks no rule (`LIS9999`, `LIS6`), naming the closest codes: a
+    selection that checks nothing must never pass silently.
+    """
+    from ..rules import selector_problem
+
+    cleaned = []
+    for value in values:
+        for part in str(value).split(","):
+            if not part.strip():
+                continue
+            problem = selector_problem(part)
+            if problem is not None:
+                raise ValueError(problem)
+            cleaned.append(part.strip().upper())
+    return cleaned
+
+
+# Bounds of the numbers a configuration file may set: the same as the command-line options' (an absurd
+# value is a configuration error, never gigabytes of padding or a MemoryError).
+MAX_COLUMN = 400  # [fmt] value-column / comment-column: wider than any real list, small enough to pad
+# cycle-time-us: scenario.CYCLE_TIME_US, the CNC's cycle (the dry run's scenario has the same bounds)
+MAX_TOLERANCE_UM = 1_000_000.0  # repeatability tolerance on linear axes: up to 1 m
+MAX_TOLERANCE_DEG = 360.0  # and on rotary axes: up to one turn
+
+LEFT: Literal["left"] = "left"
+RIGHT: Literal["right"] = "right"
+KEEP: Literal["keep"] = "keep"
+AlignValues = Literal["left", "right", "keep"]
+ALIGN_VALUES: tuple[AlignValues, ...] = (LEFT, RIGHT, KEEP)
+
+
+@dataclass(frozen=True)
+class FmtOptions:
+    """Layout choices that replace what fmt would detect in a file.
+
+    Columns count from 1, as editors show them. `align_values` `"keep"` keeps
+    the file's own alignment; `"left"`/`"right"` put every value in one column
+    of that kind: `value_column`, else the one most values already use, else the
+    canonical one. `value_column` is where values start (left-aligned; also when
+    it is given with `"keep"`) or the column of their last character
+    (right-aligned). `comment_column` is where a comment after a value starts.
+    """
+
+    value_column: int | None = None
+    comment_column: int | None = None
+    align_values: AlignValues = KEEP
+
+    def __post_init__(self) -> None:
+        for name in ("value_column", "comment_column"):
+            column = getattr(self, name)
+            if column is not None and (type(column) is not int or not 1 <= column <= MAX_COLUMN):
+                raise ValueError(
+                    f"{name.replace('_', '-')} must be a column number from 1 to {MAX_COLUMN}, not {column!r}"
+                )
+        if self.align_values not in ALIGN_VALUES:
+            choices = ", ".join(f'"{choice}"' for choice in ALIGN_VALUES)
+            raise ValueError(f"align-values must be one of {choices}, not {self.align_values!r}")
+
+
+SeverityName = Literal["error", "warning", "info"]
+UnknownParameters = Literal["warn", "error", "ignore"]
+
+# How a command-line value combines with the configuration's (Settings field metadata "cli").
+REPLACE, EXTEND = "replace", "extend"
+
+
+def _key(default: Any = None, *, factory: Any = None, cli: str = REPLACE, **check: Any) -> Any:
+    """A settings field: its default, how the command line combines with it, and the checks pydantic makes
+    on the configuration file's value (`gt`, `ge`, `min_length`, `pattern`, `codes`)."""
+    metadata = {"cli": cli, "check": check}
+    if factory is not None:
+        return field(default_factory=factory, metadata=metadata)
+    return field(default=default, metadata=metadata)
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Every achslint setting, once: the configuration file's schema (keys spelled with dashes), its
+    defaults, what rules read (`ctx.options`) and what the command line may override (`Overrides`)."""
+
+    select: list[str] | None = _key(None, codes="list")
+    extend_select: list[str] = _key(factory=list, cli=EXTEND, codes="list")
+    ignore: list[str] = _key(factory=list, cli=EXTEND, codes="list")
+    per_file_ignores: dict[str, list[str]] = _key(factory=dict, codes="values")
+    severity: dict[str, SeverityName] = _key(factory=dict, codes="keys")
+    fail_on: SeverityName = _key("error")
+    include: list[str] = _key(factory=lambda: ["achsmds*.lis"])
+    exclude: list[str] = _key(factory=list, cli=EXTEND)  # the command line extends it (--extend-exclude)
+    unknown_parameters: UnknownParameters = _key("warn")
+    cycle_time_us: int = _key(1000, ge=CYCLE_TIME_US[0], le=CYCLE_TIME_US[1])
+    repeatability_tolerance_um: float = _key(20.0, ge=0, le=MAX_TOLERANCE_UM)  # linear axes (LIS403)
+    repeatability_tolerance_deg: float = _key(0.01, ge=0, le=MAX_TOLERANCE_DEG)  # rotary axes (LIS403)
+    scenario: dict[str, Any] = _key(factory=dict)  # scenario defaults for dry-run
+    cnc_root: str | None = _key(
+        None, min_length=1
+    )  # the CNC working directory start-up entries resolve against
+    docs_url: str | None = _key(None, pattern=r"^https?://\S+$")  # rule documentation links (json, SARIF)
+    # NC homing programs (relative to the configuration file's folder) that a lint of the machine's
+    # start-up list also checks against that machine (LIS6xx), as `lint rfp.nc --machine hochlauf.lis` does
+    homing_programs: list[str] = _key(factory=list)
+    fmt: FmtOptions = _key(factory=FmtOptions)  # the [fmt] table: the layout `achslint fmt` keeps or imposes
+
+    def as_file_keys(self) -> dict[str, Any]:
+        """The settings as a configuration file spells them."""
+        return {file_key(f.name): _as_file_value(getattr(self, f.name)) for f in fields(self)}
+
+
+def _as_file_value(value: Any) -> Any:
+    """A setting as the file spells it: a table's keys with dashes."""
+    if is_dataclass(value) and not isinstance(value, type):
+        return {file_key(name): item for name, item in asdict(value).items()}
+    return value
+
+
+def file_key(name: str) -> str:
+    """The configuration-file spelling of a settings field (`fail_on` -> `fail-on`)."""
+    return name.replace("_", "-")
+
+
+def _check_codes(value: Any, how: str) -> Any:
+    """The one validation of rule codes in a configuration file (the command line uses `parse_codes` too)."""
+    from ..rules import known_codes
+
+    if value is None:
+        return None
+    if how == "list":
+        return parse_codes(value)
+    if how == "values":
+        return {pattern: parse_codes(codes) for pattern, codes in value.items()}
+    codes = parse_codes(list(value))
+    partial = [code for code in codes if code not in known_codes()]
+    if partial:  # an override is looked up by the full code, so a prefix would change nothing
+        raise ValueError(f"severity overrides take full rule codes, not the prefix {partial[0]!r}")
+    return dict(zip(codes, value.values(), strict=True))
+
+
+@lru_cache(maxsize=1)
+def _file_model() -> Any:
+    """The pydantic model of a configuration file, derived from `Settings` (built only when a file is
+    read: importing pydantic costs more than linting a small list)."""
+    from pydantic import ConfigDict, create_model
+
+    return create_model(
+        "SettingsFile", __config__=ConfigDict(extra="forbid", populate_by_name=True), **_definitions(Settings)
+    )
+
+
+def _table_model(table: type) -> Any:
+    """A table of the configuration file (`[fmt]`) read into its dataclass: keys with dashes, no unknown
+    keys, and the dataclass's own checks (its `ValueError`s become configuration errors)."""
+    from typing import Annotated
+
+    from pydantic import AfterValidator, ConfigDict, create_model
+
+    names = [item.name for item in fields(table)]
+    model = create_model(
+        "table",  # pydantic names it in "should be a valid dictionary or instance of table"
+        __config__=ConfigDict(extra="forbid", populate_by_name=True),
+        **_definitions(table),
+    )
+    return Annotated[
+        model, AfterValidator(lambda read: table(**{name: getattr(read, name) for name in names}))
+    ]
+
+
+def _definitions(settings: type) -> dict[str, Any]:
+    """The pydantic field of every field of a settings dataclass: its type, the file's spelling (dashes),
+    its default and the checks of its metadata (`_key`); a dataclass-typed field is a table of its own."""
+    from typing import Annotated, get_type_hints
+
+    from pydantic import AfterValidator, Field
+
+    hints = get_type_hints(settings)
+    definitions: dict[str, Any] = {}
+    for item in fields(settings):
+        check = dict(item.metadata.get("check", {}))
+        codes = check.pop("codes", None)
+        kind: Any = hints[item.name]
+        if codes:
+            kind = Annotated[kind, AfterValidator(lambda value, how=codes: _check_codes(value, how))]
+        if isinstance(kind, type) and is_dataclass(kind):
+            kind = _table_model(kind)
+        default: dict[str, Any] = (
+            {"default_factory": item.default_factory}
+            if item.default_factory is not MISSING
+            else {"default": item.default}
+        )
+        definitions[item.name] = (kind, Field(alias=file_key(item.name), **default, **check))
+    return definitions
+
+
+@dataclass(frozen=True)
+class ResolvedConfig:
+    """Settings plus the file they came from (None: built-in defaults)."""
+
+    settings: Settings
+    path: Path | None = None
+
+    @property
+    def root(self) -> Path:
+        return self.path.parent if self.path else Path.cwd()
+
+    def relative(self, target: Path) -> str:
+        try:
+            return PurePosixPath(
+                Path(os.path.realpath(target)).relative_to(os.path.realpath(self.root))
+            ).as_posix()
+        except (ValueError, OSError):
+            return PurePosixPath(Path(target)).as_posix()
+
+    def cnc_root(self) -> Path | None:
+        """The `cnc-root` setting as a folder (relative to the configuration file's folder), or None."""
+        if self.settings.cnc_root is None:
+            return None
+        if self.path is None:  # pragma: no cover - the built-in defaults set no cnc-root
+            return Path(os.path.abspath(Path(self.settings.cnc_root).expanduser()))
+        return named_path(self.path, self.settings.cnc_root)
+
+    def ignored_for(self, target: Path) -> list[str]:
+        """Codes ignored for one file by `per-file-ignores`."""
+        codes: list[str] = []
+        for pattern, ignored in self.settings.per_file_ignores.items():
+            if matches_glob(self.relative(target), pattern):
+                codes.extend(ignored)
+        return codes
+
+
+def matches_glob(relative: str, pattern: str) -> bool:
+    """Glob match on the path relative to the config folder; a pattern without `/` also matches any file name."""
+    if fnmatch.fnmatch(relative, pattern):
+        return True
+    if "/" not in pattern:
+        return fnmatch.fnmatch(relative.rsplit("/", 1)[-1], pattern)
+    return fnmatch.fnmatch(relative, pattern.lstrip("./")) or fnmatch.fnmatch(
+        relative, pattern.rstrip("/") + "/*"
+    )
+
+
+def _format_error(path: Path, error: ValidationError, model: Any) -> str:
+    problems = []
+    for item in error.errors():
+        key = ".".join(str(part) for part in item["loc"]) or "(top level)"
+        if item["type"] == "extra_forbidden":
+            table = model
+            for part in item["loc"][:-1]:  # an unknown key inside a table: that table's keys
+                table = next(f.annotation for n, f in table.model_fields.items() if part in (n, f.alias))
+            allowed = ", ".join(sorted(f.alias or name for name, f in table.model_fields.items()))
+            problems.append(f"unknown key `{key}` (known keys: {allowed})")
+        else:
+            problems.append(f"key `{key}`: {item['msg']}")
+    return f"configuration error in {path}: " + "; ".join(problems)
+
+
+def load_file(path: Path) -> ResolvedConfig:
+    """Read one configuration file (pyproject.toml: its [tool.achslint] table)."""
+    from pydantic import ValidationError
+
+    from ..core.tomlfile import read_toml
+
+    data = read_toml(path, "configuration", ConfigError)
+    if path.name == "pyproject.toml":
+        tool = data.get("tool", {})
+        data = tool.get("achslint", {}) if isinstance(tool, dict) else {}
+        if not isinstance(data, dict):
+            raise ConfigError(
+                f"configuration error in {path}: `tool.achslint` must be a table ([tool.achslint]), "
+                f"not {type(data).__name__}"
+            )
+    model = _file_model()
+    try:
+        validated = model.model_validate(data)
+    except ValidationError as exc:
+        raise ConfigError(_format_error(path, exc, model)) from None
+    settings = Settings(**{item.name: getattr(validated, item.name) for item in fields(Settings)})
+    _check_contained(path, settings)
+    return ResolvedConfig(settings, path)
+
+
+def named_path(config: Path, value: str) -> Path:
+    """A path a configuration file names, relative to the file's folder (`~` is the home folder)."""
+    return Path(os.path.normpath(Path(os.path.abspath(config)).parent / Path(value).expanduser()))
+
+
+def repository_of(config: Path) -> Path:
+    """The repository a configuration file belongs to: the git work tree that holds it (the nearest
+    folder above it with a `.git`), else the configuration file's own folder."""
+    folder = Path(os.path.abspath(config)).parent
+    for candidate in (folder, *folder.parents):
+        if os.path.lexists(candidate / ".git"):
+            return candidate
+    return folder
+
+
+def _check_contained(path: Path, settings: Settings) -> None:
+    """Paths a configuration names stay inside its repository: a pull request that changes the
+    configuration must not make achslint read (and quote) files elsewhere on the machine that runs it.
+    `homing-programs` must also name NC programs (`.nc`)."""
+    from ..core.files import inside
+
+    repository = repository_of(path)
+    named = [("cnc-root", settings.cnc_root)] if settings.cnc_root is not None else []
+    named += [("homing-programs", program) for program in settings.homing_programs]
+    for key, value in named:
+        if "\x00" in value:
+            raise ConfigError(
+                f"configuration error in {path}: key `{key}`: a path cannot hold a NUL character (\\u0000)"
+            )
+        target = named_path(path, value)
+        if not target.is_relative_to(repository):
+            problem = f"lies outside {repository}"
+        elif not inside(target, repository):  # links followed
+            problem = f"leads outside {repository} through a symbolic link"
+        else:
+            problem = ""
+        if problem:
+            where = (
+                "the git work tree"
+                if os.path.lexists(repository / ".git")
+                else "the configuration's folder (no git work tree holds it)"
+            )
+            raise ConfigError(
+                f"configuration error in {path}: key `{key}`: {value!r} {problem}, {where}; "
+                "name a folder or file inside it"
+            )
+        if key == "homing-programs" and not value.lower().endswith(PROGRAM_SUFFIXES):
+            raise ConfigError(
+                f"configuration error in {path}: key `homing-programs`: {value!r} is not an NC program "
+                f"(a name ending in {', '.join(PROGRAM_SUFFIXES)})"
+            )
+
+
+PROGRAM_SUFFIXES = (".nc",)  # what the command line takes for an NC homing program (api.is_program)
+
+
+def _has_table(pyproject: Path) -> bool:
+    """Whether a pyproject.toml has a `[tool.achslint]` table (another project's `tool = 5` is not ours).
+
+    A pyproject.toml that is not valid TOML is a configuration error: it may hold our table, and using
+    the defaults instead would pass silently what the project meant to fail.
+    """
+    from ..core.tomlfile import read_toml
+
+    try:
+        data = read_toml(pyproject, "configuration", ConfigError)
+    except ConfigError as exc:
+        if str(exc).startswith("cannot read"):
+            return False
+        raise
+    tool = data.get("tool", {})
+    return isinstance(tool, dict) and "achslint" in tool
+
+
+@lru_cache(maxsize=256)
+def _config_in(folder: Path) -> Path | None:
+    from ..core.files import SETTINGS_LIMIT, not_a_list_file
+
+    for name in CONFIG_NAMES:
+        candidate = folder / name
+        try:
+            exists = os.path.lexists(candidate)
+        except (OSError, ValueError):  # a folder on the way we may not look into has no configuration for us
+            continue
+        if not exists:
+            continue
+        problem = not_a_list_file(candidate, limit=SETTINGS_LIMIT, what="a configuration")
+        if problem is not None and problem != "permission denied":
+            # a FIFO, a device or a dangling link where a configuration belongs: it may be meant to
+            # apply, and skipping it silently would lint with other settings than the project's
+            raise ConfigError(
+                f"configuration error: {candidate} is {problem}; achslint does not read it "
+                "(replace it with a regular file, or remove it)"
+            )
+        if problem is None and (name != "pyproject.toml" or _has_table(candidate)):
+            return candidate
+    return None
+
+
+def discover(start: Path) -> ResolvedConfig:
+    """The nearest configuration above `start` (a file or folder), or the defaults.
+
+    Never fails on the path itself: a link loop, a name too long for the file system or a
+    folder we may not read only stop the search where they are.
+    """
+    try:
+        folder = Path(os.path.realpath(start))
+        is_folder = folder.is_dir()
+    except (OSError, RuntimeError, ValueError):
+        folder, is_folder = Path(os.path.abspath(start)), False
+    if not is_folder:
+        folder = folder.parent
+    for candidate in (folder, *folder.parents):
+        found = _config_in(candidate)
+        if found is not None:
+            return _load_cached(found)
+    return ResolvedConfig(Settings())
+
+
+@lru_cache(maxsize=64)
+def _load_cached(path: Path) -> ResolvedConfig:
+    return load_file(path)
+
+
+class Overrides:
+    """What the command line (or an editor) says about settings; an absent or None value means "use the
+    configuration". Keys are `Settings` field names; a field marked `cli=EXTEND` adds to the configuration's
+    list (`extend_exclude` adds to `exclude`)."""
+
+    def __init__(self, **values: Any) -> None:
+        # how each setting combines with the configuration (plain strings: an Overrides pickles)
+        known = {f.name: str(f.metadata["cli"]) for f in fields(Settings)}
+        self.values: dict[str, Any] = {}
+        for name, value in values.items():
+            target = "exclude" if name == "extend_exclude" else name
+            if target not in known:
+                raise TypeError(f"not a setting: {name}")
+            if value is not None and value != []:
+                self.values[target] = value
+        self._modes = known
+
+    def __getattr__(self, name: str) -> Any:
+        """The overridden value of a setting, None when the command line leaves it to the configuration."""
+        if name.startswith("_") or name == "values" or name not in self._modes:
+            raise AttributeError(name)
+        return self.values.get(name)
+
+    def key(self) -> tuple[tuple[str, str], ...]:
+        """A stable, hashable summary of what is overridden (equal overrides give equal keys)."""
+        return tuple(sorted((name, repr(value)) for name, value in self.values.items()))
+
+    def apply(self, settings: Settings) -> Settings:
+        changes: dict[str, Any] = {}
+        for name, value in self.values.items():
+            if self._modes[name] == EXTEND:
+                changes[name] = [*getattr(settings, name), *value]
+            else:
+                changes[name] = list(value) if isinstance(value, list) else value
+        return replace(settings, **changes)
+
+
+def forget_cached() -> None:
+    """Forget which folders hold a configuration and what the files said (a file was created, edited or
+    deleted: the language server calls this when the editor reports such a change)."""
+    _config_in.cache_clear()
+    _load_cached.cache_clear()

@@ -1,0 +1,136 @@
+"""The lint engine: the one loop every rule runs in, whatever it looks at.
+
+A rule takes part in one or more scopes (`rules.Scope`); `run` takes the subject of one scope through
+the whole pipeline:
+
+    the scope's enabled rules -> `noqa` suppressions -> AFTER rules (LIS009) -> severity overrides -> sorted
+
+    scope     subject                                      caller
+    LIST      (Context,)                                   linter: one axis list
+    MACHINE   (members, start-up lists)                    api (a machine's lists), linter (XML projects)
+    PROGRAM   (Program, Machine)                           programlint: a homing program on its machine
+    AFTER     (Suppressions, enabled)                      run itself, after LIST or PROGRAM
+
+Which rules run and how severe their findings are is a `Policy`: select / extend-select / ignore and the
+severity table of the configuration that applies to the file. The machine step checks lists that may each
+have their own configuration; there a function gives the policy of the file a finding is in.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass
+from functools import cached_property, lru_cache
+
+from ..core.diagnostics import Diagnostic, Severity
+from ..rules import Check, Scope, matches, registry
+from .suppression import Suppressions
+
+ALL = ("ALL",)
+
+
+@dataclass(frozen=True)
+class Policy:
+    """Which rules are enabled (ruff-style select / extend-select / ignore, by code or prefix) and the
+    severity each code's findings get instead of the rule's own (`[severity]` of the configuration)."""
+
+    select: tuple[str, ...] | None = None  # None or empty: every rule
+    extend_select: tuple[str, ...] = ()
+    ignore: tuple[str, ...] = ()
+    severity: tuple[tuple[str, Severity], ...] = ()
+
+    @classmethod
+    def of(
+        cls,
+        select: Iterable[str] | None = None,
+        extend_select: Iterable[str] = (),
+        ignore: Iterable[str] = (),
+        severity: Mapping[str, str] | None = None,
+    ) -> Policy:
+        return cls(
+            tuple(select) if select is not None else None,
+            tuple(extend_select),
+            tuple(ignore),
+            tuple((code, Severity(name)) for code, name in sorted((severity or {}).items())),
+        )
+
+    def enabled(self, code: str) -> bool:
+        chosen = self.select or ALL
+        if not (matches(code, chosen) or matches(code, self.extend_select)):
+            return False
+        return not matches(code, self.ignore)
+
+    @cached_property
+    def overrides(self) -> dict[str, Severity]:
+        return dict(self.severity)
+
+
+# The policy of the file a finding is in (the machine step: each list has its own configuration).
+PolicyOf = Callable[[str], Policy]
+
+
+def run(
+    scope: Scope,
+    subject: tuple[object, ...],
+    policy: Policy | PolicyOf,
+    *,
+    suppressions: Suppressions | None = None,
+    whole_axis: bool = True,
+) -> list[Diagnostic]:
+    """The findings of every enabled rule of `scope` on `subject`, sorted.
+
+    `suppressions`: the `noqa` directives of the list or program the subject was read from; they drop what
+    they cover, then the AFTER rules judge them. `whole_axis=False` for a default list, which alone is no
+    axis: the rules that judge parameters together (`Rule.needs_whole_axis`) do not run on it.
+    """
+    fixed = policy if isinstance(policy, Policy) else None
+    policy_of = _always(policy) if isinstance(policy, Policy) else policy
+    found: list[Diagnostic] = []
+    for code, check in enabled_checks(scope, fixed, whole_axis):
+        if fixed is not None:
+            found.extend(check(*subject))
+        else:  # every rule of the scope ran: a finding stays when the policy of its file enables the rule
+            found.extend(d for d in check(*subject) if policy_of(d.path).enabled(code))
+    if suppressions is not None:
+        found = suppressions.apply(found)
+        own = policy_of(suppressions.path)
+        enabled = enabled_codes(own, whole_axis).__contains__
+        for _, check in enabled_checks(Scope.AFTER, own, whole_axis):
+            found.extend(check(suppressions, enabled))
+    for diagnostic in found:
+        override = (fixed or policy_of(diagnostic.path)).overrides.get(diagnostic.code)
+        if override is not None:
+            diagnostic.severity = override
+    found.sort(key=Diagnostic.sort_key)
+    return found
+
+
+def _always(policy: Policy) -> PolicyOf:
+    return lambda _path: policy
+
+
+@lru_cache(maxsize=256)
+def enabled_checks(
+    scope: Scope, policy: Policy | None, whole_axis: bool = True
+) -> tuple[tuple[str, Check], ...]:
+    """(code, check) of the rules that look at `scope` and that `policy` enables (None: every rule), in
+    code order."""
+    chosen = []
+    for code, rule in registry().items():
+        check = rule.checker(scope)
+        if check is None or (policy is not None and not policy.enabled(code)):
+            continue
+        if whole_axis or not rule.needs_whole_axis:
+            chosen.append((code, check))
+    return tuple(chosen)
+
+
+@lru_cache(maxsize=256)
+def enabled_codes(policy: Policy, whole_axis: bool = True) -> frozenset[str]:
+    """The codes of every rule `policy` enables (for AFTER rules: a `noqa` for a rule that is not enabled
+    is not unused)."""
+    return frozenset(
+        code
+        for code, rule in registry().items()
+        if policy.enabled(code) and (whole_axis or not rule.needs_whole_axis)
+    )

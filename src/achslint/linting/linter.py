@@ -1,0 +1,220 @@
+"""Lint of one list, or of the lists of one XML file: bytes -> parsed list -> the lint engine.
+
+parse -> `lintengine.run` (enabled rules -> `noqa` suppressions -> LIS009 -> severity overrides -> sort)
+      -> a `FileResult` with what the machine step needs (`machine.summary`)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ..core.decode import UnreadableInput
+from ..core.diagnostics import Diagnostic, Severity
+from ..core.files import is_xml
+from ..machine import startup as machine
+from ..rules import Scope
+from ..rules.context import Context
+from ..syntax.parser import ASSIGNMENT, END, ListFile, parse_bytes
+from .config import Settings
+from .engine import Policy, run
+from .suppression import Suppressions
+
+if TYPE_CHECKING:
+    from ..machine.startup import Member, Summary
+    from ..syntax.xmlinput import EmbeddedList
+
+
+@dataclass
+class FileSettings:
+    """Everything that decides what is reported for one file: its settings (configuration nearest the file
+    with the command line applied), the codes `per-file-ignores` ignores for it, and what to keep."""
+
+    settings: Settings = field(default_factory=Settings)
+    ignored_here: list[str] = field(default_factory=list)  # per-file-ignores matching this file
+    keep_source: bool = True  # keep the line texts for code frames (the full and gitlab formats)
+    keep_context: bool = False  # keep the rules' Context on the result (the language server reuses it)
+    machine_in_file: bool = (
+        True  # check the lists of one XML file as a machine (off: the caller groups files)
+    )
+
+    @classmethod
+    def of(
+        cls, select: list[str] | None = None, ignore: list[str] | None = None, *, keep_source: bool = True
+    ) -> FileSettings:
+        """Settings that run the rules `select` (default: all) minus `ignore`."""
+        return cls(Settings(select=select, ignore=list(ignore or [])), keep_source=keep_source)
+
+    @property
+    def policy(self) -> Policy:
+        """Which rules run for this file, and the severities its configuration sets."""
+        s = self.settings
+        return Policy.of(s.select, s.extend_select, [*s.ignore, *self.ignored_here], s.severity)
+
+    @property
+    def fail_on(self) -> str:
+        return self.settings.fail_on
+
+
+@dataclass
+class FileResult:
+    name: str
+    diagnostics: list[Diagnostic]
+    error: str | None = None  # the file could not be read or decoded at all
+    source_lines: list[str] = field(default_factory=list)  # kept for code frames when there are findings
+    fixed: int = 0  # diagnostics fixed by --fix
+    diff: str = ""  # what --fix --diff would change
+    fixed_data: bytes | None = None  # the fixed content (standard input only)
+    summary: Summary | None = None  # what the machine-level rules need (machine.summary)
+    context: Context | None = None  # with FileSettings.keep_context: the parsed, resolved list
+    summaries: list[Summary] = field(default_factory=list)  # the same, one per list, for an XML file
+    note: str | None = None  # skipped on purpose (XML without an axis list): said once, not an error
+    fail_on: str = "error"  # lowest severity that fails the run for this file (its configuration's fail-on)
+
+    @property
+    def failing(self) -> bool:
+        """Whether a finding reaches this file's fail-on severity."""
+        threshold = Severity(self.fail_on).rank
+        return any(d.severity.rank >= threshold for d in self.diagnostics)
+
+
+def lint_file(
+    data: bytes, name: str, settings: FileSettings | None = None, defaults: bytes | None = None
+) -> FileResult:
+    """Lint the bytes of one list (or of an XML file holding lists); unreadable input sets `error`.
+
+    `defaults` is the default axis list the CNC loads underneath (start-up key default_achs_mds).
+    """
+    settings = settings or FileSettings()
+    if is_xml(name):
+        return _check_xml(data, name, settings)
+    try:
+        file = parse_bytes(data, name)
+        default_file = parse_bytes(defaults, "default list") if defaults is not None else None
+    except UnreadableInput as exc:
+        return FileResult(name, [], f"{name}: {exc}")
+    if not looks_like_a_list(file):
+        return FileResult(name, [], f"{name}: {NOT_A_LIST}")
+    return _check_file(file, name, settings, default_file=default_file)
+
+
+def lint_parsed(
+    file: ListFile, name: str, settings: FileSettings | None = None, default_file: ListFile | None = None
+) -> FileResult:
+    """`lint_file` for a list that is already parsed (the language server parses edited lines only)."""
+    settings = settings or FileSettings()
+    if not looks_like_a_list(file):
+        return FileResult(name, [], f"{name}: {NOT_A_LIST}")
+    return _check_file(file, name, settings, default_file=default_file)
+
+
+NOT_A_LIST = (
+    "not an axis list (no line is a `parameter value` assignment and there is no `Ende`); "
+    "nothing of its content is shown"
+)
+
+
+def looks_like_a_list(file: ListFile) -> bool:
+    """Whether a file is an axis list at all: some line assigns a well-formed name, or it has the end marker.
+
+    Anything else (a password file, the process environment, a binary) is reported once instead of line by
+    line, so none of its lines end up in a report or a CI log.
+    """
+    content = False
+    for line in file.lines:
+        if line.kind == END or (line.kind == ASSIGNMENT and line.path_ok):
+            return True
+        content = content or line.kind == ASSIGNMENT
+    return not content
+
+
+def _check_file(
+    file: ListFile,
+    name: str,
+    settings: FileSettings,
+    embedded: EmbeddedList | None = None,
+    default_file: ListFile | None = None,
+) -> FileResult:
+    # A default list (default_mds.lis) only supplies values underneath every axis: alone it is no axis,
+    # so the rules that judge a whole axis do not run on it (they run on the axis lists that load it).
+    partial = embedded is None and machine.is_default_list(Path(name))
+    ctx = Context(
+        name, file, settings.settings, embedded=embedded, default_file=default_file, default_list=partial
+    )
+    diagnostics = run(
+        Scope.LIST,
+        (ctx,),
+        settings.policy,
+        suppressions=Suppressions.of_list(file, name),
+        whole_axis=not partial,
+    )
+    lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
+    return FileResult(
+        name,
+        diagnostics,
+        None,
+        lines,
+        summary=machine.summary(ctx.values),
+        context=ctx if settings.keep_context else None,
+    )
+
+
+def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
+    """A list's machine summary with its positions moved into the XML file."""
+    mapped = dict(summary)
+    for key, value in summary.items():
+        if key.endswith("_at") and value is not None:
+            mapped[key] = embedded.position(*value)
+    return mapped
+
+
+def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
+    """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
+    from ..syntax.parser import parse_text, split_lines
+    from ..syntax.xmlinput import NoAxisList, extract, root_element, source_text
+
+    try:
+        lists = extract(data, name)
+    except NoAxisList:
+        return FileResult(
+            name,
+            [],
+            note=f"{name}: skipped, an XML file without an axis list "
+            f"(<{root_element(data)}>: no <AchsMds> or <AX_MDS> in it)",
+        )
+    except UnreadableInput as exc:
+        return FileResult(name, [], str(exc))
+    diagnostics: list[Diagnostic] = []
+    members: list[Member] = []
+    for embedded in lists:
+        result = _check_file(parse_text(embedded.text, name), name, settings, embedded)
+        members.append((name, _mapped_summary(result.summary or {}, embedded)))
+        for d in result.diagnostics:
+            d.line, d.column = embedded.position(d.line, d.column)
+            d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
+            if d.end_line < d.line or (d.end_line == d.line and d.end_column <= d.column):
+                d.end_line, d.end_column = d.line, d.column + 1
+            d.related = tuple(
+                replace(
+                    r,
+                    line=embedded.position(r.line, r.column)[0],
+                    column=embedded.position(r.line, r.column)[1],
+                )
+                for r in d.related
+            )
+            d.fix = None  # edits refer to the embedded text; XML files are not rewritten
+            diagnostics.append(d)
+    if len(members) > 1 and settings.machine_in_file:  # a TwinCAT project: its axes form one machine
+        diagnostics.extend(run(Scope.MACHINE, (members, []), settings.policy))
+    diagnostics.sort(key=Diagnostic.sort_key)
+    lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
+    return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])
+
+
+def findings(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:
+    """Diagnostics for the bytes of one list. Raises `UnreadableInput` for UTF-16/32 input."""
+    result = lint_file(data, name, settings)
+    if result.error or result.note:
+        raise UnreadableInput(result.error or result.note)
+    return result.diagnostics

@@ -1,0 +1,127 @@
+"""`noqa` suppressions: one model for lists and for the comments of NC homing programs.
+
+* Lists, end of line: `# noqa: LIS302` or `# noqa: LIS302, LIS303` after a value, also
+  inside a `(` comment (`( fast cam search  noqa: LIS303`); a bare `noqa`
+  suppresses every diagnostic on that line.
+* Lists, file level: a comment line `# achslint: noqa: LIS401` suppresses the codes in
+  the whole file; `# achslint: noqa` alone suppresses everything.
+* NC programs (LIS6xx): the same words inside the block's comment,
+  `N20 G01 Z5 (noqa: LIS606)` or `N20 G01 Z5 ; noqa: LIS606`, and a comment line
+  `; achslint: noqa: LIS606` (or `(achslint: noqa: LIS606)`) for the whole program.
+
+Both are read into `Suppressions`: directives with their place, which apply the same way (a directive
+on the finding's line first, then one for the whole file) and remember what they suppressed, so the
+ones that suppress nothing can be reported (LIS009) in lists and programs alike.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from ..core.diagnostics import Diagnostic
+from ..syntax import parser as syntax
+
+# A code is letters and a digit, then letters or digits: `LIS3O2` (a letter O) is read whole and reported
+# as an unknown code (LIS009), not as `LIS3` followed by text.
+_CODE = r"[A-Za-z]+[0-9][A-Za-z0-9]*"
+_CODES = rf"(?P<codes>{_CODE}(?:\s*,\s*{_CODE})*)"
+LINE_NOQA = re.compile(rf"(?<![\w:])noqa(?::\s*{_CODES})?", re.IGNORECASE)
+FILE_NOQA = re.compile(rf"^#\s*achslint:\s*noqa(?::\s*{_CODES})?\s*$", re.IGNORECASE)
+PROGRAM_FILE_NOQA = re.compile(rf"^(?:;|\()\s*achslint:\s*noqa(?::\s*{_CODES})?\s*\)?\s*$", re.IGNORECASE)
+
+
+@dataclass
+class Directive:
+    """One `noqa`: where it is written (line, first and past-last column) and the codes it names."""
+
+    line: int
+    column: int
+    end_column: int
+    codes: list[str] | None  # None: every code
+    file_level: bool = False
+    used: set[str] = field(default_factory=set)  # the codes it suppressed
+
+    def covers(self, code: str) -> bool:
+        return self.codes is None or code in self.codes
+
+
+@dataclass
+class Suppressions:
+    """The `noqa` directives of one list or program (`path`: its name in findings)."""
+
+    path: str
+    directives: list[Directive] = field(default_factory=list)
+
+    @classmethod
+    def of_list(cls, file: syntax.ListFile, path: str) -> Suppressions:
+        return cls(path, list(_list_directives(file)))
+
+    @classmethod
+    def of_program(cls, lines: Iterable[str], path: str) -> Suppressions:
+        """The directives in the comments of an NC program (`lines`: its text, line by line)."""
+        return cls(path, list(_program_directives(lines)))
+
+    def apply(self, diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+        """The diagnostics no directive suppresses; each directive records the codes it suppressed."""
+        if not self.directives:
+            return diagnostics
+        by_line: dict[int, list[Directive]] = {}
+        whole = [d for d in self.directives if d.file_level]
+        for directive in self.directives:
+            if not directive.file_level:
+                by_line.setdefault(directive.line, []).append(directive)
+        kept: list[Diagnostic] = []
+        for diagnostic in diagnostics:
+            suppressor = next(
+                (d for d in by_line.get(diagnostic.line, ()) if d.covers(diagnostic.code)), None
+            )
+            if suppressor is None:
+                suppressor = next((d for d in whole if d.covers(diagnostic.code)), None)
+            if suppressor is None:
+                kept.append(diagnostic)
+            else:
+                suppressor.used.add(diagnostic.code)
+        return kept
+
+
+def _codes(match: re.Match[str]) -> list[str] | None:
+    text = match.group("codes")
+    return None if text is None else [c.strip().upper() for c in text.split(",")]
+
+
+def _list_directives(file: syntax.ListFile) -> Iterable[Directive]:
+    for line in file.lines:
+        if line.kind == syntax.COMMENT:
+            match = FILE_NOQA.match((line.comment or "").strip())
+            if match:
+                yield Directive(
+                    line.number, line.path_column, line.end_column, _codes(match), file_level=True
+                )
+            continue
+        if line.kind == syntax.ASSIGNMENT:
+            if line.rest is not None:
+                trailing = line.rest
+            elif line.value is not None and line.value.startswith(("#", "(")):
+                trailing = line.value + line.sep2  # a suppression comment where the value would be
+            else:
+                continue
+            match = LINE_NOQA.search(trailing)
+            if match:  # columns are worked out only for the rare line that has a directive
+                offset = line.rest_column if line.rest is not None else line.value_column
+                yield Directive(line.number, offset + match.start(), offset + match.end(), _codes(match))
+
+
+def _program_directives(lines: Iterable[str]) -> Iterable[Directive]:
+    for number, text in enumerate(lines, 1):
+        stripped = text.strip()
+        match = PROGRAM_FILE_NOQA.match(stripped)
+        if match:
+            start = len(text) - len(text.lstrip()) + 1
+            yield Directive(number, start, start + len(stripped), _codes(match), file_level=True)
+            continue
+        starts = [at for at in (text.find("("), text.find(";")) if at >= 0]
+        found = LINE_NOQA.search(text, min(starts)) if starts else None
+        if found:
+            yield Directive(number, found.start() + 1, found.end() + 1, _codes(found))

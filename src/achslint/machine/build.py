@@ -1,0 +1,369 @@
+"""A machine from its start-up list: `build_machine(hochlauf.lis) -> Machine`.
+
+The start-up list names the axis lists (`achs_mds[i]`, each read with `default_achs_mds` underneath, as
+the CNC loads them) and the channel lists (`sda_mds[i]`, with `default_sda_mds` underneath). The channel
+list of the chosen channel gives the names NC programs use and their logical axis numbers; each name is
+matched to the axis list whose `kopf.achs_nr` has that number. Without a channel list, each axis goes by
+its `kopf.log_achs_name`. Gantry pairs come from the slaves' `kenngr.gantry_ax_nr` (P-AXIS-00070) and from
+the coupled pairs of the channel list (`synchro_data.koppel_gruppe[g].paar[i]`).
+
+Anything the CNC would refuse to start with — the start-up list, an axis list or the channel list missing
+or unreadable — raises `MachineError` naming the file and the line of the start-up list that names it.
+What can be worked around (a channel entry without an axis list, a name given twice) is kept in
+`Machine.notes`, in words.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..axis.resolved import ResolvedAxis, resolve_bytes
+from ..core.decode import UnreadableInput
+from ..core.files import read_list, reason, same_file
+from .channel import ChannelList, read_channel_list
+from .model import Location, Machine, MachineAxis
+from .startup import Startup, StartupEntry, read_startup
+
+
+class MachineError(Exception):
+    """The machine cannot be built: a file is missing or unreadable. `str()` names file and line."""
+
+    def __init__(self, message: str, path: Path | str | None = None, line: int | None = None):
+        super().__init__(message)
+        self.message = message
+        self.path = None if path is None else str(path)
+        self.line = line
+
+    def __str__(self) -> str:
+        if self.path is None:
+            return self.message
+        where = self.path if self.line is None else f"{self.path}:{self.line}"
+        return f"{where}: {self.message}"
+
+
+def build_machine(startup: Path, *, cnc_root: Path | None = None, channel: int = 1) -> Machine:
+    """The axes of the machine the start-up list describes, named as channel `channel` names them.
+
+    Raises `MachineError` when the start-up list, an axis list it names or the channel list cannot be read.
+    """
+    entries = _read_startup(startup, cnc_root)
+    defaults = _read_entry(entries, entries.default, "default axis list") if entries.default else None
+    machine = Machine(startup=startup, channel=channel)
+    lists: list[tuple[StartupEntry, bytes, ResolvedAxis]] = []
+    for entry in entries.axes:
+        data = _read_entry(entries, entry, "axis list")
+        lists.append((entry, data, resolve_bytes(data, _shown(entry), defaults)))
+    channel_list = _channel_list(entries, channel, machine)
+    if channel_list is None:
+        _named_by_axis_lists(machine, lists, defaults)
+    else:
+        _named_by_channel(machine, channel_list, lists, defaults)
+    _gantry(machine, channel_list)
+    return machine
+
+
+def _read_startup(startup: Path, cnc_root: Path | None) -> Startup:
+    """The start-up list's entries; the files they name shown relative to the working directory, like
+    every other path in reports."""
+    try:
+        entries = read_startup(startup, cnc_root=cnc_root, root_origin="as given" if cnc_root else "")
+    except OSError as exc:
+        raise MachineError(f"cannot read the start-up list: {reason(exc)}", startup) from None
+    except UnreadableInput as exc:
+        raise MachineError(str(exc), startup) from None
+    for entry in [entries.default, entries.default_channel, *entries.axes, *entries.channels]:
+        if entry is not None and entry.path is not None:
+            entry.path = _relative(entry.path)
+    return entries
+
+
+def _relative(path: Path) -> Path:
+    try:
+        return path.relative_to(Path.cwd())
+    except ValueError:
+        return path
+
+
+def _shown(entry: StartupEntry) -> str:
+    return str(entry.path) if entry.path is not None else entry.raw
+
+
+def _read_entry(startup: Startup, entry: StartupEntry, kind: str) -> bytes:
+    """The bytes of a list the start-up list names; `MachineError` at the entry's line when it cannot be read."""
+    from ..api import read_one_list
+
+    if entry.refused:
+        raise MachineError(
+            f"`{entry.key}` names the {kind} `{entry.raw}`, which achslint does not read: {entry.refused}; "
+            "give the CNC's working directory with --cnc-root",
+            startup.path,
+            entry.line,
+        )
+    if entry.path is not None and same_file(entry.path, startup.path):
+        raise MachineError(
+            f"`{entry.key}` names this start-up list itself (`{entry.raw}`), not the {kind}: name the {kind}'s "
+            "file",
+            startup.path,
+            entry.line,
+        )
+    if entry.path is None:
+        raise MachineError(
+            f"`{entry.key}` names the {kind} `{entry.raw}`, which does not exist (looked for `{entry.looked}`); "
+            "the CNC does not start without it: correct the entry or give the CNC's working directory "
+            "with --cnc-root",
+            startup.path,
+            entry.line,
+        )
+    try:
+        return read_one_list(entry.path, str(entry.path))
+    except OSError as exc:
+        why = str(exc) if exc.errno is None else reason(exc)
+        raise MachineError(f"cannot read the {kind} `{entry.raw}`: {why}", startup.path, entry.line) from None
+    except UnreadableInput as exc:
+        raise MachineError(
+            f"the {kind} `{entry.raw}` cannot be read: {exc}", startup.path, entry.line
+        ) from None
+
+
+def _index(entry: StartupEntry) -> int:
+    return int(entry.key[entry.key.index("[") + 1 : -1])
+
+
+def _channel_list(startup: Startup, channel: int, machine: Machine) -> ChannelList | None:
+    """The chosen channel's list (with the default channel list underneath); None when the start-up list
+    names no channel list at all."""
+    if not startup.channels:
+        machine.notes.append(
+            "the start-up list names no channel list (sda_mds[i]): each axis goes by its kopf.log_achs_name"
+        )
+        return None
+    chosen = [entry for entry in startup.channels if _index(entry) == channel - 1]
+    if not chosen:
+        named = ", ".join(str(_index(entry) + 1) for entry in startup.channels)
+        raise MachineError(
+            f"there is no channel {channel}: the start-up list names channel lists for channel {named} "
+            f"(sda_mds[{channel - 1}] is channel {channel})",
+            startup.path,
+        )
+    entry = chosen[-1]
+    data = _read_entry(startup, entry, "channel list")
+    defaults = (
+        _read_entry(startup, startup.default_channel, "default channel list")
+        if startup.default_channel
+        else None
+    )
+    default_name = _shown(startup.default_channel) if startup.default_channel else ""
+    try:
+        result = read_channel_list(data, _shown(entry), defaults, default_name)
+    except UnreadableInput as exc:
+        raise MachineError(
+            f"the channel list `{entry.raw}` cannot be read: {exc}", startup.path, entry.line
+        ) from None
+    machine.channel_list = entry.path
+    for problem in result.problems:
+        machine.notes.append(f"{problem.at.path}:{problem.at.line}: {problem.message}")
+    return result
+
+
+def read_channel_entry(entry: StartupEntry, default: StartupEntry | None) -> ChannelList | None:
+    """The channel list a start-up entry names, with the default channel list underneath, for the machine
+    rules (LIS508, the default list only when it is read); None when the channel list cannot be read
+    (LIS504 and `build_machine` say why)."""
+    under = default.path if default is not None else None
+    if entry.path is None:
+        return None
+    try:
+        defaults = read_list(under) if under is not None else None
+        return read_channel_list(
+            read_list(entry.path),
+            str(_relative(entry.path)),
+            defaults,
+            str(_relative(under)) if under else "",
+        )
+    except (OSError, UnreadableInput):
+        return None
+
+
+def _number(values: ResolvedAxis) -> int:
+    number = values.get("kopf.achs_nr")
+    return int(number) if isinstance(number, int) else 0
+
+
+def _axis(
+    name: str,
+    entry: StartupEntry,
+    data: bytes,
+    values: ResolvedAxis,
+    defaults: bytes | None,
+    defined_at: Location | None,
+    channel: int | None = None,
+    spindle: bool = False,
+) -> MachineAxis:
+    return MachineAxis(
+        name=name,
+        logical_number=_number(values),
+        list_path=entry.path,
+        data=data,
+        defaults=defaults,
+        resolved=values,
+        channel=channel,
+        spindle=spindle or values.axis_type == "S",
+        defined_at=defined_at,
+    )
+
+
+def _log_name(values: ResolvedAxis, entry: StartupEntry) -> tuple[str, Location | None]:
+    """The axis list's kopf.log_achs_name (upper case) and where it is written (None: the default)."""
+    name = str(values.get("kopf.log_achs_name") or "").upper()
+    setting = values.setting("kopf.log_achs_name")
+    if setting is None:
+        return name, None
+    line = setting.line
+    path = (
+        str(entry.path) if values.in_list("kopf.log_achs_name") else values.origin("kopf.log_achs_name").file
+    )
+    return name, Location(
+        str(path), line.number, line.value_column, line.value_column + len(line.value or "")
+    )
+
+
+def _named_by_axis_lists(
+    machine: Machine, lists: list[tuple[StartupEntry, bytes, ResolvedAxis]], defaults: bytes | None
+) -> None:
+    for entry, data, values in lists:
+        name, at = _log_name(values, entry)
+        axis = _axis(name, entry, data, values, defaults, at)
+        if not name:
+            machine.notes.append(f"{_shown(entry)}: kopf.log_achs_name is empty; the axis has no name")
+            machine.other_axes.append(axis)
+        elif name in machine.axes:
+            machine.notes.append(
+                f"{_shown(entry)}: kopf.log_achs_name {name} is the name of "
+                f"{_shown_path(machine.axes[name].list_path)} too; only the first axis goes by it"
+            )
+            machine.other_axes.append(axis)
+        else:
+            machine.axes[name] = axis
+
+
+def _shown_path(path: Path | None) -> str:
+    return str(path) if path is not None else "?"
+
+
+def _named_by_channel(
+    machine: Machine,
+    channel_list: ChannelList,
+    lists: list[tuple[StartupEntry, bytes, ResolvedAxis]],
+    defaults: bytes | None,
+) -> None:
+    by_number: dict[int, tuple[StartupEntry, bytes, ResolvedAxis]] = {}
+    for entry, data, values in lists:
+        number = _number(values)
+        if number in by_number:
+            machine.notes.append(
+                f"{_shown(entry)}: kopf.achs_nr {number} is the number of {_shown(by_number[number][0])} too; "
+                "the channel list's names go to the first of them"
+            )
+            continue
+        by_number[number] = (entry, data, values)
+    named: set[int] = set()
+    renamed = {id(again): first for first, again in channel_list.other_names()}
+    for item in channel_list.axes:
+        where = f"{item.at.path}:{item.at.line}"
+        if id(item) in renamed:
+            first = renamed[id(item)]
+            machine.notes.append(
+                f"{where}: {item.slot} names logical axis {item.logical_number} {item.name}, which {first.slot} "
+                f"already names {first.name} (LIS508); only the first name is used"
+            )
+            continue
+        found = by_number.get(item.logical_number)
+        if found is None:
+            machine.notes.append(
+                f"{where}: {item.slot} names {item.name} as logical axis {item.logical_number}, but no axis list "
+                "of the start-up list has that kopf.achs_nr; the name is left out"
+            )
+            continue
+        if item.name in machine.axes:
+            machine.notes.append(
+                f"{where}: {item.slot} names {item.name} a second time; only the first is used"
+            )
+            continue
+        entry, data, values = found
+        machine.axes[item.name] = _axis(
+            item.name, entry, data, values, defaults, item.at, machine.channel, item.spindle
+        )
+        named.add(item.logical_number)
+    for number, (entry, data, values) in by_number.items():
+        if number not in named:
+            name, at = _log_name(values, entry)
+            machine.other_axes.append(_axis(name, entry, data, values, defaults, at))
+
+
+def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
+    """Gantry pairs by programmed name: from the slaves' kenngr.gantry_ax_nr, then the channel's pairs."""
+    pairs: list[tuple[int, int, str]] = []
+    for axis in [*machine.axes.values(), *machine.other_axes]:
+        number = axis.resolved.get("kenngr.gantry_ax_nr")
+        if isinstance(number, int) and number > 0:
+            pairs.append((number, axis.logical_number, f"{_shown_path(axis.list_path)} kenngr.gantry_ax_nr"))
+    for pair in channel_list.pairs if channel_list else []:
+        pairs.append((pair.master, pair.slave, f"{pair.at.path}:{pair.at.line} {pair.slot}"))
+    for master_number, slave_number, source in pairs:
+        master, slave = machine.by_number(master_number), machine.by_number(slave_number)
+        if master is None or slave is None:
+            missing = master_number if master is None else slave_number
+            machine.notes.append(
+                f"{source}: the coupled axis with logical number {missing} has no name in this channel; "
+                "the pair is left out"
+            )
+            continue
+        if (master.name, slave.name) in machine.gantry_pairs:
+            continue
+        if slave.gantry_master not in (None, master.name):
+            machine.notes.append(
+                f"{source}: {slave.name} is already the slave of {slave.gantry_master}; this pair is left out"
+            )
+            continue
+        slave.gantry_master = master.name
+        machine.gantry_pairs.append((master.name, slave.name))
+
+
+def rename(machine: Machine, names: dict[str, int], where: str) -> None:
+    """Give axes the programmed names of a machine scenario's [names] table (logical number -> name): the
+    fallback for a machine without a channel list, whose axes otherwise go by kopf.log_achs_name. Raises
+    ValueError (with `where` in its message) when the machine has a channel list or lacks a number."""
+    if not names:
+        return
+    if machine.channel_list is not None:
+        raise ValueError(
+            f"{where}: [names] is for machines without a channel list; this machine's channel list names "
+            "its axes — remove [names]"
+        )
+    everyone = [*machine.axes.values(), *machine.other_axes]
+    by_number = {axis.logical_number: axis for axis in everyone}
+    for name, number in names.items():
+        if number not in by_number:
+            known = ", ".join(str(n) for n in sorted(by_number)) or "none"
+            raise ValueError(
+                f"{where}: [names] {name} = {number}: the machine has no axis {number} (it has {known})"
+            )
+    old_to_new: dict[str, str] = {}
+    for name, number in names.items():
+        axis = by_number[number]
+        old_to_new[axis.name] = name
+        axis.name = name
+    machine.axes = {}
+    machine.other_axes = []
+    for axis in everyone:
+        if axis.name and axis.name not in machine.axes:
+            machine.axes[axis.name] = axis
+        else:
+            machine.other_axes.append(axis)
+    machine.gantry_pairs = [(old_to_new.get(m, m), old_to_new.get(s, s)) for m, s in machine.gantry_pairs]
+    for axis in everyone:
+        if axis.gantry_master is not None:
+            axis.gantry_master = old_to_new.get(axis.gantry_master, axis.gantry_master)
+    machine.notes.append(
+        f"{where}: axis names from [names] ({', '.join(f'{n} = {v}' for n, v in names.items())})"
+    )

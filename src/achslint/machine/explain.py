@@ -1,0 +1,161 @@
+"""`achslint explain hochlauf.lis [--program rfp.nc]`: the axes of a machine and the order they home in.
+
+`explain_machine` returns plain data (output/explain.py renders it as text or JSON): per axis its programmed name, its
+logical number, its axis and drive type, the homing strategy the CNC runs at power-up and the one a G74 that
+names it runs (from the homing registry, after the CNC's load-time corrections) and its part in a gantry; with a program, the homing order block by block
+and the program findings (LIS6xx).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from ..catalogue import AXIS_TYPE_NAMES
+from ..homing import classify
+from ..linting.program import check_program
+from ..rules.programcontext import homed_from_start, homes_with_master
+from .model import HomingBlock, Machine, MachineAxis, MoveBlock, Program, SkippedBlock
+
+VERSION = 1
+
+
+def _gantry(axis: MachineAxis, machine: Machine) -> dict[str, Any] | None:
+    slaves = [slave for master, slave in machine.gantry_pairs if master == axis.name]
+    if axis.gantry_master is not None:
+        return {
+            "role": "slave",
+            "master": axis.gantry_master,
+            "homes_with_master": homes_with_master(axis),
+        }
+    if slaves:
+        return {"role": "master", "slaves": slaves}
+    return None
+
+
+def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
+    values = axis.resolved
+    strategy = classify(values, gear)
+    commanded = classify(values, gear, commanded=True)
+    log_name = values.get("kopf.log_achs_name")
+    return {
+        "name": axis.name,
+        "log_achs_name": log_name,
+        "logical_number": axis.logical_number,
+        "channel": axis.channel,
+        "list": str(axis.list_path) if axis.list_path else None,
+        "name_defined_at": (
+            {"path": axis.defined_at.path, "line": axis.defined_at.line} if axis.defined_at else None
+        ),
+        "axis_type": "spindle" if axis.spindle else AXIS_TYPE_NAMES[values.axis_type],
+        "drive_type": values.drive_type,
+        "drive": values.drive_name(),
+        "homing_type": values.homing_type,
+        "homing_type_set": not values.homing_type_is_default,
+        "strategy": {"id": strategy.id, "title": strategy.title},
+        "commanded": {"id": commanded.id, "title": commanded.title},  # what a G74 that names the axis runs
+        "absolute": bool(values.get("kenngr.abs_pos_gueltig")),
+        "gantry": _gantry(axis, machine),
+        "corrections": [c.as_dict() for c in values.corrections],
+    }
+
+
+def _order(program: Program, machine: Machine) -> tuple[list[dict[str, Any]], dict[str, str]]:
+    """The program's blocks as the homing order, and for each axis where it is homed (in words)."""
+    blocks: list[dict[str, Any]] = []
+    homed_by: dict[str, str] = {}
+    for block in program.blocks:
+        label = f"N{block.number}" if not isinstance(block, SkippedBlock) and block.number is not None else ""
+        where = f"line {block.at.line}" + (f" ({label})" if label else "")
+        if isinstance(block, HomingBlock):
+            groups = []
+            for step, (number, words) in enumerate(block.groups(), 1):
+                names = [word.name for word in words]
+                groups.append({"sequence": number, "axes": names})
+                for name in names:
+                    homed_by.setdefault(name, f"{where}, step {step}")
+                    for axis in machine.axes.values():
+                        if axis.gantry_master == name and homes_with_master(axis):
+                            homed_by.setdefault(axis.name, f"{where}, step {step}, with its master {name}")
+            blocks.append({"line": block.at.line, "number": block.number, "kind": "homing", "groups": groups})
+        elif isinstance(block, MoveBlock):
+            blocks.append(
+                {
+                    "line": block.at.line,
+                    "number": block.number,
+                    "kind": "move",
+                    "rapid": block.rapid,
+                    "absolute": block.absolute,
+                    "feed_mm_min": block.feed_mm_min,
+                    "targets": {word.name: word.value for word in block.targets},
+                }
+            )
+        else:
+            blocks.append(
+                {"line": block.at.line, "kind": "skipped", "text": block.text, "reason": block.reason}
+            )
+    return blocks, homed_by
+
+
+def explain_machine(machine: Machine, program: Program | None = None, gear: int = 0) -> dict[str, Any]:
+    """Everything `explain hochlauf.lis` shows, as JSON-ready data."""
+    axes = [_axis(axis, machine, gear) for axis in machine.axes.values()]
+    report: dict[str, Any] = {
+        "version": VERSION,
+        "startup": str(machine.startup) if machine.startup else None,
+        "channel": machine.channel,
+        "channel_list": str(machine.channel_list) if machine.channel_list else None,
+        "axes": axes,
+        "other_axes": [_axis(axis, machine, gear) for axis in machine.other_axes],
+        "gantry_pairs": [{"master": master, "slave": slave} for master, slave in machine.gantry_pairs],
+        "notes": list(machine.notes),
+        "program": None,
+    }
+    if program is not None:
+        blocks, homed_by = _order(program, machine)
+        for row, axis in zip(axes, machine.axes.values(), strict=True):
+            if axis.name in homed_by:
+                row["homed"] = homed_by[axis.name]
+            elif homed_from_start(axis):
+                row["homed"] = "not needed: absolute position from power-up"
+            else:
+                row["homed"] = "not by this program"
+        report["program"] = {
+            "name": program.name,
+            "blocks": blocks,
+            "end_line": program.end.line if program.end else None,
+            "findings": [
+                {
+                    "line": d.line,
+                    "column": d.column,
+                    "code": d.code,
+                    "severity": d.severity.value,
+                    "message": d.message,
+                }
+                for d in check_program(program, machine)
+            ],
+        }
+    return report
+
+
+def explain_startup(
+    startup: Path,
+    *,
+    program: Path | None = None,
+    cnc_root: Path | None = None,
+    channel: int = 1,
+    gear: int = 0,
+) -> dict[str, Any]:
+    """`explain_machine` from files. Raises `MachineError` for the machine, `OSError` for the program."""
+    from ..core.files import Refused, not_a_list_file, read_program_file
+    from .build import build_machine
+    from .program import read_program
+
+    machine = build_machine(startup, cnc_root=cnc_root, channel=channel)
+    read = None
+    if program is not None:
+        problem = not_a_list_file(program)
+        if problem is not None:
+            raise Refused(f"{program}: {problem}")
+        read = read_program(read_program_file(program), str(program))
+    return explain_machine(machine, read, gear)

@@ -1,0 +1,242 @@
+"""Whole machines: several axis lists checked together (LIS501–LIS504).
+
+A machine is the set of axis lists named by a start-up list (`hochlauf.lis`,
+entries `achs_mds[i]`, with `default_achs_mds` applied under each of them the
+way the CNC loads them), or else the axis lists of one folder. Each linted list
+contributes a small summary (logical axis number, axis name, gantry settings,
+with their lines); rules with a `check_machine(members, startups)` function
+compare the summaries, run by the lint engine over each machine `machines` gives.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+import re
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from ..core.diagnostics import Diagnostic, Related, Severity
+from ..core.files import MISSING, Scope, inside, not_a_list_file, read_list
+
+if TYPE_CHECKING:
+    from ..axis.resolved import ResolvedAxis
+
+STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
+
+# What the machine-level rules know of one axis list (`summary`): a plain dict, so it pickles cheaply
+# between worker processes. A member of a machine is (list name, summary).
+Summary = dict[str, Any]
+Member = tuple[str, Summary]
+_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds|sda_mds\[[0-9]+\]|default_sda_mds")
+
+
+@dataclass
+class StartupEntry:
+    key: str
+    raw: str
+    line: int
+    column: int
+    path: Path | None  # resolved file, None when it does not exist or is not read
+    refused: str | None = None  # why an existing file is not read (outside the machine's folder, a FIFO, ...)
+    looked: Path | None = None  # where the file was looked for
+
+
+@dataclass
+class Startup:
+    path: Path
+    default: StartupEntry | None = None
+    axes: list[StartupEntry] = field(default_factory=list)
+    root: Path | None = None  # the CNC working directory the entries are resolved against
+    root_origin: str = ""  # how the root was chosen, in words (for LIS504)
+    channels: list[StartupEntry] = field(default_factory=list)  # channel lists, sda_mds[i]
+    default_channel: StartupEntry | None = None  # default_sda_mds
+
+
+def is_startup_list(path: Path) -> bool:
+    return any(fnmatch.fnmatch(path.name.lower(), pattern) for pattern in STARTUP_NAMES)
+
+
+def is_default_list(path: Path) -> bool:
+    """A default axis list (`default_mds.lis`): loaded underneath the axes, not an axis of its own."""
+    return fnmatch.fnmatch(path.name.lower(), "default*mds*.lis")
+
+
+def _entry_path(raw: str) -> Path:
+    """An entry as a path: quotes dropped, Windows separators read as folder separators."""
+    text = raw.strip().strip('"')
+    if os.sep == "/":
+        text = text.replace("\\", "/")
+    return Path(text)
+
+
+LISTS_FOLDER = "listen"  # where the CNC keeps its lists, below its working directory
+
+
+def default_cnc_root(startup: Path) -> Path:
+    """The CNC working directory a start-up list's relative entries are written against, when nobody set
+    one: the start-up list's own folder, or the folder above `listen/` when the list lies in `listen/`
+    (the SDK layout, `./listen/achsmds1.lis` named from `listen/hochlauf.lis`) or one folder below it
+    (the external-scheduling variant `listen/ExtSchedule/hochlauf.lis`). Never guessed from where the
+    named files happen to exist: a start-up list must not choose which folders achslint reads."""
+    folder = Path(os.path.abspath(startup)).parent
+    for candidate in (folder, folder.parent):
+        if candidate.name.lower() == LISTS_FOLDER and candidate.parent != candidate:
+            return candidate.parent
+    return folder
+
+
+def _resolve(
+    raw: str, root: Path, root_origin: str, scope: Scope | None
+) -> tuple[Path | None, str | None, Path]:
+    """(file, None, looked) for an entry achslint reads, (None, why, looked) for one it refuses, and
+    (None, None, looked) when it is missing.
+
+    The file, with every symbolic link followed, must lie under the CNC root or under a path the user
+    gave: a start-up list cannot make achslint read (and show) `/proc/self/environ`, `../../secret.lis`
+    or a link inside the machine folder that leads elsewhere.
+    """
+    target = Path(os.path.normpath(root / _entry_path(raw)))
+    # Where the entry leads is checked before anything is looked up there: not even whether a file
+    # outside the root exists shows in a finding.
+    if not (inside(target, root) or (scope and scope.contains(target))):
+        linked = target.is_relative_to(root)  # its name lies under the root, the file it leads to does not
+        what = "it is a symbolic link that leads outside" if linked else "it lies outside"
+        return None, f"{what} the CNC root {root} ({root_origin})", target
+    problem = not_a_list_file(target)
+    if problem in MISSING:
+        return None, None, target
+    if problem is not None:
+        return None, f"it is {problem}" if problem.startswith("a ") else problem, target
+    return target, None, target
+
+
+def read_startup(
+    path: Path, scope: Scope | None = None, cnc_root: Path | None = None, root_origin: str = ""
+) -> Startup:
+    """The entries of a start-up list, resolved against `cnc_root` (`default_cnc_root` when None).
+
+    Raises `OSError` / `decode.UnreadableInput` when the start-up list cannot be read.
+    """
+    from ..syntax.parser import parse_bytes
+
+    entries = [
+        (line.path, line.value, line)
+        for line in parse_bytes(read_list(path), str(path)).assignments()
+        if line.path_ok and line.path and line.value is not None and _ENTRY.fullmatch(line.path)
+    ]
+    if cnc_root is None:
+        cnc_root = default_cnc_root(path)
+        above = cnc_root != Path(os.path.abspath(path)).parent
+        root_origin = f"{'the folder above `listen/`' if above else 'the start-up list folder'}; --cnc-root sets another"
+    root = Path(os.path.abspath(cnc_root))
+    startup = Startup(path, root=root, root_origin=root_origin)
+    for key, value, line in entries:
+        found, refused, looked = _resolve(value, root, root_origin or "as given", scope)
+        entry = StartupEntry(key, value, line.number, line.value_column, found, refused, looked)
+        if entry.key == "default_achs_mds":
+            startup.default = entry
+        elif entry.key == "default_sda_mds":
+            startup.default_channel = entry
+        elif entry.key.startswith("sda_mds"):
+            startup.channels.append(entry)
+        else:
+            startup.axes.append(entry)
+    return startup
+
+
+def summary(values: ResolvedAxis) -> Summary:
+    """What the machine checks need from one axis list, resolved (small and picklable)."""
+
+    def at(path: str) -> tuple[int, int] | None:
+        setting = values.in_list(path)
+        return (setting.line.number, setting.line.path_column) if setting else None
+
+    return {
+        "achs_nr": values.get("kopf.achs_nr"),
+        "achs_nr_at": at("kopf.achs_nr"),
+        "name": values.get("kopf.log_achs_name"),
+        "name_at": at("kopf.log_achs_name"),
+        "gantry_ax_nr": values.get("kenngr.gantry_ax_nr"),
+        "gantry_at": at("kenngr.gantry_ax_nr"),
+        "resettable": values.get("kenngr.gantry_max_diff_resetable"),
+        "retraction": values.get("kenngr.homing.torq_retraction_distance"),
+        "torq": values.homing_type == "TORQ",
+        "homing_type": values.homing_type,  # in force: after corrections, the drive's default when unset
+        "homing_type_at": at("kenngr.homing.homing_type"),
+        "axis_type": values.axis_type,
+    }
+
+
+def diagnostic(
+    code: str,
+    member: Member,
+    where: str,
+    message: str,
+    severity: Severity,
+    related: list[Related] | None = None,
+) -> Diagnostic:
+    """A machine-level diagnostic at a member list's line for `where` (or its first line)."""
+    name, info = member
+    line, column = info.get(where) or (1, 1)
+    return Diagnostic(
+        name, line, column, line, column + 1, code, severity, message, related=tuple(related or ())
+    )
+
+
+def repeated_values(
+    code: str, members: list[Member], key: str, parameter: str, says: Callable[[str, str, str], str]
+) -> Iterator[Diagnostic]:
+    """A warning for every member that repeats a value of `key` an earlier member set (LIS501, LIS502).
+
+    `says(value, note, first)` words it: the value, a note when the member's value is the default, and the
+    list that used it first, which the finding also points at.
+    """
+    first: dict[object, Member] = {}
+    for member in members:
+        value = member[1][key]
+        if value in (None, "", 0):
+            continue
+        if value not in first:
+            first[value] = member
+            continue
+        earlier, where = first[value], f"{key}_at"
+        line, column = earlier[1].get(where) or (1, 1)
+        note = "" if member[1].get(where) else " (not written in this list, so the default applies)"
+        yield diagnostic(
+            code,
+            member,
+            where,
+            says(str(value), note, earlier[0]),
+            Severity.WARNING,
+            [Related(earlier[0], line, column, parameter, "first use")],
+        )
+
+
+def gantry_pairs(members: list[Member]) -> Iterator[tuple[Member, Member | None]]:
+    """Every gantry slave of a machine (a list with `kenngr.gantry_ax_nr`) with its master: the list whose
+    `kopf.achs_nr` it names, or None when the machine has no such list (LIS503)."""
+    by_number = {info["achs_nr"]: (name, info) for name, info in members}
+    for name, info in members:
+        if info["gantry_ax_nr"]:
+            master = by_number.get(info["gantry_ax_nr"])
+            # An axis naming its own number has no master (lists of one XML file share their name).
+            yield (name, info), (master if master is not None and master[1] is not info else None)
+
+
+def machines(
+    groups: dict[str, list[Member]], startups: list[Startup]
+) -> Iterator[tuple[list[Member], list[Startup]]]:
+    """Every machine to check, as (its members, its start-up lists): what the machine-level rules get.
+
+    `groups` holds each machine's members (list name, `summary`) by machine key: the path of the start-up
+    list that names them, or their folder. A start-up list none of whose axis lists was read is still a
+    machine of its own (its entries may all be missing).
+    """
+    for key, members in groups.items():
+        yield members, [startup for startup in startups if str(startup.path) == key]
+    for startup in startups:
+        if str(startup.path) not in groups:
+            yield [], [startup]

@@ -1,0 +1,350 @@
+"""Text to a lossless syntax tree, using the Lark grammar in grammars/achsmds.lark.
+
+The tree is flat because the format is: a list of `Line` objects, each holding
+the exact text of its parts (indent, path, separators, value, trailing text,
+line break). Joining the parts of every line gives back the input, character
+for character; columns are derived from the part lengths, so they are exact
+for tabs and for any line-break style.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, cast
+
+from .numbers import parse_int
+
+if TYPE_CHECKING:
+    from lark import Lark, Token
+
+BLANK = "blank"
+COMMENT = "comment"
+END = "end"
+ASSIGNMENT = "assignment"
+
+# Value kinds, as named by the grammar's value alternatives.
+INT, HEX, REAL, REFERENCE, STRING, BAD_STRING, SYMBOL = (
+    "int",
+    "hex",
+    "real",
+    "reference",
+    "string",
+    "bad_string",
+    "symbol",
+)
+
+GRAMMAR_NAME = "achsmds.lark"
+
+# Separators, line breaks and parameter paths repeat on every line of a list:
+# sharing one string object per spelling keeps large lists small in memory.
+_intern = sys.intern
+
+
+@dataclass(slots=True, eq=False)
+class Line:
+    """One physical line. Text parts are kept verbatim; `None` means absent."""
+
+    kind: str
+    indent: str = ""
+    path: str | None = None
+    path_ok: bool = True
+    sep: str = ""
+    value: str | None = None
+    value_kind: str | None = None
+    sep2: str = ""
+    rest: str | None = None
+    comment: str | None = None
+    newline: str = ""
+    number: int = 0
+
+    @property
+    def body(self) -> str:
+        """The line without its line break."""
+        if self.kind == COMMENT:
+            return self.indent + (self.comment or "")
+        parts = [self.indent, self.path or "", self.sep, self.value or "", self.sep2, self.rest or ""]
+        return "".join(parts)
+
+    @property
+    def text(self) -> str:
+        return self.body + self.newline
+
+    @property
+    def path_column(self) -> int:
+        return len(self.indent) + 1
+
+    @property
+    def value_column(self) -> int:
+        return self.path_column + len(self.path or "") + len(self.sep)
+
+    @property
+    def rest_column(self) -> int:
+        return self.value_column + len(self.value or "") + len(self.sep2)
+
+    @property
+    def end_column(self) -> int:
+        """Column just after the last character of the line (before the break)."""
+        return len(self.body) + 1
+
+
+@dataclass(slots=True, eq=False)
+class ListFile:
+    """A parsed list: the lines plus where the text came from."""
+
+    name: str
+    lines: list[Line]
+    encoding: str = "utf-8"
+    bom: bool = False
+    end_index: int | None = field(default=None)
+
+    def unparse(self) -> str:
+        return "".join(line.text for line in self.lines)
+
+    def offsets(self) -> list[int]:
+        """Character offset of the start of every line."""
+        result: list[int] = []
+        offset = 0
+        for line in self.lines:
+            result.append(offset)
+            offset += len(line.body) + len(line.newline)
+        return result
+
+    def assignments(self) -> Iterator[Line]:
+        """Assignments the CNC reads: those before the end marker."""
+        stop = self.end_index if self.end_index is not None else len(self.lines)
+        for line in self.lines[:stop]:
+            if line.kind == ASSIGNMENT:
+                yield line
+
+
+def _grammar_text() -> str:
+    here = Path(__file__).resolve().parent
+    packaged = here / "grammars" / GRAMMAR_NAME
+    if packaged.is_file():  # installed wheel: the grammar ships inside the package
+        return packaged.read_text(encoding="utf-8")
+    # Source checkout / editable install: the grammar lives at the repository root.
+    return (here.parents[2] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
+
+
+# A value alternative reduced: (kind, blanks before the value, value text).
+_ValueParts = tuple[str, str, str]
+
+
+def _value(kind: str) -> Callable[[_Builder, list[Token]], _ValueParts]:
+    """The builder method of one value alternative."""
+
+    def build(self: _Builder, children: list[Token]) -> _ValueParts:
+        text = str(children[0])
+        value = text.lstrip(" \t")
+        return (kind, _intern(text[: len(text) - len(value)]), value)
+
+    return build
+
+
+class _Builder:
+    """Inline transformer: builds `Line` objects while Lark reduces the rules.
+
+    The rules that combine reduced parts (`assignment`, `line`, `body`) receive children of mixed kinds
+    (tokens, the tuples and lines built here), hence their `list[Any]`.
+    """
+
+    int = _value(INT)
+    hex = _value(HEX)
+    real = _value(REAL)
+    reference = _value(REFERENCE)
+    string = _value(STRING)
+    bad_string = _value(BAD_STRING)
+    symbol = _value(SYMBOL)
+
+    def valid_path(self, children: list[Token]) -> tuple[bool, str]:
+        return (True, _intern(str(children[0])))
+
+    def bad_path(self, children: list[Token]) -> tuple[bool, str]:
+        return (False, str(children[0]))
+
+    def comment(self, children: list[Token]) -> Line:
+        return Line(COMMENT, comment=str(children[0]))
+
+    @staticmethod
+    def _trailer(line: Line, token: Token) -> None:
+        """Split a trailer token into the blanks (sep2 or sep) and the text after them (rest)."""
+        text = str(token)
+        rest = text.lstrip(" \t")
+        blanks = _intern(text[: len(text) - len(rest)])
+        if line.value is None and line.kind == ASSIGNMENT:
+            line.sep = blanks
+        else:
+            line.sep2 = blanks
+        if rest:
+            line.rest = rest
+
+    def end_marker(self, children: list[Token]) -> Line:
+        line = Line(END, path=str(children[0]))
+        if len(children) > 1:
+            text = str(children[1])
+            rest = text.lstrip(" \t")
+            line.sep = text[: len(text) - len(rest)]
+            line.rest = rest or None
+        return line
+
+    def assignment(self, children: list[Any]) -> Line:
+        ok, path = children[0]
+        line = Line(ASSIGNMENT, path=path, path_ok=ok)
+        for child in children[1:]:
+            if isinstance(child, tuple):
+                line.value_kind, line.sep, line.value = child
+            else:
+                self._trailer(line, child)
+        return line
+
+    def line(self, children: list[Any]) -> Line:
+        if not children:
+            return Line(BLANK)
+        first = children[0]
+        if isinstance(first, Line):
+            return first
+        indent = _intern(str(first))
+        if len(children) == 1:
+            return Line(BLANK, indent=indent)
+        stmt: Line = children[1]
+        stmt.indent = indent
+        return stmt
+
+    def body(self, children: list[Any]) -> list[Line]:
+        if len(children) == 1:
+            return [children[0]]
+        lines: list[Line] = children[0]
+        newline, line = children[1], children[2]
+        lines[-1].newline = _intern(str(newline))
+        lines.append(line)
+        return lines
+
+    def start(self, children: list[list[Line]]) -> list[Line]:
+        return children[0]
+
+
+def _cache_file(grammar: str) -> str | bool:
+    """Where Lark may keep its analysed grammar: a private per-user folder, else no cache.
+
+    Lark's cache is a pickle, so it is only kept in a folder that belongs to the
+    user and that no one else can write to (not a shared temporary folder).
+    """
+    import hashlib
+    import os
+
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    folder = os.path.join(base, "achslint")
+    try:
+        os.makedirs(folder, mode=0o700, exist_ok=True)
+        info = os.stat(folder)
+        if (hasattr(os, "getuid") and info.st_uid != os.getuid()) or info.st_mode & 0o022:
+            return False
+    except OSError:
+        return False
+    digest = hashlib.sha256(grammar.encode("utf-8")).hexdigest()[:16]
+    return os.path.join(folder, f"grammar-{digest}.lark-cache")
+
+
+@lru_cache(maxsize=1)
+def parser() -> Lark:
+    """The Lark LALR parser, built once per process (the analysed grammar is cached on disk)."""
+    from lark import Lark
+
+    grammar = _grammar_text()
+    options = dict(parser="lalr", lexer="contextual", transformer=_Builder(), maybe_placeholders=False)
+    cache = _cache_file(grammar)
+    if cache:
+        try:
+            return Lark(grammar, cache=cache, **options)
+        except Exception:
+            pass
+    return Lark(grammar, **options)
+
+
+def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bom: bool = False) -> ListFile:
+    """Parse list text (already decoded, without BOM) into a `ListFile`."""
+    # The inline transformer builds the result while parsing: `_Builder.start` returns the lines.
+    lines = cast("list[Line]", parser().parse(text))
+    end_index = None
+    for index, line in enumerate(lines):
+        line.number = index + 1
+        if end_index is None and line.kind == END:
+            end_index = index
+    return ListFile(name=name, lines=lines, encoding=encoding, bom=bom, end_index=end_index)
+
+
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+")
+
+
+def split_lines(text: str, keepends: bool = False) -> list[str]:
+    """The lines of `text` as the parser numbers them: only CR, LF and CRLF end a line.
+
+    `str.splitlines` also breaks at \\x0b, \\x0c, \\x1c-\\x1e, U+0085, U+2028 and U+2029,
+    which are ordinary characters in a list; using it would shift every line number after them.
+    """
+    lines = _LINE.findall(text)
+    return lines if keepends else [line.rstrip("\r\n") for line in lines]
+
+
+def parse_bytes(data: bytes, name: str = "<bytes>") -> ListFile:
+    """Decode and parse list bytes. Raises `decode.UnreadableInput` for UTF-16/32."""
+    from ..core.decode import decode
+
+    source = decode(data)
+    return parse_text(source.text, name, encoding=source.encoding, bom=source.bom)
+
+
+_SEGMENT = re.compile(r"([A-Za-z_][A-Za-z0-9_\-]*)((?:\[[0-9]+\])*)")
+
+
+def split_path(path: str) -> list[tuple[str, tuple[int, ...]]]:
+    """Split a valid path into (member, indices) pairs: `a[1].b` -> [("a", (1,)), ("b", ())]."""
+    parts: list[tuple[str, tuple[int, ...]]] = []
+    for segment in path.split("."):
+        match = _SEGMENT.fullmatch(segment)
+        if match is None:
+            raise ValueError(f"not a valid path: {path!r}")
+        indices = tuple(whole_number(i) for i in re.findall(r"\[([0-9]+)\]", match.group(2)))
+        parts.append((match.group(1), indices))
+    return parts
+
+
+HUGE = 10**30  # stands for a number with more digits than any parameter type or index bound holds
+
+
+def whole_number(text: str) -> int:
+    """The decimal integer `text`; `±HUGE` when it has too many digits to be converted (see `numbers`)."""
+    value = parse_int(text)
+    if isinstance(value, int):
+        return value
+    return -HUGE if text.startswith("-") else HUGE
+
+
+@lru_cache(maxsize=1 << 16)
+def path_pattern(path: str) -> tuple[str, tuple[int, ...]]:
+    """Replace every index by `[i]`: `getriebe[2].vb_reflow` -> (`getriebe[i].vb_reflow`, (2,))."""
+    indices: list[int] = []
+
+    def repl(match: re.Match[str]) -> str:
+        indices.append(whole_number(match.group(1)))
+        return "[i]"
+
+    return _INDEX.sub(repl, path), tuple(indices)
+
+
+_INDEX = re.compile(r"\[([0-9]+)\]")
+
+
+def is_misspelt_end(line: Line) -> bool:
+    """A line that was meant as the end marker: `End`, `END`, `ende` ... alone on the line."""
+    return (
+        line.kind == ASSIGNMENT
+        and line.value is None
+        and (line.path or "").lower() in ("end", "ende")
+        and line.path != "Ende"
+    )
