@@ -1,20 +1,47 @@
 """The CNC's load-time corrections: values it replaces while it reads an axis list.
 
-Each function below is one correction the manual or the parameter table
-describes; it records on the resolved axis the parameter, the value used
-instead and the CNC message. Rules report these corrections, `explain` lists
-them, and the dry-run simulates the corrected axis, so all three agree on what
-the CNC actually runs.
+Each function below is one correction the manual or the parameter table describes; it records on the axis
+the parameter, the value used instead and the CNC message. Rules report these corrections, `explain` lists
+them, and the dry-run simulates the corrected axis, so all three agree on what the CNC actually runs.
+
+The functions see the axis through `CorrectableAxis`, the few lookups they need, so this module sits below
+`resolved`, which applies them while it builds an axis.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
+from ..catalogue import Parameter, Value
 from ..catalogue.units import describe
+from .drives import CNC_ONLY_DRIVES, OVERFLOW_DRIVES, SERCOS, default_homing_type
 
-if TYPE_CHECKING:
-    from .resolved import ResolvedAxis
+
+class CorrectableAxis(Protocol):
+    """What a correction reads and writes on an axis (`resolved.ResolvedAxis` is one)."""
+
+    @property
+    def axis_type(self) -> str: ...
+
+    @property
+    def drive_type(self) -> int: ...
+
+    def drive_name(self, code: int | None = None) -> str: ...
+
+    def parameter(self, path: str) -> Parameter: ...
+
+    def get(self, path: str) -> Value | None: ...
+
+    def number(self, path: str) -> float: ...
+
+    def written(self, path: str, _depth: int = 0) -> Value | None: ...
+
+    def written_number(self, path: str) -> float: ...
+
+    def gear_stages_set(self, *members: str) -> list[int]: ...
+
+    def correct(self, path: str, used: Value, error: str, reason: str) -> None: ...
+
 
 HOMING_TYPE = "kenngr.homing.homing_type"
 OVERFLOW, BITS, OFFSET = (
@@ -31,10 +58,8 @@ MAX_DIST = "kenngr.homing_max_movement_dist"
 CHECK_NAME, CHECK_BIT = "antr.reference_check.element_name", "antr.reference_check.bit_nr"
 
 
-def homing_type(axis: ResolvedAxis) -> None:
+def homing_type(axis: CorrectableAxis) -> None:
     """P-AXIS-00299: a homing type the drive cannot run is replaced by the drive's default (P-ERR-110384)."""
-    from .resolved import CNC_ONLY_DRIVES, default_homing_type
-
     if axis.written(HOMING_TYPE) == "DRIVE_CONTROLLED" and axis.drive_type in CNC_ONLY_DRIVES:
         fallback = default_homing_type(axis.drive_type)
         axis.correct(
@@ -46,11 +71,9 @@ def homing_type(axis: ResolvedAxis) -> None:
         )
 
 
-def encoder_overflow(axis: ResolvedAxis) -> None:
+def encoder_overflow(axis: CorrectableAxis) -> None:
     """P-AXIS-00294 on a drive without encoder-overflow homing is switched off (P-ERR-110416);
     P-AXIS-00354 beyond one encoder revolution is reset to 0 (P-ERR-70310)."""
-    from .resolved import OVERFLOW_DRIVES
-
     if not axis.written(OVERFLOW):
         return
     if axis.drive_type not in OVERFLOW_DRIVES:
@@ -75,7 +98,7 @@ def encoder_overflow(axis: ResolvedAxis) -> None:
         )
 
 
-def encoder_revolution(axis: ResolvedAxis, gear: int) -> float | None:
+def encoder_revolution(axis: CorrectableAxis, gear: int) -> float | None:
     """One encoder revolution (2^encoder_bit_range increments) in list units of the gear stage, if known."""
     bits = axis.number(BITS)
     numerator, denominator = (
@@ -98,7 +121,7 @@ CAPPED_SPEEDS = (
 )
 
 
-def speed_caps(axis: ResolvedAxis) -> None:
+def speed_caps(axis: CorrectableAxis) -> None:
     """P-AXIS-00268: homing speeds above the limit for unreferenced axes are lowered to it
     (P-ERR-110421 vb_refmax, P-ERR-110422 vb_reflow, P-ERR-110413 torq_move_velocity)."""
     unit = axis.parameter("getriebe[i].vb_not_referenced").unit(axis.axis_type)
@@ -118,11 +141,9 @@ def speed_caps(axis: ResolvedAxis) -> None:
                 )
 
 
-def sercos_latch(axis: ResolvedAxis) -> None:
+def sercos_latch(axis: CorrectableAxis) -> None:
     """P-AXIS-00386 on a spindle is switched off (P-ERR-110522); P-AXIS-00387 outside 1..16 becomes 1
     (P-ERR-110514); P-AXIS-00388 on a drive other than SERCOS becomes 0 (P-ERR-110516)."""
-    from .resolved import SERCOS
-
     if axis.written(ENCODER) and axis.drive_type != SERCOS:
         axis.correct(
             ENCODER,
@@ -151,7 +172,7 @@ def sercos_latch(axis: ResolvedAxis) -> None:
         )
 
 
-def path_monitoring(axis: ResolvedAxis) -> None:
+def path_monitoring(axis: CorrectableAxis) -> None:
     """P-AXIS-00412 other than 0 on a linear axis is set to 0 (P-ERR-110545)."""
     if axis.written(MAX_DIST) and axis.axis_type == "T":
         axis.correct(
@@ -163,10 +184,8 @@ def path_monitoring(axis: ResolvedAxis) -> None:
         )
 
 
-def reference_monitoring(axis: ResolvedAxis) -> None:
+def reference_monitoring(axis: CorrectableAxis) -> None:
     """P-AXIS-00425/00426: reference monitoring on a drive other than SERCOS is switched off (P-ERR-110548)."""
-    from .resolved import SERCOS
-
     if axis.written(CHECK_NAME) and axis.drive_type != SERCOS:
         axis.correct(
             CHECK_NAME,
@@ -177,7 +196,7 @@ def reference_monitoring(axis: ResolvedAxis) -> None:
         )
 
 
-def homing_dynamics(axis: ResolvedAxis) -> None:
+def homing_dynamics(axis: CorrectableAxis) -> None:
     """P-AXIS-00285 above the gear stage's a_max (P-AXIS-00008) is lowered to it (P-ERR-110393); P-AXIS-00286
     other than 0 below the stage's tr_min (P-AXIS-00201) is raised to it (P-ERR-110394). 0 is no error: it
     selects the fallbacks of §3.2.4."""
@@ -206,7 +225,7 @@ def homing_dynamics(axis: ResolvedAxis) -> None:
 LINEAR, MODULO = 0x1, 0x4  # kenngr.achs_mode bits (P-AXIS-00015)
 
 
-def spindle_modulo(axis: ResolvedAxis) -> None:
+def spindle_modulo(axis: CorrectableAxis) -> None:
     """P-AXIS-00015 of a spindle without the MODULO bit is corrected to modulo (P-ERR-110352)."""
     if axis.axis_type != "S":
         return
@@ -236,6 +255,6 @@ CORRECTIONS = (
 )
 
 
-def apply(axis: ResolvedAxis) -> None:
+def apply(axis: CorrectableAxis) -> None:
     for correction in CORRECTIONS:
         correction(axis)

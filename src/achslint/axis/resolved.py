@@ -19,12 +19,13 @@ corrections, `get(path)` the value the CNC uses.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from enum import IntEnum
 from typing import TypedDict
 
 from ..catalogue import AXIS_TYPE_CODES, Catalogue, Parameter, Value, catalogue, fill_indices
-from ..syntax.parser import path_pattern
-from .analysis import Analysis, Reference, Setting
+from ..syntax.parser import parse_bytes, path_pattern
+from .analysis import Analysis, Reference, Setting, analyse
+from .corrections import apply
+from .drives import default_homing_type
 
 
 @dataclass(frozen=True, slots=True)
@@ -97,31 +98,6 @@ def numeric(value: Value | None, path: str) -> float:
     raise TypeError(f"{path} has no numeric value ({value!r})")
 
 
-class DriveType(IntEnum):
-    """P-AXIS-00020 drive type codes (compare equal to the numbers written in lists)."""
-
-    CONVENTIONAL = 1
-    SERCOS = 2
-    PROFIDRIVE = 3
-    SIMULATION = 4
-    LIGHTBUS = 5
-    TERMINAL = 6
-    REALTIME_ETHERNET = 7
-    CANOPEN = 8
-    GENERIC = 9
-    VIRTUAL = 16
-    DSE = 17
-    CAN_BUS = 32
-
-
-SERCOS, SIMULATION, LIGHTBUS, CANOPEN = (
-    DriveType.SERCOS,
-    DriveType.SIMULATION,
-    DriveType.LIGHTBUS,
-    DriveType.CANOPEN,
-)
-
-
 class ResolvedAxis:
     """Typed values of one axis by canonical concrete path, after layering, references and corrections."""
 
@@ -141,8 +117,6 @@ class ResolvedAxis:
                 if path is not None and not setting.problems and setting.value is not None:
                     self._values[path] = setting.value
                     self._origins[path] = Origin(kind, setting, layer.file.name)
-        from .corrections import apply
-
         apply(self)
 
     # -- lookups ---------------------------------------------------------------------------
@@ -281,28 +255,5 @@ class ResolvedAxis:
 
 def resolve_bytes(data: bytes, name: str, defaults: bytes | None = None) -> ResolvedAxis:
     """The resolved axis of a list's bytes, with an optional default list underneath."""
-    from ..syntax.parser import parse_bytes
-    from .analysis import analyse
-
     default_analysis = analyse(parse_bytes(defaults, "default list")) if defaults is not None else None
     return ResolvedAxis(analyse(parse_bytes(data, name)), default_analysis)
-
-
-def default_homing_type(drive_type: int) -> str:
-    """The homing type a drive type uses when none is configured (P-AXIS-00299 table)."""
-    return "DRIVE_CONTROLLED" if drive_type == SERCOS else "CNC_CONTROLLED"
-
-
-# Drive types that only home CNC-controlled (P-AXIS-00299 table, plus the conventional drive).
-CNC_ONLY_DRIVES = frozenset(
-    {
-        DriveType.CONVENTIONAL,
-        DriveType.PROFIDRIVE,
-        SIMULATION,
-        LIGHTBUS,
-        DriveType.TERMINAL,
-        DriveType.REALTIME_ETHERNET,
-    }
-)
-# Drive types with encoder-overflow homing (P-AXIS-00354/00355 drive types; §3.1.1.2).
-OVERFLOW_DRIVES = frozenset({SERCOS, LIGHTBUS, CANOPEN})

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from ..axis.resolved import DriveType, ResolvedAxis
+from ..axis.drives import DriveType
+from ..axis.resolved import ResolvedAxis
 from .base import Use
 
 # In the manual's order: system parameters, then sequence parameters (§3.1, §3.2), then the special methods.

@@ -8,7 +8,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from ..axis.corrections import encoder_revolution
-from ..axis.resolved import SIMULATION, ResolvedAxis
+from ..axis.drives import SIMULATION
+from ..axis.resolved import ResolvedAxis
 
 POSITION = 1e-4  # 0.1 µm or 0.0001° per list unit
 VELOCITY = 1e-3  # µm/s -> mm/s, 0.001°/s -> °/s

@@ -45,7 +45,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..axis.resolved import DriveType
+from ..axis.drives import DriveType
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic

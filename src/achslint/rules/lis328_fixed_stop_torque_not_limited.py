@@ -53,7 +53,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..axis.resolved import CANOPEN, SERCOS
+from ..axis.drives import CANOPEN, SERCOS
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic

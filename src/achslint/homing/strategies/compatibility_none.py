@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ...axis.resolved import DriveType
+from ...axis.drives import DriveType
 from ..base import StrategyDef, Use
 from ..parameters import EVERYWHERE
 from ..sequences import adopt

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ...axis.resolved import DriveType, ResolvedAxis
+from ...axis.drives import DriveType
+from ...axis.resolved import ResolvedAxis
 from ...catalogue.units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use, opposite
 from ..parameters import CNC_MOVES

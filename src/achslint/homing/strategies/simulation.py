@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ...axis.resolved import DriveType
+from ...axis.drives import DriveType
 from ...catalogue.units import describe
 from ..base import NEGATIVE, POSITIVE, Phase, StrategyDef, Use
 from ..parameters import CNC_MOVES, SEQUENCE
