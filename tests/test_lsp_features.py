@@ -205,7 +205,7 @@ def test_unknown_documents_have_no_snapshot_or_machine(session: Session, tmp_pat
     session.open(untitled)
     snapshot, found, peers = session.diagnostics(untitled.uri)
     assert snapshot is not None and codes(found) == ["LIS005"] and peers == []
-    assert session.machine(untitled) is None
+    assert session.machines(untitled) == []
     assert session.diagnostics("file:///nowhere/achsmds1.lis") == (None, [], [])
     session.close(untitled.uri)
     session.close(untitled.uri)  # closing twice is harmless
@@ -521,9 +521,9 @@ def test_start_up_lists_that_do_not_name_the_list_leave_the_folder_as_machine(
     (tmp_path / "achsmds5.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     document = opened(session, tmp_path / "achsmds1.lis")
-    machine = session.machine(document)
-    assert machine is not None and machine.startups == []
-    assert [Path(t.path).name for t in machine.targets] == ["achsmds1.lis", "achsmds2.lis"]
+    [machine] = session.machines(document)
+    assert machine.startup is None
+    assert [Path(t.path).name for t in machine.members if t.path] == ["achsmds1.lis", "achsmds2.lis"]
     assert session.diagnostics(document.uri)[1] == []  # the finding goes to the second list
     second = opened(session, tmp_path / "achsmds2.lis")
     _, found, peers = session.diagnostics(second.uri)
@@ -534,7 +534,7 @@ def test_a_list_in_a_folder_that_is_gone_has_no_machine(session: Session, tmp_pa
     gone = tmp_path / "gone" / "achsmds1.lis"
     document = Document(gone.as_uri(), gone, "kopf.achs_nr  1\nkopf.achs_nr  2\nEnde\n", 1)
     session.open(document)
-    assert session.machine(document) is None
+    assert session.machines(document) == []
     assert codes(session.diagnostics(document.uri)[1]) == ["LIS005"]
 
 

@@ -29,10 +29,16 @@ def test_default_list_is_applied_under_each_axis_list(cli, tmp_path):
         tmp_path / "listen" / "hochlauf.lis",
         "default_achs_mds ./listen/default_mds.lis\nachs_mds[0] ./listen/achsmds1.lis\nEnde\n",
     )
-    alone = cli("lint", str(tmp_path / "listen" / "achsmds1.lis"), "--format", "json", "--select", "LIS302")
-    assert findings(alone) == []  # without the default list: vb_refmax default 83333 > 50000
     machine = cli("lint", str(startup), "--format", "json", "--select", "LIS302")
     assert findings(machine) == [("achsmds1.lis", 4, "LIS302")]
+    # Named alone, the list is still an axis of the start-up list beside it: the same default list applies
+    # (as in the editor, which finds the machine the same way).
+    named = cli("lint", str(tmp_path / "listen" / "achsmds1.lis"), "--format", "json", "--select", "LIS302")
+    assert findings(named) == [("achsmds1.lis", 4, "LIS302")]
+    # A copy no start-up list names is linted without it: vb_refmax default 83333 > 50000.
+    write(tmp_path / "elsewhere" / "achsmds1.lis", (tmp_path / "listen" / "achsmds1.lis").read_text())
+    alone = cli("lint", str(tmp_path / "elsewhere" / "achsmds1.lis"), "--format", "json", "--select", "LIS302")
+    assert findings(alone) == []
 
 
 def test_gantry_retraction_against_resettable_distance(cli, tmp_path):

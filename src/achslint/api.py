@@ -9,20 +9,17 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
-from .core.decode import UnreadableInput, decode, text_bytes
+from .core.decode import UnreadableInput, text_bytes
 from .core.diagnostics import Diagnostic, Severity
 from .core.display import shortened
 from .core.files import (
     MISSING,
     ChangedOnDisk,
     Refused,
-    Scope,
     WriteFailed,
-    is_folder,
     is_xml,
     not_a_list_file,
     read_list,
-    real_path,
     reason,
     same_file,
     write_atomically,
@@ -33,27 +30,26 @@ from .linting.config import (
     Overrides,
     ResolvedConfig,
     discover,
-    load_file,
-    matches_glob,
     named_path,
 )
-from .linting.engine import Policy, enabled_checks, run
+from .linting.discovery import Discovery, Finder, Target, machine_files, shown, startup_files
+from .linting.engine import enabled_checks
 from .linting.linter import (
     NOT_A_LIST,
     FileResult,
     FileSettings,
+    file_settings,
     findings,
     lint_file,
     looks_like_a_list,
 )
-from .machine.startup import is_default_list, is_startup_list, machines, read_startup
+from .linting.machines import machine_findings
 from .rules import Scope as RuleScope
-from .syntax.parser import parse_bytes, split_lines
+from .syntax.parser import parse_bytes
 
 if TYPE_CHECKING:
     from .dryrun import DryRun
     from .explanation import ListReport
-    from .machine.startup import Member, Startup
     from .model.base import AxisBase
 
 # A list given to the library functions: a path (str or PathLike) or the list's bytes.
@@ -111,280 +107,42 @@ class LintOutcome:
         return {r.name: r.source_lines for r in self.results if r.source_lines}
 
 
-@dataclass(frozen=True)
-class Target:
-    """One list to lint: a path on disk, or standard input under a display name."""
-
-    name: str
-    path: Path | None
-    config: ResolvedConfig
-    machine: str | None = None  # lists with the same key are checked together (LIS5xx)
-    defaults: Path | None = None  # default axis list loaded underneath (from a start-up list)
-
-
-def file_settings(
-    config: ResolvedConfig, overrides: Overrides, target: Path, keep_source: bool = True
-) -> FileSettings:
-    return FileSettings(
-        overrides.apply(config.settings),
-        config.ignored_for(target),
-        keep_source=keep_source,
-        machine_in_file=False,
-    )
-
-
-@dataclass
-class Discovery:
-    """What the paths given on the command line come to."""
-
-    targets: list[Target] = field(default_factory=list)
-    errors: list[str] = field(default_factory=list)  # exit code 2: something named or found could not be read
-    notes: list[str] = field(default_factory=list)  # skipped on purpose; the run goes on
-    # Lists of the same machine as a named list, read from disk only for the machine-level rules
-    # (LIS501-LIS503): pre-commit passes the changed lists alone, their neighbours still count.
-    context: list[Target] = field(default_factory=list)
-    _seen: set[object] = field(default_factory=set)
-
-    def add(self, target: Target) -> None:
-        """Take a target unless the same file is already taken (named twice, or a folder and a file in it)."""
-        if target.path is not None:
-            key: object
-            try:
-                info = os.stat(target.path)
-                key = (info.st_dev, info.st_ino)
-            except OSError:
-                key = str(target.path)
-            if key in self._seen:
-                return
-            self._seen.add(key)
-        self.targets.append(target)
-
-
 class LintRun:
-    """Resolves configuration per file and lints targets, serially or on several cores."""
+    """Resolves configuration per file and lints the lists a `Finder` finds, serially or on several cores."""
 
     def __init__(self, request: LintRequest) -> None:
         self.request = request
-        self.startups: list[Startup] = []
-        # start-up lists found in linted folders whose configuration names homing programs
-        self.program_startups: list[Path] = []
-        self.fixed_config = load_file(Path(request.config_file)) if request.config_file else None
+        self.finder = Finder(
+            request.overrides,
+            request.config_file,
+            request.stdin_filename,
+            request.force_exclude,
+            request.respect_gitignore,
+            machine_rules=self._machine_rules,
+        )
+        self.found = Discovery()
 
     def config_for(self, path: Path) -> ResolvedConfig:
-        return self.fixed_config or discover(path)
-
-    def discover(self) -> Discovery:
-        """Expand folders by the include/exclude globs and start-up lists by their entries; named files are
-        always linted. Each file is taken once, however often it is reached."""
-        found = Discovery()
-        self.startups = []
-        self.program_startups = []
-        named: dict[str, Path] = {}  # folders of the lists named one by one
-        scope = Scope.of(self.request.paths)
-        for raw in self.request.paths:
-            if raw == "-":
-                name = self.request.stdin_filename or "<stdin>"
-                config = self.config_for(Path(name) if self.request.stdin_filename else Path.cwd())
-                found.add(Target(name, None, config))
-                continue
-            path = Path(raw)
-            if is_folder(path):
-                for file in self._walk(path, scope, found):
-                    found.add(Target(str(file), file, self.config_for(file), machine=str(file.parent)))
-                continue
-            problem = not_a_list_file(path)
-            if problem is None and self.request.force_exclude and self._excluded(self.config_for(path), path):
-                continue
-            if problem is not None:
-                found.errors.append(f"{raw}: {problem}")
-            elif is_startup_list(path):
-                self._startup_targets(path, scope, found)
-            else:
-                found.add(Target(raw, path, self.config_for(path), machine=str(path.parent)))
-                named.setdefault(str(path.parent), path.parent)
-        for key, folder in named.items():
-            self._siblings(key, folder, found)
-        return found
-
-    def _siblings(self, key: str, folder: Path, found: Discovery) -> None:
-        """The other lists in the folder of a named list, as context for the machine-level rules.
-
-        Only when a machine-level rule is selected; links that lead out of the folder are not followed,
-        and nothing about these files is reported (their own problems belong to their own run).
-        """
-        settings = self.settings_for(Target(key, folder / "x", self.config_for(folder / "x")))
-        if not enabled_checks(RuleScope.MACHINE, settings.policy):
-            return
-        quiet = Discovery()
-        for file in self._walk(folder, Scope.of([folder]), quiet, recursive=False):
-            before = len(found.targets)
-            found.add(Target(str(file), file, self.config_for(file), machine=key))
-            if len(found.targets) > before:
-                found.context.append(found.targets.pop())
-
-    def _startup_targets(self, path: Path, scope: Scope, found: Discovery) -> None:
-        config = self.config_for(path)
-        root: Path | None
-        if self.request.overrides.cnc_root is not None:
-            root, origin = Path(self.request.overrides.cnc_root), "given by --cnc-root"
-        else:
-            root, origin = config.cnc_root(), f"set by `cnc-root` in {config.path}"
-        try:
-            startup = read_startup(path, scope, root, origin)
-        except OSError as exc:
-            found.errors.append(f"cannot read {path}: {reason(exc)}")
-            return
-        except UnreadableInput as exc:
-            found.errors.append(f"{path}: {exc}")
-            return
-        self.startups.append(startup)
-        # An entry naming the start-up list itself is LIS504's; its lines are no axis list (or defaults).
-        named = [e for e in [startup.default, *startup.axes] if e and e.path and not same_file(e.path, path)]
-        defaults = startup.default.path if startup.default in named and startup.default else None
-        for entry in startup.axes:
-            if entry in named and entry.path is not None:
-                found.add(
-                    Target(
-                        _shown(entry.path),
-                        entry.path,
-                        self.config_for(entry.path),
-                        machine=str(path),
-                        defaults=defaults,
-                    )
-                )
-
-    def _walk(self, folder: Path, scope: Scope, found: Discovery, recursive: bool = True) -> list[Path]:
-        """The lists in a folder tree. A folder that cannot be read, or a list that cannot (a broken link, a
-        loop), is an error: those could be lists nobody checked. FIFOs, devices and links that lead
-        outside the paths given are skipped with a note: they are not lists of this project."""
-        lists = []
-
-        def unreadable(exc: OSError) -> None:
-            found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
-
-        for root, dirs, files in os.walk(folder, onerror=unreadable):
-            dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
-            for name in dirs:  # os.walk does not enter linked folders; one that leads outside is said
-                linked = Path(root) / name
-                if os.path.islink(linked) and not scope.contains(linked):
-                    found.notes.append(
-                        f"{linked}: skipped, it links to {real_path(linked)}, outside the paths given"
-                    )
-            config = self.config_for(Path(root) / "x")
-            include = self.request.overrides.apply(config.settings).include
-            for name in sorted(files):
-                path = Path(root) / name
-                if config.settings.homing_programs and is_startup_list(path):
-                    self.program_startups.append(path)  # its homing programs are checked too
-                xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
-                if not xml and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
-                    continue
-                if self._excluded(config, path):
-                    continue
-                problem = not_a_list_file(path)
-                if xml and problem is None and scope.contains(path) and not self._axis_xml(path, found):
-                    continue
-                if problem is None and not scope.contains(path):
-                    found.notes.append(
-                        f"{path}: skipped, it links to {real_path(path)}, outside the paths given"
-                    )
-                elif problem is not None and problem.startswith(SKIPPED_KINDS):
-                    found.notes.append(f"{path}: skipped, it is {problem}")
-                elif problem is not None:
-                    found.errors.append(f"cannot read {path}: {problem}")
-                else:
-                    lists.append(path)
-        return _not_ignored_by_git(folder, lists) if self.request.respect_gitignore else lists
-
-    def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
-        patterns = self.request.overrides.apply(config.settings).exclude
-        return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
-
-    @staticmethod
-    def _axis_xml(path: Path, found: Discovery) -> bool:
-        """Whether an XML file found in a folder may hold axis lists; the others get a note."""
-        from .syntax.xmlinput import may_hold_axis_list, root_element
-
-        try:
-            data = read_list(path)
-        except OSError as exc:
-            found.errors.append(f"cannot read {path}: {reason(exc)}")
-            return False
-        if may_hold_axis_list(data):
-            return True
-        found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
-        return False
-
-    def machine_level(
-        self,
-        targets: list[Target],
-        results: list[FileResult],
-        context: Sequence[tuple[Target, FileResult]] = (),
-    ) -> list[FileResult]:
-        """Run the machine-level rules per machine; returns results for start-up lists with findings.
-
-        `context` lists (the neighbours of named lists) take part but get no findings; they come first,
-        so a repeated axis number is reported on the named list that repeats it.
-        """
-        by_name = {result.name: result for result in results}
-        hidden = {result.name for _, result in context}
-        groups: dict[str, list[Member]] = {}
-        settings: dict[str, FileSettings] = {}
-        pairs = [*context, *zip(targets, results, strict=False)]
-        for target, result in pairs:
-            if target.path is not None and is_default_list(target.path):
-                continue  # loaded underneath the axes, not an axis of its own
-            if target.machine and not result.error and (result.summary is not None or result.summaries):
-                for summary in [result.summary] if result.summary is not None else result.summaries:
-                    groups.setdefault(target.machine, []).append((result.name, summary))
-                settings[result.name] = self.settings_for(target)
-
-        def settings_of(path: str) -> FileSettings:  # a start-up list's own configuration too
-            if path not in settings:
-                settings[path] = self.settings_for(Target(path, Path(path), self.config_for(Path(path))))
-            return settings[path]
-
-        policies: dict[str, Policy] = {}
-
-        def policy_of(path: str) -> Policy:
-            if path not in policies:
-                policies[path] = settings_of(path).policy
-            return policies[path]
-
-        extra: dict[str, FileResult] = {}
-        for machine in machines(groups, self.startups):
-            for d in run(RuleScope.MACHINE, machine, policy_of):
-                if d.path in hidden:
-                    continue
-                owner = by_name.get(d.path) or extra.setdefault(
-                    d.path, FileResult(d.path, [], fail_on=settings_of(d.path).fail_on)
-                )
-                owner.diagnostics.append(d)
-        for result in [*by_name.values(), *extra.values()]:
-            result.diagnostics.sort(key=Diagnostic.sort_key)
-            if (
-                self.request.keep_source
-                and result.diagnostics
-                and not result.source_lines
-                and result.name != "<stdin>"
-            ):
-                with contextlib.suppress(OSError, UnreadableInput):
-                    result.source_lines = split_lines(decode(read_list(Path(result.name))).text)
-        return list(extra.values())
+        return self.finder.config_for(path)
 
     def settings_for(self, target: Target) -> FileSettings:
         return file_settings(
             target.config, self.request.overrides, target.path or Path(target.name), self.request.keep_source
         )
 
+    def _machine_rules(self, path: Path) -> bool:
+        """Whether a machine-level rule runs for a named list (only then are its neighbours read)."""
+        settings = self.settings_for(Target(str(path), path, self.config_for(path)))
+        return bool(enabled_checks(RuleScope.MACHINE, settings.policy))
+
     def run(self, stdin: BinaryIO | None = None, progress: Progress | None = None) -> LintOutcome:
-        found = self.discover()
+        found = self.found = self.finder.find(self.request.paths)
         if self.request.output is not None:
             every = [*found.targets, *found.context]
             read = [t.path for t in every if t.path is not None]
             read += [t.defaults for t in every if t.defaults is not None]
             read += [t.config.path for t in every if t.config.path is not None]
-            read += [path for startup in self.startups for path in startup_files(startup)]
+            read += [path for startup in found.startups for path in startup_files(startup)]
             refuse_output_over_input(self.request.output, read)
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
@@ -413,8 +171,7 @@ class LintRun:
                 pool.shutdown(cancel_futures=True)
         else:
             disk = list(_track(map(_lint_one, work), progress, len(work)))
-        results: list[FileResult] = []
-        linted: list[Target] = []  # the targets of `results`, in the same order
+        pairs: list[tuple[Target, FileResult]] = []
         from_disk = iter(disk)
         for target in targets:
             if target.path is None:
@@ -428,9 +185,21 @@ class LintRun:
             if result.error:
                 errors.append(result.error)
             result.fail_on = self.settings_for(target).fail_on
-            results.append(result)
-            linted.append(target)
-        results.extend(self.machine_level(linted, results, self._context(found.context)))
+            pairs.append((target, result))
+        context = self._context(found.context)
+        hidden = {result.name for _, result in context}
+        hidden |= {str(s.path) for s in found.startups if str(s.path) not in found.reported}
+        results = [result for _, result in pairs]
+        results.extend(
+            machine_findings(
+                [*context, *pairs],
+                found.startups,
+                self.settings_for,
+                self.config_for,
+                hidden=hidden,
+                keep_source=self.request.keep_source,
+            )
+        )
         return LintOutcome(results, errors, found.notes)
 
     def _context(self, context: list[Target]) -> list[tuple[Target, FileResult]]:
@@ -440,64 +209,11 @@ class LintRun:
             chosen = self.settings_for(target)
             only_machine = replace(chosen.settings, select=["LIS5"], extend_select=[])
             settings = replace(chosen, settings=only_machine, keep_source=False)
-            result = _lint_one((target.name, str(target.path), settings, (False, False, False), None))
+            defaults = str(target.defaults) if target.defaults else None
+            result = _lint_one((target.name, str(target.path), settings, (False, False, False), defaults))
             if not result.error and not result.note:
                 pairs.append((target, result))
         return pairs
-
-
-def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
-    """`files` without those git ignores (.gitignore, .git/info/exclude); all of them outside a git work tree
-    or without git."""
-    import subprocess
-
-    if not files or not _maybe_in_git_work_tree(folder):
-        return files
-    try:
-        answer = subprocess.run(
-            ["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
-            input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
-            capture_output=True,
-            timeout=60,
-            check=False,
-        )
-    except (OSError, subprocess.SubprocessError):
-        return files
-    if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
-        return files
-    ignored = {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
-    return [f for f in files if os.path.abspath(f) not in ignored]
-
-
-def _maybe_in_git_work_tree(folder: Path) -> bool:
-    """Whether git could have a say: a `.git` folder or file in the folder or above it, or git pointed
-    elsewhere by GIT_DIR / GIT_WORK_TREE. Saves starting git for every folder outside a repository."""
-    if os.environ.get("GIT_DIR") or os.environ.get("GIT_WORK_TREE"):
-        return True
-    try:
-        start = Path(os.path.abspath(folder))
-        return any(os.path.lexists(candidate / ".git") for candidate in (start, *start.parents))
-    except (OSError, ValueError):
-        return True  # let git decide
-
-
-def _shown(path: Path) -> str:
-    """A path as reports show it: relative to the working directory when it lies below it."""
-    try:
-        return str(path.relative_to(Path.cwd()))
-    except ValueError:
-        return str(path)
-
-
-# Files found in a folder that are skipped with a note rather than reported as unreadable.
-SKIPPED_KINDS = (
-    "a FIFO",
-    "a device",
-    "a socket",
-    "a folder",
-    "not a regular file",
-    "a file of the operating system",
-)
 
 
 def _lint_one(item: WorkItem) -> FileResult:
@@ -630,26 +346,6 @@ def run_lint(
     return outcome
 
 
-def startup_files(startup: Startup) -> list[Path]:
-    """Every file a start-up list leads achslint to read: itself and the lists its entries name."""
-    entries = [startup.default, startup.default_channel, *startup.axes, *startup.channels]
-    return [startup.path, *(entry.path for entry in entries if entry is not None and entry.path is not None)]
-
-
-def machine_files(startup: Path, cnc_root: Path | None = None, config_file: str | None = None) -> list[Path]:
-    """The files a machine's start-up list leads achslint to read, with the configuration that applies to
-    it (`config_file`, else the one found above it; its `cnc-root` unless `cnc_root` is given): for the
-    check that a report or plot file is none of them. Nothing when the start-up list cannot be read (the
-    run says so itself). Raises `ConfigError`."""
-    config = load_file(Path(config_file)) if config_file else discover(startup)
-    root = cnc_root or config.cnc_root()
-    try:
-        files = startup_files(read_startup(startup, None, root, "as given" if root else ""))
-    except (OSError, UnreadableInput):
-        return []
-    return files + ([config.path] if config.path is not None else [])
-
-
 def refuse_output_over_input(output: str, inputs: Iterable[Path], option: str = "--output-file") -> None:
     """`OutputIsInput` when the file `option` writes is one of `inputs` (the same file under another name,
     through a symbolic or a hard link, counts: it is compared by device and inode)."""
@@ -670,8 +366,11 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
     """The homing programs the configuration of each linted start-up list names (`homing-programs`),
     checked against that start-up list's machine."""
     given_root = Path(run.request.overrides.cnc_root) if run.request.overrides.cnc_root else None
-    startups = {os.path.realpath(s.path): (s.path, s.root) for s in run.startups}
-    for path in run.program_startups:  # found in the linted folders
+    found = run.found
+    startups = {
+        os.path.realpath(s.path): (s.path, s.root) for s in found.startups if str(s.path) in found.reported
+    }
+    for path in found.program_startups:  # found in the linted folders
         startups.setdefault(os.path.realpath(path), (path, given_root))
     for startup, cnc_root in startups.values():
         config = run.config_for(startup)
@@ -706,7 +405,7 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
                 )
                 continue
             settings = run.settings_for(Target(str(path), path, run.config_for(path)))
-            result = lint_program_bytes(data, machine, _shown(path), settings)
+            result = lint_program_bytes(data, machine, shown(path), settings)
             outcome.results.append(result)
 
 
@@ -721,9 +420,9 @@ def _configured_program(path: Path) -> tuple[bytes | None, str]:
     except Refused as exc:
         return None, str(exc)
     except OSError as exc:
-        return None, f"cannot read {_shown(path)}: {reason(exc)}"
+        return None, f"cannot read {shown(path)}: {reason(exc)}"
     if program_text(data) is None:
-        return None, f"{_shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
+        return None, f"{shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
     return data, ""
 
 
@@ -765,11 +464,9 @@ def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatO
     change meanwhile), checking or diffing. Raises `ConfigError`."""
     from .fmt import format_bytes, unified_diff
 
-    found = LintRun(
-        LintRequest(
-            paths=request.paths, config_file=request.config_file, stdin_filename=request.stdin_filename
-        )
-    ).discover()
+    finder = Finder(config_file=request.config_file, stdin_filename=request.stdin_filename)
+    finder.machine_rules = lambda path: False  # fmt reads no neighbours
+    found = finder.find(request.paths)
     outcome = FormatOutcome([], list(found.errors), list(found.notes), len(found.targets))
     for target in found.targets:
         if is_xml(target.name):

@@ -353,8 +353,8 @@ def _patterns(values: list[str] | None) -> list[str] | None:
 
 
 def _machine_inputs(startup: str, config: str | None) -> list[str]:
-    from .api import machine_files
     from .linting.config import ConfigError
+    from .linting.discovery import machine_files
 
     try:
         return [str(path) for path in machine_files(Path(startup), config_file=config)]

@@ -17,7 +17,7 @@ from ..machine import startup as machine
 from ..rules import Scope
 from ..rules.context import Context
 from ..syntax.parser import ASSIGNMENT, END, ListFile, parse_bytes
-from .config import Settings
+from .config import Overrides, ResolvedConfig, Settings
 from .engine import Policy, run
 from .suppression import Suppressions
 
@@ -55,6 +55,18 @@ class FileSettings:
     @property
     def fail_on(self) -> str:
         return self.settings.fail_on
+
+
+def file_settings(
+    config: ResolvedConfig, overrides: Overrides, target: Path, keep_source: bool = True
+) -> FileSettings:
+    """The settings of one file: its configuration with the command line's (or the editor's) overrides."""
+    return FileSettings(
+        overrides.apply(config.settings),
+        config.ignored_for(target),
+        keep_source=keep_source,
+        machine_in_file=False,
+    )
 
 
 @dataclass

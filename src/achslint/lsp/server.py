@@ -615,6 +615,7 @@ def _invalid(exc: Exception) -> str:
 def _take_settings(ls: AchslintServer, raw: object) -> None:
     """Use the editor's settings; codes that pick no rule are told to the user (and not used)."""
     ls.session.settings = ClientSettings.from_dict(raw)
+    ls.session.settings_changed()
     for problem in ls.session.settings.problems:
         ls.window_show_message(lsp.ShowMessageParams(lsp.MessageType.Warning, problem))
 

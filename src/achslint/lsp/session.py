@@ -1,10 +1,11 @@
 """What the language server knows about the open documents, computed by achslint's own API.
 
-Nothing here decides what a finding is: the file-level findings come from the linter
-(`linter.lint_parsed` / `lint_file`, the same path as `achslint lint`), the settings from
-the nearest configuration (`config.discover`, `api.file_settings`), and the machine-level
-findings from `api.LintRun`'s machine step, fed with the lists of the document's folder (or
-of the start-up list that names it) as the editor has them: open buffers, else the files.
+Nothing here decides what a finding is or which files form a machine: the file-level findings
+come from the linter (`linter.lint_parsed` / `lint_file`, the same path as `achslint lint`), the
+settings from the nearest configuration (`config.discover`, `linter.file_settings`), the machines
+a document belongs to from `discovery.Finder` (the one discovery of `achslint lint`), and their
+findings from the machine step (`machines.machine_findings`), fed with the members' texts as the
+editor has them: open buffers, else the files.
 
 This module does not import pygls: the benchmarks time it directly.
 """
@@ -17,21 +18,21 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..api import LintRequest, LintRun, Target, file_settings
 from ..core.decode import UnreadableInput, text_bytes
 from ..core.diagnostics import Diagnostic, Severity
-from ..core.files import is_xml, not_a_list_file, read_list, starts_with_bom
+from ..core.files import is_xml, read_list, starts_with_bom
 from ..linting.config import (
     ConfigError,
     Overrides,
     ResolvedConfig,
     Settings,
     discover,
-    matches_glob,
     parse_codes,
 )
-from ..linting.linter import FileResult, FileSettings, lint_file, lint_parsed
-from ..machine.startup import Startup, is_startup_list, read_startup
+from ..linting.discovery import Discovery, Finder, MachineFiles, Target
+from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
+from ..linting.machines import machine_findings
+from ..machine.startup import is_startup_list
 from ..syntax.parser import ListFile, parse_bytes
 from .documents import Document
 
@@ -101,15 +102,6 @@ class Snapshot:
     startup: bool = False  # a start-up list: only its entries are checked (LIS504), as in `achslint lint`
 
 
-@dataclass
-class Machine:
-    """The lists that form a machine with a document, as `achslint lint` would group them."""
-
-    targets: list[Target]
-    startups: list[Startup]
-    defaults: Path | None = None  # the default list loaded under the document (start-up list)
-
-
 _ENCODING = re.compile(r'<\?xml[^>]*encoding=["\']([A-Za-z0-9_.-]+)["\']')
 
 
@@ -149,8 +141,9 @@ class Session:
         self._disk: dict[_DiskKey, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
         self._by_real: dict[str, Document] = {}  # open files by real path
         self._machines: dict[
-            str, Machine | None
-        ] = {}  # real path of a list -> its machine (until forget_disk)
+            str, list[MachineFiles]
+        ] = {}  # real path of a list -> its machines (until forget_disk)
+        self._finder: Finder | None = None  # with the editor's settings (until they or the disk change)
         self._machine_found: dict[str, list[_Found]] = {}  # uri -> the machine findings last reported for it
 
     # -- documents ---------------------------------------------------------------------------
@@ -182,6 +175,7 @@ class Session:
 
         self._disk.clear()
         self._machines.clear()
+        self._finder = None
         _REAL.clear()
         self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
         for uri in list(self._snapshots):
@@ -238,10 +232,10 @@ class Session:
             result = lint_file(xml_bytes(document.text), name, settings)
             return Snapshot(document.version, document.text, result, config_error=config_error)
         default_file = None
-        machine = self.machine(document)
-        if machine is not None and machine.defaults is not None:
+        defaults = next((m.defaults for m in self.machines(document) if m.defaults is not None), None)
+        if defaults is not None:
             try:
-                default_file = parse_bytes(self.text_of(machine.defaults), str(machine.defaults))
+                default_file = parse_bytes(self.text_of(defaults), str(defaults))
             except (OSError, UnreadableInput):
                 default_file = None  # the start-up list's LIS504 says why
         file = document.parse()
@@ -277,83 +271,34 @@ class Session:
         return snapshot, own, peers
 
     # -- machines --------------------------------------------------------------------------------
-    def machine(self, document: Document) -> Machine | None:
-        """The start-up list that names the document (its folder or the one above), else its folder's lists."""
+    @property
+    def finder(self) -> Finder:
+        """The one discovery of `achslint lint`, with the editor's settings as the command line's flags."""
+        if self._finder is None:
+            self._finder = Finder(self.settings.overrides, lenient=True)
+        return self._finder
+
+    def settings_changed(self) -> None:
+        """The editor's settings changed: machines are found again with them (include/exclude may differ)."""
+        self._finder = None
+        self._machines.clear()
+
+    def machines(self, document: Document) -> list[MachineFiles]:
+        """The machines of a document, found as `achslint lint` finds them (`Finder.machines_of`): the
+        start-up lists beside it that name it, else the lists of its folder."""
         path = document.path
         if path is None:
-            return None
+            return []
         real = _real(path)
         if real not in self._machines:
-            self._machines[real] = self._find_machine(path, real)
+            self._machines[real] = self.finder.machines_of(path)
         return self._machines[real]
-
-    def _find_machine(self, path: Path, real: str) -> Machine | None:
-        if is_startup_list(path):
-            return self._startup_machine(path, None)
-        for folder in (path.parent, path.parent.parent):
-            try:
-                candidates = sorted(p for p in folder.iterdir() if is_startup_list(p))
-            except (OSError, ValueError):  # ValueError: a NUL in the name (file:///a%00b/...)
-                continue
-            for candidate in candidates:
-                machine = self._startup_machine(candidate, real)
-                if machine is not None:
-                    return machine
-        return self._folder_machine(path)
-
-    def _startup_machine(self, startup_path: Path, member: str | None) -> Machine | None:
-        if not_a_list_file(startup_path) is not None:
-            return None
-        try:
-            startup = self._read_startup(startup_path)
-        except (OSError, UnreadableInput):
-            return None
-        if member is not None and not any(
-            e.path is not None and _real(e.path) == member for e in startup.axes
-        ):
-            return None
-        defaults = startup.default.path if startup.default else None
-        targets = [
-            Target(str(e.path), e.path, self._config(e.path), machine=str(startup_path), defaults=defaults)
-            for e in startup.axes
-            if e.path is not None
-        ]
-        return Machine(targets, [startup], defaults)
-
-    @staticmethod
-    def _read_startup(path: Path) -> Startup:
-        """A start-up list's entries, as saved on disk (the CNC and `achslint lint` read the file too)."""
-        return read_startup(path)
 
     def _config(self, path: Path) -> ResolvedConfig:
         try:
             return discover(path)
         except ConfigError:
             return ResolvedConfig(Settings())
-
-    def _folder_machine(self, path: Path) -> Machine | None:
-        """The lists of the document's folder that `achslint lint FOLDER` would take (include/exclude)."""
-        folder = path.parent
-        config = self._config(path)
-        applied = self.settings.overrides.apply(config.settings)
-        include, exclude = applied.include, applied.exclude
-        targets = []
-        try:
-            names = sorted(os.listdir(folder))
-        except OSError:
-            return None
-        for name in names:
-            candidate = folder / name
-            if not any(matches_glob(name.lower(), pattern.lower()) for pattern in include):
-                continue
-            if any(matches_glob(config.relative(candidate), pattern) for pattern in exclude) or (
-                not_a_list_file(candidate) is not None and self.by_path(candidate) is None
-            ):
-                continue
-            targets.append(Target(str(candidate), candidate, self._config(candidate), machine=str(folder)))
-        if not any(_real(t.path or t.name) == _real(path) for t in targets):
-            return None  # not a list `lint FOLDER` would take: no machine rules, as on the command line
-        return Machine(targets, [])
 
     def _summary_result(self, target: Target) -> FileResult:
         """A member's result (its summary is what the machine rules compare): open buffer or file."""
@@ -386,30 +331,43 @@ class Session:
         return FileResult(target.name, [], cached.error, summary=cached.summary)
 
     def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> dict[str, list[Diagnostic]]:
-        """The machine-level findings of every list of the document's machine, by real path."""
-        machine = self.machine(document)
-        if machine is None or document.path is None:
+        """The machine-level findings of every list of the document's machines, by real path."""
+        machines = self.machines(document)
+        if not machines or document.path is None:
             return {}
         real = _real(document.path)
-        results: list[FileResult] = []
-        for target in machine.targets:
+        found = Discovery()
+        found.members(machines)  # in the machine's order: a repeated number is reported where it repeats
+        if not snapshot.startup:
+            keys = tuple(m.key for m in machines)
+            found.add(
+                Target(str(document.path), document.path, self._config(document.path), keys), context=True
+            )
+        pairs: list[tuple[Target, FileResult]] = []
+        for target in [*found.targets, *found.context]:
             if _real(target.path or target.name) == real and not snapshot.startup:
-                results.append(
-                    FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
-                )
+                result = FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
             else:
-                results.append(self._summary_result(target))
-        linter = LintRun(LintRequest(paths=[], overrides=self.settings.overrides, keep_source=False))
-        linter.startups = machine.startups
-        extra = linter.machine_level(machine.targets, results)
-        found: dict[str, list[Diagnostic]] = {}
-        for result in results + extra:
-            found.setdefault(_real(result.name), []).extend(result.diagnostics)
-        for member, diagnostics in found.items():
+                result = self._summary_result(target)
+            pairs.append((target, result))
+        startups = [m.startup for m in machines if m.startup is not None]
+        extra = machine_findings(
+            pairs,
+            startups,
+            lambda target: file_settings(
+                target.config, self.settings.overrides, target.path or Path(target.name)
+            ),
+            self._config,
+            keep_source=False,
+        )
+        by_member: dict[str, list[Diagnostic]] = {}
+        for result in [*(result for _, result in pairs), *extra]:
+            by_member.setdefault(_real(result.name), []).extend(result.diagnostics)
+        for member, diagnostics in by_member.items():
             owner = self._by_real.get(member)
             for d in diagnostics:
                 d.path = owner.name if owner is not None else d.path
-        return found
+        return by_member
 
 
 _Found = tuple[int, int, str, str, Severity]  # what tells two findings apart (for `peers`)

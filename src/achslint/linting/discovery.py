@@ -1,0 +1,465 @@
+"""Which lists a run reads, and which machine each list belongs to.
+
+The one place that turns paths into lists and machines: `achslint lint`, the Python API and the language
+server all ask a `Finder`. The editor passes nothing else: it reads the members' texts from its open
+buffers itself, but which files form a machine is decided here, so the editor and the command line see
+the same machine.
+
+A machine is what the CNC loads together:
+- every start-up list is one machine: the axis lists its `achs_mds[i]` entries name, with the default list
+  of `default_achs_mds` underneath each of them. The start-up lists taken into account for a list are those
+  named or found in a linted folder, and those in the list's own folder or the folder above it (the SDK
+  keeps `hochlauf.lis` in `listen/`, or in `listen/ExtSchedule/`). Two start-up lists side by side (a CoE
+  and an SoE variant of one machine) are two machines: their lists are never compared with each other.
+- the lists of a folder that no such start-up list names form one machine (a repository of axis lists
+  without a start-up list).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from ..core.decode import UnreadableInput
+from ..core.files import Scope, is_folder, is_xml, not_a_list_file, read_list, real_path, reason, same_file
+from ..machine.startup import Startup, is_default_list, is_startup_list, read_startup
+from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
+
+# Files found in a folder that are skipped with a note rather than reported as unreadable.
+SKIPPED_KINDS = (
+    "a FIFO",
+    "a device",
+    "a socket",
+    "a folder",
+    "not a regular file",
+    "a file of the operating system",
+)
+
+
+@dataclass(frozen=True)
+class Target:
+    """One list to lint: a path on disk, or standard input under a display name."""
+
+    name: str
+    path: Path | None
+    config: ResolvedConfig
+    # The machines the list belongs to (the path of each start-up list naming it, else its folder): lists
+    # sharing a key are checked together by the machine-level rules (LIS5xx).
+    machines: tuple[str, ...] = ()
+    defaults: Path | None = None  # default axis list loaded underneath (from a start-up list)
+
+
+@dataclass
+class Discovery:
+    """What the paths of a run come to."""
+
+    targets: list[Target] = field(default_factory=list)
+    errors: list[str] = field(default_factory=list)  # exit code 2: something named or found could not be read
+    notes: list[str] = field(default_factory=list)  # skipped on purpose; the run goes on
+    # Lists of the same machine as a linted list, read only for the machine-level rules (their findings
+    # are not reported): pre-commit passes the changed lists alone, their neighbours still count.
+    context: list[Target] = field(default_factory=list)
+    # The start-up lists of the run's machines; `reported` are those named or found in a linted folder
+    # (their own findings are reported), the others were found beside a linted list.
+    startups: list[Startup] = field(default_factory=list)
+    reported: set[str] = field(default_factory=set)
+    # start-up lists found in linted folders whose configuration names homing programs
+    program_startups: list[Path] = field(default_factory=list)
+    _seen: dict[object, tuple[list[Target], int]] = field(default_factory=dict)
+
+    def add(self, target: Target, *, context: bool = False) -> None:
+        """Take a target unless the same file is already taken (named twice, a folder and a file in it, a list
+        two start-up lists name); a file reached again joins the machines it was reached through."""
+        where = self.context if context else self.targets
+        if target.path is None:
+            where.append(target)
+            return
+        key = _identity(target.path)
+        if key not in self._seen:
+            self._seen[key] = (where, len(where))
+            where.append(target)
+            return
+        taken, index = self._seen[key]
+        before = taken[index]
+        machines = tuple(dict.fromkeys([*before.machines, *target.machines]))
+        if machines != before.machines:
+            taken[index] = replace(before, machines=machines, defaults=before.defaults or target.defaults)
+
+    def members(self, machines: Sequence[MachineFiles]) -> None:
+        """Take the members of machines as context."""
+        for machine in machines:
+            for member in machine.members:
+                self.add(member, context=True)
+
+
+@dataclass
+class MachineFiles:
+    """The files that form one machine with a list: its start-up list (if any) and its members."""
+
+    key: str
+    startup: Startup | None
+    members: list[Target]
+    defaults: Path | None = None  # the default axis list the start-up list loads under its axis lists
+
+
+def _identity(path: Path) -> object:
+    try:
+        info = os.stat(path)
+        return (info.st_dev, info.st_ino)
+    except (OSError, ValueError):
+        return os.path.abspath(path)
+
+
+def shown(path: Path) -> str:
+    """A path as reports show it: relative to the working directory when it lies below it."""
+    try:
+        return str(path.relative_to(Path.cwd()))
+    except ValueError:
+        return str(path)
+
+
+@dataclass
+class Finder:
+    """Finds lists and machines with the settings of one run (the command line's or the editor's)."""
+
+    overrides: Overrides = field(default_factory=Overrides)
+    config_file: str | None = None  # --config: this file for every list instead of the nearest one
+    stdin_filename: str | None = None
+    force_exclude: bool = False  # exclude patterns apply to named files too
+    respect_gitignore: bool = True
+    # Whether the machine-level rules run for a named list (only then are its neighbours read).
+    machine_rules: Callable[[Path], bool] = lambda path: True
+    lenient: bool = False  # a broken configuration counts as none (the editor says so once, elsewhere)
+    _fixed: ResolvedConfig | None = None
+    _startups: dict[str, Startup | None] = field(default_factory=dict)  # by absolute path
+    _around: dict[str, list[Startup]] = field(default_factory=dict)  # by folder
+
+    def __post_init__(self) -> None:
+        self._fixed = load_file(Path(self.config_file)) if self.config_file else None
+
+    def config_for(self, path: Path) -> ResolvedConfig:
+        """The configuration of a file. Raises `ConfigError`, except for the editor (`lenient`), which shows
+        a broken configuration once and goes on with the defaults."""
+        if self._fixed is not None:
+            return self._fixed
+        try:
+            return discover(path)
+        except ConfigError:
+            if self.lenient:
+                return ResolvedConfig(Settings())
+            raise
+
+    # -- start-up lists ----------------------------------------------------------------------------------
+    def startup(self, path: Path, scope: Scope | None = None) -> Startup:
+        """A start-up list read with the CNC root of the run (`--cnc-root`, else the configuration's, else
+        its default). Raises `OSError` / `UnreadableInput`."""
+        key = os.path.abspath(path)
+        known = self._startups.get(key)
+        if known is not None:
+            return known
+        config = self.config_for(path)
+        root: Path | None
+        if self.overrides.cnc_root is not None:
+            root, origin = Path(self.overrides.cnc_root), "given by --cnc-root"
+        else:
+            root, origin = config.cnc_root(), f"set by `cnc-root` in {config.path}"
+        startup = read_startup(path, scope, root, origin)
+        self._startups[key] = startup
+        return startup
+
+    def startups_around(self, folder: Path) -> list[Startup]:
+        """The start-up lists in a folder and the folder above it that can be read (the others are the
+        business of a run that names them)."""
+        key = os.path.abspath(folder)
+        if key not in self._around:
+            found: list[Startup] = []
+            for place in (folder, folder.parent):
+                try:
+                    candidates = sorted(p for p in place.iterdir() if is_startup_list(p))
+                except (OSError, ValueError):  # ValueError: a NUL in the name
+                    continue
+                for candidate in candidates:
+                    if not_a_list_file(candidate) is not None:
+                        continue
+                    try:
+                        found.append(self.startup(candidate))
+                    except (OSError, UnreadableInput):
+                        continue
+            self._around[key] = found
+        return self._around[key]
+
+    # -- machines ------------------------------------------------------------------------------------------
+    def machines_of(self, path: Path, known: Sequence[Startup] = ()) -> list[MachineFiles]:
+        """The machines a list belongs to: every start-up list (of `known`, or beside the list) that names
+        it, else the lists of its folder that no start-up list names. A start-up list is a machine of its
+        own. Nothing for a file that is no member of any machine (not a list `lint FOLDER` would take)."""
+        if is_startup_list(path):
+            try:
+                startup = self.startup(path)
+            except (OSError, UnreadableInput):
+                return []
+            return [self._startup_machine(startup)]
+        startups = _unique([*known, *self.startups_around(path.parent)])
+        naming = [s for s in startups if any(_names(e.path, path) for e in s.axes)]
+        if naming:
+            return [self._startup_machine(startup) for startup in naming]
+        folder = self._folder_machine(path.parent, startups)
+        if folder is None or not any(same_file(m.path, path) for m in folder.members if m.path is not None):
+            return []
+        return [folder]
+
+    def _startup_machine(self, startup: Startup) -> MachineFiles:
+        default = startup.default
+        defaults = default.path if default is not None and not _names(default.path, startup.path) else None
+        members = [
+            Target(shown(e.path), e.path, self.config_for(e.path), (str(startup.path),), defaults)
+            for e in startup.axes
+            if e.path is not None and not same_file(e.path, startup.path)
+        ]
+        return MachineFiles(str(startup.path), startup, members, defaults)
+
+    def _folder_machine(self, folder: Path, startups: list[Startup]) -> MachineFiles | None:
+        """The lists of a folder that `achslint lint FOLDER` would take and no start-up list names."""
+        config = self.config_for(folder / "x")
+        applied = self.overrides.apply(config.settings)
+        try:
+            names = sorted(os.listdir(folder))
+        except OSError:
+            return None
+        members = []
+        for name in names:
+            candidate = folder / name
+            if not any(matches_glob(name.lower(), pattern.lower()) for pattern in applied.include):
+                continue
+            if any(matches_glob(config.relative(candidate), pattern) for pattern in applied.exclude):
+                continue
+            if not_a_list_file(candidate) is not None or _named_by(startups, candidate):
+                continue
+            members.append(Target(str(candidate), candidate, self.config_for(candidate), (str(folder),)))
+        return MachineFiles(str(folder), None, members)
+
+    # -- a run's paths -------------------------------------------------------------------------------------
+    def find(self, paths: list[str]) -> Discovery:
+        """Expand folders by the include/exclude globs and start-up lists by their entries; named files are
+        always linted. Each file is taken once, however often it is reached; each list is put in the
+        machines it belongs to (see the module's description)."""
+        found = Discovery()
+        scope = Scope.of(paths)
+        lists: list[
+            tuple[str, Path]
+        ] = []  # (name shown, path): named, found in a folder or by a start-up list
+        named: list[Path] = []
+        for raw in paths:
+            if raw == "-":
+                name = self.stdin_filename or "<stdin>"
+                config = self.config_for(Path(name) if self.stdin_filename else Path.cwd())
+                found.add(Target(name, None, config))
+                continue
+            path = Path(raw)
+            if is_folder(path):
+                walked, startups = self._walk(path, scope, found)
+                lists += [(str(file), file) for file in walked]
+                for startup_path in startups:
+                    lists += self._take_startup(startup_path, scope, found, named=False)
+                continue
+            problem = not_a_list_file(path)
+            if problem is None and self.force_exclude and self._excluded(self.config_for(path), path):
+                continue
+            if problem is not None:
+                found.errors.append(f"{raw}: {problem}")
+            elif is_startup_list(path):
+                self._take_startup(path, scope, found, named=True)
+            else:
+                lists.append((raw, path))
+                named.append(path)
+        known = list(found.startups)
+        for name, path in lists:
+            machines = [] if is_default_list(path) else self.machines_of(path, known)
+            keys = tuple(m.key for m in machines) or (str(path.parent),)
+            defaults = next((m.defaults for m in machines if m.defaults is not None), None)
+            found.add(Target(name, path, self.config_for(path), keys, defaults))
+            self._remember(machines, found)
+        for path in named:  # the other members of its machines, for the machine-level rules
+            if self.machine_rules(path):
+                found.members(self.machines_of(path, known))
+        return found
+
+    def _remember(self, machines: list[MachineFiles], found: Discovery) -> None:
+        for machine in machines:
+            if machine.startup is not None and all(s is not machine.startup for s in found.startups):
+                found.startups.append(machine.startup)
+
+    def _take_startup(
+        self, path: Path, scope: Scope, found: Discovery, *, named: bool
+    ) -> list[tuple[str, Path]]:
+        """A start-up list named, or found in a linted folder: a machine whose own findings are reported.
+        Named, its axis lists are linted as its members; found in a folder, those inside the linted paths
+        are returned to be linted with every machine they belong to, those outside are read for the
+        machine-level rules only."""
+        try:
+            startup = self.startup(path, scope)
+        except OSError as exc:
+            found.errors.append(f"cannot read {path}: {reason(exc)}")
+            return []
+        except UnreadableInput as exc:
+            found.errors.append(f"{path}: {exc}")
+            return []
+        if all(s is not startup for s in found.startups):
+            found.startups.append(startup)
+        found.reported.add(str(startup.path))
+        inside = []
+        for member in self._startup_machine(startup).members:
+            assert member.path is not None  # members are files
+            if named:
+                found.add(member)
+            elif scope.contains(member.path) and not self._excluded(member.config, member.path):
+                inside.append((member.name, member.path))
+            else:
+                found.add(member, context=True)
+        return inside
+
+    def _walk(self, folder: Path, scope: Scope, found: Discovery) -> tuple[list[Path], list[Path]]:
+        """The lists and start-up lists in a folder tree. A folder that cannot be read, or a list that
+        cannot (a broken link, a loop), is an error: those could be lists nobody checked. FIFOs, devices and
+        links that lead outside the paths given are skipped with a note: they are not lists of this project."""
+        lists: list[Path] = []
+        startups: list[Path] = []
+
+        def unreadable(exc: OSError) -> None:
+            found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
+
+        for root, dirs, files in os.walk(folder, onerror=unreadable):
+            dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+            for name in dirs:  # os.walk does not enter linked folders; one that leads outside is said
+                linked = Path(root) / name
+                if os.path.islink(linked) and not scope.contains(linked):
+                    found.notes.append(
+                        f"{linked}: skipped, it links to {real_path(linked)}, outside the paths given"
+                    )
+            config = self.config_for(Path(root) / "x")
+            include = self.overrides.apply(config.settings).include
+            for name in sorted(files):
+                path = Path(root) / name
+                startup = is_startup_list(path)
+                if startup and config.settings.homing_programs:
+                    found.program_startups.append(path)  # its homing programs are checked too
+                xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
+                if (
+                    not xml
+                    and not startup
+                    and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include)
+                ):
+                    continue
+                if self._excluded(config, path):
+                    continue
+                problem = not_a_list_file(path)
+                if xml and problem is None and scope.contains(path) and not _axis_xml(path, found):
+                    continue
+                if problem is None and not scope.contains(path):
+                    found.notes.append(
+                        f"{path}: skipped, it links to {real_path(path)}, outside the paths given"
+                    )
+                elif problem is not None and problem.startswith(SKIPPED_KINDS):
+                    found.notes.append(f"{path}: skipped, it is {problem}")
+                elif problem is not None:
+                    found.errors.append(f"cannot read {path}: {problem}")
+                else:
+                    (startups if startup else lists).append(path)
+        if self.respect_gitignore:
+            lists, startups = _not_ignored_by_git(folder, lists), _not_ignored_by_git(folder, startups)
+        return lists, startups
+
+    def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
+        patterns = self.overrides.apply(config.settings).exclude
+        return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
+
+
+def _names(entry: Path | None, path: Path) -> bool:
+    return entry is not None and same_file(entry, path)
+
+
+def _named_by(startups: list[Startup], path: Path) -> bool:
+    return any(_names(e.path, path) for s in startups for e in s.axes)
+
+
+def _unique(startups: list[Startup]) -> list[Startup]:
+    seen: set[str] = set()
+    out = []
+    for startup in startups:
+        key = os.path.abspath(startup.path)
+        if key not in seen:
+            seen.add(key)
+            out.append(startup)
+    return out
+
+
+def _axis_xml(path: Path, found: Discovery) -> bool:
+    """Whether an XML file found in a folder may hold axis lists; the others get a note."""
+    from ..syntax.xmlinput import may_hold_axis_list, root_element
+
+    try:
+        data = read_list(path)
+    except OSError as exc:
+        found.errors.append(f"cannot read {path}: {reason(exc)}")
+        return False
+    if may_hold_axis_list(data):
+        return True
+    found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
+    return False
+
+
+def startup_files(startup: Startup) -> list[Path]:
+    """Every file a start-up list leads achslint to read: itself and the lists its entries name."""
+    entries = [startup.default, startup.default_channel, *startup.axes, *startup.channels]
+    return [startup.path, *(entry.path for entry in entries if entry is not None and entry.path is not None)]
+
+
+def machine_files(startup: Path, cnc_root: Path | None = None, config_file: str | None = None) -> list[Path]:
+    """The files a machine's start-up list leads achslint to read, with the configuration that applies to
+    it (`config_file`, else the one found above it; its `cnc-root` unless `cnc_root` is given): for the
+    check that a report or plot file is none of them. Nothing when the start-up list cannot be read (the
+    run says so itself). Raises `ConfigError`."""
+    config = load_file(Path(config_file)) if config_file else discover(startup)
+    root = cnc_root or config.cnc_root()
+    try:
+        files = startup_files(read_startup(startup, None, root, "as given" if root else ""))
+    except (OSError, UnreadableInput):
+        return []
+    return files + ([config.path] if config.path is not None else [])
+
+
+def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
+    """`files` without those git ignores (.gitignore, .git/info/exclude); all of them outside a git work tree
+    or without git."""
+    import subprocess
+
+    if not files or not _maybe_in_git_work_tree(folder):
+        return files
+    try:
+        answer = subprocess.run(
+            ["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
+            input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
+            capture_output=True,
+            timeout=60,
+            check=False,
+        )
+    except (OSError, subprocess.SubprocessError):
+        return files
+    if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
+        return files
+    ignored = {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
+    return [f for f in files if os.path.abspath(f) not in ignored]
+
+
+def _maybe_in_git_work_tree(folder: Path) -> bool:
+    """Whether git could have a say: a `.git` folder or file in the folder or above it, or git pointed
+    elsewhere by GIT_DIR / GIT_WORK_TREE. Saves starting git for every folder outside a repository."""
+    if os.environ.get("GIT_DIR") or os.environ.get("GIT_WORK_TREE"):
+        return True
+    try:
+        start = Path(os.path.abspath(folder))
+        return any(os.path.lexists(candidate / ".git") for candidate in (start, *start.parents))
+    except (OSError, ValueError):
+        return True  # let git decide

@@ -1,0 +1,85 @@
+"""The machine-level rules (LIS5xx) over the machines of a run: the same step for `achslint lint` and the
+language server.
+
+Each linted list's result carries its machine summary; the lists that share a machine key (see
+`discovery`) are handed to the rules together with the machine's start-up list. Findings on files the run
+only read for context (neighbours of a named list, a start-up list found beside it) are not reported.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from ..core.decode import UnreadableInput, decode
+from ..core.diagnostics import Diagnostic
+from ..core.files import read_list
+from ..machine.startup import Member, Startup, is_default_list, machines
+from ..rules import Scope as RuleScope
+from ..syntax.parser import split_lines
+from .config import ResolvedConfig
+from .discovery import Target
+from .engine import Policy, run
+from .linter import FileResult, FileSettings
+
+
+def machine_findings(
+    pairs: Sequence[tuple[Target, FileResult]],
+    startups: Sequence[Startup],
+    settings_of: Callable[[Target], FileSettings],
+    config_for: Callable[[Path], ResolvedConfig],
+    *,
+    hidden: set[str] = frozenset(),  # type: ignore[assignment]
+    keep_source: bool = True,
+) -> list[FileResult]:
+    """Run the machine-level rules per machine, adding their findings to the results of `pairs`; returns
+    the results of files with findings that have none in `pairs` (a start-up list).
+
+    `pairs` are (list, its result); results named in `hidden` take part but get no findings, and go first
+    in each machine, so a repeated axis number is reported on the reported list that repeats it.
+    """
+    by_name = {result.name: result for _, result in pairs if result.name not in hidden}
+    groups: dict[str, list[Member]] = {}
+    settings: dict[str, FileSettings] = {}
+    ordered = sorted(pairs, key=lambda pair: pair[1].name not in hidden)
+    for target, result in ordered:
+        if target.path is not None and is_default_list(target.path):
+            continue  # loaded underneath the axes, not an axis of its own
+        if result.error or (result.summary is None and not result.summaries):
+            continue
+        for key in target.machines:
+            for summary in [result.summary] if result.summary is not None else result.summaries:
+                groups.setdefault(key, []).append((result.name, summary))
+        settings[result.name] = settings_of(target)
+
+    def file_settings(path: str) -> FileSettings:  # a start-up list's own configuration too
+        if path not in settings:
+            settings[path] = settings_of(Target(path, Path(path), config_for(Path(path))))
+        return settings[path]
+
+    policies: dict[str, Policy] = {}
+
+    def policy_of(path: str) -> Policy:
+        if path not in policies:
+            policies[path] = file_settings(path).policy
+        return policies[path]
+
+    extra: dict[str, FileResult] = {}
+    seen: set[tuple[object, ...]] = set()
+    for machine in machines(groups, list(startups)):
+        for d in run(RuleScope.MACHINE, machine, policy_of):
+            said = (d.path, d.line, d.column, d.code, d.message)
+            if d.path in hidden or said in seen:  # a list in two machines: one finding, said once
+                continue
+            seen.add(said)
+            owner = by_name.get(d.path) or extra.setdefault(
+                d.path, FileResult(d.path, [], fail_on=file_settings(d.path).fail_on)
+            )
+            owner.diagnostics.append(d)
+    for result in [*by_name.values(), *extra.values()]:
+        result.diagnostics.sort(key=Diagnostic.sort_key)
+        if keep_source and result.diagnostics and not result.source_lines and result.name != "<stdin>":
+            with contextlib.suppress(OSError, UnreadableInput):
+                result.source_lines = split_lines(decode(read_list(Path(result.name))).text)
+    return list(extra.values())
