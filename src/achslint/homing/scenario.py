@@ -38,26 +38,21 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 
+from .bounds import CYCLE_TIME_US, POSITION_BOUND
+
 if TYPE_CHECKING:
     from pydantic import BaseModel
 
     from .scenario_input import DriveInput, ScenarioInput, SearchInput
 
-__all__ = ["DriveInput", "Scenario", "ScenarioError", "ScenarioInput", "SearchInput"]
+# CYCLE_TIME_US: the command line reads the cycle-time bounds here too (they live in bounds.py)
+__all__ = ["CYCLE_TIME_US", "DriveInput", "Scenario", "ScenarioError", "ScenarioInput", "SearchInput"]
 
 
 class ScenarioError(Exception):
     """A scenario that cannot be used (exit code 2)."""
 
 
-# Plausibility bounds of scenario numbers (human units). Positions and distances are checked against
-# ±1e9 here and against the unit's own bound (±1e6 mm, ±1e9 °) once the axis type is known.
-POSITION_BOUND = {"mm": 1e6, "deg": 1e9}
-ANY_POSITION = 1e9
-MIN_PERIOD = 0.001  # 1 µm (or 0.001°)
-CYCLE_TIME_US = (50, 100_000)  # the CNC cycle: 0.05 ms to 100 ms (the configuration's cycle-time bounds too)
-CYCLE_MS = (CYCLE_TIME_US[0] / 1000, CYCLE_TIME_US[1] / 1000)
-MAX_RATE = 1e9  # velocities and accelerations per second
 DEFAULT_CAM_DISTANCE = 100.0  # from the start to the cam's near edge, mm or °
 
 

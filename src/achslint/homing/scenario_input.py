@@ -1,7 +1,7 @@
 """The pydantic models that validate scenario input (a scenario file, `[scenario]` of the configuration,
 command-line options, the Python API).
 
-Every number must be finite (`nan` and `inf` are refused) and plausible; the bounds are in `scenario.py`.
+Every number must be finite (`nan` and `inf` are refused) and plausible; the bounds are in `bounds.py`.
 `scenario.py` imports this module on first use: linting never needs pydantic.
 """
 
@@ -11,7 +11,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-from .scenario import ANY_POSITION, CYCLE_MS, MAX_RATE, MIN_PERIOD
+from .bounds import ANY_POSITION, CYCLE_MS, MAX_RATE, MIN_PERIOD
 
 Position = Annotated[float, Field(ge=-ANY_POSITION, le=ANY_POSITION)]
 Rate = Annotated[float, Field(gt=0, le=MAX_RATE)]

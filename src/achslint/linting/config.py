@@ -16,7 +16,7 @@ from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Literal
 
-from ..homing.scenario import CYCLE_TIME_US
+from ..homing.bounds import CYCLE_TIME_US
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -51,7 +51,7 @@ def parse_codes(values: list[str]) -> list[str]:
 # Bounds of the numbers a configuration file may set: the same as the command-line options' (an absurd
 # value is a configuration error, never gigabytes of padding or a MemoryError).
 MAX_COLUMN = 400  # [fmt] value-column / comment-column: wider than any real list, small enough to pad
-# cycle-time-us: scenario.CYCLE_TIME_US, the CNC's cycle (the dry run's scenario has the same bounds)
+# cycle-time-us: bounds.CYCLE_TIME_US, the CNC's cycle (the dry run's scenario has the same bounds)
 MAX_TOLERANCE_UM = 1_000_000.0  # repeatability tolerance on linear axes: up to 1 m
 MAX_TOLERANCE_DEG = 360.0  # and on rotary axes: up to one turn
 
