@@ -206,7 +206,7 @@ class Finder:
         if naming:
             return [self._startup_machine(startup) for startup in naming]
         folder = self._folder_machine(path.parent, startups)
-        if folder is None or not any(same_file(m.path, path) for m in folder.members if m.path is not None):
+        if not any(same_file(m.path, path) for m in folder.members if m.path is not None):
             return []
         return [folder]
 
@@ -220,24 +220,15 @@ class Finder:
         ]
         return MachineFiles(str(startup.path), startup, members, defaults)
 
-    def _folder_machine(self, folder: Path, startups: list[Startup]) -> MachineFiles | None:
-        """The lists of a folder that `achslint lint FOLDER` would take and no start-up list names."""
-        config = self.config_for(folder / "x")
-        applied = self.overrides.apply(config.settings)
-        try:
-            names = sorted(os.listdir(folder))
-        except OSError:
-            return None
-        members = []
-        for name in names:
-            candidate = folder / name
-            if not any(matches_glob(name.lower(), pattern.lower()) for pattern in applied.include):
-                continue
-            if any(matches_glob(config.relative(candidate), pattern) for pattern in applied.exclude):
-                continue
-            if not_a_list_file(candidate) is not None or _named_by(startups, candidate):
-                continue
-            members.append(Target(str(candidate), candidate, self.config_for(candidate), (str(folder),)))
+    def _folder_machine(self, folder: Path, startups: list[Startup]) -> MachineFiles:
+        """The lists of a folder that `achslint lint FOLDER` would take there (the same walk, one level) and
+        no start-up list names."""
+        lists, _ = self._walk(folder, Scope.of([str(folder)]), Discovery(), recursive=False)
+        members = [
+            Target(str(path), path, self.config_for(path), (str(folder),))
+            for path in lists
+            if not is_default_list(path) and not _named_by(startups, path)
+        ]
         return MachineFiles(str(folder), None, members)
 
     # -- a run's paths -------------------------------------------------------------------------------------
@@ -320,7 +311,9 @@ class Finder:
                 found.add(member, context=True)
         return inside
 
-    def _walk(self, folder: Path, scope: Scope, found: Discovery) -> tuple[list[Path], list[Path]]:
+    def _walk(
+        self, folder: Path, scope: Scope, found: Discovery, *, recursive: bool = True
+    ) -> tuple[list[Path], list[Path]]:
         """The lists and start-up lists in a folder tree. A folder that cannot be read, or a list that
         cannot (a broken link, a loop), is an error: those could be lists nobody checked. FIFOs, devices and
         links that lead outside the paths given are skipped with a note: they are not lists of this project."""
@@ -331,7 +324,7 @@ class Finder:
             found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
 
         for root, dirs, files in os.walk(folder, onerror=unreadable):
-            dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+            dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
             for name in dirs:  # os.walk does not enter linked folders; one that leads outside is said
                 linked = Path(root) / name
                 if os.path.islink(linked) and not scope.contains(linked):

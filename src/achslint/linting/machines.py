@@ -9,6 +9,7 @@ only read for context (neighbours of a named list, a start-up list found beside 
 from __future__ import annotations
 
 import contextlib
+import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
@@ -42,16 +43,32 @@ def machine_findings(
     by_name = {result.name: result for _, result in pairs if result.name not in hidden}
     groups: dict[str, list[Member]] = {}
     settings: dict[str, FileSettings] = {}
-    ordered = sorted(pairs, key=lambda pair: pair[1].name not in hidden)
-    for target, result in ordered:
-        if target.path is not None and is_default_list(target.path):
-            continue  # loaded underneath the axes, not an axis of its own
-        if result.error or (result.summary is None and not result.summaries):
-            continue
-        for key in target.machines:
+    # Members in the order of their start-up list's entries (the CNC's order), read-only context first.
+    position = {
+        (str(startup.path), os.path.realpath(entry.path)): index
+        for startup in startups
+        for index, entry in enumerate(startup.axes)
+        if entry.path is not None
+    }
+
+    def place(pair: tuple[Target, FileResult], key: str) -> tuple[bool, int]:
+        target, result = pair
+        real = os.path.realpath(target.path) if target.path is not None else ""
+        return (result.name not in hidden, position.get((key, real), len(position)))
+
+    by_machine: dict[str, list[tuple[Target, FileResult]]] = {}
+    for pair in pairs:
+        for key in pair[0].machines:
+            by_machine.setdefault(key, []).append(pair)
+    for key, members in by_machine.items():
+        for target, result in sorted(members, key=lambda pair: place(pair, key)):
+            if target.path is not None and is_default_list(target.path):
+                continue  # loaded underneath the axes, not an axis of its own
+            if result.error or (result.summary is None and not result.summaries):
+                continue
             for summary in [result.summary] if result.summary is not None else result.summaries:
                 groups.setdefault(key, []).append((result.name, summary))
-        settings[result.name] = settings_of(target)
+            settings[result.name] = settings_of(target)
 
     def file_settings(path: str) -> FileSettings:  # a start-up list's own configuration too
         if path not in settings:

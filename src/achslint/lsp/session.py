@@ -255,7 +255,7 @@ class Session:
         own = list(snapshot.result.diagnostics)
         document = self.documents[uri]
         peers: list[str] = []
-        if document.path is not None and not is_xml(document.name):
+        if document.path is not None:
             by_member = self.machine_diagnostics(document, snapshot)
             mine = by_member.pop(_real(document.path), [])
             self._machine_found[uri] = [_key(d) for d in mine]
@@ -307,7 +307,7 @@ class Session:
         if document is not None and not is_startup_list(path):
             snapshot = self.snapshot(document.uri)
             if snapshot is not None:  # an open document always has one
-                return FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
+                return _for_machine(snapshot.result, target.name)
         try:
             info = os.stat(path)
             stamp = (info.st_mtime_ns, info.st_size)
@@ -327,8 +327,8 @@ class Session:
                 return FileResult(target.name, [], f"cannot read {target.name}: {exc}")
             settings = file_settings(target.config, self.settings.overrides, path, keep_source=False)
             full = lint_file(data, target.name, settings, defaults)
-            cached = self._disk[key] = FileResult(target.name, [], full.error, summary=full.summary)
-        return FileResult(target.name, [], cached.error, summary=cached.summary)
+            cached = self._disk[key] = _for_machine(full, target.name)
+        return _for_machine(cached, target.name)
 
     def machine_diagnostics(self, document: Document, snapshot: Snapshot) -> dict[str, list[Diagnostic]]:
         """The machine-level findings of every list of the document's machines, by real path."""
@@ -346,7 +346,7 @@ class Session:
         pairs: list[tuple[Target, FileResult]] = []
         for target in [*found.targets, *found.context]:
             if _real(target.path or target.name) == real and not snapshot.startup:
-                result = FileResult(target.name, [], snapshot.result.error, summary=snapshot.result.summary)
+                result = _for_machine(snapshot.result, target.name)
             else:
                 result = self._summary_result(target)
             pairs.append((target, result))
@@ -372,6 +372,11 @@ class Session:
 
 _Found = tuple[int, int, str, str, Severity]  # what tells two findings apart (for `peers`)
 _DiskKey = tuple[str, tuple[int, int], tuple[str, int, int] | None, tuple[tuple[str, str], ...]]
+
+
+def _for_machine(result: FileResult, name: str) -> FileResult:
+    """What the machine step needs of a list's result (its summaries), under the member's name, no findings."""
+    return FileResult(name, [], result.error, summary=result.summary, summaries=list(result.summaries))
 
 
 def _key(d: Diagnostic) -> _Found:

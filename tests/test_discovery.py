@@ -1,0 +1,113 @@
+"""One discovery (issue 23 item 4): which lists form a machine is decided in one place for the command line,
+the API and the language server, so both see the same machine and report the same machine-level findings."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from achslint.linting.discovery import Finder
+from achslint.lsp.documents import Document
+from achslint.lsp.session import Session
+
+from .conftest import FIXTURES, run_cli
+
+MACHINES = FIXTURES / "machines"
+
+
+def machine_findings_cli(folder: Path) -> set[tuple[str, int, str]]:
+    """(file name, line, code) of every machine-level finding of `achslint lint FOLDER`."""
+    result = run_cli("lint", str(folder), "--select", "LIS5", "--format", "json", "--exit-zero")
+    assert result.returncode == 0, result.stderr
+    return {(Path(d["path"]).name, d["line"], d["code"]) for d in json.loads(result.stdout)["diagnostics"]}
+
+
+def machine_findings_editor(folder: Path) -> set[tuple[str, int, str]]:
+    """The same, as the language server reports them with every list of the folder open in the editor."""
+    session = Session(folder)
+    session.settings.select = ["LIS5"]
+    files = sorted(p for p in folder.rglob("*") if p.suffix.lower() in (".lis", ".xti", ".xml"))
+    documents = []
+    for path in files:
+        document = Document(path.as_uri(), path, path.read_bytes().decode("latin-1"), 1)
+        session.open(document)
+        documents.append((path, document))
+    found = set()
+    for path, document in documents:
+        _, diagnostics, _ = session.diagnostics(document.uri)
+        found |= {(path.name, d.line, d.code) for d in diagnostics if d.code.startswith("LIS5")}
+    return found
+
+
+@pytest.mark.parametrize(
+    "machine", sorted(p.name for p in MACHINES.iterdir() if p.is_dir()), ids=lambda name: name
+)
+def test_the_editor_and_the_command_line_report_the_same_machine_findings(machine: str) -> None:
+    folder = MACHINES / machine
+    assert machine_findings_editor(folder) == machine_findings_cli(folder)
+
+
+def test_two_start_up_lists_side_by_side_are_two_machines(tmp_path: Path) -> None:
+    variants = MACHINES / "variants" / "listen"
+    # Both variants use logical axes 1 and 2 named X and Y: neither LIS501 nor LIS502 between them.
+    assert machine_findings_cli(variants) == set()
+    # Within one variant a repeated number is still found.
+    copy = tmp_path / "listen"
+    shutil.copytree(variants, copy)
+    second = copy / "achsmds2_soe.lis"
+    second.write_text(
+        second.read_text().replace("kopf.achs_nr                                    2", "kopf.achs_nr 1")
+    )
+    assert machine_findings_cli(copy) == {("achsmds2_soe.lis", 2, "LIS501")}
+    assert machine_findings_editor(copy) == {("achsmds2_soe.lis", 2, "LIS501")}
+
+
+def test_a_list_named_alone_is_compared_with_its_start_up_list_s_axes_only(tmp_path: Path) -> None:
+    copy = tmp_path / "listen"
+    shutil.copytree(MACHINES / "variants" / "listen", copy)
+    (copy / "achsmds2_coe.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  Y\nEnde\n")
+    # pre-commit passes the changed list alone: its neighbour of the same variant counts, the other
+    # variant's axis 1 does not.
+    result = run_cli("lint", str(copy / "achsmds2_coe.lis"), "--select", "LIS501", "--format", "json")
+    found = json.loads(result.stdout)["diagnostics"]
+    assert [(Path(d["path"]).name, d["code"]) for d in found] == [("achsmds2_coe.lis", "LIS501")]
+    assert "achsmds1_coe.lis" in found[0]["message"] and "_soe" not in found[0]["message"]
+
+
+def test_a_start_up_list_found_in_a_folder_is_a_machine_of_its_own(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n")
+    (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./achsmds1.lis\nachs_mds[1]  ./achsmds9.lis\nEnde\n")
+    # The missing entry is reported on the start-up list the folder holds (before, only when it was named).
+    assert machine_findings_cli(tmp_path) == {("hochlauf.lis", 2, "LIS504")}
+
+
+def test_a_list_two_start_up_lists_name_belongs_to_both_machines(tmp_path: Path) -> None:
+    (tmp_path / "shared.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n")
+    (tmp_path / "achsmds_a.lis").write_text("kopf.achs_nr  2\nkopf.log_achs_name  Y\nEnde\n")
+    (tmp_path / "achsmds_b.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  Z\nEnde\n")
+    (tmp_path / "hochlauf_a.lis").write_text(
+        "achs_mds[0]  ./shared.lis\nachs_mds[1]  ./achsmds_a.lis\nEnde\n"
+    )
+    (tmp_path / "hochlauf_b.lis").write_text(
+        "achs_mds[0]  ./shared.lis\nachs_mds[1]  ./achsmds_b.lis\nEnde\n"
+    )
+    machines = Finder().machines_of(tmp_path / "shared.lis")
+    assert sorted(Path(m.key).name for m in machines) == ["hochlauf_a.lis", "hochlauf_b.lis"]
+    found = Finder().find([str(tmp_path)])
+    shared = next(t for t in found.targets if t.path == tmp_path / "shared.lis")
+    assert sorted(Path(key).name for key in shared.machines) == ["hochlauf_a.lis", "hochlauf_b.lis"]
+    # Only machine b repeats number 1; the shared list is found once, by the list that repeats it.
+    assert machine_findings_cli(tmp_path) == {("achsmds_b.lis", 1, "LIS501")}
+
+
+def test_lists_no_start_up_list_names_form_their_folder_s_machine(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n")
+    (tmp_path / "achsmds2.lis").write_text("kopf.achs_nr  1\nEnde\n")
+    (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./achsmds1.lis\nEnde\n")
+    # achsmds2 is named by no start-up list: it is not compared with the start-up list's axis 1.
+    assert machine_findings_cli(tmp_path) == set()
+    [machine] = Finder().machines_of(tmp_path / "achsmds2.lis")
+    assert machine.startup is None and [t.path for t in machine.members] == [tmp_path / "achsmds2.lis"]
