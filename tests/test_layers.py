@@ -63,6 +63,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "machine",
         ),
     ),
+    ("rules: codes and options", ("rules.codes", "rules.options")),
     ("rules: what a rule sees", ("rules.context", "rules.programcontext")),
     ("rules", ("rules.*",)),
     ("rules: registry", ("rules",)),
@@ -115,12 +116,6 @@ ALLOWED = frozenset(
     {
         # building a machine goes through the API
         "machine.build -> api",
-        # what a rule sees reads the lint settings and the registry's severities
-        "rules.context -> linting.config",
-        "rules.context -> rules",
-        # LIS009 reads the registry's codes and the suppression model
-        "rules.lis009_unused_noqa -> rules",
-        "rules.lis009_unused_noqa -> linting.suppression",
         # the model's base class builds the model
         "model.base -> model",
         # the SARIF format reads the package's version

@@ -1,8 +1,9 @@
-"""The diagnostic model shared by rules, the engine and every reporter."""
+"""The diagnostic model shared by rules, the engine and every reporter, and the `noqa` directive that
+suppresses diagnostics (read by `linting.suppression`, judged by LIS009)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import Enum
 
 # Where the rule documentation (docs/rules.md, generated from the rule modules) is published; one anchor
@@ -73,6 +74,22 @@ class Diagnostic:
 
     def sort_key(self) -> tuple[str, int, int, str]:
         return (self.path, self.line, self.column, self.code)
+
+
+@dataclass
+class Directive:
+    """One `noqa` comment: where it is written (line, first and past-last column), the codes it names and,
+    once the engine has applied it, the codes it suppressed."""
+
+    line: int
+    column: int
+    end_column: int
+    codes: list[str] | None  # None: every code
+    file_level: bool = False
+    used: set[str] = field(default_factory=set)
+
+    def covers(self, code: str) -> bool:
+        return self.codes is None or code in self.codes
 
 
 _CLIP = 60  # quoted text longer than twice this is shortened in messages

@@ -17,6 +17,9 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Literal
 
 from ..homing.bounds import CYCLE_TIME_US
+from ..rules.codes import known_codes, selector_problem
+from ..rules.options import DEFAULT_OPTIONS
+from ..rules.options import UnknownParameters as UnknownParameters  # the command line's choices too
 
 if TYPE_CHECKING:
     from pydantic import ValidationError
@@ -34,8 +37,6 @@ def parse_codes(values: list[str]) -> list[str]:
     Raises `ValueError` for one that picks no rule (`LIS9999`, `LIS6`), naming the closest codes: a
     selection that checks nothing must never pass silently.
     """
-    from ..rules import selector_problem
-
     cleaned = []
     for value in values:
         for part in str(value).split(","):
@@ -91,7 +92,6 @@ class FmtOptions:
 
 
 SeverityName = Literal["error", "warning", "info"]
-UnknownParameters = Literal["warn", "error", "ignore"]
 
 # How a command-line value combines with the configuration's (Settings field metadata "cli").
 REPLACE, EXTEND = "replace", "extend"
@@ -119,10 +119,15 @@ class Settings:
     fail_on: SeverityName = _key("error")
     include: list[str] = _key(factory=lambda: ["achsmds*.lis"])
     exclude: list[str] = _key(factory=list, cli=EXTEND)  # the command line extends it (--extend-exclude)
-    unknown_parameters: UnknownParameters = _key("warn")
-    cycle_time_us: int = _key(1000, ge=CYCLE_TIME_US[0], le=CYCLE_TIME_US[1])
-    repeatability_tolerance_um: float = _key(20.0, ge=0, le=MAX_TOLERANCE_UM)  # linear axes (LIS403)
-    repeatability_tolerance_deg: float = _key(0.01, ge=0, le=MAX_TOLERANCE_DEG)  # rotary axes (LIS403)
+    # the keys rules read (rules.options.RuleOptions), with the rules' defaults
+    unknown_parameters: UnknownParameters = _key(DEFAULT_OPTIONS.unknown_parameters)
+    cycle_time_us: int = _key(DEFAULT_OPTIONS.cycle_time_us, ge=CYCLE_TIME_US[0], le=CYCLE_TIME_US[1])
+    repeatability_tolerance_um: float = _key(  # linear axes (LIS403)
+        DEFAULT_OPTIONS.repeatability_tolerance_um, ge=0, le=MAX_TOLERANCE_UM
+    )
+    repeatability_tolerance_deg: float = _key(  # rotary axes (LIS403)
+        DEFAULT_OPTIONS.repeatability_tolerance_deg, ge=0, le=MAX_TOLERANCE_DEG
+    )
     scenario: dict[str, Any] = _key(factory=dict)  # scenario defaults for dry-run
     cnc_root: str | None = _key(
         None, min_length=1
@@ -152,8 +157,6 @@ def file_key(name: str) -> str:
 
 def _check_codes(value: Any, how: str) -> Any:
     """The one validation of rule codes in a configuration file (the command line uses `parse_codes` too)."""
-    from ..rules import known_codes
-
     if value is None:
         return None
     if how == "list":

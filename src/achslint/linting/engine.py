@@ -9,7 +9,7 @@ the whole pipeline:
     LIST      (Context,)                                   linter: one axis list
     MACHINE   (members, start-up lists)                    api (a machine's lists), linter (XML projects)
     PROGRAM   (Program, Machine)                           programlint: a homing program on its machine
-    AFTER     (Suppressions, enabled)                      run itself, after LIST or PROGRAM
+    AFTER     (path, directives, enabled)                  run itself, after LIST or PROGRAM
 
 Which rules run and how severe their findings are is a `Policy`: select / extend-select / ignore and the
 severity table of the configuration that applies to the file. The machine step checks lists that may each
@@ -96,7 +96,7 @@ def run(
         own = policy_of(suppressions.path)
         enabled = enabled_codes(own, whole_axis).__contains__
         for _, check in enabled_checks(Scope.AFTER, own, whole_axis):
-            found.extend(check(suppressions, enabled))
+            found.extend(check(suppressions.path, suppressions.directives, enabled))
     for diagnostic in found:
         override = (fixed or policy_of(diagnostic.path)).overrides.get(diagnostic.code)
         if override is not None:

@@ -9,9 +9,9 @@
   `N20 G01 Z5 (noqa: LIS606)` or `N20 G01 Z5 ; noqa: LIS606`, and a comment line
   `; achslint: noqa: LIS606` (or `(achslint: noqa: LIS606)`) for the whole program.
 
-Both are read into `Suppressions`: directives with their place, which apply the same way (a directive
-on the finding's line first, then one for the whole file) and remember what they suppressed, so the
-ones that suppress nothing can be reported (LIS009) in lists and programs alike.
+Both are read into `Suppressions`: directives (`core.diagnostics.Directive`) with their place, which apply
+the same way (a directive on the finding's line first, then one for the whole file) and remember what they
+suppressed, so the ones that suppress nothing can be reported (LIS009) in lists and programs alike.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from ..core.diagnostics import Diagnostic
+from ..core.diagnostics import Diagnostic, Directive
 from ..syntax import parser as syntax
 
 # A code is letters and a digit, then letters or digits: `LIS3O2` (a letter O) is read whole and reported
@@ -30,21 +30,6 @@ _CODES = rf"(?P<codes>{_CODE}(?:\s*,\s*{_CODE})*)"
 LINE_NOQA = re.compile(rf"(?<![\w:])noqa(?::\s*{_CODES})?", re.IGNORECASE)
 FILE_NOQA = re.compile(rf"^#\s*achslint:\s*noqa(?::\s*{_CODES})?\s*$", re.IGNORECASE)
 PROGRAM_FILE_NOQA = re.compile(rf"^(?:;|\()\s*achslint:\s*noqa(?::\s*{_CODES})?\s*\)?\s*$", re.IGNORECASE)
-
-
-@dataclass
-class Directive:
-    """One `noqa`: where it is written (line, first and past-last column) and the codes it names."""
-
-    line: int
-    column: int
-    end_column: int
-    codes: list[str] | None  # None: every code
-    file_level: bool = False
-    used: set[str] = field(default_factory=set)  # the codes it suppressed
-
-    def covers(self, code: str) -> bool:
-        return self.codes is None or code in self.codes
 
 
 @dataclass

@@ -10,8 +10,9 @@ from typing import TYPE_CHECKING
 from ..axis.analysis import Analysis, Setting, analyse
 from ..catalogue import Catalogue, catalogue
 from ..core.diagnostics import Diagnostic, Fix, Related, Severity
-from ..linting.config import Settings
 from ..syntax import parser as syntax
+from .codes import severity as default_severity
+from .options import DEFAULT_OPTIONS, RuleOptions
 
 if TYPE_CHECKING:
     from ..axis.facts import Span
@@ -24,7 +25,9 @@ if TYPE_CHECKING:
 class Context:
     name: str
     file: syntax.ListFile
-    options: Settings = field(default_factory=Settings)  # what rules read: unknown-parameters, cycle time …
+    options: RuleOptions = (
+        DEFAULT_OPTIONS  # what rules read: unknown-parameters, cycle time … (config.Settings)
+    )
     catalogue: Catalogue = field(default_factory=catalogue)
     embedded: EmbeddedList | None = None  # when the list came from an XML file
     default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
@@ -83,8 +86,6 @@ class Context:
         related: list[Related] | tuple[Related, ...] = (),
         fix: Fix | None = None,
     ) -> Diagnostic:
-        from . import registry
-
         parameter = setting.canonical if setting else None
         p_axis = setting.parameter.id if setting and setting.parameter else None
         return Diagnostic(
@@ -94,7 +95,7 @@ class Context:
             end_line=end_line if end_line is not None else line.number,
             end_column=end_column if end_column is not None else line.end_column,
             code=code,
-            severity=severity or registry()[code].severity,
+            severity=severity or default_severity(code),
             message=message,
             parameter=parameter,
             p_axis=p_axis,

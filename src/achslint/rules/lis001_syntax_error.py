@@ -48,7 +48,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS001"
 NAME = "syntax-error"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Line is not a valid `path value [comment]` assignment"
 

@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS002"
 NAME = "missing-end-marker"
-SEVERITY = "warning"
 FIX = "safe"
 SUMMARY = "List does not end with `Ende`"
 

@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS003"
 NAME = "content-after-end"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Parameter lines after `Ende` are ignored by the CNC"
 

@@ -42,7 +42,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS004"
 NAME = "misspelt-end-marker"
-SEVERITY = "warning"
 FIX = "safe"
 SUMMARY = "`End` written instead of the end marker `Ende`"
 

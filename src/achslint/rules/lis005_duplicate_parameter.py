@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS005"
 NAME = "duplicate-parameter"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Parameter assigned more than once"
 

@@ -46,7 +46,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS006"
 NAME = "byte-order-mark"
-SEVERITY = "error"
 FIX = "safe"
 SUMMARY = "UTF-8 byte-order mark at the start of the file"
 

@@ -46,7 +46,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS007"
 NAME = "text-after-string"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Text after a string value that is not a `(` comment"
 

@@ -51,7 +51,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS008"
 NAME = "mixed-style"
-SEVERITY = "info"
 FIX = "none"
 SUMMARY = "Mixed line endings or tab/space separators"
 

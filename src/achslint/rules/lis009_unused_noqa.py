@@ -37,29 +37,26 @@ achslint suppression comments (README, Suppressions).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING
 
-from ..core.diagnostics import Diagnostic, Severity
-
-if TYPE_CHECKING:
-    from ..linting.suppression import Directive, Suppressions
+from ..core.diagnostics import Diagnostic, Directive
+from .codes import known_codes, selector_problem, severity
 
 CODE = "LIS009"
 NAME = "unused-noqa"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Suppression comment that suppresses nothing"
 
 
-def check_after(suppressions: Suppressions, enabled: Callable[[str], bool]) -> Iterator[Diagnostic]:
-    """Runs after the other rules and the suppressions, with every `noqa` directive of the list or program."""
-    from . import known_codes, selector_problem
-
+def check_after(
+    path: str, directives: list[Directive], enabled: Callable[[str], bool]
+) -> Iterator[Diagnostic]:
+    """Runs after the other rules and the suppressions, with every `noqa` directive of the list or program
+    (`path`: its name in findings)."""
     known = known_codes()
-    for directive in suppressions.directives:
+    for directive in directives:
         if directive.codes is None:
             if not directive.used:
-                yield _report(suppressions, directive, "this `noqa` suppresses no diagnostic; remove it")
+                yield _report(path, directive, "this `noqa` suppresses no diagnostic; remove it")
             continue
         for code in directive.codes:
             if code not in known:
@@ -67,7 +64,7 @@ def check_after(suppressions: Suppressions, enabled: Callable[[str], bool]) -> I
                 # The did-you-mean part; a prefix (`LIS3`) picks rules elsewhere but is no code for noqa.
                 hint = problem.split("; ", 1)[1] if problem else "noqa takes full codes such as LIS302"
                 yield _report(
-                    suppressions,
+                    path,
                     directive,
                     f"`noqa` names the unknown code `{code}`, which suppresses nothing; {hint}",
                 )
@@ -77,21 +74,21 @@ def check_after(suppressions: Suppressions, enabled: Callable[[str], bool]) -> I
         if unused:
             where = "in this file" if directive.file_level else "on this line"
             yield _report(
-                suppressions,
+                path,
                 directive,
                 f"`noqa` for {', '.join(unused)} suppresses nothing {where}; remove "
                 f"{'it' if len(unused) == len(directive.codes) else 'those codes'}",
             )
 
 
-def _report(suppressions: Suppressions, directive: Directive, message: str) -> Diagnostic:
+def _report(path: str, directive: Directive, message: str) -> Diagnostic:
     return Diagnostic(
-        suppressions.path,
+        path,
         directive.line,
         directive.column,
         directive.line,
         directive.end_column,
         CODE,
-        Severity(SEVERITY),
+        severity(CODE),
         message,
     )

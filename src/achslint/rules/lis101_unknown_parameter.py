@@ -52,7 +52,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS101"
 NAME = "unknown-parameter"
-SEVERITY = "warning"
 FIX = "sometimes"
 SUMMARY = "Unknown parameter name"
 

@@ -40,7 +40,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS102"
 NAME = "old-syntax"
-SEVERITY = "info"
 FIX = "safe"
 SUMMARY = "Old parameter name (still accepted)"
 

@@ -42,7 +42,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS103"
 NAME = "alias-conflict"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Parameter and its old name set with different values"
 

@@ -42,7 +42,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS104"
 NAME = "index-out-of-bounds"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Array index out of bounds"
 

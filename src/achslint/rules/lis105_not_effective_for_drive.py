@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS105"
 NAME = "not-effective-for-drive"
-SEVERITY = "info"
 FIX = "none"
 SUMMARY = "Parameter has no effect for this drive type or axis type"
 

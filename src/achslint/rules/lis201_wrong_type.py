@@ -48,7 +48,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS201"
 NAME = "wrong-type"
-SEVERITY = "error"
 FIX = "sometimes"
 SUMMARY = "Value of the wrong data type"
 

@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS202"
 NAME = "out-of-range"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Value outside the parameter's range"
 

@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS203"
 NAME = "unknown-symbol"
-SEVERITY = "error"
 FIX = "sometimes"
 SUMMARY = "Unknown symbol for an enumerated parameter"
 

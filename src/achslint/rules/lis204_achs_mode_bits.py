@@ -49,7 +49,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS204"
 NAME = "achs-mode-bits"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Invalid combination of `kenngr.achs_mode` bits"
 

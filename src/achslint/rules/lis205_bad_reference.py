@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS205"
 NAME = "bad-reference"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Parameter reference that cannot be resolved"
 

@@ -42,7 +42,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS206"
 NAME = "string-too-long"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "String longer than the parameter allows"
 

@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS301"
 NAME = "cam-free-needs-one-phase"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_ohne_nocken", "kenngr.ref_ohne_rev")  # parameters this rule reads
 SUMMARY = "`ref_ohne_nocken = 1` requires `ref_ohne_rev = 1`"

@@ -46,7 +46,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS302"
 NAME = "reflow-above-refmax"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("getriebe[i].vb_reflow", "getriebe[i].vb_refmax")  # parameters this rule reads
 SUMMARY = "`vb_reflow` higher than `vb_refmax` in a gear stage"

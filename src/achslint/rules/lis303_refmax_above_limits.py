@@ -51,7 +51,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS303"
 NAME = "refmax-above-limits"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "getriebe[i].vb_refmax",

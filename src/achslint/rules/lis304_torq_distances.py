@@ -54,7 +54,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS304"
 NAME = "torq-distances"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing.torq_min_distance",

@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS305"
 NAME = "homing-type-vs-drive"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.antr_typ")  # parameters this rule reads
 SUMMARY = "Homing type not supported by the drive type (the CNC replaces it)"

@@ -46,7 +46,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS306"
 NAME = "torq-drive-type"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.antr_typ")  # parameters this rule reads
 SUMMARY = "`TORQ` homing on a drive type without fixed-stop homing"

@@ -40,7 +40,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS307"
 NAME = "ignore-abs-pos-incremental"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.abs_pos_gueltig")  # parameters this rule reads
 SUMMARY = "`IGNORE_ABS_POS` without an absolute measuring system"

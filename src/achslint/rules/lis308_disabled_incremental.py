@@ -39,7 +39,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS308"
 NAME = "disabled-incremental"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.abs_pos_gueltig")  # parameters this rule reads
 SUMMARY = "`DISABLED` homing on an incremental axis"

@@ -45,7 +45,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS309"
 NAME = "homing-max-movement-dist"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing_max_movement_dist",

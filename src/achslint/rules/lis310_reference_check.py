@@ -48,7 +48,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS310"
 NAME = "reference-check"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "antr.reference_check.element_name",

@@ -51,7 +51,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS311"
 NAME = "encoder-overflow"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing_overflow_evaluation",

@@ -51,7 +51,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS312"
 NAME = "sercos-drive-latch"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "antr.sercos.drive_supports_cnc_homing",

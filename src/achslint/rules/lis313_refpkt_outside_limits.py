@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS313"
 NAME = "refpkt-outside-limits"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("getriebe[i].pos_refpkt", "kenngr.swe_neg", "kenngr.swe_pos")  # parameters this rule reads
 SUMMARY = "`pos_refpkt` not between the software limits"

@@ -43,7 +43,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS314"
 NAME = "spindle-homing"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.ref_ohne_rev",

@@ -60,7 +60,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS315"
 NAME = "fixed-stop-setup"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing.torq_detect_time",

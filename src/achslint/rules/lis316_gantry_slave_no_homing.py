@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS316"
 NAME = "gantry-slave-no-homing"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.gantry_slave_no_homing",

@@ -70,7 +70,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = (
     "getriebe[i].pos_refpkt",

@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS318"
 NAME = "no-reference-signal"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_ohne_nocken", "kenngr.homing_without_zero_pulse")  # parameters this rule reads
 SUMMARY = "Neither reference cam nor zero pulse: nothing marks the reference"

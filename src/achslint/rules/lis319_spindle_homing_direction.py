@@ -54,7 +54,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS319"
 NAME = "spindle-homing-direction"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_richt", "kenngr.beweg_richt", "kenngr.vorz_richtung")  # parameters this rule reads
 SUMMARY = "Spindle homing direction against its restricted preferred direction"

@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS320"
 NAME = "spindle-homing-with-reversal"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_ohne_rev", "kenngr.achs_mode", "kenngr.achs_typ")  # parameters this rule reads
 SUMMARY = "Spindle homing with reversal cannot start from endless rotation"

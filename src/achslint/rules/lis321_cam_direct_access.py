@@ -57,7 +57,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS321"
 NAME = "cam-direct-access"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("lr_hw[i].cam_direct_access", "kenngr.ref_ohne_nocken")  # parameters this rule reads
 SUMMARY = "Cam homing with `cam_direct_access 1` instead of the HLI"

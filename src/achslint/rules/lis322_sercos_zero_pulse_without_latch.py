@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS322"
 NAME = "sercos-zero-pulse-without-latch"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing_without_zero_pulse",

@@ -44,7 +44,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS323"
 NAME = "reference-cam-input"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("antr.reference_cam_signal", "kenngr.antr_typ")  # parameters this rule reads
 SUMMARY = "Reference cam read from an input the drive type does not have"

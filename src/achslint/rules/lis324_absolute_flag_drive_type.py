@@ -44,7 +44,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS324"
 NAME = "absolute-flag-drive-type"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.abs_pos_gueltig", "kenngr.antr_typ")  # parameters this rule reads
 SUMMARY = "Absolute measuring system declared on a drive type without one"

@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS325"
 NAME = "homing-acceleration-above-max"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("getriebe[i].a_ref", "getriebe[i].dynamik.a_max")  # parameters this rule reads
 SUMMARY = "Homing acceleration `a_ref` above `a_max` (the CNC lowers it)"

@@ -49,7 +49,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS326"
 NAME = "homing-ramp-time-below-min"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("getriebe[i].tr_ref", "getriebe[i].dynamik.tr_min")  # parameters this rule reads
 SUMMARY = "Homing ramp time `tr_ref` below `tr_min` (the CNC raises it)"

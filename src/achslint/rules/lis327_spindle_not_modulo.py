@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS327"
 NAME = "spindle-not-modulo"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.achs_mode", "kenngr.achs_typ")  # parameters this rule reads
 SUMMARY = "Spindle whose axis mode is not MODULO (the CNC corrects it)"

@@ -61,7 +61,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS328"
 NAME = "fixed-stop-torque-not-limited"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing.homing_type",

@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS401"
 NAME = "parameter-without-effect"
-SEVERITY = "info"
 FIX = "none"
 PARAMETERS = tuple(HOMING_PARAMETERS)  # parameters this rule reads
 SUMMARY = "Homing parameter set but without effect under the configured strategy"

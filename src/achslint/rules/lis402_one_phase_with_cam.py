@@ -46,7 +46,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS402"
 NAME = "one-phase-with-cam"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_ohne_rev", "kenngr.ref_ohne_nocken")  # parameters this rule reads
 SUMMARY = "One-phase homing with a cam (advised against by the manual)"

@@ -54,7 +54,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS403"
 NAME = "cam-edge-repeatability"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = (
     "getriebe[i].vb_reflow",

@@ -46,7 +46,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS404"
 NAME = "homing-acceleration-fallback"
-SEVERITY = "info"
 FIX = "none"
 PARAMETERS = (
     "getriebe[i].a_ref",

@@ -87,7 +87,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS405"
 NAME = "zero-pulse-near-cam-edge"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Zero pulse too close to the cam edge: the reference can jump by one revolution (dry-run)"
 

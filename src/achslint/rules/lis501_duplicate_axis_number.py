@@ -54,7 +54,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS501"
 NAME = "duplicate-axis-number"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kopf.achs_nr",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same logical axis number"

@@ -52,7 +52,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS502"
 NAME = "duplicate-axis-name"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kopf.log_achs_name",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same axis name"

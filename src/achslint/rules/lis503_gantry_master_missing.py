@@ -53,7 +53,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS503"
 NAME = "gantry-master-missing"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule reads
 SUMMARY = "Gantry slave whose master axis is not in the machine"

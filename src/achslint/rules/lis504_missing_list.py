@@ -60,7 +60,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS504"
 NAME = "missing-list"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Start-up list names an axis or channel list that does not exist"
 

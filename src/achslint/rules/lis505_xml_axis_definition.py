@@ -58,7 +58,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS505"
 NAME = "xml-axis-definition"
-SEVERITY = "warning"
 FIX = "none"
 PARAMETERS = ("kenngr.antr_typ", "kenngr.achs_typ")  # parameters this rule reads
 SUMMARY = "TwinCAT axis definition (DriveType, Spindle) disagrees with the axis list"

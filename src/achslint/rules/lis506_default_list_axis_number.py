@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS506"
 NAME = "default-list-axis-number"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Default axis list with a logical axis number other than 0"
 

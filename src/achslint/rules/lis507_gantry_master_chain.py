@@ -67,7 +67,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS507"
 NAME = "gantry-master-chain"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule reads
 SUMMARY = "Gantry slave that is its own master, masters that name each other, or a slave of a slave"

@@ -79,7 +79,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS508"
 NAME = "axis-named-twice-in-channel"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Channel list gives one logical axis two different names"
 

@@ -70,7 +70,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS510"
 NAME = "gantry-homing-type-mismatch"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing.homing_type",

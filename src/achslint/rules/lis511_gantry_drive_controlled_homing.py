@@ -79,7 +79,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS511"
 NAME = "gantry-drive-controlled-homing"
-SEVERITY = "error"
 FIX = "none"
 PARAMETERS = (
     "kenngr.homing.homing_type",

@@ -60,7 +60,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS601"
 NAME = "program-text"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Homing program text the CNC cannot run as written"
 

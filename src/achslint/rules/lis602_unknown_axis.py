@@ -66,7 +66,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS602"
 NAME = "unknown-axis"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "Program names an axis the machine does not have"
 

@@ -61,7 +61,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS603"
 NAME = "axis-twice-in-g74"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "G74 names the same axis twice"
 

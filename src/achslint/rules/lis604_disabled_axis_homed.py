@@ -69,7 +69,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS604"
 NAME = "disabled-axis-homed"
-SEVERITY = "error"
 FIX = "none"
 SUMMARY = "G74 commands an axis whose homing is DISABLED"
 

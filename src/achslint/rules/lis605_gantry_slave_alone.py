@@ -71,7 +71,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS605"
 NAME = "gantry-slave-alone"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Gantry slave homed before its master"
 

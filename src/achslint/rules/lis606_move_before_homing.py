@@ -69,7 +69,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS606"
 NAME = "move-before-homing"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "Move of an axis that is not homed yet"
 

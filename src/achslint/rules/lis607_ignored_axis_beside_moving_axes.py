@@ -69,7 +69,6 @@ if TYPE_CHECKING:
 
 CODE = "LIS607"
 NAME = "ignored-axis-beside-moving-axes"
-SEVERITY = "warning"
 FIX = "none"
 SUMMARY = "IGNORE_ABS_POS axis in a G74 block where other axes move"
 
