@@ -27,7 +27,7 @@ def test_without_jobs_processes_start_only_for_enough_text(tmp_path, monkeypatch
     import concurrent.futures
     import os
 
-    from achslint import api
+    from achslint.linting import run as api
     from achslint.linting.config import Overrides
 
     started: list[int] = []

@@ -328,7 +328,7 @@ def test_5_a_signal_ends_the_command_line_with_one_line(run, tmp_path, monkeypat
     def stopped(*_args, **_kwargs):
         os.kill(os.getpid(), signum)
 
-    monkeypatch.setattr("achslint.api.LintRun.run", stopped)
+    monkeypatch.setattr("achslint.linting.run.LintRun.run", stopped)
     code, _, err = run("lint", tmp_path)
     assert code == 128 + signum and one_line(err) == f"achslint: {words}"
 

@@ -364,7 +364,7 @@ def _machine_inputs(startup: str, config: str | None) -> list[str]:
 
 def _not_over_inputs(output: str, option: str, inputs: Iterable[str | None]) -> None:
     """Exit 2 when the file an option writes is one of the files the command reads."""
-    from .api import OutputIsInput, refuse_output_over_input
+    from .linting.run import OutputIsInput, refuse_output_over_input
 
     try:
         refuse_output_over_input(output, [Path(path) for path in inputs if path and path != "-"], option)
@@ -567,7 +567,7 @@ NOT_A_FILE = (
 
 def _one_list(path: Path, name: str) -> bytes:
     """The one axis list in a file, or a one-line failure (exit 2)."""
-    from .api import read_one_list
+    from .axis.source import read_one_list
     from .core.decode import UnreadableInput
     from .core.files import Refused, reason
 

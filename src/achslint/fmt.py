@@ -45,15 +45,18 @@ so the formatted file shows the same layout again.
 
 from __future__ import annotations
 
-import difflib
 from collections import Counter
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import BinaryIO, Literal
 
-from .core.decode import decode
+from .core.decode import UnreadableInput, decode
+from .core.files import is_xml, read_list, reason, write_atomically
 from .linting.config import KEEP, LEFT, RIGHT, FmtOptions
+from .linting.discovery import Finder
+from .linting.run import write_error
 from .syntax import parser as syntax
+from .syntax.diff import unified_diff
 
 NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
 BLANKS = " \t"
@@ -410,16 +413,77 @@ def changed_lines(data: bytes, options: FmtOptions | None = None) -> int:
     return differing + abs(len(before) - len(after))
 
 
-NO_NEWLINE = "\\ No newline at end of file\n"
+@dataclass
+class FormatRequest:
+    paths: list[str]
+    config_file: str | None = None
+    stdin_filename: str | None = None
+    mode: str = "write"  # write | check (change nothing) | diff (change nothing, say how)
 
 
-def unified_diff(before: bytes, after: bytes, name: str, label: str = "formatted") -> str:
-    """A unified diff of two versions of a list; a last line without a line break is marked as `diff` marks it."""
-    old = syntax.split_lines(decode(before).text, keepends=True)
-    new = syntax.split_lines(decode(after).text, keepends=True)
-    out = []
-    for row in difflib.unified_diff(old, new, f"{name} (original)", f"{name} ({label})"):
-        out.append(row)
-        if not row.endswith(("\n", "\r")):
-            out.append("\n" + NO_NEWLINE)
-    return "".join(out)
+@dataclass
+class Formatted:
+    name: str
+    changed: bool
+    written: bool = False
+    diff: str = ""  # mode diff: the unified diff
+    output: bytes | None = None  # standard input in write mode: the formatted bytes
+
+
+@dataclass
+class FormatOutcome:
+    results: list[Formatted]
+    errors: list[str]
+    notes: list[str]
+    found: int  # lists found (XML files found in folders are not fmt's business and not counted)
+
+    @property
+    def changed(self) -> int:
+        return sum(result.changed for result in self.results)
+
+    @property
+    def written(self) -> int:
+        return sum(result.written for result in self.results)
+
+
+def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatOutcome:
+    """`achslint fmt`: format every list the paths name, writing (atomically, only if the file did not
+    change meanwhile), checking or diffing. Raises `ConfigError`."""
+
+    finder = Finder(config_file=request.config_file, stdin_filename=request.stdin_filename)
+    finder.machine_rules = lambda path: False  # fmt reads no neighbours
+    found = finder.find(request.paths)
+    outcome = FormatOutcome([], list(found.errors), list(found.notes), len(found.targets))
+    for target in found.targets:
+        if is_xml(target.name):
+            if target.name in request.paths:  # XML found in a folder is simply not fmt's business
+                outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            continue
+        try:
+            if target.path is not None:
+                data = read_list(target.path)
+            elif stdin is not None:
+                data = stdin.read()
+            else:
+                outcome.errors.append(f"{target.name}: no standard input to read")
+                continue
+            formatted, differs = format_bytes(data, target.name, target.config.settings.fmt)
+        except OSError as exc:
+            outcome.errors.append(f"cannot read {target.name}: {reason(exc)}")
+            continue
+        except UnreadableInput as exc:
+            outcome.errors.append(f"{target.name}: {exc}")
+            continue
+        result = Formatted(target.name, differs)
+        if request.mode == "diff":
+            result.diff = unified_diff(data, formatted, target.name) if differs else ""
+        elif request.mode == "write" and target.path is None:
+            result.output = formatted
+        elif request.mode == "write" and differs and target.path is not None:
+            try:
+                write_atomically(target.path, formatted, expected=data)
+                result.written = True
+            except OSError as exc:
+                outcome.errors.append(write_error(exc, target.name))
+        outcome.results.append(result)
+    return outcome

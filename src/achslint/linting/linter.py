@@ -10,13 +10,14 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..axis.source import NOT_A_LIST, looks_like_a_list
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml
 from ..machine import startup as machine
 from ..rules import Scope
 from ..rules.context import Context
-from ..syntax.parser import ASSIGNMENT, END, ListFile, parse_bytes
+from ..syntax.parser import ListFile, parse_bytes
 from .config import Overrides, ResolvedConfig, Settings
 from .engine import Policy, run
 from .suppression import Suppressions
@@ -119,26 +120,6 @@ def lint_parsed(
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
     return _check_file(file, name, settings, default_file=default_file)
-
-
-NOT_A_LIST = (
-    "not an axis list (no line is a `parameter value` assignment and there is no `Ende`); "
-    "nothing of its content is shown"
-)
-
-
-def looks_like_a_list(file: ListFile) -> bool:
-    """Whether a file is an axis list at all: some line assigns a well-formed name, or it has the end marker.
-
-    Anything else (a password file, the process environment, a binary) is reported once instead of line by
-    line, so none of its lines end up in a report or a CI log.
-    """
-    content = False
-    for line in file.lines:
-        if line.kind == END or (line.kind == ASSIGNMENT and line.path_ok):
-            return True
-        content = content or line.kind == ASSIGNMENT
-    return not content
 
 
 def _check_file(

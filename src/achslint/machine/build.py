@@ -90,7 +90,7 @@ def _shown(entry: StartupEntry) -> str:
 
 def _read_entry(startup: Startup, entry: StartupEntry, kind: str) -> bytes:
     """The bytes of a list the start-up list names; `MachineError` at the entry's line when it cannot be read."""
-    from ..api import read_one_list
+    from ..axis.source import read_one_list
 
     if entry.refused:
         raise MachineError(
