@@ -111,3 +111,41 @@ def test_lists_no_start_up_list_names_form_their_folder_s_machine(tmp_path: Path
     assert machine_findings_cli(tmp_path) == set()
     [machine] = Finder().machines_of(tmp_path / "achsmds2.lis")
     assert machine.startup is None and [t.path for t in machine.members] == [tmp_path / "achsmds2.lis"]
+
+
+def machine_in_two_folders(root: Path) -> tuple[Path, Path]:
+    """The external-scheduling layout: `listen/ExtSchedule/hochlauf.lis` naming `./listen/achsmds1.lis`, an axis
+    list in the folder above the start-up list's (the CNC root is the folder above `listen/`)."""
+    (root / "listen" / "ExtSchedule").mkdir(parents=True)
+    axis = root / "listen" / "achsmds1.lis"
+    axis.write_bytes(b"kopf.achs_nr   1\nkopf.log_achs_name X\nEnd\n")  # misspelt end marker, odd spacing
+    startup = root / "listen" / "ExtSchedule" / "hochlauf.lis"
+    startup.write_text("achs_mds[0]  ./listen/achsmds1.lis\nEnde\n")
+    return startup, axis
+
+
+@pytest.mark.parametrize("command", [("lint", "--fix"), ("fmt",)], ids=["lint --fix", "fmt"])
+def test_lists_reached_through_a_start_up_list_elsewhere_are_not_rewritten(
+    tmp_path: Path, command: tuple[str, ...]
+) -> None:
+    startup, axis = machine_in_two_folders(tmp_path)
+    before = axis.read_bytes()
+    result = run_cli(*command, str(startup))
+    assert axis.read_bytes() == before
+    said = result.stderr.decode()
+    assert "checked but not rewritten" in said and "--follow-startup" in said
+    if command[0] == "lint":
+        assert b"LIS004" in result.stdout  # still checked
+    followed = run_cli(*command, str(startup), "--follow-startup")
+    assert axis.read_bytes() != before, followed.stderr
+    # Named (or its folder named), the list is rewritten as always.
+    axis.write_bytes(before)
+    run_cli(*command, str(axis.parent))
+    assert axis.read_bytes() != before
+
+
+def test_lists_in_the_start_up_list_s_own_folder_count_as_named(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_bytes(b"kopf.achs_nr 1\nEnd\n")
+    (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./achsmds1.lis\nEnde\n")
+    result = run_cli("lint", "--fix", str(tmp_path / "hochlauf.lis"))
+    assert (tmp_path / "achsmds1.lis").read_bytes() == b"kopf.achs_nr 1\nEnde\n", result.stderr

@@ -54,7 +54,7 @@ from .core.decode import UnreadableInput, decode
 from .core.files import is_xml, read_list, reason, write_atomically
 from .linting.config import KEEP, LEFT, RIGHT, FmtOptions
 from .linting.discovery import Finder
-from .linting.run import write_error
+from .linting.run import not_rewritten, write_error
 from .syntax import parser as syntax
 from .syntax.diff import unified_diff
 
@@ -419,6 +419,7 @@ class FormatRequest:
     config_file: str | None = None
     stdin_filename: str | None = None
     mode: str = "write"  # write | check (change nothing) | diff (change nothing, say how)
+    follow_startup: bool = False  # also rewrite the lists a named start-up list reaches in other folders
 
 
 @dataclass
@@ -450,11 +451,18 @@ def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatO
     """`achslint fmt`: format every list the paths name, writing (atomically, only if the file did not
     change meanwhile), checking or diffing. Raises `ConfigError`."""
 
-    finder = Finder(config_file=request.config_file, stdin_filename=request.stdin_filename)
-    finder.machine_rules = lambda path: False  # fmt reads no neighbours
+    finder = Finder(
+        config_file=request.config_file,
+        stdin_filename=request.stdin_filename,
+        follow_startup=request.follow_startup,
+        machine_rules=lambda path: False,  # fmt reads no neighbours
+    )
     found = finder.find(request.paths)
-    outcome = FormatOutcome([], list(found.errors), list(found.notes), len(found.targets))
+    kept = [t for t in found.targets if not t.writable] if request.mode == "write" else []
+    outcome = FormatOutcome([], list(found.errors), [*found.notes, *not_rewritten(kept)], len(found.targets))
     for target in found.targets:
+        if target in kept:
+            continue
         if is_xml(target.name):
             if target.name in request.paths:  # XML found in a folder is simply not fmt's business
                 outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")

@@ -23,7 +23,17 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..core.decode import UnreadableInput
-from ..core.files import Scope, is_folder, is_xml, not_a_list_file, read_list, real_path, reason, same_file
+from ..core.files import (
+    Scope,
+    inside,
+    is_folder,
+    is_xml,
+    not_a_list_file,
+    read_list,
+    real_path,
+    reason,
+    same_file,
+)
 from ..machine.startup import Startup, is_default_list, is_startup_list, read_startup
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
 
@@ -49,6 +59,10 @@ class Target:
     # sharing a key are checked together by the machine-level rules (LIS5xx).
     machines: tuple[str, ...] = ()
     defaults: Path | None = None  # default axis list loaded underneath (from a start-up list)
+    # Whether fmt and --fix may rewrite it: it was named, found under a named folder, or lies in the folder of
+    # the start-up list that named it (or below). A list a start-up list reaches in another folder is checked,
+    # not rewritten (unless --follow-startup).
+    writable: bool = True
 
 
 @dataclass
@@ -129,6 +143,7 @@ class Finder:
     stdin_filename: str | None = None
     force_exclude: bool = False  # exclude patterns apply to named files too
     respect_gitignore: bool = True
+    follow_startup: bool = False  # the lists a named start-up list reaches may be rewritten too
     # Whether the machine-level rules run for a named list (only then are its neighbours read).
     machine_rules: Callable[[Path], bool] = lambda path: True
     lenient: bool = False  # a broken configuration counts as none (the editor says so once, elsewhere)
@@ -300,16 +315,18 @@ class Finder:
         if all(s is not startup for s in found.startups):
             found.startups.append(startup)
         found.reported.add(str(startup.path))
-        inside = []
+        found_inside = []
         for member in self._startup_machine(startup).members:
             assert member.path is not None  # members are files
             if named:
-                found.add(member)
+                # Its own folder counts as named with it; lists in other folders are only checked.
+                mine = inside(member.path, Path(os.path.abspath(path)).parent) or scope.contains(member.path)
+                found.add(replace(member, writable=self.follow_startup or mine))
             elif scope.contains(member.path) and not self._excluded(member.config, member.path):
-                inside.append((member.name, member.path))
+                found_inside.append((member.name, member.path))
             else:
                 found.add(member, context=True)
-        return inside
+        return found_inside
 
     def _walk(
         self, folder: Path, scope: Scope, found: Discovery, *, recursive: bool = True

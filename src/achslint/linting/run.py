@@ -76,6 +76,7 @@ class LintRequest:
     machine: str | None = None  # start-up list of the machine NC programs (`rfp.nc`) are checked against
     channel: int = 1  # the channel whose axis names the programs use
     output: str | None = None  # the report file (-o): a run that would read it as an input stops first
+    follow_startup: bool = False  # --fix may rewrite the lists a named start-up list reaches in other folders
 
 
 class OutputIsInput(ValueError):
@@ -110,6 +111,7 @@ class LintRun:
             request.stdin_filename,
             request.force_exclude,
             request.respect_gitignore,
+            request.follow_startup,
             machine_rules=self._machine_rules,
         )
         self.found = Discovery()
@@ -139,11 +141,20 @@ class LintRun:
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
         mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff)
+        kept = (False, False, False)  # lists the user did not name: checked, never rewritten
         work = [
-            (t.name, str(t.path), self.settings_for(t), mode, str(t.defaults) if t.defaults else None)
+            (
+                t.name,
+                str(t.path),
+                self.settings_for(t),
+                mode if t.writable else kept,
+                str(t.defaults or "") or None,
+            )
             for t in targets
             if t.path
         ]
+        if self.request.fix and not self.request.show_diff:
+            found.notes += not_rewritten([t for t in targets if not t.writable])
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD and (self.request.jobs or _enough_text(work)):
             from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
 
@@ -396,3 +407,16 @@ def _configured_program(path: Path) -> tuple[bytes | None, str]:
     if program_text(data) is None:
         return None, f"{shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
     return data, ""
+
+
+def not_rewritten(targets: list[Target]) -> list[str]:
+    """The note for lists a named start-up list reached in folders nobody named: checked, not rewritten."""
+    if not targets:
+        return []
+    names = ", ".join(t.name for t in targets[:3]) + (
+        f" and {len(targets) - 3} more" if len(targets) > 3 else ""
+    )
+    return [
+        f"{names}: reached through a start-up list, checked but not rewritten; name them (or their folder) "
+        "or pass --follow-startup to rewrite them too"
+    ]
