@@ -267,6 +267,11 @@ def lint(
     channel: int = typer.Option(
         1, "--channel", min=1, max=12, help="With --machine: the channel whose axis names the programs use."
     ),
+    follow_startup: bool = typer.Option(
+        False,
+        "--follow-startup",
+        help="With --fix: also rewrite the lists a named start-up list reaches outside the paths given.",
+    ),
 ) -> None:
     """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .api import LintRequest, OutputIsInput, run_lint
@@ -308,6 +313,7 @@ def lint(
         machine=machine,
         channel=channel,
         output=output_file if not silent else None,
+        follow_startup=follow_startup,
     )
     quiet = quiet or silent
     try:
@@ -426,6 +432,11 @@ def fmt(
     allow_empty: bool = typer.Option(
         False, "--allow-empty", help="Exit 0 when the paths hold no list at all (default: exit 2)."
     ),
+    follow_startup: bool = typer.Option(
+        False,
+        "--follow-startup",
+        help="Also rewrite the lists a named start-up list reaches outside the paths given.",
+    ),
 ) -> None:
     """Reformat lists canonically (whitespace only; encoding and line endings kept)."""
     from .api import FormatRequest, run_format
@@ -435,7 +446,9 @@ def fmt(
 
     mode = "diff" if diff else "check" if check else "write"
     try:
-        outcome = run_format(FormatRequest(paths, config, stdin_filename, mode), stdin=sys.stdin.buffer)
+        outcome = run_format(
+            FormatRequest(paths, config, stdin_filename, mode, follow_startup), stdin=sys.stdin.buffer
+        )
     except ConfigError as exc:
         _fail(str(exc))
     if not outcome.found and not outcome.errors and not allow_empty:
