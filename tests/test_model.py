@@ -6,7 +6,8 @@ import pytest
 from pydantic import ValidationError
 
 import achslint
-from achslint.model import axis_model, json_schema
+from achslint.core.diagnostics import Diagnostic, Severity
+from achslint.model import axis_model, json_schema, rule_errors
 
 from .conftest import FIXTURES
 
@@ -70,3 +71,20 @@ def test_schema_has_descriptions_units_and_bounds():
     assert schema["properties"]["getriebe"]["maxItems"] == 6
     bit_range = defs["Antr"]["properties"]["encoder_bit_range"]
     assert bit_range["maximum"] == 31
+
+
+def test_a_rule_error_names_the_field_a_parameter_is_in_the_model():
+    """The error's location is the model's own path: indices as numbers, and a parameter below another
+    parameter (P-AXIS-00560 beside `kenngr.swe_pos`) as the one field that joins the rest."""
+    findings = [
+        Diagnostic("a.lis", 3, 1, 3, 9, "LIS302", Severity.ERROR, "too fast", "getriebe[2].vb_reflow"),
+        Diagnostic("a.lis", 4, 1, 4, 9, "LIS313", Severity.ERROR, "outside", "kenngr.swe_pos.zero_limit"),
+        Diagnostic("a.lis", 1, 1, 1, 2, "LIS002", Severity.ERROR, "no end", None),
+    ]
+    errors = rule_errors(findings).errors()
+    assert [error["loc"] for error in errors] == [
+        ("getriebe", 2, "vb_reflow"),
+        ("kenngr", "swe_pos_zero_limit"),
+        ("list",),
+    ]
+    assert errors[1]["msg"] == "LIS313: outside"

@@ -8,11 +8,6 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from .base import AxisBase
 
-# Catalogue paths kept as one field of their parent group: path -> (written rest, field name).
-JOINED = {
-    'kenngr.swe_pos.zero_limit': ('swe_pos.zero_limit', 'swe_pos_zero_limit'),
-}
-
 
 class _Group(BaseModel):
     """A group of parameters below the axis list."""
