@@ -765,8 +765,8 @@ def _machine_dry_run(
 
 @app.command("diff")
 def diff_command(
-    a: str = typer.Argument(..., help="First list."),
-    b: str = typer.Argument(..., help="Second list."),
+    a: str = typer.Argument(..., help="First list, or start-up list (or a folder holding one)."),
+    b: str = typer.Argument(..., help="Second list, or start-up list (or a folder holding one)."),
     defaults: str | None = typer.Option(
         None, "--defaults", help="Default axis list loaded under both lists."
     ),
@@ -774,15 +774,40 @@ def diff_command(
         ExplainFormat.text, "--format", "--output-format", help="text or json."
     ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
+    cnc_root: list[str] | None = typer.Option(
+        None,
+        "--cnc-root",
+        metavar="DIR",
+        help="With start-up lists: the CNC's working directory; once for both machines, twice for A then B.",
+    ),
 ) -> None:
-    """Show how two lists differ in their effective values (after defaults), by parameter with units."""
-    from .listdiff import diff_lists
-    from .output.diff import RENDERERS
+    """Show how two lists, or two machines (start-up lists), differ in their effective values, with units."""
+    from .listdiff import diff_lists, differ
+    from .machine.build import MachineError
+    from .machinediff import MachineDiffError, diff_machines, machines_to_compare
+    from .output.diff import MACHINE_RENDERERS, RENDERERS
 
+    try:
+        machines = machines_to_compare(Path(a), Path(b))
+        if machines is None and cnc_root:
+            raise UsageError("--cnc-root goes with start-up lists (hochlauf.lis), not with axis lists")
+        if machines is not None:
+            if defaults:
+                raise UsageError(
+                    "--defaults goes with axis lists; a start-up list names its own (default_achs_mds)"
+                )
+            if len(cnc_root or []) > 2:
+                raise UsageError("--cnc-root is given once (both machines) or twice (A, then B)")
+            roots = [Path(_folder(root, "--cnc-root")) for root in cnc_root or []]
+            found = diff_machines(*machines, *(roots * 2 if len(roots) == 1 else roots))
+            MACHINE_RENDERERS[output_format.value](found, _screen(color))
+            raise typer.Exit(EXIT_FINDINGS if found["differ"] else EXIT_OK)
+    except (MachineDiffError, MachineError, UsageError) as exc:
+        _fail(str(exc))
     contents = [_one_list(Path(name), name) for name in (a, b, *([defaults] if defaults else []))]
     report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
     RENDERERS[output_format.value](report, _screen(color))
-    raise typer.Exit(EXIT_FINDINGS if report["differences"] or report["unknown_parameters"] else EXIT_OK)
+    raise typer.Exit(EXIT_FINDINGS if differ(report) else EXIT_OK)
 
 
 @app.command("config")
