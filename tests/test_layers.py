@@ -3,7 +3,7 @@
 Every module has a layer; a module imports only from its own layer or the layers below it, and no chain of
 imports leads back to where it started. Imports inside functions and under `TYPE_CHECKING` count as much as
 the ones at the top of a module: hiding an import in a function defers it, it does not remove the arrow.
-Today's offending arrows are listed in `ALLOWED`; the list only shrinks.
+`ALLOWED` lists arrows that may offend for now; it is empty (issue 23 is done when it is) and stays so.
 
 Also here: linting a list does not load the heavy optional libraries, and each homing strategy's published
 `example` selects that strategy.
@@ -39,6 +39,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("core", ("core.*",)),
     ("syntax", ("syntax.*",)),
     ("catalogue", ("catalogue.*",)),
+    # a reader of lists inside XML: ISG XML names parameters by id, which the catalogue turns into paths
+    ("syntax: xml", ("syntax.xmlinput",)),
     # one axis's typed values, the CNC's corrections, and the resolved axis that applies them
     ("axis", ("axis.facts", "axis.analysis", "axis.drives", "axis.corrections", "axis.source", "axis")),
     ("axis: resolved", ("axis.resolved",)),
@@ -81,6 +83,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "machine.scenario",
             "machine.explain",
             "listdiff",
+            "machinediff",
             "fmt",
             "docs",
         ),
@@ -110,16 +113,9 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
 )
 LAYER_OF = {module: number for number, (_, names) in enumerate(LAYERS) for module in names}
 
-# Today's offending arrows, "importer -> imported": each closes a cycle or points up the layers. Remove an
-# arrow here when the code stops drawing it; the test fails until you do, and fails on any arrow not here.
-ALLOWED = frozenset(
-    {
-        # the SARIF format reads the package's version
-        "output.reporters.sarif -> achslint",
-        # the XML reader looks parameters up in the catalogue
-        "syntax.xmlinput -> catalogue",
-    }
-)
+# Offending arrows allowed for now, "importer -> imported" (each would close a cycle or point up the layers).
+# Empty: a new arrow that offends is moved, split or passed in, not listed here.
+ALLOWED: frozenset[str] = frozenset()
 
 
 @dataclass(frozen=True)

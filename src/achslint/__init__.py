@@ -14,10 +14,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from .core.version import __version__
+
 if TYPE_CHECKING:
     from .api import dry_run, dumps, explain, format_text, lint, lint_text, load, loads
-
-__version__ = "0.1.0"
 
 __all__ = ["__version__", "dry_run", "dumps", "explain", "format_text", "lint", "lint_text", "load", "loads"]
 

@@ -13,6 +13,9 @@ defusedxml's expat parser, which refuses a DTD, entity declarations and
 external references, reads any encoding expat knows (UTF-16 included), skips
 comments and takes positions from the parser itself, so the time is linear in
 the size of the file.
+
+The one syntax module above the catalogue: an ISG XML list names parameters by
+id, and the catalogue turns an id into the path a list writes.
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ from typing import TYPE_CHECKING
 from xml.sax import SAXException
 from xml.sax.handler import ContentHandler
 
+from ..catalogue import catalogue, fill_indices
 from ..core.decode import UnreadableInput
 from .numbers import parse_int
 from .parser import split_lines
@@ -223,8 +227,6 @@ class _Collector(ContentHandler):
 
     def _isg_line(self, element: re.Match[str], value: str, where: tuple[int, int]) -> None:
         """One `<P-AXIS-nnnnn.i Value="..."/>` element (its name matched by `_ISG_ELEMENT`) as a list line."""
-        from ..catalogue import catalogue, fill_indices
-
         _, lines, line_map = self.isg[-1]
         pid, written = element.group(1), element.group(2)
         indices = tuple(written.split(".")[1:])

@@ -8,8 +8,8 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, TextIO
 from urllib.parse import quote
 
-from ... import __version__
 from ...core.diagnostics import Diagnostic, Severity, rule_url
+from ...core.version import __version__
 from .base import write_json
 
 if TYPE_CHECKING:
