@@ -149,3 +149,19 @@ def test_lists_in_the_start_up_list_s_own_folder_count_as_named(tmp_path: Path) 
     (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./achsmds1.lis\nEnde\n")
     result = run_cli("lint", "--fix", str(tmp_path / "hochlauf.lis"))
     assert (tmp_path / "achsmds1.lis").read_bytes() == b"kopf.achs_nr 1\nEnde\n", result.stderr
+
+
+def test_a_list_update_is_no_axis_and_is_checked_over_the_list_it_changes(tmp_path: Path) -> None:
+    machine = MACHINES / "update"
+    result = run_cli("lint", str(machine), "--format", "json", "--exit-zero")
+    found = {(Path(d["path"]).name, d["code"]) for d in json.loads(result.stdout)["diagnostics"]}
+    # Its repeated axis number 1 is the CNC's cross-check, not a second axis 1.
+    assert not {code for _, code in found} & {"LIS501", "LIS502"}
+    # vb_reflow 30000 is judged against the vb_refmax 20000 of achsmds1.lis, the list it changes.
+    assert found == {("achsmds1-Update.xml", "LIS302")}
+    # Without the list it changes, the update is checked alone (vb_refmax keeps its default) and says so.
+    alone = tmp_path / "achsmds1-Update.xml"
+    alone.write_bytes((machine / "listen" / "Update" / "achsmds1-Update.xml").read_bytes())
+    result = run_cli("lint", str(alone), "--format", "json")
+    assert json.loads(result.stdout)["diagnostics"] == []
+    assert "a list update; the list it changes was not found" in result.stderr.decode()

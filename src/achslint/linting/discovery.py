@@ -13,6 +13,9 @@ A machine is what the CNC loads together:
   and an SoE variant of one machine) are two machines: their lists are never compared with each other.
 - the lists of a folder that no such start-up list names form one machine (a repository of axis lists
   without a start-up list).
+An ISG list update (`achsmds1-Update.xml`, `achsmds1-Revert.xml`, or any list in a folder named `Update`)
+changes some parameters of one axis list while the CNC runs: it is no axis of its own, so it belongs to no
+machine, and it is linted with the list it updates underneath (found by name beside it or one folder up).
 """
 
 from __future__ import annotations
@@ -216,6 +219,8 @@ class Finder:
             except (OSError, UnreadableInput):
                 return []
             return [self._startup_machine(startup)]
+        if is_list_update(path):
+            return []  # it changes one list; it is no axis of its own
         startups = _unique([*known, *self.startups_around(path.parent)])
         naming = [s for s in startups if any(_names(e.path, path) for e in s.axes)]
         if naming:
@@ -242,7 +247,7 @@ class Finder:
         members = [
             Target(str(path), path, self.config_for(path), (str(folder),))
             for path in lists
-            if not is_default_list(path) and not _named_by(startups, path)
+            if not is_default_list(path) and not is_list_update(path) and not _named_by(startups, path)
         ]
         return MachineFiles(str(folder), None, members)
 
@@ -282,6 +287,15 @@ class Finder:
                 named.append(path)
         known = list(found.startups)
         for name, path in lists:
+            if is_list_update(path):
+                base = updated_list(path)
+                if base is None:
+                    found.notes.append(
+                        f"{name}: a list update; the list it changes was not found beside it, so it is "
+                        "checked alone"
+                    )
+                found.add(Target(name, path, self.config_for(path), (), base))
+                continue
             machines = [] if is_default_list(path) else self.machines_of(path, known)
             keys = tuple(m.key for m in machines) or (str(path.parent),)
             defaults = next((m.defaults for m in machines if m.defaults is not None), None)
@@ -384,6 +398,31 @@ class Finder:
     def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
         patterns = self.overrides.apply(config.settings).exclude
         return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
+
+
+UPDATE_SUFFIXES = ("-update", "-revert", "_update", "_revert")
+UPDATE_FOLDER = "update"
+
+
+def is_list_update(path: Path) -> bool:
+    """An ISG list update: `<list>-Update.xml` / `<list>-Revert.xml`, or any list in a folder `Update/`."""
+    return path.stem.lower().endswith(UPDATE_SUFFIXES) or path.parent.name.lower() == UPDATE_FOLDER
+
+
+def updated_list(path: Path) -> Path | None:
+    """The list an update changes: the file of the update's name without its suffix (`achsmds1-Update.xml`
+    -> `achsmds1.lis` or `achsmds1.xml`), beside it or in the folder above (`listen/Update/` -> `listen/`)."""
+    stem = path.stem
+    for suffix in UPDATE_SUFFIXES:
+        if stem.lower().endswith(suffix):
+            stem = stem[: -len(suffix)]
+            break
+    for folder in (path.parent, path.parent.parent):
+        for suffix in (".lis", ".xml"):
+            candidate = folder / f"{stem}{suffix}"
+            if candidate != path and not is_list_update(candidate) and not_a_list_file(candidate) is None:
+                return candidate
+    return None
 
 
 def _names(entry: Path | None, path: Path) -> bool:

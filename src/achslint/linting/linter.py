@@ -100,11 +100,11 @@ def lint_file(
     `defaults` is the default axis list the CNC loads underneath (start-up key default_achs_mds).
     """
     settings = settings or FileSettings()
-    if is_xml(name):
-        return _check_xml(data, name, settings)
     try:
-        file = parse_bytes(data, name)
         default_file = parse_bytes(defaults, "default list") if defaults is not None else None
+        if is_xml(name):
+            return _check_xml(data, name, settings, default_file)
+        file = parse_bytes(data, name)
     except UnreadableInput as exc:
         return FileResult(name, [], f"{name}: {exc}")
     if not looks_like_a_list(file):
@@ -162,7 +162,9 @@ def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
     return mapped
 
 
-def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
+def _check_xml(
+    data: bytes, name: str, settings: FileSettings, default_file: ListFile | None = None
+) -> FileResult:
     """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
     from ..syntax.parser import parse_text, split_lines
     from ..syntax.xmlinput import NoAxisList, extract, root_element, source_text
@@ -181,7 +183,7 @@ def _check_xml(data: bytes, name: str, settings: FileSettings) -> FileResult:
     diagnostics: list[Diagnostic] = []
     members: list[Member] = []
     for embedded in lists:
-        result = _check_file(parse_text(embedded.text, name), name, settings, embedded)
+        result = _check_file(parse_text(embedded.text, name), name, settings, embedded, default_file)
         members.append((name, _mapped_summary(result.summary or {}, embedded)))
         for d in result.diagnostics:
             d.line, d.column = embedded.position(d.line, d.column)

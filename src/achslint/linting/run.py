@@ -10,6 +10,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
+from ..axis.source import read_one_list
+from ..core.decode import UnreadableInput
 from ..core.display import shortened
 from ..core.files import (
     MISSING,
@@ -223,13 +225,15 @@ def _lint_one(item: WorkItem) -> FileResult:
     name, path, settings, mode, defaults = item
     try:
         data = read_list(Path(path))
-        default_data = read_list(Path(defaults)) if defaults else None
+        default_data = read_one_list(Path(defaults), defaults) if defaults else None
     except OSError as exc:
         return FileResult(
             name,
             [],
             str(exc) if isinstance(exc, Refused) else f"cannot read {exc.filename or name}: {reason(exc)}",
         )
+    except UnreadableInput as exc:  # the list underneath (a default list, the list an update changes)
+        return FileResult(name, [], str(exc))
     return _process(data, name, settings, mode, Path(path), default_data)
 
 

@@ -29,11 +29,12 @@ from ..linting.config import (
     discover,
     parse_codes,
 )
-from ..linting.discovery import Discovery, Finder, MachineFiles, Target
+from ..linting.discovery import Discovery, Finder, MachineFiles, Target, is_list_update, updated_list
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
 from ..machine.startup import is_startup_list
 from ..syntax.parser import ListFile, parse_bytes
+from ..syntax.xmlinput import single_list
 from .documents import Document
 
 if TYPE_CHECKING:
@@ -228,16 +229,16 @@ class Session:
             return Snapshot(
                 document.version, document.text, FileResult(name, []), config_error=config_error, startup=True
             )
+        below, underneath = self._underneath(document)
         if is_xml(name):
-            result = lint_file(xml_bytes(document.text), name, settings)
+            result = lint_file(xml_bytes(document.text), name, settings, underneath)
             return Snapshot(document.version, document.text, result, config_error=config_error)
         default_file = None
-        defaults = next((m.defaults for m in self.machines(document) if m.defaults is not None), None)
-        if defaults is not None:
+        if underneath is not None:
             try:
-                default_file = parse_bytes(self.text_of(defaults), str(defaults))
-            except (OSError, UnreadableInput):
-                default_file = None  # the start-up list's LIS504 says why
+                default_file = parse_bytes(underneath, str(below))
+            except UnreadableInput:
+                default_file = None
         file = document.parse()
         if not file.bom and document.path is not None and starts_with_bom(document.path):
             # The editor keeps the mark out of the text (VS Code: "UTF-8 with BOM") and writes it back on
@@ -245,6 +246,26 @@ class Session:
             file = replace(file, bom=True)
         result = lint_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
+
+    def _underneath(self, document: Document) -> tuple[Path | None, bytes | None]:
+        """The list the CNC loads under the document, as the editor has it: the default list of its start-up
+        list, or for a list update the list it changes (`discovery.updated_list`). None when there is none or
+        it cannot be read (the start-up list's LIS504 says why)."""
+        path = document.path
+        if path is None:
+            return None, None
+        below = (
+            updated_list(path)
+            if is_list_update(path)
+            else next((m.defaults for m in self.machines(document) if m.defaults is not None), None)
+        )
+        if below is None:
+            return None, None
+        try:
+            data = self.text_of(below)
+            return below, single_list(data, str(below)) if is_xml(below.name) else data
+        except (OSError, UnreadableInput):
+            return below, None
 
     def diagnostics(self, uri: str) -> tuple[Snapshot | None, list[Diagnostic], list[str]]:
         """The document's findings, its own and those of the machine it belongs to, and the other open
