@@ -18,9 +18,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from achslint.cli import main
-from achslint.dryrun import DryRunRefused, dry_run, prepare, sweep
+from achslint.dryrun import DryRunRefused, dry_run, prepare, refusal, sweep
 from achslint.homing.scenario import ScenarioError, ScenarioInput, parse_input
 from achslint.output.dryrun import render, sweep_words, trace_json
+from achslint.rules import registry
 
 from .conftest import FIXTURES, examples
 from .engine_scene import AXIS as SHARED_AXIS
@@ -333,6 +334,22 @@ def test_drive_table_on_a_cnc_controlled_axis_is_an_error():
 def test_torq_on_a_lightbus_drive_is_refused_with_the_lint_text():
     with pytest.raises(DryRunRefused, match=r"LIS306.*P-ERR-110371"):
         dry_run(b"kenngr.antr_typ 5\nkenngr.homing.homing_type TORQ\nEnde\n", "t.lis")
+
+
+@pytest.mark.parametrize("code", [code for code, rule in registry().items() if rule.refuses_homing])
+def test_a_rule_that_says_the_cnc_refuses_the_homing_refuses_the_dry_run(code):
+    """The refusal comes from the rules marked CNC_REFUSES_HOMING, run by the lint engine: their bad fixture
+    is refused with their finding, their good fixture is not."""
+    folder = FIXTURES / "rules" / code
+    refused = refusal((folder / "bad.lis").read_bytes(), "bad.lis")
+    assert refused is not None and refused.startswith(
+        f"bad.lis: dry-run refused, the CNC does not run this homing: {code} "
+    )
+    assert refusal((folder / "good.lis").read_bytes(), "good.lis") is None
+
+
+def test_the_rules_that_refuse_the_homing_are_the_drive_type_and_the_spindle_direction():
+    assert [code for code, rule in registry().items() if rule.refuses_homing] == ["LIS306", "LIS319"]
 
 
 def write(folder: Path, name: str, text: str) -> Path:

@@ -3,7 +3,8 @@
 Builds the resolved axis and the strategy, completes the scenario (the
 configuration's `scenario` table, then the scenario file, then the
 command-line options; `cycle-time-us` of the configuration as the cycle),
-refuses what the CNC would not run (LIS306, LIS319) and scenarios that do not
+refuses what the CNC would not run (the findings of the rules that say so,
+`CNC_REFUSES_HOMING`: LIS306, LIS319) and scenarios that do not
 fit the axis (a `[drive]` table on an axis that does not home drive-controlled),
 runs the strategy's sequence (homing/sequences/ over homing/motion.py), puts the
 facts the simulation found in the words of their rules (LIS317 soft limits, LIS402
@@ -15,12 +16,12 @@ schema is there), `plot.py` draws it.
 
 from __future__ import annotations
 
-import importlib
 import math
 import random
 from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -28,6 +29,8 @@ from .axis.resolved import ResolvedAxis, plain, resolve_bytes
 from .homing import classify
 from .homing.motion import Fact, Simulator, SoftLimitOvershoot, StartOnCam, Trace, TraceWarning
 from .homing.scenario import ScenarioError, parse_input
+from .linting import engine
+from .rules import Scope, registry
 from .rules import lis317_homing_ends_outside_limits as lis317
 from .rules import lis402_one_phase_with_cam as lis402
 from .rules import lis405_zero_pulse_near_cam_edge as lis405
@@ -36,9 +39,6 @@ if TYPE_CHECKING:
     from .catalogue import Value
     from .homing.scenario_input import ScenarioInput
     from .rules.context import Context
-
-# Rules whose finding means the CNC does not run the homing at all: the dry-run refuses with their text.
-REFUSING_RULES = ("lis306_torq_drive_type", "lis319_spindle_homing_direction")
 
 
 class DryRunRefused(Exception):
@@ -114,15 +114,21 @@ def _context(data: bytes, name: str, defaults: bytes | None) -> Context:
     )
 
 
+@lru_cache(maxsize=1)
+def _refusing() -> engine.Policy | None:
+    """The selection of the rules whose finding means the CNC does not run the homing at all."""
+    codes = [code for code, rule in registry().items() if rule.refuses_homing]
+    return engine.Policy.of(select=codes) if codes else None
+
+
 def _refused(context: Context) -> str | None:
-    for module in REFUSING_RULES:
-        rule = importlib.import_module(f"{__package__}.rules.{module}")
-        for diagnostic in rule.check(context):
-            return (
-                f"{context.name}: dry-run refused, the CNC does not run this homing: "
-                f"{rule.CODE} {diagnostic.message}"
-            )
-    return None
+    """The refusal with the first such finding (in code order), run by the lint engine; None if none."""
+    policy = _refusing()
+    found = engine.run(Scope.LIST, (context,), policy) if policy is not None else []
+    if not found:
+        return None
+    first = min(found, key=lambda diagnostic: diagnostic.code)
+    return f"{context.name}: dry-run refused, the CNC does not run this homing: {first.code} {first.message}"
 
 
 def dry_run(

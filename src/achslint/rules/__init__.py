@@ -60,6 +60,7 @@ class Rule:
     checks: tuple[tuple[Scope, Check], ...] = ()  # one check per scope the rule takes part in
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
+    refuses_homing: bool = False  # a finding means the CNC does not run the homing (LIS306, LIS319)
 
     @property
     def scopes(self) -> tuple[Scope, ...]:
@@ -106,5 +107,6 @@ def registry() -> dict[str, Rule]:
             ),
             parameters=tuple(getattr(module, "PARAMETERS", ())),
             produced_by=getattr(module, "PRODUCED_BY", "lint"),
+            refuses_homing=getattr(module, "CNC_REFUSES_HOMING", False),
         )
     return rules

@@ -49,6 +49,7 @@ NAME = "torq-drive-type"
 FIX = "none"
 PARAMETERS = ("kenngr.homing.homing_type", "kenngr.antr_typ")  # parameters this rule reads
 SUMMARY = "`TORQ` homing on a drive type without fixed-stop homing"
+CNC_REFUSES_HOMING = True  # the CNC does not run this homing at all: a dry-run refuses with the finding
 
 TORQ_DRIVES = {DriveType.SERCOS, DriveType.SIMULATION, DriveType.CANOPEN, DriveType.GENERIC, DriveType.DSE}
 

@@ -57,6 +57,7 @@ NAME = "spindle-homing-direction"
 FIX = "none"
 PARAMETERS = ("kenngr.ref_richt", "kenngr.beweg_richt", "kenngr.vorz_richtung")  # parameters this rule reads
 SUMMARY = "Spindle homing direction against its restricted preferred direction"
+CNC_REFUSES_HOMING = True  # the CNC does not run this homing at all: a dry-run refuses with the finding
 
 HOMING, PREFERRED, RESTRICTED = "kenngr.ref_richt", "kenngr.beweg_richt", "kenngr.vorz_richtung"
 
