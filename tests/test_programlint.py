@@ -6,8 +6,11 @@ import json
 
 import pytest
 
+from achslint.axis.resolved import resolve_bytes
+from achslint.homing import classify
 from achslint.linting.program import check_program
 from achslint.machine.build import build_machine
+from achslint.machine.model import Machine, MachineAxis
 from achslint.machine.program import read_program
 
 from .conftest import FIXTURES, run_cli
@@ -202,3 +205,30 @@ def test_noqa_in_program_comments(tmp_path):
         (4, "LIS009"),
         (6, "LIS606"),
     ]
+
+
+def _axis(name: str, number: int, text: str, master: str | None = None) -> MachineAxis:
+    data = f"kopf.achs_nr {number}\nkopf.log_achs_name {name}\n{text}Ende\n".encode()
+    return MachineAxis(
+        name, number, None, data, None, resolve_bytes(data, f"{name}.lis"), gantry_master=master
+    )
+
+
+def test_what_a_program_counts_as_homed_follows_the_axis_strategy():
+    """Homed before any G74: an absolute encoder, also on a gantry slave whose strategy is "homed with its
+    master" (P-AXIS-00014, P-AXIS-00074). Homed by the master's G74: a slave without homing of its own, not
+    one that homes itself."""
+    master = _axis("X1", 1, "kenngr.antr_typ 1\n")
+    absolute = _axis(
+        "X2", 2, "kenngr.gantry_ax_nr 1\nkenngr.gantry_slave_no_homing 1\nkenngr.abs_pos_gueltig 1\n", "X1"
+    )
+    follows = _axis("X3", 3, "kenngr.gantry_ax_nr 1\nkenngr.gantry_slave_no_homing 1\n", "X1")
+    own = _axis("X4", 4, "kenngr.gantry_ax_nr 1\n", "X1")
+    machine = Machine(
+        None, {a.name: a for a in (master, absolute, follows, own)}, [("X1", n) for n in ("X2", "X3", "X4")]
+    )
+    assert classify(absolute.resolved).id == "gantry_slave"
+    assert findings(machine, "N10 G01 X2=5 F100\n") == []
+    assert findings(machine, "N10 G01 X3=5 F100\n") == [(1, 9, "LIS606")]
+    assert findings(machine, "N10 G74 X1=1\nN20 G01 X3=5 F100\n") == []
+    assert findings(machine, "N10 G74 X1=1\nN20 G01 X4=5 F100\n") == [(2, 9, "LIS606")]

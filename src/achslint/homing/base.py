@@ -87,6 +87,9 @@ class StrategyDef:
     skipped_by_g74: bool = False
     # Homed together with its gantry master, never on its own (P-AXIS-00074).
     homed_with_master: bool = False
+    # The CNC takes the axis's position as valid from power-up on: an absolute encoder supplies it (§3.5 type
+    # IV), or G74 never homes the axis (IGNORE_ABS_POS, DISABLED: both settings for absolute encoders).
+    referenced_at_power_up: bool = False
     # The direction of the homing moves (+1 / -1) and their acceleration (None: the drive's own).
     direction: Callable[[HomingSetup], int] = lambda setup: setup.direction
     acceleration: Callable[[HomingSetup], Acceleration | None] = lambda setup: setup.acceleration
@@ -168,6 +171,12 @@ class HomingStrategy:
     @property
     def moves(self) -> bool:
         return bool(self.phases)
+
+    @property
+    def referenced_from_start(self) -> bool:
+        """Whether a homing program may count the axis as homed before any G74: its strategy says so, or its
+        absolute encoder gives the position (also when a gantry master references it)."""
+        return self.definition.referenced_at_power_up or self.setup.absolute
 
     def simulate(self, simulator: Simulator, trace: Trace, start: float, cam_shift: float) -> Trace:
         """Run the strategy's sequence from `start`, with the cam moved by `cam_shift` (its jitter)."""

@@ -11,6 +11,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..homing.registry import classify
 from ..machine.model import HomingBlock, Location, Machine, MachineAxis, MoveBlock, Program
 
 
@@ -47,17 +48,19 @@ def homing_blocks(program: Program) -> Iterator[HomingBlock]:
 
 
 def homed_from_start(axis: MachineAxis) -> bool:
-    """Axes whose position is valid at power-up: an absolute encoder (P-AXIS-00014), which IGNORE_ABS_POS
-    and DISABLED require."""
-    return bool(axis.resolved.get("kenngr.abs_pos_gueltig")) or axis.resolved.homing_type in (
-        "IGNORE_ABS_POS",
-        "DISABLED",
-    )
+    """Axes a program may count as homed before any G74 (an absolute encoder, P-AXIS-00014, or a homing type
+    G74 leaves alone): what the axis's power-up strategy says."""
+    return classify(axis.resolved).referenced_from_start
 
 
 def homes_with_master(axis: MachineAxis) -> bool:
-    """A gantry slave whose own homing is suppressed (P-AXIS-00074): referenced when its master is."""
-    return axis.gantry_master is not None and bool(axis.resolved.get("kenngr.gantry_slave_no_homing"))
+    """A gantry slave referenced when its master is (P-AXIS-00074): its strategy is homed with the master."""
+    return axis.gantry_master is not None and classify(axis.resolved).definition.homed_with_master
+
+
+def homed_by_g74(axis: MachineAxis) -> bool:
+    """Whether a G74 naming the axis homes it (the strategy a G74 runs does not refuse it, as DISABLED does)."""
+    return not classify(axis.resolved, commanded=True).definition.refuses_g74
 
 
 @dataclass(frozen=True)
@@ -82,7 +85,7 @@ def steps(program: Program, machine: Machine) -> Iterator[Step]:
         if isinstance(block, HomingBlock):
             for word in block.words:
                 axis = machine.axes.get(word.name)
-                if axis is not None and axis.resolved.homing_type != "DISABLED":
+                if axis is not None and homed_by_g74(axis):
                     homed.add(axis.name)
             for axis in machine.axes.values():
                 if homes_with_master(axis) and axis.gantry_master in homed:

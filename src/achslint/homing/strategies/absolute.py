@@ -29,6 +29,7 @@ STRATEGY = StrategyDef(
     parameters=EVERYWHERE,
     manual_type="IV",
     power_up_only=True,
+    referenced_at_power_up=True,
     example="kenngr.abs_pos_gueltig 1\n",
     unused="an axis with an absolute measuring system needs no homing move (§3.5, type IV); only a G74 that "
     "names it would run its homing type",

@@ -46,5 +46,6 @@ STRATEGY = StrategyDef(
     example="kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED\n",
     unused="homing is disabled for this axis",
     refuses_g74=True,
+    referenced_at_power_up=True,
     simulate=lambda sim, trace, x, cam_shift: sim.stand_still(trace, "failed", _refused(sim.strategy.setup)),
 )

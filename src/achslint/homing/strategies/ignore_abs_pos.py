@@ -27,6 +27,7 @@ STRATEGY = StrategyDef(
     parameters=EVERYWHERE,
     manual_type=None,
     skipped_by_g74=True,
+    referenced_at_power_up=True,
     example="kenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type IGNORE_ABS_POS\n",
     unused="G74 skips this axis (IGNORE_ABS_POS)",
     simulate=lambda sim, trace, x, cam_shift: sim.stand_still(trace, "skipped"),
