@@ -45,7 +45,9 @@ def run_cli(*args: str, stdin: bytes | None = None, env: dict | None = None) -> 
     from typer.testing import CliRunner
 
     from achslint.cli import main
+    from achslint.linting.config import forget_cached
 
+    forget_cached()  # each run starts like a new process: configurations are read again
     full_env = {"NO_COLOR": "1", "FORCE_COLOR": None, **(env or {})}
     runner = CliRunner()
     with runner.isolation(input=stdin, env=full_env) as streams:
@@ -75,3 +77,13 @@ def run_real_cli(
 @pytest.fixture
 def cli():
     return run_cli
+
+
+def one_machine(folder: Path, *patterns: str) -> Path:
+    """Declare the lists of `folder` one machine with a `[[machine]]` table in its `.achslint.toml` (lists no
+    start-up list names are compared with no other list unless a configuration says they form a machine)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    listed = ", ".join(f'"{p}"' for p in (patterns or ("*.lis",)))
+    config = folder / ".achslint.toml"
+    config.write_text(f"[[machine]]\nlists = [{listed}]\n", encoding="utf-8")
+    return config

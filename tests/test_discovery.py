@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from achslint.linting.config import forget_cached
 from achslint.linting.discovery import Finder
 from achslint.lsp.documents import Document
 from achslint.lsp.session import Session
@@ -103,14 +104,32 @@ def test_a_list_two_start_up_lists_name_belongs_to_both_machines(tmp_path: Path)
     assert machine_findings_cli(tmp_path) == {("achsmds_b.lis", 1, "LIS501")}
 
 
-def test_lists_no_start_up_list_names_form_their_folder_s_machine(tmp_path: Path) -> None:
-    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n")
-    (tmp_path / "achsmds2.lis").write_text("kopf.achs_nr  1\nEnde\n")
+def test_lists_no_start_up_list_names_are_compared_only_when_a_machine_is_declared(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n")
+    (tmp_path / "achsmds2.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  Y\nEnde\n")
+    (tmp_path / "achsmds1_old.lis").write_text("kopf.achs_nr  1\nEnde\n")  # a backup beside the lists
     (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./achsmds1.lis\nEnde\n")
-    # achsmds2 is named by no start-up list: it is not compared with the start-up list's axis 1.
+    # achsmds2 and the backup are named by no start-up list and no [[machine]] table: compared with nothing
     assert machine_findings_cli(tmp_path) == set()
+    assert Finder().machines_of(tmp_path / "achsmds2.lis") == []
+    # A [[machine]] table makes the lists it names one machine (not the backup); achsmds1 belongs to it and
+    # to the start-up list's machine, so the repeated number is found in the table's machine.
+    (tmp_path / ".achslint.toml").write_text('[[machine]]\nname = "mill"\nlists = ["achsmds[0-9].lis"]\n')
+    forget_cached()
     [machine] = Finder().machines_of(tmp_path / "achsmds2.lis")
-    assert machine.startup is None and [t.path for t in machine.members] == [tmp_path / "achsmds2.lis"]
+    assert machine.key.endswith(".achslint.toml#mill") and machine.startup is None
+    assert [t.path.name for t in machine.members if t.path] == ["achsmds1.lis", "achsmds2.lis"]
+    assert len(Finder().machines_of(tmp_path / "achsmds1.lis")) == 2
+    assert machine_findings_cli(tmp_path) == {("achsmds2.lis", 1, "LIS501")}
+    assert machine_findings_editor(tmp_path) == {("achsmds2.lis", 1, "LIS501")}
+
+
+def test_a_machine_table_with_an_unknown_key_is_one_configuration_error(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n")
+    (tmp_path / ".achslint.toml").write_text('[[machine]]\nlist = ["*.lis"]\n')
+    result = run_cli("lint", str(tmp_path))
+    assert result.returncode == 2
+    assert "unknown key `machine.0.list` (known keys: lists, name)" in result.stderr.decode()
 
 
 def machine_in_two_folders(root: Path) -> tuple[Path, Path]:

@@ -19,6 +19,8 @@ from achslint.explanation import explain_list
 from achslint.homing.scenario_input import ScenarioInput
 from achslint.linting.config import Overrides
 
+from .conftest import one_machine
+
 
 def listed(text: str) -> bytes:
     return (text + "Ende\n").encode("latin-1")
@@ -276,6 +278,7 @@ def test_cam_direct_access_second_input_and_other_drives():
 
 
 def machine(folder: Path, lists: dict[str, str], codes: list[str]) -> list[tuple[str, int, str, str]]:
+    one_machine(folder)
     for name, text in lists.items():
         (folder / name).write_bytes(listed(text))
     outcome = run_lint(LintRequest([str(folder)], Overrides(select=codes), jobs=1))

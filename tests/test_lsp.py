@@ -245,6 +245,7 @@ async def test_editor_settings_with_a_code_that_picks_no_rule_are_told_not_used(
 async def test_machine_rule_uses_open_buffers_and_files(client: LanguageClient, folder: Path):
     machine = folder / "machine"
     machine.mkdir()
+    (machine / ".achslint.toml").write_text('[[machine]]\nlists = ["*.lis"]\n', encoding="utf-8")
     one = "kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n"
     (machine / "achsmds1.lis").write_text(one, encoding="latin-1")
     (machine / "achsmds2.lis").write_text(

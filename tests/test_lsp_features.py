@@ -22,6 +22,8 @@ from achslint.lsp.documents import Document
 from achslint.lsp.session import ClientSettings, Session, Snapshot, xml_bytes
 from achslint.machine.startup import StartupEntry
 
+from .conftest import one_machine
+
 EVERYWHERE = lsp.Range(lsp.Position(0, 0), lsp.Position(99, 0))
 
 
@@ -508,7 +510,7 @@ def test_an_unreadable_default_list_leaves_the_axis_list_checked(session: Sessio
     assert "LIS201" in codes(session.diagnostics(document.uri)[1])
 
 
-def test_start_up_lists_that_do_not_name_the_list_leave_the_folder_as_machine(
+def test_start_up_lists_that_do_not_name_the_list_leave_its_declared_machine(
     session: Session, tmp_path: Path
 ) -> None:
     (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./other.lis\nEnde\n", encoding="latin-1")
@@ -517,7 +519,9 @@ def test_start_up_lists_that_do_not_name_the_list_leave_the_folder_as_machine(
     (tmp_path / "achsmds2.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     (tmp_path / "achsmds3.lis").mkdir()  # matches the pattern, but a folder
     os.mkfifo(tmp_path / "achsmds4.lis")
-    (tmp_path / ".achslint.toml").write_text('exclude = ["achsmds5.lis"]\n', encoding="utf-8")
+    (tmp_path / ".achslint.toml").write_text(
+        'exclude = ["achsmds5.lis"]\n\n[[machine]]\nlists = ["*.lis"]\n', encoding="utf-8"
+    )
     (tmp_path / "achsmds5.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     document = opened(session, tmp_path / "achsmds1.lis")
@@ -542,6 +546,7 @@ def test_a_broken_configuration_of_a_neighbour_does_not_stop_the_machine_rules(
     session: Session, tmp_path: Path
 ) -> None:
     (tmp_path / ".achslint.toml").write_text("select = [\n", encoding="utf-8")
+    (tmp_path / "hochlauf.lis").write_text("achs_mds[0]  ./achsmds1.lis\nachs_mds[1]  ./achsmds2.lis\nEnde\n")
     (tmp_path / "achsmds2.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n", encoding="latin-1")
     second = opened(session, tmp_path / "achsmds2.lis")
@@ -560,6 +565,7 @@ def test_closed_lists_of_the_machine_are_read_once_while_unchanged(
     session: Session, tmp_path: Path, monkeypatch
 ):
     # The neighbour achsmds1.lis is not open: its summary comes from disk and is kept until the file changes.
+    one_machine(tmp_path)
     for name in ("achsmds1.lis", "achsmds2.lis"):
         (tmp_path / name).write_text("kopf.achs_nr 1\nEnde\n", encoding="latin-1")
     document = opened(session, tmp_path / "achsmds2.lis")  # repeats the number of achsmds1.lis: LIS501

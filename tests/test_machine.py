@@ -5,6 +5,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from .conftest import one_machine
+
 
 def write(path: Path, text: str) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -42,6 +44,7 @@ def test_default_list_is_applied_under_each_axis_list(cli, tmp_path):
 
 
 def test_gantry_retraction_against_resettable_distance(cli, tmp_path):
+    one_machine(tmp_path)
     write(
         tmp_path / "achsmds1.lis",
         "kopf.achs_nr 1\nkopf.log_achs_name X1\nkenngr.antr_typ 2\n"
@@ -60,16 +63,22 @@ def test_gantry_retraction_against_resettable_distance(cli, tmp_path):
     assert document["diagnostics"][0]["related"][0]["path"].endswith("achsmds1.lis")
 
 
-def test_machines_are_per_folder(cli, tmp_path):
+def test_lists_are_compared_only_within_a_declared_machine(cli, tmp_path):
     body = "kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n"
     write(tmp_path / "machine_a" / "achsmds1.lis", body)
     write(tmp_path / "machine_b" / "achsmds1.lis", body)
+    write(tmp_path / "machine_b" / "achsmds2.lis", body)
+    one_machine(tmp_path / "machine_a")
+    # machine_b declares no machine and has no start-up list: its lists are compared with no other list
     assert findings(cli("lint", str(tmp_path), "--format", "json", "--select", "LIS50")) == []
     write(tmp_path / "machine_a" / "achsmds2.lis", body)
     assert findings(cli("lint", str(tmp_path), "--format", "json", "--select", "LIS50")) == [
         ("achsmds2.lis", 1, "LIS501"),
         ("achsmds2.lis", 2, "LIS502"),
     ]
+    # two declared machines in two folders are two machines
+    one_machine(tmp_path / "machine_b")
+    assert len(findings(cli("lint", str(tmp_path), "--format", "json", "--select", "LIS50"))) == 4
 
 
 def test_start_up_list_with_missing_lists_only(cli, tmp_path):
@@ -80,6 +89,7 @@ def test_start_up_list_with_missing_lists_only(cli, tmp_path):
 
 
 def test_a_shared_default_name_says_it_is_the_default(cli, tmp_path):
+    one_machine(tmp_path)
     write(tmp_path / "achsmds1.lis", "kopf.achs_nr 1\nEnde\n")
     write(tmp_path / "achsmds2.lis", "kopf.achs_nr 2\nEnde\n")
     result = cli("lint", str(tmp_path), "--format", "json", "--select", "LIS502")
@@ -92,6 +102,7 @@ def test_a_shared_default_name_says_it_is_the_default(cli, tmp_path):
 
 
 def test_machine_findings_on_a_utf8_list_show_its_text_as_written(cli, tmp_path):
+    one_machine(tmp_path)
     # The second list only gets a finding from the machine-level rule (LIS501), so its lines are read
     # again for the code frame: through the same decoding as the list itself (UTF-8 here, not Latin-1).
     for number in (1, 2):

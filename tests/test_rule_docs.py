@@ -9,7 +9,7 @@ A section is turned into input from its ``` code blocks:
   `<!-- file: Axis_X.xti -->` in XML) are written side by side into an empty folder, which is linted as a
   machine through the real API: an NC program against the machine of the start-up list (`--machine`),
   else through its start-up list (`hochlauf*.lis`) when it has one, the file itself when there is only
-  one, otherwise the folder. The marker line stays in the file; it is a comment there. *Use instead* may
+  one, otherwise the folder, with a `[[machine]]` table that makes its files one machine. The marker line stays in the file; it is a comment there. *Use instead* may
   show only the files that change: the files it does not name are those of the Example.
 """
 
@@ -76,7 +76,8 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
         target = startup[0]
     elif len(files) == 1:
         target = tmp_path / next(iter(files))
-    else:
+    else:  # lists without their start-up list: a [[machine]] table says they are one machine
+        (tmp_path / ".achslint.toml").write_text('[[machine]]\nlists = ["*"]\n', encoding="utf-8")
         target = tmp_path
     outcome = run_lint(LintRequest([str(target)], Overrides(), jobs=1, machine=machine))
     assert not outcome.errors, outcome.errors

@@ -107,6 +107,16 @@ def _key(default: Any = None, *, factory: Any = None, cli: str = REPLACE, **chec
 
 
 @dataclass(frozen=True)
+class MachineTable:
+    """A `[[machine]]` table: lists that form one machine although no start-up list names them (a repository
+    of axis lists without its start-up list). `lists` are glob patterns relative to the configuration file's
+    folder (`listen/*.lis`, `**/achsmds*.lis`)."""
+
+    lists: list[str] = _key(factory=list, min_length=1)
+    name: str | None = _key(None, min_length=1)  # how messages name it (default: its number in the file)
+
+
+@dataclass(frozen=True)
 class Settings:
     """Every achslint setting, once: the configuration file's schema (keys spelled with dashes), its
     defaults, what rules read (`ctx.options`) and what the command line may override (`Overrides`)."""
@@ -137,6 +147,8 @@ class Settings:
     # start-up list also checks against that machine (LIS6xx), as `lint rfp.nc --machine hochlauf.lis` does
     homing_programs: list[str] = _key(factory=list)
     fmt: FmtOptions = _key(factory=FmtOptions)  # the [fmt] table: the layout `achslint fmt` keeps or imposes
+    # [[machine]] tables: lists compared with each other although no start-up list names them
+    machine: list[MachineTable] = _key(factory=list)
 
     def as_file_keys(self) -> dict[str, Any]:
         """The settings as a configuration file spells them."""
@@ -147,6 +159,8 @@ def _as_file_value(value: Any) -> Any:
     """A setting as the file spells it: a table's keys with dashes."""
     if is_dataclass(value) and not isinstance(value, type):
         return {file_key(name): item for name, item in asdict(value).items()}
+    if isinstance(value, list):
+        return [_as_file_value(item) for item in value]
     return value
 
 
@@ -202,7 +216,7 @@ def _table_model(table: type) -> Any:
 def _definitions(settings: type) -> dict[str, Any]:
     """The pydantic field of every field of a settings dataclass: its type, the file's spelling (dashes),
     its default and the checks of its metadata (`_key`); a dataclass-typed field is a table of its own."""
-    from typing import Annotated, get_type_hints
+    from typing import Annotated, get_args, get_origin, get_type_hints
 
     from pydantic import AfterValidator, Field
 
@@ -216,6 +230,8 @@ def _definitions(settings: type) -> dict[str, Any]:
             kind = Annotated[kind, AfterValidator(lambda value, how=codes: _check_codes(value, how))]
         if isinstance(kind, type) and is_dataclass(kind):
             kind = _table_model(kind)
+        elif get_origin(kind) is list and is_dataclass(get_args(kind)[0]):  # an array of tables
+            kind = list[_table_model(get_args(kind)[0])]  # type: ignore[misc]
         default: dict[str, Any] = (
             {"default_factory": item.default_factory}
             if item.default_factory is not MISSING
@@ -252,6 +268,20 @@ class ResolvedConfig:
             return Path(os.path.abspath(Path(self.settings.cnc_root).expanduser()))
         return named_path(self.path, self.settings.cnc_root)
 
+    def declared_machines(self) -> list[tuple[str, list[Path]]]:
+        """The `[[machine]]` tables as (key, the files their patterns find), files in a stable order."""
+        if self.path is None:
+            return []
+        found = []
+        for number, table in enumerate(self.settings.machine, start=1):
+            files: dict[str, Path] = {}
+            for pattern in table.lists:
+                for path in sorted(self.root.glob(pattern)):
+                    if path.is_file() and path != self.path:
+                        files.setdefault(os.path.realpath(path), path)
+            found.append((f"{self.path}#{table.name or number}", list(files.values())))
+        return found
+
     def ignored_for(self, target: Path) -> list[str]:
         """Codes ignored for one file by `per-file-ignores`."""
         codes: list[str] = []
@@ -272,6 +302,15 @@ def matches_glob(relative: str, pattern: str) -> bool:
     )
 
 
+def _model_of(annotation: Any) -> Any:
+    """The model of a table from its field's annotation (unwrapping `Annotated[...]` and `list[...]`)."""
+    from typing import get_args
+
+    while not hasattr(annotation, "model_fields") and get_args(annotation):
+        annotation = get_args(annotation)[0]
+    return annotation
+
+
 def _format_error(path: Path, error: ValidationError, model: Any) -> str:
     problems = []
     for item in error.errors():
@@ -279,7 +318,11 @@ def _format_error(path: Path, error: ValidationError, model: Any) -> str:
         if item["type"] == "extra_forbidden":
             table = model
             for part in item["loc"][:-1]:  # an unknown key inside a table: that table's keys
-                table = next(f.annotation for n, f in table.model_fields.items() if part in (n, f.alias))
+                if isinstance(part, int):  # the n-th table of an array of tables ([[machine]])
+                    continue
+                table = _model_of(
+                    next(f.annotation for n, f in table.model_fields.items() if part in (n, f.alias))
+                )
             allowed = ", ".join(sorted(f.alias or name for name, f in table.model_fields.items()))
             problems.append(f"unknown key `{key}` (known keys: {allowed})")
         else:

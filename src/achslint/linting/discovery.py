@@ -11,8 +11,11 @@ A machine is what the CNC loads together:
   named or found in a linted folder, and those in the list's own folder or the folder above it (the SDK
   keeps `hochlauf.lis` in `listen/`, or in `listen/ExtSchedule/`). Two start-up lists side by side (a CoE
   and an SoE variant of one machine) are two machines: their lists are never compared with each other.
-- the lists of a folder that no such start-up list names form one machine (a repository of axis lists
-  without a start-up list).
+- a `[[machine]]` table of a list's configuration declares a machine too: the lists its patterns find (for
+  a repository without its start-up list); lists no start-up list and no table names are compared with no
+  other list;
+- axis XML files of one folder that no start-up list names are the exports of one TwinCAT project: one
+  machine.
 An ISG list update (`achsmds1-Update.xml`, `achsmds1-Revert.xml`, or any list in a folder named `Update`)
 changes some parameters of one axis list while the CNC runs: it is no axis of its own, so it belongs to no
 machine, and it is linted with the list it updates underneath (found by name beside it or one folder up).
@@ -153,6 +156,7 @@ class Finder:
     _fixed: ResolvedConfig | None = None
     _startups: dict[str, Startup | None] = field(default_factory=dict)  # by absolute path
     _around: dict[str, list[Startup]] = field(default_factory=dict)  # by folder
+    _tables: dict[str, list[MachineFiles]] = field(default_factory=dict)  # [[machine]] tables by config file
 
     def __post_init__(self) -> None:
         self._fixed = load_file(Path(self.config_file)) if self.config_file else None
@@ -210,9 +214,10 @@ class Finder:
 
     # -- machines ------------------------------------------------------------------------------------------
     def machines_of(self, path: Path, known: Sequence[Startup] = ()) -> list[MachineFiles]:
-        """The machines a list belongs to: every start-up list (of `known`, or beside the list) that names
-        it, else the lists of its folder that no start-up list names. A start-up list is a machine of its
-        own. Nothing for a file that is no member of any machine (not a list `lint FOLDER` would take)."""
+        """The machines a list belongs to (see the module's description): every start-up list (of `known`, or
+        beside the list) and every `[[machine]]` table of its configuration that names it; else, for axis XML,
+        the XML files of its folder. A start-up list is a machine of its own. Nothing for a list that is no
+        member of any machine: it is compared with no other list."""
         if is_startup_list(path):
             try:
                 startup = self.startup(path)
@@ -223,12 +228,35 @@ class Finder:
             return []  # it changes one list; it is no axis of its own
         startups = _unique([*known, *self.startups_around(path.parent)])
         naming = [s for s in startups if any(_names(e.path, path) for e in s.axes)]
-        if naming:
-            return [self._startup_machine(startup) for startup in naming]
-        folder = self._folder_machine(path.parent, startups)
-        if not any(same_file(m.path, path) for m in folder.members if m.path is not None):
-            return []
-        return [folder]
+        declared = [m for m in self._declared(path) if any(_names(t.path, path) for t in m.members)]
+        if naming or declared:
+            return [*(self._startup_machine(startup) for startup in naming), *declared]
+        if is_xml(path.name):
+            folder = self._folder_machine(path.parent, startups)
+            if any(same_file(m.path, path) for m in folder.members if m.path is not None):
+                return [folder]
+        return []
+
+    def _declared(self, path: Path) -> list[MachineFiles]:
+        """The machines the `[[machine]]` tables of a list's configuration declare."""
+        config = self.config_for(path)
+        key = str(config.path)
+        if key not in self._tables:
+            self._tables[key] = [
+                MachineFiles(
+                    name,
+                    None,
+                    [
+                        Target(shown(f), f, self.config_for(f), (name,))
+                        for f in files
+                        if not self._excluded(config, f)
+                        and not_a_list_file(f) is None
+                        and not is_startup_list(f)
+                    ],
+                )
+                for name, files in config.declared_machines()
+            ]
+        return self._tables[key]
 
     def _startup_machine(self, startup: Startup) -> MachineFiles:
         default = startup.default
@@ -241,13 +269,12 @@ class Finder:
         return MachineFiles(str(startup.path), startup, members, defaults)
 
     def _folder_machine(self, folder: Path, startups: list[Startup]) -> MachineFiles:
-        """The lists of a folder that `achslint lint FOLDER` would take there (the same walk, one level) and
-        no start-up list names."""
+        """The axis XML files of a folder that no start-up list names: the exports of one TwinCAT project."""
         lists, _ = self._walk(folder, Scope.of([str(folder)]), Discovery(), recursive=False)
         members = [
             Target(str(path), path, self.config_for(path), (str(folder),))
             for path in lists
-            if not is_default_list(path) and not is_list_update(path) and not _named_by(startups, path)
+            if is_xml(path.name) and not is_list_update(path) and not _named_by(startups, path)
         ]
         return MachineFiles(str(folder), None, members)
 
@@ -297,7 +324,7 @@ class Finder:
                 found.add(Target(name, path, self.config_for(path), (), base))
                 continue
             machines = [] if is_default_list(path) else self.machines_of(path, known)
-            keys = tuple(m.key for m in machines) or (str(path.parent),)
+            keys = tuple(m.key for m in machines)  # none: compared with no other list
             defaults = next((m.defaults for m in machines if m.defaults is not None), None)
             found.add(Target(name, path, self.config_for(path), keys, defaults))
             self._remember(machines, found)
