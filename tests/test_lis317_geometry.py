@@ -112,3 +112,18 @@ def test_long_axis_keeps_the_default_cam(refpkt: int) -> None:
     strategy = classify(resolve_bytes(text.encode(), "achsmds1.lis"), 0)
     # Width three fast braking distances: 3·83.333²/(2·100) = 104.166 mm.
     assert strategy.default_scenario().cam == pytest.approx((100.0, 100.0 + 3 * 83.333**2 / 200))
+
+
+def test_not_checked_is_an_info_the_rule_documents() -> None:
+    # The simulated drive's default geometry leaves no room for any assumed cam: LIS317 says it could not
+    # check, as an info finding, and the rule's documentation names that severity (the invariant tests
+    # compare every emitted severity with the documented ones).
+    from achslint.core.diagnostics import Severity
+    from achslint.docs import rule_text
+    from achslint.rules import registry
+
+    found = [d for d in lint_text("kenngr.antr_typ 1\nlr_hw[0].cam_level 0\nEnde\n") if d.code == "LIS317"]
+    assert [d.severity for d in found] == [Severity.INFO]
+    rule = registry()["LIS317"]
+    assert rule.severities == (Severity.WARNING, Severity.INFO)
+    assert "warning by default; info when it cannot check" in rule_text(rule)

@@ -19,7 +19,8 @@ def rules_table() -> str:
 
 
 def rule_text(rule: Rule) -> str:
-    header = f"{rule.code} {rule.name} ({rule.severity.value} by default; fix: {rule.fix})"
+    when = "; info when it cannot check" if rule.info_when_unchecked else ""
+    header = f"{rule.code} {rule.name} ({rule.severity.value} by default{when}; fix: {rule.fix})"
     parts = [header, "=" * len(header), "", rule.summary, ""]
     for title in SECTIONS:
         body = rule.section(title)

@@ -61,6 +61,13 @@ class Rule:
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
     refuses_homing: bool = False  # a finding means the CNC does not run the homing (LIS306, LIS319)
+    # an info finding says the check could not run (LIS317 on an axis too short for any assumed cam)
+    info_when_unchecked: bool = False
+
+    @property
+    def severities(self) -> tuple[Severity, ...]:
+        """Every severity the rule emits: its own, and info for "not checked" where the rule says so."""
+        return (self.severity, Severity.INFO) if self.info_when_unchecked else (self.severity,)
 
     @property
     def scopes(self) -> tuple[Scope, ...]:
@@ -108,5 +115,6 @@ def registry() -> dict[str, Rule]:
             parameters=tuple(getattr(module, "PARAMETERS", ())),
             produced_by=getattr(module, "PRODUCED_BY", "lint"),
             refuses_homing=getattr(module, "CNC_REFUSES_HOMING", False),
+            info_when_unchecked=getattr(module, "INFO_WHEN_UNCHECKED", False),
         )
     return rules

@@ -71,6 +71,7 @@ if TYPE_CHECKING:
 CODE = "LIS317"
 NAME = "homing-ends-outside-limits"
 FIX = "none"
+INFO_WHEN_UNCHECKED = True  # the assumed cam does not fit between the limits: said, not passed
 PARAMETERS = (
     "getriebe[i].pos_refpkt",
     "kenngr.swe_neg",
