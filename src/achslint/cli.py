@@ -322,7 +322,7 @@ def lint(
     except (ConfigError, OutputIsInput) as exc:
         _fail(str(exc))
     _tell(outcome.errors, outcome.notes, quiet)
-    if not outcome.results and not outcome.errors and not allow_empty:
+    if not outcome.results and not outcome.skipped and not outcome.errors and not allow_empty:
         _fail(_nothing_found(paths))
     report_stream = sys.stdout
     if fix:

@@ -28,6 +28,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from ..catalogue.kinds import STARTUP
 from ..core.decode import UnreadableInput
 from ..core.files import (
     Scope,
@@ -41,7 +42,9 @@ from ..core.files import (
     same_file,
 )
 from ..machine.startup import Startup, is_default_list, is_startup_list, read_startup
+from ..syntax.parser import parse_bytes
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
+from .linter import list_kind
 
 # Files found in a folder that are skipped with a note rather than reported as unreadable.
 SKIPPED_KINDS = (
@@ -307,7 +310,7 @@ class Finder:
                 continue
             if problem is not None:
                 found.errors.append(f"{raw}: {problem}")
-            elif is_startup_list(path):
+            elif is_startup(path):
                 self._take_startup(path, scope, found, named=True)
             else:
                 lists.append((raw, path))
@@ -425,6 +428,23 @@ class Finder:
     def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
         patterns = self.overrides.apply(config.settings).exclude
         return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
+
+
+HEAD_BYTES = 64 * 1024  # what is read of a named file to tell a start-up list by its content
+
+
+def is_startup(path: Path) -> bool:
+    """A start-up list by its name (`hochlauf*.lis`, `startup*.lis`) or, named otherwise, by its content
+    (`achs_mds[0]`, `zahl_mds` ...: `catalogue.kinds`), read from the head of the file."""
+    if is_startup_list(path):
+        return True
+    if is_xml(path.name):
+        return False
+    try:
+        file = parse_bytes(read_list(path, HEAD_BYTES), str(path))
+    except (OSError, UnreadableInput):
+        return False  # the lint of the file says why
+    return list_kind(file, str(path)).id == STARTUP.id
 
 
 UPDATE_SUFFIXES = ("-update", "-revert", "_update", "_revert")

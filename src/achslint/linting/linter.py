@@ -11,13 +11,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..axis.source import NOT_A_LIST, looks_like_a_list
+from ..catalogue import catalogue
+from ..catalogue.kinds import AXIS, BY_ID, DEFAULT_AXIS, Kind, kind_of
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml
 from ..machine import startup as machine
 from ..rules import Scope
 from ..rules.context import Context
-from ..syntax.parser import ListFile, parse_bytes
+from ..syntax.parser import ASSIGNMENT, ListFile, parse_bytes
 from .config import Overrides, ResolvedConfig, Settings
 from .engine import Policy, run
 from .suppression import Suppressions
@@ -39,6 +41,9 @@ class FileSettings:
     machine_in_file: bool = (
         True  # check the lists of one XML file as a machine (off: the caller groups files)
     )
+    # The list's kind when a start-up list's entry says it (`default_achs_mds` -> "default_axis"); None: told
+    # from the name (`default*mds*.lis`) or the content (`catalogue.kinds.kind_of`).
+    kind: str | None = None
 
     @classmethod
     def of(
@@ -109,7 +114,49 @@ def lint_file(
         return FileResult(name, [], f"{name}: {exc}")
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
+    skipped = not_checked(file, name, settings.kind)
+    if skipped is not None:
+        return FileResult(name, [], note=skipped)
     return _check_file(file, name, settings, default_file=default_file)
+
+
+def list_kind(file: ListFile, name: str, given: str | None = None) -> Kind:
+    """The kind of a list: as the start-up list's entry says (`given`), a default list by its name, else told
+    by its content. A list whose first assignments are all axis parameters is an axis list without asking
+    the other catalogues (they are read only for a list that may be of another kind)."""
+    if given is not None:
+        return BY_ID[given]
+    if machine.is_default_list(Path(name)):
+        return DEFAULT_AXIS
+    axis = catalogue()
+    head = (line.path for line in file.lines[:AXIS_PROBE] if line.kind == ASSIGNMENT and line.path)
+    if all(axis.resolve(path) is not None for path in head):
+        return AXIS
+    guess = kind_of(file)
+    kind = guess.kind
+    if kind is None or kind.id == AXIS.id:
+        return AXIS
+    # Only clear evidence makes a list another kind: an axis list full of typos must still be checked (and
+    # its typos found), so a few names another catalogue happens to have are not enough.
+    assignments = sum(1 for line in file.lines[: guess.lines] if line.kind == ASSIGNMENT)
+    paths, ids = guess.paths.get(kind.id, 0), guess.ids.get(kind.id, 0)
+    if ids >= EVIDENCE or (paths >= EVIDENCE and 2 * paths >= assignments):
+        return kind
+    return AXIS
+
+
+AXIS_PROBE = 64  # lines looked at before the other kinds' catalogues are asked
+EVIDENCE = 3  # parameter ids in comments, or paths of another kind (at least half the list), that decide
+
+
+def not_checked(file: ListFile, name: str, given: str | None = None) -> str | None:
+    """The note for a list of a kind achslint does not check yet (a channel list, tool data ...), said once
+    instead of a finding for every parameter the axis catalogue does not know; None for an axis list."""
+    kind = list_kind(file, name, given)
+    if kind.id in (AXIS.id, DEFAULT_AXIS.id):
+        return None
+    ids = f" ({kind.prefix} parameters)" if kind.prefix else ""
+    return f"{name}: skipped, it is a {kind.name}{ids}; achslint checks axis lists only so far"
 
 
 def lint_parsed(
@@ -119,6 +166,9 @@ def lint_parsed(
     settings = settings or FileSettings()
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
+    skipped = not_checked(file, name, settings.kind)
+    if skipped is not None:
+        return FileResult(name, [], note=skipped)
     return _check_file(file, name, settings, default_file=default_file)
 
 
@@ -131,7 +181,9 @@ def _check_file(
 ) -> FileResult:
     # A default list (default_mds.lis) only supplies values underneath every axis: alone it is no axis,
     # so the rules that judge a whole axis do not run on it (they run on the axis lists that load it).
-    partial = embedded is None and machine.is_default_list(Path(name))
+    partial = embedded is None and (
+        settings.kind == DEFAULT_AXIS.id if settings.kind is not None else machine.is_default_list(Path(name))
+    )
     ctx = Context(
         name, file, settings.settings, embedded=embedded, default_file=default_file, default_list=partial
     )

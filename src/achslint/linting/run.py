@@ -91,6 +91,7 @@ class LintOutcome:
     results: list[FileResult]
     errors: list[str]
     notes: list[str] = field(default_factory=list)  # files skipped on purpose (FIFOs, links leading outside)
+    skipped: int = 0  # lists found and skipped on purpose (another kind of list, XML without an axis list)
 
     @property
     def failing(self) -> bool:
@@ -177,6 +178,7 @@ class LintRun:
         else:
             disk = list(_track(map(_lint_one, work), progress, len(work)))
         pairs: list[tuple[Target, FileResult]] = []
+        skipped = 0
         from_disk = iter(disk)
         for target in targets:
             if target.path is None:
@@ -184,8 +186,9 @@ class LintRun:
                 result = _process(data, target.name, self.settings_for(target), mode, None, None)
             else:
                 result = next(from_disk)
-            if result.note:
+            if result.note:  # skipped on purpose (a list of another kind, XML without an axis list)
                 found.notes.append(result.note)
+                skipped += 1
                 continue
             if result.error:
                 errors.append(result.error)
@@ -205,7 +208,7 @@ class LintRun:
                 keep_source=self.request.keep_source,
             )
         )
-        return LintOutcome(results, errors, found.notes)
+        return LintOutcome(results, errors, found.notes, skipped)
 
     def _context(self, context: list[Target]) -> list[tuple[Target, FileResult]]:
         """Lint the neighbours of named lists for their machine summaries only (never fixed, never shown)."""
