@@ -59,6 +59,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         (
             "machine.model",
             "machine.startup",
+            "machine.identity",
             "machine.channel",
             "machine.program",
             "machine.build",

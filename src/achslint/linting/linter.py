@@ -206,11 +206,13 @@ def _check_file(
 
 
 def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
-    """A list's machine summary with its positions moved into the XML file."""
+    """A list's machine summary with its positions moved into the XML file, and its TwinCAT tree item."""
     mapped = dict(summary)
     for key, value in summary.items():
         if key.endswith("_at") and value is not None:
             mapped[key] = embedded.position(*value)
+    if embedded.tree_item is not None:
+        mapped["identity"] = embedded.tree_item.identity()
     return mapped
 
 

@@ -3,7 +3,11 @@
 * TwinCAT (`.xml`, `.xti`, `.tsproj`): each `<AchsMds>` element holds a complete
   axis list as text (CDATA, plain text with character references, or both);
   `<DriveType>` and `<Spindle>` of the same `<IsgAxisDef>` describe the drive
-  type and whether the axis is a spindle.
+  type and whether the axis is a spindle. The element around the `<IsgAxisDef>`
+  is the axis's tree item: its `<ItemName>`, `<PathName>`
+  (`TICC^CNC^Axes^<name>`), `<ItemId>` and `<ObjectId>`, with the
+  `<DefaultChannel>` / `<DefaultIndex>` / `<DefaultProgName>` of the
+  `<IsgAxisDef>`, are the identity TwinCAT gives the axis (`TreeItem`).
 * ISG XML lists: `<AX_MDS>` with one element per parameter, named by id and
   index (`<P-AXIS-00152.0 Value="0"/>`), inside optional grouping elements.
 
@@ -25,7 +29,7 @@ import re
 from bisect import bisect_right
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 from xml.sax import SAXException
 from xml.sax.handler import ContentHandler
 
@@ -39,6 +43,78 @@ if TYPE_CHECKING:
     from xml.sax.xmlreader import AttributesImpl
 
 _ISG_ELEMENT = re.compile(r"(P-AXIS-[0-9]+)((?:\.[0-9]+)*)")
+# Elements of the <IsgAxisDef> itself, and those of the tree item around it (children of its parent element)
+_AXIS_FIELDS = frozenset(("DriveType", "Spindle", "DefaultChannel", "DefaultIndex", "DefaultProgName"))
+_ITEM_FIELDS = frozenset(("ItemName", "PathName", "ItemId", "ObjectId"))
+# (text, XML line, XML column) of one such element, by element name
+Fields = dict[str, tuple[str, int, int]]
+
+
+@dataclass
+class TreeItem:
+    """The TwinCAT tree item an axis list is embedded in: how TwinCAT itself names and numbers the axis.
+
+    Every export of one project may embed the same template header (`kopf.achs_nr 1`, `X_Achse`), while the
+    tree items differ: `path` (`TICC^CNC^Axes^Axis_X`) is unique in the project tree, `item_id` is the running
+    number of the axis items (1, 2, ...) and `object_id` is derived from it. `channel`, `index` and
+    `program_name` (`DefaultChannel`, `DefaultIndex`, `DefaultProgName` of the `<IsgAxisDef>`) place the axis
+    in a channel. `positions` holds the XML (line, column) of every element read, by element name.
+    """
+
+    name: str | None = None
+    path: str | None = None
+    item_id: int | None = None
+    object_id: str | None = None
+    channel: int | None = None
+    index: int | None = None
+    program_name: str | None = None
+    positions: dict[str, tuple[int, int]] = field(default_factory=dict)
+
+    @property
+    def label(self) -> str:
+        """How messages name the item: its path in the tree, else its name, else its ItemId."""
+        return self.path or self.name or f"ItemId {self.item_id}"
+
+    def identity(self) -> dict[str, Any]:
+        """The item as the machine summary carries it (`identity`; a plain dict, see `machine.startup.summary`)."""
+        return {
+            "source": "TwinCAT tree item",
+            "item": self.label,
+            "name": self.name,
+            "path": self.path,
+            "item_id": self.item_id,
+            "object_id": self.object_id,
+            "channel": self.channel,
+            "index": self.index,
+            "program_name": self.program_name,
+            "positions": dict(self.positions),
+        }
+
+    @classmethod
+    def of(cls, item: Fields, axis: Fields) -> TreeItem | None:
+        """The tree item from the elements around an <IsgAxisDef> and in it; None when there is no tree item
+        (an <IsgAxisDef> written without one names no identity, whatever its Default* elements say)."""
+        if not item:
+            return None
+
+        def number(fields: Fields, key: str) -> int | None:
+            value = parse_int(fields[key][0]) if key in fields else None
+            return value if isinstance(value, int) else None
+
+        def text(fields: Fields, key: str) -> str | None:
+            return fields[key][0] or None if key in fields else None
+
+        positions = {key: (line, column) for key, (_, line, column) in (*item.items(), *axis.items())}
+        return cls(
+            text(item, "ItemName"),
+            text(item, "PathName"),
+            number(item, "ItemId"),
+            text(item, "ObjectId"),
+            number(axis, "DefaultChannel"),
+            number(axis, "DefaultIndex"),
+            text(axis, "DefaultProgName"),
+            positions,
+        )
 
 
 @dataclass
@@ -54,6 +130,7 @@ class EmbeddedList:
     drive_type_line: int | None = None
     spindle: bool | None = None
     spindle_line: int | None = None
+    tree_item: TreeItem | None = None  # TwinCAT: the tree item around the <IsgAxisDef>, when there is one
     # TwinCAT: where each piece of the text starts in the XML file, as the parser reported it:
     # text offsets (ascending) and the XML (line, column) of each.
     pieces: list[int] = field(default_factory=list)
@@ -156,16 +233,22 @@ class _Collector(ContentHandler):
         self.current: EmbeddedList | None = None  # the <AchsMds> being read
         self.chunks: list[str] = []
         self.offset = 0
-        self.field: tuple[str, int] | None = None  # <DriveType> / <Spindle> being read, with its line
+        self.field: tuple[str, int, int] | None = None  # an element of _AXIS_FIELDS / _ITEM_FIELDS being read
         self.field_text: list[str] = []
-        self.axis_fields: list[dict[str, tuple[str, int]]] = []  # DriveType / Spindle: (text, line)
+        self.axis_fields: list[Fields] = []  # the _AXIS_FIELDS of each <IsgAxisDef> we are inside
         self.elements = 0  # elements started so far
+        self.depth = 0  # elements open now
+        # By the depth of an open element: the _ITEM_FIELDS among its children, and the lists of the
+        # <IsgAxisDef> children it holds with that <IsgAxisDef>'s fields (they get the tree item when it ends).
+        self.item_fields: dict[int, Fields] = {}
+        self.in_item: dict[int, list[tuple[list[EmbeddedList], Fields]]] = {}
 
     def _here(self) -> tuple[int, int]:
         return self.locator.getLineNumber(), (self.locator.getColumnNumber() or 0) + 1
 
     def startElement(self, name: str, attrs: AttributesImpl) -> None:
         self.elements += 1
+        self.depth += 1
         local = _local(name)
         line, column = self._here()
         if local == "IsgAxisDef":
@@ -174,8 +257,8 @@ class _Collector(ContentHandler):
         elif local == "AchsMds" and self.current is None:
             self.current = EmbeddedList("", "AchsMds", line, column)
             self.chunks, self.offset = [], 0
-        elif local in ("DriveType", "Spindle") and self.axis_defs:
-            self.field, self.field_text = (local, line), []
+        elif (local in _AXIS_FIELDS and self.axis_defs) or local in _ITEM_FIELDS:
+            self.field, self.field_text = (local, line, column), []
         elif local == "AX_MDS":
             self.isg_depth += 1
             if self.isg_depth == 1:
@@ -202,19 +285,31 @@ class _Collector(ContentHandler):
                 self.axis_defs[-1].append(self.current)
             self.current = None
         elif self.field is not None and local == self.field[0]:
-            self.axis_fields[-1][local] = ("".join(self.field_text).strip(), self.field[1])
+            read = ("".join(self.field_text).strip(), *self.field[1:])
+            if local in _ITEM_FIELDS:
+                self.item_fields.setdefault(self.depth - 1, {})[local] = read
+            else:
+                self.axis_fields[-1][local] = read
             self.field = None
         elif local == "IsgAxisDef" and self.axis_defs:
-            self._describe(self.axis_defs.pop(), self.axis_fields.pop())
+            lists, fields = self.axis_defs.pop(), self.axis_fields.pop()
+            self._describe(lists, fields)
+            self.in_item.setdefault(self.depth - 1, []).append((lists, fields))
         elif local == "AX_MDS" and self.isg_depth:
             self.isg_depth -= 1
             if not self.isg_depth:
                 _, lines, line_map = self.isg[-1]
                 lines.append("Ende")
                 line_map.append(self._here())
+        item = self.item_fields.pop(self.depth, {})
+        for lists, fields in self.in_item.pop(self.depth, ()):
+            tree_item = TreeItem.of(item, fields)
+            for embedded in lists:
+                embedded.tree_item = tree_item
+        self.depth -= 1
 
     @staticmethod
-    def _describe(lists: list[EmbeddedList], fields: dict[str, tuple[str, int]]) -> None:
+    def _describe(lists: list[EmbeddedList], fields: Fields) -> None:
         """Give the lists of one <IsgAxisDef> its drive type and spindle flag."""
         for embedded in lists:
             if "DriveType" in fields:
