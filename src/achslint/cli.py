@@ -6,9 +6,10 @@ rich, pydantic, the rules, a command's output module) happen inside the commands
 `--version` stay fast.
 """
 
-from __future__ import annotations
-
+# No `from __future__ import annotations` here: typer reads every option's annotation, and string
+# annotations would each be compiled and evaluated on every run (a third of building the lint command).
 import contextlib
+import copy
 import functools
 import gc
 import os
@@ -543,7 +544,7 @@ def explain(
         shown.PARAMETER[output_format.value](parameter_card(parameter), screen)
 
 
-def _screen(color: Color) -> Screen:
+def _screen(color: Color) -> "Screen":
     """Standard output for a command's report, coloured as --color says."""
     from .output import Screen
 
@@ -881,7 +882,7 @@ def main(argv: list[str] | None = None) -> int:
     _tolerant_streams()
     try:
         with stopping_on_signals():
-            code = _command().main(args=args, prog_name="achslint", standalone_mode=False)
+            code = _command(args).main(args=args, prog_name="achslint", standalone_mode=False)
     except Stopped as stop:
         _say(stop.words)
         return stop.exit_code
@@ -898,11 +899,35 @@ def main(argv: list[str] | None = None) -> int:
     return code if isinstance(code, int) else EXIT_OK
 
 
+def _command(args: list[str]) -> Any:  # a click command (typer vendors click: no stable type to name)
+    """What runs `args`: when they start with a command's name, a tree holding only that command.
+
+    typer builds a command from its function's signature (every option's annotation is read), and a run
+    uses one: building all ten was about 4 % of a cold `lint`. `--help`, `--version`, completion and a
+    misspelt command name get the whole tree.
+    """
+    name = args[0] if args else ""
+    return _command_tree(name if name in _command_names() else None)
+
+
+def _command_names() -> dict[str, Any]:
+    """Each command's name (as typed on the command line) and its typer registration."""
+    return {
+        info.name or typer.main.get_command_name(info.callback.__name__): info
+        for info in app.registered_commands
+        if info.callback is not None
+    }
+
+
 @functools.cache
-def _command() -> Any:  # a click command (typer vendors click: no stable type to name)
-    """The command tree of `app`, built once per process: typer would rebuild it from every command's
-    signature on each call, which an editor or a test that runs many commands in one process pays for."""
-    return typer.main.get_command(app)
+def _command_tree(only: str | None) -> Any:
+    """The command tree of `app` (or of `app` with the one command `only`), built once per process:
+    typer would rebuild it on each call, which an editor or a test that runs many commands pays for."""
+    if only is None:
+        return typer.main.get_command(app)
+    single = copy.copy(app)  # same callback (--version) and settings; app's own list is left alone
+    single.registered_commands = [_command_names()[only]]
+    return typer.main.get_command(single)
 
 
 def run() -> NoReturn:

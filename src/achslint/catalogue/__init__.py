@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import re
 import sys
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from pathlib import Path
@@ -102,7 +103,7 @@ class Parameter:
     @property
     def member(self) -> str:
         """Last path member without index: `vb_reflow` for `getriebe[i].vb_reflow`."""
-        return self.path.rsplit(".", 1)[-1].split("[", 1)[0]
+        return _member(self.path)
 
     @cached_property
     def limits(self) -> tuple[float | None, float | None]:
@@ -189,6 +190,34 @@ class Resolution:
         )
 
 
+def _member(path: str) -> str:
+    return path.rsplit(".", 1)[-1].split("[", 1)[0]
+
+
+class _ByKey(Mapping[str, "Parameter"]):
+    """Parameters by a key (id or path pattern), each made by `make` from its pattern when looked up."""
+
+    def __init__(self, patterns: dict[str, str], make: Callable[[str], Parameter]) -> None:
+        self._patterns = patterns
+        self._make = make
+
+    def __getitem__(self, key: str) -> Parameter:
+        return self._make(self._patterns[key])
+
+    def get(self, key: str, default: Any = None) -> Any:  # Mapping.get would go through a KeyError
+        pattern = self._patterns.get(key)
+        return default if pattern is None else self._make(pattern)
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._patterns
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._patterns)
+
+    def __len__(self) -> int:
+        return len(self._patterns)
+
+
 def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:
     """`getriebe[i].vb_reflow`, (2,) -> `getriebe[2].vb_reflow` (placeholders without an index stay `[i]`)."""
     if not indices:
@@ -199,14 +228,27 @@ def fill_indices(pattern: str, indices: tuple[int, ...]) -> str:
 
 
 class Catalogue:
+    """The catalogue's parameters by id and by path pattern, with aliases and closest-name search.
+
+    A `Parameter` is made from its JSON entry when first asked for, once: a list names a few hundred of
+    the catalogue's parameters, and making all of them cost a cold `lint` more than reading the JSON.
+    """
+
     def __init__(self, data: dict[str, Any]):  # the parsed catalogue.json
-        self.parameters: list[Parameter] = [self._entry(raw) for raw in data["parameters"]]
-        self.by_id: dict[str, Parameter] = {p.id: p for p in self.parameters}
-        self.by_pattern: dict[str, Parameter] = {p.path: p for p in self.parameters}
+        self._entries: dict[str, dict[str, Any]] = {raw["path"]: raw for raw in data["parameters"]}
+        self._made: dict[str, Parameter] = {}
+        self.by_pattern: Mapping[str, Parameter] = _ByKey(
+            {pattern: pattern for pattern in self._entries}, self._parameter
+        )
+        self.by_id: Mapping[str, Parameter] = _ByKey(
+            {raw["id"]: pattern for pattern, raw in self._entries.items()}, self._parameter
+        )
         self.aliases: dict[str, tuple[Parameter, Alias]] = {}
-        for parameter in self.parameters:
-            for alias in parameter.aliases:
-                self.aliases[alias.path] = (parameter, alias)
+        for pattern, raw in self._entries.items():
+            if raw.get("aliases"):
+                parameter = self._parameter(pattern)
+                for alias in parameter.aliases:
+                    self.aliases[alias.path] = (parameter, alias)
         for wrong, right in data.get("misspellings", {}).items():
             self.aliases.setdefault(wrong, (self.by_pattern[right], Alias(wrong, "misspelling")))
         self.bitfields: dict[str, dict[int, str]] = {
@@ -216,6 +258,18 @@ class Catalogue:
         self.drive_type_names: dict[int, str] = {int(k): v for k, v in data.get("drive_types", {}).items()}
         self._resolved: dict[str, Resolution | None] = {}
         self._suggestions: dict[tuple[str, int], tuple[str, ...]] = {}
+
+    @cached_property
+    def parameters(self) -> list[Parameter]:
+        """Every parameter, in catalogue order."""
+        return [self._parameter(pattern) for pattern in self._entries]
+
+    def _parameter(self, pattern: str) -> Parameter:
+        """The parameter of a path pattern, made from its entry on first use (the same object after)."""
+        made = self._made.get(pattern)
+        if made is None:  # setdefault: threads that make it at once all get the first one stored
+            made = self._made.setdefault(pattern, self._entry(self._entries[pattern]))
+        return made
 
     @staticmethod
     def _entry(raw: dict[str, Any]) -> Parameter:
@@ -280,8 +334,8 @@ class Catalogue:
     @cached_property
     def _by_member(self) -> dict[str, list[str]]:
         table: dict[str, list[str]] = {}
-        for parameter in self.parameters:
-            table.setdefault(parameter.member, []).append(parameter.path)
+        for pattern in self._entries:
+            table.setdefault(_member(pattern), []).append(pattern)
         return table
 
     def suggest(self, path: str, limit: int = 3) -> list[str]:
