@@ -90,7 +90,7 @@ class ChannelList:
     def other_names(self) -> list[tuple[ChannelAxis, ChannelAxis]]:
         """(first, again) for each slot that gives a logical axis another name than an earlier slot of the
         same kind gave it: two slots of the axis groups, or two spindles. (A spindle and an axis of a group
-        with one number are left alone: a spindle can also work as a rotary axis.)"""
+        with one number are left to LIS513: the axis list is a spindle or it is not, so one slot is wrong.)"""
         first: dict[tuple[bool, int], ChannelAxis] = {}
         found = []
         for axis in self.axes:

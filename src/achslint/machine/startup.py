@@ -30,7 +30,10 @@ STARTUP_NAMES = ("hochlauf*.lis", "startup*.lis")
 # between worker processes. A member of a machine is (list name, summary).
 Summary = dict[str, Any]
 Member = tuple[str, Summary]
-_ENTRY = re.compile(r"achs_mds\[[0-9]+\]|default_achs_mds|sda_mds\[[0-9]+\]|default_sda_mds")
+_ENTRY = re.compile(
+    r"achs_mds\[[0-9]+\]|default_achs_mds|sda_mds\[[0-9]+\]|default_sda_mds|achs_kw\[[0-9]+\]"
+)
+COUNTS = ("zahl_mds", "zahl_kw")  # how many achs_mds[i] / achs_kw[i] entries the CNC reads (P-STUP-00014/16)
 
 
 @dataclass
@@ -44,6 +47,17 @@ class StartupEntry:
     looked: Path | None = None  # where the file was looked for
 
 
+@dataclass(frozen=True)
+class StartupCount:
+    """`zahl_mds` or `zahl_kw` as the start-up list writes it (the last assignment)."""
+
+    key: str
+    value: int | None  # None when the value is not a whole number
+    raw: str
+    line: int
+    column: int
+
+
 @dataclass
 class Startup:
     path: Path
@@ -53,6 +67,8 @@ class Startup:
     root_origin: str = ""  # how the root was chosen, in words (for LIS504)
     channels: list[StartupEntry] = field(default_factory=list)  # channel lists, sda_mds[i]
     default_channel: StartupEntry | None = None  # default_sda_mds
+    compensations: list[StartupEntry] = field(default_factory=list)  # axis compensation lists, achs_kw[i]
+    counts: dict[str, StartupCount] = field(default_factory=dict)  # zahl_mds, zahl_kw when written
 
 
 def is_startup_list(path: Path) -> bool:
@@ -120,19 +136,26 @@ def read_startup(
 
     Raises `OSError` / `decode.UnreadableInput` when the start-up list cannot be read.
     """
+    from ..syntax.numbers import parse_integer
     from ..syntax.parser import parse_bytes
 
-    entries = [
-        (line.path, line.value, line)
-        for line in parse_bytes(read_list(path), str(path)).assignments()
-        if line.path_ok and line.path and line.value is not None and _ENTRY.fullmatch(line.path)
-    ]
+    entries = []
+    counts: dict[str, StartupCount] = {}
+    for line in parse_bytes(read_list(path), str(path)).assignments():
+        if not line.path_ok or not line.path or line.value is None:
+            continue
+        if _ENTRY.fullmatch(line.path):
+            entries.append((line.path, line.value, line))
+        elif line.path in COUNTS:
+            number = parse_integer(line.value)
+            count = number if isinstance(number, int) else None
+            counts[line.path] = StartupCount(line.path, count, line.value, line.number, line.value_column)
     if cnc_root is None:
         cnc_root = default_cnc_root(path)
         above = cnc_root != Path(os.path.abspath(path)).parent
         root_origin = f"{'the folder above `listen/`' if above else 'the start-up list folder'}; --cnc-root sets another"
     root = Path(os.path.abspath(cnc_root))
-    startup = Startup(path, root=root, root_origin=root_origin)
+    startup = Startup(path, root=root, root_origin=root_origin, counts=counts)
     for key, value, line in entries:
         found, refused, looked = _resolve(value, root, root_origin or "as given", scope)
         entry = StartupEntry(key, value, line.number, line.value_column, found, refused, looked)
@@ -142,6 +165,8 @@ def read_startup(
             startup.default_channel = entry
         elif entry.key.startswith("sda_mds"):
             startup.channels.append(entry)
+        elif entry.key.startswith("achs_kw"):
+            startup.compensations.append(entry)
         else:
             startup.axes.append(entry)
     return startup
@@ -153,6 +178,10 @@ def summary(values: ResolvedAxis) -> Summary:
     def at(path: str) -> tuple[int, int] | None:
         setting = values.in_list(path)
         return (setting.line.number, setting.line.path_column) if setting else None
+
+    def written(path: str) -> str | None:
+        setting = values.setting(path)
+        return setting.line.value if setting else None
 
     return {
         "achs_nr": values.get("kopf.achs_nr"),
@@ -167,6 +196,10 @@ def summary(values: ResolvedAxis) -> Summary:
         "homing_type": values.homing_type,  # in force: after corrections, the drive's default when unset
         "homing_type_at": at("kenngr.homing.homing_type"),
         "axis_type": values.axis_type,
+        "axis_type_written": written("kenngr.achs_typ"),  # as the list (or the default list) writes it
+        "axis_type_at": at("kenngr.achs_typ"),
+        "achs_mode": values.get("kenngr.achs_mode"),
+        "achs_mode_at": at("kenngr.achs_mode"),
     }
 
 

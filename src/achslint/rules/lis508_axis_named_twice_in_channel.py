@@ -14,8 +14,8 @@ P-CHAN-00007) is the name NC programs write, its `log_achs_nr` the
 add an axis; it makes one axis answer to two names, so a program can command
 it twice in one block, and the slot meant for another axis is missing that
 axis. `explain` and `dry-run` use the first name and say so. A spindle that
-also stands in the axis group with its number is not reported: a spindle can
-work as a rotary axis.
+also stands in the axis group with its number is LIS513's finding, not this
+one's: a spindle cannot be a path axis.
 
 Example
 -------
