@@ -1,20 +1,26 @@
 """What keeps a cold `achslint lint` fast (issue 23; measured by `benchmarks/run --only cold`).
 
 The budget itself is a timing and lives in the benchmark; these tests pin the mechanisms behind it: the
-CLI builds only the command it runs, and the catalogue makes a parameter when it is first asked for.
+CLI builds only the command it runs, the catalogue makes a parameter when it is first asked for, and the
+code `dataclasses` compiles is kept between runs without ever changing what a class does.
 """
 
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 import typing
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 import typer.main
 
 from achslint import cli
 from achslint.catalogue import Catalogue
+from achslint.core import codecache
 
 from .conftest import FIXTURES, ROOT
 
@@ -124,3 +130,123 @@ def test_a_lint_makes_only_the_parameters_it_looks_at(made: list[str]) -> None:
     assert known
     assert len(set(made)) < len(data["parameters"]) / 2
     assert known <= set(made)
+
+
+# -- the dataclass code cache ----------------------------------------------------------------------------
+
+# A process that makes a few dataclasses through the cache and prints what they do and how much it compiled.
+PROBE = """
+import dataclasses, json, sys
+from achslint.core import codecache
+cache = codecache.install()
+
+@dataclasses.dataclass(frozen=True)
+class Point:
+    x: int
+    y: int = 2
+    tags: tuple = ()
+
+@dataclasses.dataclass(order=True)
+class Count:
+    name: str
+    seen: list = dataclasses.field(default_factory=list)
+
+p = Point(1)
+try:
+    p.x = 5
+    frozen = False
+except dataclasses.FrozenInstanceError:
+    frozen = True
+c = Count("a")
+c.seen.append(1)
+print(json.dumps({
+    "compiled": cache.compiled if cache else None,
+    "repr": [repr(p), repr(c)],
+    "eq": [p == Point(1, 2), p == Point(2), Count("a") < Count("b")],
+    "hash": hash(p) == hash(Point(1)),
+    "frozen": frozen,
+    "fields": [f.name for f in dataclasses.fields(Point)],
+    "init": str(__import__("inspect").signature(Point)),
+    "fresh_list": Count("b").seen,
+}))
+"""
+
+
+def _probe(cache_home: Path) -> dict[str, typing.Any]:
+    env = {**os.environ, "XDG_CACHE_HOME": str(cache_home)}
+    done = subprocess.run([sys.executable, "-c", PROBE], capture_output=True, text=True, env=env, timeout=60)
+    assert done.returncode == 0, done.stderr
+    result: dict[str, typing.Any] = json.loads(done.stdout)
+    return result
+
+
+def _plain_dataclasses() -> dict[str, typing.Any]:
+    done = subprocess.run(
+        [sys.executable, "-c", PROBE.replace("cache = codecache.install()", "cache = None")],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 0, done.stderr
+    result: dict[str, typing.Any] = json.loads(done.stdout)
+    return result
+
+
+def test_the_second_run_compiles_no_dataclass_method_and_the_classes_are_the_same(tmp_path: Path) -> None:
+    first = _probe(tmp_path)
+    second = _probe(tmp_path)
+    assert first["compiled"] > 0
+    assert second["compiled"] == 0
+    plain = _plain_dataclasses()
+    for result in (first, second):
+        assert {k: v for k, v in result.items() if k != "compiled"} == {
+            k: v for k, v in plain.items() if k != "compiled"
+        }
+    assert first["frozen"] and first["eq"] == [True, False, True] and first["hash"]
+
+
+def test_a_damaged_or_foreign_cache_file_is_compiled_again(tmp_path: Path) -> None:
+    folder = tmp_path / "achslint"
+    folder.mkdir(mode=0o700)
+    path = Path(codecache.cache_path(str(folder)))
+    for damage in (b"", b"\x00garbage", b"{" * 100, __import__("marshal").dumps({"text": "not code", 1: 2})):
+        path.write_bytes(damage)
+        result = _probe(tmp_path)
+        assert result["compiled"] > 0 and result["frozen"]
+        assert _probe(tmp_path)["compiled"] == 0  # written again, whole
+
+
+def test_no_cache_in_a_folder_others_can_write(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    if os.name != "posix":
+        pytest.skip("folder permissions are POSIX")
+    folder = tmp_path / "achslint"
+    folder.mkdir()
+    folder.chmod(0o777)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert codecache.private_folder() is None
+    assert _probe(tmp_path)["compiled"] is None  # install() declined: every text compiled as without it
+    assert not list(folder.glob("dataclass-code-*"))
+
+
+def test_the_cached_code_is_what_compiling_the_text_gives() -> None:
+    text = "def __create_fn__(x):\n def f(self, a):\n  return (a, x)\n return f"
+    cache = codecache.CodeCache(os.devnull)
+    code = cache.code(text)
+    assert cache.code(text) is code and cache.compiled == 1
+    direct = compile(text, "<string>", "exec", dont_inherit=True)  # as `dataclasses` (no __future__) gets it
+    assert code.co_code == direct.co_code and code.co_consts[0].co_code == direct.co_consts[0].co_code
+    assert code.co_filename == "<string>" and code.co_flags == direct.co_flags
+
+
+def test_the_command_line_keeps_the_cache_and_a_calmer_collector(tmp_path: Path) -> None:
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
+    shown = subprocess.run(
+        [sys.executable, "-c", "import gc, achslint.cli; print(gc.get_threshold()[0])"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=60,
+    )
+    assert shown.returncode == 0, shown.stderr
+    assert int(shown.stdout) >= 10_000
+    assert list((tmp_path / "achslint").glob("dataclass-code-*.marshal"))

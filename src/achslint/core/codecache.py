@@ -1,0 +1,123 @@
+"""Keep the code `dataclasses` compiles for the classes it makes, so that the next run need not compile it.
+
+On Python 3.11 `@dataclass` writes each method it adds (`__init__`, `__repr__`, `__eq__`, `__hash__`,
+and `__setattr__` / `__delattr__` for frozen classes) as source text and compiles that text while the class
+is made: for the ~70 dataclasses a `lint` of one list loads, that is a fifth of the instructions of its cold
+start (valgrind; `benchmarks/run --only cold` times it). Compiled code depends only on the text and on the Python that compiled it,
+so the command line (`achslint.cli`) keeps it between runs: keyed by the text itself, in a file named after
+the Python version, in the private per-user folder that also holds Lark's grammar cache. A text not found
+there is compiled as before, and added to the file when the process ends.
+
+Nothing can go stale (a changed class writes a different text, a different Python a different file), and a
+missing, unreadable or damaged file only means compiling again. The file holds code objects, so it is read
+only from a folder that belongs to the user and that no one else can write to, as Lark's cache is.
+"""
+
+from __future__ import annotations
+
+import atexit
+import contextlib
+import dataclasses
+import marshal
+import os
+import sys
+from types import CodeType
+from typing import Any
+
+# Above this size the file is written anew with only what the last run used: edits to the classes leave
+# texts behind that no run asks for any more.
+MAX_BYTES = 2 << 20
+
+_installed = False
+
+
+def private_folder() -> str | None:
+    """The per-user cache folder (`$XDG_CACHE_HOME/achslint`, else `~/.cache/achslint`), created if missing;
+    None when it cannot be made or when anyone but the user could write to it."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    folder = os.path.join(base, "achslint")
+    try:
+        os.makedirs(folder, mode=0o700, exist_ok=True)
+        info = os.stat(folder)
+    except OSError:
+        return None
+    if (hasattr(os, "getuid") and info.st_uid != os.getuid()) or info.st_mode & 0o022:
+        return None
+    return folder
+
+
+def cache_path(folder: str) -> str:
+    """The file for this Python: compiled code and its marshal format belong to one interpreter version."""
+    tag = sys.implementation.cache_tag or sys.implementation.name
+    return os.path.join(folder, f"dataclass-code-{tag}-{sys.hexversion:x}.marshal")
+
+
+class CodeCache:
+    """Compiled dataclass methods by their source text: those read from `path`, and those compiled since."""
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.known = _read(path)
+        self.used: dict[str, CodeType] = {}
+        self.compiled = 0  # texts not found in the file
+
+    def code(self, source: str) -> CodeType:
+        code = self.used.get(source) or self.known.get(source)
+        if code is None:
+            # What exec(source) compiles: file name "<string>", and no __future__ flags from this module.
+            code = compile(source, "<string>", "exec", dont_inherit=True)
+            self.compiled += 1
+        self.used[source] = code
+        return code
+
+    def exec(self, source: Any, *args: Any, **kwargs: Any) -> None:
+        """`exec` as `dataclasses` calls it, with a text's code taken from the cache."""
+        exec(self.code(source) if type(source) is str else source, *args, **kwargs)
+
+    def save(self) -> None:
+        """Write the file again when this run compiled something (atomically; failures are ignored)."""
+        if not self.compiled:
+            return
+        merged = {**self.known, **self.used}
+        data = marshal.dumps(merged)
+        if len(data) > MAX_BYTES:
+            data = marshal.dumps(self.used)
+        temporary = f"{self.path}.{os.getpid()}.tmp"  # one per process: runs at once do not mix their bytes
+        try:
+            with open(temporary, "wb") as stream:
+                stream.write(data)
+            os.replace(temporary, self.path)
+        except OSError:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+
+
+def _read(path: str) -> dict[str, CodeType]:
+    """The texts and code in the file; empty when it is missing, too large or not what this module writes."""
+    try:
+        with open(path, "rb") as stream:
+            data = stream.read(MAX_BYTES + 1)
+        table = marshal.loads(data) if len(data) <= MAX_BYTES else None
+    except (OSError, EOFError, ValueError, TypeError):
+        return {}
+    if not isinstance(table, dict):
+        return {}
+    return {k: v for k, v in table.items() if type(k) is str and type(v) is CodeType}
+
+
+def install() -> CodeCache | None:
+    """Let `dataclasses` take its compiled methods from the cache for the rest of this process, and save
+    what it compiled at exit. Does nothing (None) when already done or when there is no private folder."""
+    global _installed
+    if _installed:
+        return None
+    folder = private_folder()
+    if folder is None:
+        return None
+    cache = CodeCache(cache_path(folder))
+    # `dataclasses` calls `exec` by its global name: a module attribute of that name is found before the
+    # built-in. The code run is what compiling the same text gives, so the classes are the same.
+    dataclasses.exec = cache.exec  # type: ignore[attr-defined]
+    atexit.register(cache.save)
+    _installed = True
+    return cache
