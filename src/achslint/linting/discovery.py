@@ -41,7 +41,7 @@ from ..core.files import (
     reason,
     same_file,
 )
-from ..machine.startup import Startup, is_default_list, is_startup_list, read_startup
+from ..machine.startup import Startup, StartupEntry, is_default_list, is_startup_list, read_startup
 from ..syntax.parser import parse_bytes
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
 from .linter import list_kind
@@ -72,6 +72,8 @@ class Target:
     # the start-up list that named it (or below). A list a start-up list reaches in another folder is checked,
     # not rewritten (unless --follow-startup).
     writable: bool = True
+    # The list's kind as a start-up list's entry names it ("axis", "default_axis"); None: told from the list.
+    kind: str | None = None
 
 
 @dataclass
@@ -230,7 +232,7 @@ class Finder:
         if is_list_update(path):
             return []  # it changes one list; it is no axis of its own
         startups = _unique([*known, *self.startups_around(path.parent)])
-        naming = [s for s in startups if any(_names(e.path, path) for e in s.axes)]
+        naming = [s for s in startups if any(_names(e.path, path) for e in _entries(s))]
         declared = [m for m in self._declared(path) if any(_names(t.path, path) for t in m.members)]
         if naming or declared:
             return [*(self._startup_machine(startup) for startup in naming), *declared]
@@ -265,7 +267,9 @@ class Finder:
         default = startup.default
         defaults = default.path if default is not None and not _names(default.path, startup.path) else None
         members = [
-            Target(shown(e.path), e.path, self.config_for(e.path), (str(startup.path),), defaults)
+            Target(
+                shown(e.path), e.path, self.config_for(e.path), (str(startup.path),), defaults, kind="axis"
+            )
             for e in startup.axes
             if e.path is not None and not same_file(e.path, startup.path)
         ]
@@ -326,15 +330,33 @@ class Finder:
                     )
                 found.add(Target(name, path, self.config_for(path), (), base))
                 continue
-            machines = [] if is_default_list(path) else self.machines_of(path, known)
+            kind = self.entry_kind(path, known)
+            axis = kind in (None, "axis")
+            machines = self.machines_of(path, known) if axis and not is_default_list(path) else []
             keys = tuple(m.key for m in machines)  # none: compared with no other list
             defaults = next((m.defaults for m in machines if m.defaults is not None), None)
-            found.add(Target(name, path, self.config_for(path), keys, defaults))
+            found.add(Target(name, path, self.config_for(path), keys, defaults, kind=kind))
             self._remember(machines, found)
         for path in named:  # the other members of its machines, for the machine-level rules
             if self.machine_rules(path):
                 found.members(self.machines_of(path, known))
         return found
+
+    def entry_kind(self, path: Path, known: Sequence[Startup] = ()) -> str | None:
+        """The kind of list a start-up list (of the run, or beside the list) names it as: `achs_mds[i]` an
+        axis list, `default_achs_mds` the default axis list, `sda_mds[i]` / `default_sda_mds` a (default)
+        channel list; None when no start-up list names it (its content tells)."""
+        for startup in _unique([*known, *self.startups_around(path.parent)]):
+            named = [
+                ("default_axis", [startup.default]),
+                ("axis", startup.axes),
+                ("default_channel", [startup.default_channel]),
+                ("channel", startup.channels),
+            ]
+            for kind, entries in named:
+                if any(e is not None and _names(e.path, path) for e in entries):
+                    return kind
+        return None
 
     def _remember(self, machines: list[MachineFiles], found: Discovery) -> None:
         for machine in machines:
@@ -474,6 +496,11 @@ def updated_list(path: Path) -> Path | None:
 
 def _names(entry: Path | None, path: Path) -> bool:
     return entry is not None and same_file(entry, path)
+
+
+def _entries(startup: Startup) -> list[StartupEntry]:
+    """Every list a start-up list names: its default list, axis lists and (default) channel lists."""
+    return [e for e in (startup.default, *startup.axes, startup.default_channel, *startup.channels) if e]
 
 
 def _named_by(startups: list[Startup], path: Path) -> bool:

@@ -123,9 +123,11 @@ class LintRun:
         return self.finder.config_for(path)
 
     def settings_for(self, target: Target) -> FileSettings:
-        return file_settings(
+        settings = file_settings(
             target.config, self.request.overrides, target.path or Path(target.name), self.request.keep_source
         )
+        settings.kind = target.kind
+        return settings
 
     def _machine_rules(self, path: Path) -> bool:
         """Whether a machine-level rule runs for a named list (only then are its neighbours read)."""

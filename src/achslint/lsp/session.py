@@ -224,6 +224,8 @@ class Session:
     def _lint(self, document: Document) -> Snapshot:
         config, config_error = self.config_for(document)
         settings = self.file_settings(config, document.path, document.name)
+        if document.path is not None:  # the kind a start-up list names it as, as `achslint lint` reads it
+            settings.kind = self.finder.entry_kind(document.path)
         name = document.name
         if document.path is not None and is_startup_list(document.path):
             return Snapshot(

@@ -1,0 +1,68 @@
+"""Every list by its kind (issue 24 item 2): a list is checked as an axis list only when it is one; lists of
+other kinds are skipped with one note, start-up lists are known by content, default lists by their entry."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+from .conftest import FIXTURES, run_cli
+
+SDK4 = FIXTURES / "machines" / "sdk4" / "listen"
+
+
+def diagnostics(result) -> list[tuple[str, str]]:
+    return [(Path(d["path"]).name, d["code"]) for d in json.loads(result.stdout)["diagnostics"]]
+
+
+def test_a_channel_list_passed_alone_is_skipped_with_one_note(tmp_path: Path) -> None:
+    # what pre-commit passes when only the default channel list changed: no LIS101 for its parameters; the
+    # start-up list beside it names it `default_sda_mds`
+    result = run_cli("lint", str(SDK4 / "default_sda.lis"), "--format", "json")
+    assert result.returncode == 0
+    assert diagnostics(result) == []
+    note = result.stderr.decode()
+    assert note.count("\n") == 1 and "skipped, it is a default channel list (P-CHAN parameters)" in note
+    # without a start-up list, its content tells (eleven channel parameters)
+    alone = tmp_path / "kanal.lis"
+    shutil.copy(SDK4 / "sda_mds1.lis", alone)
+    result = run_cli("lint", str(alone), "--format", "json")
+    assert result.returncode == 0 and diagnostics(result) == []
+    assert "skipped, it is a channel list (P-CHAN parameters)" in result.stderr.decode()
+
+
+def test_a_start_up_list_named_otherwise_is_a_start_up_list(tmp_path: Path) -> None:
+    folder = tmp_path / "listen"
+    shutil.copytree(FIXTURES / "machines" / "sdk" / "listen", folder)
+    (folder / "hochlauf.lis").rename(folder / "basis.lis")
+    result = run_cli("lint", str(folder / "basis.lis"), "--format", "json", "--select", "LIS101,LIS5")
+    assert result.returncode == 0, result.stderr
+    # its entries were followed (the axis lists were linted), its own lines were not read as axis parameters
+    assert json.loads(result.stdout)["summary"]["files"] == 3
+    assert diagnostics(result) == []
+
+
+def test_an_axis_list_full_of_typos_is_still_an_axis_list(tmp_path: Path) -> None:
+    axis = tmp_path / "achsmds1.lis"
+    axis.write_text("kopf.achs_nr 1\nkenngr.antr_typp 1\ngetriebe[0].vb_reflw 100\nkenngr.ref_richtng 1\nEnde\n")
+    result = run_cli("lint", str(axis), "--format", "json", "--select", "LIS101")
+    assert diagnostics(result) == [("achsmds1.lis", "LIS101")] * 3
+
+
+def test_a_few_names_of_another_catalogue_do_not_make_another_kind(tmp_path: Path) -> None:
+    # `a` and `b` happen to be parameter names of another list kind: two names are no evidence
+    tiny = tmp_path / "x.lis"
+    tiny.write_text("a 1\nb 2\nEnde\n")
+    result = run_cli("lint", str(tiny), "--format", "json", "--select", "LIS101")
+    assert [code for _, code in diagnostics(result)] == ["LIS101", "LIS101"]
+
+
+def test_a_default_list_named_otherwise_is_judged_as_a_default_list(tmp_path: Path) -> None:
+    # P-AXIS-00016 must be 0 in a default list (LIS506); the start-up entry, not the file name, says it is one
+    (tmp_path / "basis.lis").write_text("kopf.achs_nr 3\nEnde\n")
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    (tmp_path / "hochlauf.lis").write_text("default_achs_mds ./basis.lis\nachs_mds[0] ./achsmds1.lis\nEnde\n")
+    (tmp_path / ".achslint.toml").write_text('include = ["*.lis"]\n')
+    result = run_cli("lint", str(tmp_path), "--format", "json", "--select", "LIS506")
+    assert ("basis.lis", "LIS506") in diagnostics(result)
