@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 AXIS = """<?xml version="1.0" encoding="utf-8"?>
-<TreeItem><ItemName>{name}</ItemName>
+<TreeItem><ItemName>{name}</ItemName><ItemId>{number}</ItemId>
 <IsgAxisDef><DriveType>4</DriveType><Spindle>false</Spindle>
 <AchsMds><![CDATA[#TC_AXIS_DESC:    {name}
 kopf.achs_nr                     {number}
@@ -20,7 +20,8 @@ ZERO_OFFSETS = '<?xml version="1.0"?>\n<ZeroOffsets><Offset Axis="X" Value="0"/>
 
 
 def export(folder: Path) -> Path:
-    """Three axes under names TwinCAT chooses (no `achsmds` in them), the third reusing axis number 1."""
+    """Three axes under names TwinCAT chooses (no `achsmds` in them), the third reusing ItemId 1 (the tree
+    item's number, which LIS501 compares in TwinCAT exports)."""
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "Axis_X.xti").write_text(AXIS.format(name="X", number=1))
     (folder / "Axis_Y.xml").write_text(AXIS.format(name="Y", number=2))
