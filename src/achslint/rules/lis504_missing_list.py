@@ -10,7 +10,9 @@ configuration; otherwise it is the start-up list's folder, or the folder above
 SDK keeps `./listen/…` names in `listen/hochlauf.lis`). The message names the
 file looked for and the root. An entry whose file, links followed, lies outside
 the CNC root is not read: a warning says why. An entry that names the start-up
-list itself is an error too: it gives no list.
+list itself is an error too: it gives no list. So is a default list or a
+channel list that exists but cannot be read as a list (UTF-16, binary, not
+readable); an axis list like that is reported on the axis list itself.
 
 Why
 ---
@@ -52,10 +54,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
+from ..core.decode import UnreadableInput, decode
 from ..core.diagnostics import Diagnostic, Severity
-from ..core.files import same_file
+from ..core.files import read_list, reason, same_file
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from ..machine.startup import Member, Startup
 
 CODE = "LIS504"
@@ -71,9 +76,21 @@ _KINDS = {
 }
 
 
+def _unreadable(path: Path) -> str | None:
+    """Why an existing list cannot be read as a list, or None when it can."""
+    try:
+        decode(read_list(path))
+    except OSError as exc:
+        return str(exc) if exc.errno is None else reason(exc)
+    except UnreadableInput as exc:
+        return str(exc)
+    return None
+
+
 def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     for startup in startups:
         defaults = [entry for entry in (startup.default, startup.default_channel) if entry is not None]
+        not_linted = {id(entry) for entry in [*defaults, *startup.channels]}  # no finding of their own
         for entry in [*defaults, *startup.axes, *startup.channels]:
             if entry.path is not None and same_file(entry.path, startup.path):
                 severity, message = (
@@ -97,6 +114,12 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
                     f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
                     f"(the CNC root is {startup.root_origin}); the CNC aborts the start-up when a list "
                     "is missing",
+                )
+            elif id(entry) in not_linted and (why := _unreadable(entry.path)) is not None:
+                severity, message = (
+                    Severity.ERROR,
+                    f"`{entry.key}` names `{entry.raw}`, which cannot be read as a list: {why}; the CNC aborts "
+                    "the start-up when a list is unreadable",
                 )
             else:
                 continue

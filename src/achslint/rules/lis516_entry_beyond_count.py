@@ -1,0 +1,130 @@
+"""
+What
+----
+A start-up list entry that its count leaves out: an axis list
+`achs_mds[i]` (P-STUP-00015) whose index is not below `zahl_mds`
+(P-STUP-00014), or an axis compensation list `achs_kw[i]` (P-STUP-00017)
+whose index is not below `zahl_kw` (P-STUP-00016). A count that is not
+written is 0, its default, and then leaves out every entry.
+
+Why
+---
+The count says how many entries the CNC reads: `achs_mds[0]` up to
+`achs_mds[zahl_mds - 1]`. Entries beyond it are not considered, so the list
+such an entry names is never loaded: its axis does not exist in the CNC, or
+its compensation is not applied. A list added to the start-up list without
+raising the count is the usual cause. (TwinCAT writes both counts itself;
+this concerns start-up lists kept by hand.)
+
+Example
+-------
+```
+# file: hochlauf.lis
+zahl_mds          1
+achs_mds[0]       ./achsmds1.lis
+achs_mds[1]       ./achsmds2.lis      ( beyond zahl_mds 1: never loaded
+```
+
+```
+# file: achsmds1.lis
+kopf.achs_nr          1
+kopf.log_achs_name    X
+```
+
+```
+# file: achsmds2.lis
+kopf.achs_nr          2
+kopf.log_achs_name    Y
+```
+
+Use instead
+-----------
+A count that covers every entry:
+
+```
+# file: hochlauf.lis
+zahl_mds          2
+achs_mds[0]       ./achsmds1.lis
+achs_mds[1]       ./achsmds2.lis
+```
+
+Reference
+---------
+P-STUP-00014 (zahl_mds: the number of axis lists read, default 0),
+P-STUP-00015 (achs_mds[i]: files beyond zahl_mds are not considered),
+P-STUP-00016 (zahl_kw), P-STUP-00017 (achs_kw[i], the same for compensation
+lists); list format facts §9 (excess entries are ignored).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ..core.diagnostics import Diagnostic, Related, Severity
+from ._crosslist import COUNTED, index
+
+if TYPE_CHECKING:
+    from ..machine.startup import Member, Startup, StartupEntry
+
+CODE = "LIS516"
+NAME = "entry-beyond-count"
+FIX = "none"
+SUMMARY = "Start-up list entry beyond zahl_mds or zahl_kw: the list it names is never loaded"
+
+_WHAT = {"achs_mds": "axis list", "achs_kw": "axis compensation list"}
+
+
+def _span(key: str, count: int) -> str:
+    """The entries a count lets the CNC read, in words."""
+    if count <= 0:
+        return f"no {key} entry"
+    return f"{key}[0] only" if count == 1 else f"{key}[0] … {key}[{count - 1}] only"
+
+
+def _at(startup: Startup, entry: StartupEntry, message: str, related: tuple[Related, ...] = ()) -> Diagnostic:
+    end = entry.column + len(entry.raw)
+    return Diagnostic(
+        str(startup.path),
+        entry.line,
+        entry.column,
+        entry.line,
+        end,
+        CODE,
+        Severity.WARNING,
+        message,
+        related=related,
+    )
+
+
+def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+    for startup in startups:
+        for count_key, (entry_key, _, _) in COUNTED.items():
+            entries = startup.axes if entry_key == "achs_mds" else startup.compensations
+            if not entries:
+                continue
+            what = _WHAT[entry_key]
+            count = startup.counts.get(count_key)
+            if count is None:
+                first = min(entries, key=lambda entry: entry.line)
+                yield _at(
+                    startup,
+                    first,
+                    f"{count_key} is not written, so its default 0 counts none of the {len(entries)} {entry_key} "
+                    f"entries: the CNC loads no {what} of this start-up list; write `{count_key} "
+                    f"{max(index(entry) for entry in entries) + 1}`",
+                )
+                continue
+            if count.value is None:
+                continue  # not a number: the start-up list's own finding
+            for entry in entries:
+                if index(entry) < count.value:
+                    continue
+                yield _at(
+                    startup,
+                    entry,
+                    f"`{entry.key}` lies beyond `{count_key} {count.raw}`: the CNC reads {_span(entry_key, count.value)}"
+                    f", so the {what} `{entry.raw}` is never loaded; raise {count_key} to {index(entry) + 1} at "
+                    "least, or remove the entry",
+                    (Related(str(startup.path), count.line, count.column, count_key, "the count"),),
+                )
