@@ -11,6 +11,7 @@ import json
 import re
 import shutil
 from pathlib import Path
+from typing import Any
 
 from achslint.linting.linter import lint_file
 from achslint.syntax.xmlinput import extract
@@ -22,11 +23,12 @@ EXPORT = FIXTURES / "machines" / "twincat_export"
 WITHOUT_TREE_ITEMS = FIXTURES / "machines" / "xml_export"
 
 
-def machine_findings(folder: Path) -> list[dict]:
+def machine_findings(folder: Path) -> list[dict[str, Any]]:
     """Every LIS501/LIS502 finding of `achslint lint FOLDER --format json`."""
     result = run_cli("lint", str(folder), "--select", "LIS501,LIS502", "--format", "json", "--exit-zero")
     assert result.returncode == 0, result.stderr
-    return json.loads(result.stdout)["diagnostics"]
+    found: list[dict[str, Any]] = json.loads(result.stdout)["diagnostics"]
+    return found
 
 
 def line_of(path: Path, text: str) -> int:
