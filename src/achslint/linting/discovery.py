@@ -347,7 +347,7 @@ class Finder:
         axis list, `default_achs_mds` the default axis list, `sda_mds[i]` / `default_sda_mds` a (default)
         channel list; None when no start-up list names it (its content tells)."""
         for startup in _unique([*known, *self.startups_around(path.parent)]):
-            named = [
+            named: list[tuple[str, Sequence[StartupEntry | None]]] = [
                 ("default_axis", [startup.default]),
                 ("axis", startup.axes),
                 ("default_channel", [startup.default_channel]),

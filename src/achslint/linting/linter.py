@@ -7,6 +7,7 @@ parse -> `lintengine.run` (enabled rules -> `noqa` suppressions -> LIS009 -> sev
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -106,7 +107,7 @@ def lint_file(
     """
     settings = settings or FileSettings()
     try:
-        default_file = parse_bytes(defaults, "default list") if defaults is not None else None
+        default_file = default_list(defaults) if defaults is not None else None
         if is_xml(name):
             return _check_xml(data, name, settings, default_file)
         file = parse_bytes(data, name)
@@ -118,6 +119,13 @@ def lint_file(
     if skipped is not None:
         return FileResult(name, [], note=skipped)
     return _check_file(file, name, settings, default_file=default_file)
+
+
+@lru_cache(maxsize=4)
+def default_list(data: bytes) -> ListFile:
+    """A default list, parsed once for all the axis lists of a machine that load it (a run lints them one
+    after another with the same bytes underneath). Raises `UnreadableInput`."""
+    return parse_bytes(data, "default list")
 
 
 def list_kind(file: ListFile, name: str, given: str | None = None) -> Kind:
