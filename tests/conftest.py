@@ -10,6 +10,12 @@ from typing import Any
 
 import pytest
 
+# Keep compiled bytecode even where PYTHONDONTWRITEBYTECODE=1 is set (as in many containers): without it
+# every run compiles the test modules (with pytest's assertion rewriting) and achslint again in each xdist
+# worker, and every child `python -m achslint` the tests start compiles achslint once more: about 5 s per
+# worker and 0.2-0.3 s per child. The files go to the __pycache__ folders git ignores.
+sys.dont_write_bytecode = False
+
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "fixtures"
 
@@ -18,7 +24,20 @@ FIXTURES = ROOT / "fixtures"
 THOROUGH = os.environ.get("ACHSLINT_THOROUGH", "") not in ("", "0")
 
 
-def examples(full: int, quick: int = 40) -> int:
+@pytest.hookimpl(tryfirst=True)
+def pytest_cmdline_main(config: pytest.Config) -> None:
+    """Run on every core, each test file in one worker, unless told otherwise: `-n N` / `-n 0` choose the
+    workers, `-p no:xdist` runs in this process. (In addopts, `-n` would be an unknown option to a pytest
+    without xdist.) Called before xdist's own hook, which turns `auto` into the number of cores."""
+    if not config.pluginmanager.hasplugin("xdist") or hasattr(config, "workerinput"):
+        return  # xdist not loaded, or this is one of its workers
+    if config.option.numprocesses is None and not config.option.collectonly:
+        config.option.numprocesses = "auto"
+        if config.option.dist == "no":
+            config.option.dist = "loadfile"
+
+
+def examples(full: int, quick: int = 20) -> int:
     """The number of hypothesis examples a property test runs: `full` when thorough, else at most `quick`."""
     return full if THOROUGH else min(full, quick)
 

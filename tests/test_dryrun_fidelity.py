@@ -587,6 +587,7 @@ def test_plot_png_has_size_and_is_not_blank(tmp_path):
     # Not blank: many distinct colours (curves, shades, markers), and not mostly one value.
     flat = pixels.reshape(-1, pixels.shape[-1])[::7]
     assert len({tuple(p) for p in flat.round(2).tolist()}) > 20
+    assert target.read_bytes().startswith(b"\x89PNG")
     code, _, err = run_main("dry-run", str(X_AXIS), "--plot", str(tmp_path / "homing.svg"))
     assert code == 0 and b"<svg" in (tmp_path / "homing.svg").read_bytes()[:500]
 

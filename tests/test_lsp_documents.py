@@ -75,7 +75,7 @@ def test_line_cache_parse_equals_the_full_parse_after_any_edit(before, inserted,
 POSITION = st.tuples(st.integers(0, 12), st.integers(0, 12))
 
 
-@settings(max_examples=examples(300, 80), deadline=None)
+@settings(max_examples=examples(300, 40), deadline=None)
 @given(TEXTS, st.lists(st.tuples(POSITION, POSITION, TEXTS), min_size=1, max_size=6))
 def test_edits_keep_the_lines_as_a_fresh_split_has_them(text, edits):
     # apply() re-reads only the lines around an edit; the text and its lines must be those of the whole

@@ -48,7 +48,7 @@ def edited(draw: st.DrawFn) -> tuple[list[str], list[str]]:
     return old, new
 
 
-@settings(max_examples=examples(1000, 80), deadline=None)
+@settings(max_examples=examples(1000, 40), deadline=None)
 @given(edited())
 def test_blocks_turn_old_into_new(pair: tuple[list[str], list[str]]) -> None:
     old, new = pair
