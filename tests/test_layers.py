@@ -27,7 +27,7 @@ from achslint.axis.resolved import resolve_bytes
 from achslint.homing.base import StrategyDef
 from achslint.homing.registry import classify, strategies
 
-from .conftest import FIXTURES, ROOT, run_cli
+from .conftest import FIXTURES, ROOT, run_cli, source_tree
 
 PACKAGE = ROOT / "src" / "achslint"
 
@@ -165,7 +165,7 @@ class _Imports(ast.NodeVisitor):
         self.known = known
         parts = [] if importer == "achslint" else importer.split(".")
         self.package = parts if path.name == "__init__.py" else parts[:-1]  # where `from .` starts
-        tree = ast.parse(source, str(path))
+        tree = source_tree(path, source)
         # Import statements sit among statements; only a file that calls import_module needs its expressions
         # walked, and only there are its strings (the registry's module names) of interest.
         self.dynamic = "import_module" in source

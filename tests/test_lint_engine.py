@@ -18,7 +18,7 @@ from achslint.linting.suppression import Suppressions
 from achslint.rules import Scope, registry
 from achslint.syntax.parser import parse_text
 
-from .conftest import FIXTURES, ROOT, run_cli
+from .conftest import FIXTURES, ROOT, run_cli, source_tree
 
 PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
 
@@ -180,7 +180,7 @@ def test_only_the_engine_calls_rule_checks() -> None:
     """No module outside the engine runs rules itself: `Rule.checker` is read in linting/engine.py only."""
     callers = []
     for path in sorted((ROOT / "src" / "achslint").rglob("*.py")):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = source_tree(path)
         if any(isinstance(n, ast.Attribute) and n.attr == "checker" for n in ast.walk(tree)):
             callers.append(path.relative_to(ROOT / "src" / "achslint").as_posix())
     assert callers == ["linting/engine.py"]

@@ -27,7 +27,7 @@ from achslint.machine.scenario import MachineScenario
 from achslint.rules.context import Context
 from achslint.syntax.parser import parse_bytes
 
-from .conftest import FIXTURES, run_cli
+from .conftest import FIXTURES, run_cli, source_tree
 
 
 @dataclass(frozen=True)
@@ -190,7 +190,7 @@ def test_nothing_outside_the_homing_package_dispatches_on_a_strategy_id() -> Non
     for path in sorted(PACKAGE.rglob("*.py")):
         if "homing" in path.relative_to(PACKAGE).parts:
             continue
-        for line in _strategy_id_tests(ast.parse(path.read_text(encoding="utf-8")), ids):
+        for line in _strategy_id_tests(source_tree(path), ids):
             found.append(f"{path.relative_to(PACKAGE)}:{line}")
     assert not found, found
 
