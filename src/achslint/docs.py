@@ -20,7 +20,8 @@ def rules_table() -> str:
 
 def rule_text(rule: Rule) -> str:
     when = "; info when it cannot check" if rule.info_when_unchecked else ""
-    header = f"{rule.code} {rule.name} ({rule.severity.value} by default{when}; fix: {rule.fix})"
+    lists = f"; checks {rule.lists}" if rule.lists else ""
+    header = f"{rule.code} {rule.name} ({rule.severity.value} by default{when}; fix: {rule.fix}{lists})"
     parts = [header, "=" * len(header), "", rule.summary, ""]
     for title in SECTIONS:
         body = rule.section(title)
@@ -48,7 +49,8 @@ def rules_markdown() -> str:
             "",
             f"## {rule.code}",
             "",
-            f"**{rule.name}** — {rule.summary}. Default severity: {rule.severity.value}; fix: {rule.fix}.",
+            f"**{rule.name}** — {rule.summary}. Default severity: {rule.severity.value}; fix: {rule.fix}"
+            + (f"; checks {rule.lists}." if rule.lists else "."),
             "",
         ]
         for title in SECTIONS:

@@ -5,6 +5,12 @@ For every assignment the CNC would read, this stage finds the catalogue entry
 type and records what it could not convert as a fact (`facts.py`). Rule
 modules turn those facts into findings; no rule parses values itself, and this
 module holds no rule code or message text.
+
+The catalogue is the axis catalogue or that of another list kind (a channel
+list's, `catalogue.kinds`): the same entries, so the same conversion. Only an
+axis list has an axis and drive type, and only the axis catalogue holds the
+P-AXIS parameters a reference names: in a list of another kind a reference
+is read, not resolved.
 """
 
 from __future__ import annotations
@@ -128,7 +134,8 @@ def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
         if line.path_ok and line.path is not None  # an assignment always has a path
     ]
     analysis = Analysis(file, settings)
-    _axis_and_drive(analysis, cat)
+    if _describes_axes(cat):
+        _axis_and_drive(analysis, cat)
     for setting in settings:
         resolution = setting.resolution
         if setting.known and resolution is not None:  # known: resolved, and not by a misspelling
@@ -177,6 +184,11 @@ def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
             elif setting.line.value_kind == syntax.SYMBOL and written in parameter.symbol_codes:
                 value = parameter.symbol_codes[written]
     return value
+
+
+def _describes_axes(cat: Catalogue) -> bool:
+    """Whether the catalogue is the axis catalogue (it has the axis and drive type, P-AXIS-00018/20)."""
+    return "P-AXIS-00020" in cat.by_id
 
 
 def _axis_and_drive(analysis: Analysis, cat: Catalogue) -> None:
@@ -350,6 +362,8 @@ def _reference(
     if isinstance(reference, NumberProblem):
         setting.add_problem(BadReference("unreadable", written, problem=reference))
         return None
+    if not _describes_axes(cat):
+        return reference  # names an axis parameter, which this kind's catalogue does not hold
     target = cat.by_id.get(reference.target)
     problem = None
     if target is None:

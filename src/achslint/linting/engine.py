@@ -6,7 +6,7 @@ the whole pipeline:
     the scope's enabled rules -> `noqa` suppressions -> AFTER rules (LIS009) -> severity overrides -> sorted
 
     scope     subject                                      caller
-    LIST      (Context,)                                   linter: one axis list
+    LIST      (Context,)                                   linter: one list (its kind's rules)
     MACHINE   (members, start-up lists)                    api (a machine's lists), linter (XML projects)
     PROGRAM   (Program, Machine)                           programlint: a homing program on its machine
     AFTER     (path, directives, enabled)                  run itself, after LIST or PROGRAM
@@ -76,17 +76,19 @@ def run(
     *,
     suppressions: Suppressions | None = None,
     whole_axis: bool = True,
+    kind: str = "axis",
 ) -> list[Diagnostic]:
     """The findings of every enabled rule of `scope` on `subject`, sorted.
 
     `suppressions`: the `noqa` directives of the list or program the subject was read from; they drop what
     they cover, then the AFTER rules judge them. `whole_axis=False` for a default list, which alone is no
-    axis: the rules that judge parameters together (`Rule.needs_whole_axis`) do not run on it.
+    axis: the rules that judge parameters together (`Rule.needs_whole_axis`) do not run on it. `kind`: the
+    list kind (`catalogue.kinds` id) of a LIST subject; only the rules that apply to it run (`Rule.kinds`).
     """
     fixed = policy if isinstance(policy, Policy) else None
     policy_of = _always(policy) if isinstance(policy, Policy) else policy
     found: list[Diagnostic] = []
-    for code, check in enabled_checks(scope, fixed, whole_axis):
+    for code, check in enabled_checks(scope, fixed, whole_axis, kind):
         if fixed is not None:
             found.extend(check(*subject))
         else:  # every rule of the scope ran: a finding stays when the policy of its file enables the rule
@@ -94,8 +96,8 @@ def run(
     if suppressions is not None:
         found = suppressions.apply(found)
         own = policy_of(suppressions.path)
-        enabled = enabled_codes(own, whole_axis).__contains__
-        for _, check in enabled_checks(Scope.AFTER, own, whole_axis):
+        enabled = enabled_codes(own, whole_axis, kind).__contains__
+        for _, check in enabled_checks(Scope.AFTER, own, whole_axis, kind):
             found.extend(check(suppressions.path, suppressions.directives, enabled))
     for diagnostic in found:
         override = (fixed or policy_of(diagnostic.path)).overrides.get(diagnostic.code)
@@ -111,14 +113,17 @@ def _always(policy: Policy) -> PolicyOf:
 
 @lru_cache(maxsize=256)
 def enabled_checks(
-    scope: Scope, policy: Policy | None, whole_axis: bool = True
+    scope: Scope, policy: Policy | None, whole_axis: bool = True, kind: str = "axis"
 ) -> tuple[tuple[str, Check], ...]:
     """(code, check) of the rules that look at `scope` and that `policy` enables (None: every rule), in
-    code order."""
+    code order; for a list (LIST, AFTER) only the rules that apply to its `kind`."""
+    per_list = scope in (Scope.LIST, Scope.AFTER)
     chosen = []
     for code, rule in registry().items():
         check = rule.checker(scope)
         if check is None or (policy is not None and not policy.enabled(code)):
+            continue
+        if per_list and not rule.applies_to(kind):
             continue
         if whole_axis or not rule.needs_whole_axis:
             chosen.append((code, check))
@@ -126,11 +131,13 @@ def enabled_checks(
 
 
 @lru_cache(maxsize=256)
-def enabled_codes(policy: Policy, whole_axis: bool = True) -> frozenset[str]:
-    """The codes of every rule `policy` enables (for AFTER rules: a `noqa` for a rule that is not enabled
-    is not unused)."""
+def enabled_codes(policy: Policy, whole_axis: bool = True, kind: str = "axis") -> frozenset[str]:
+    """The codes of every rule `policy` enables for a list of `kind` (for AFTER rules: a `noqa` for a rule
+    that is not enabled, or does not look at this kind of list, is not unused)."""
     return frozenset(
         code
         for code, rule in registry().items()
-        if policy.enabled(code) and (whole_axis or not rule.needs_whole_axis)
+        if policy.enabled(code)
+        and (whole_axis or not rule.needs_whole_axis)
+        and (Scope.LIST not in rule.scopes or rule.applies_to(kind))
     )

@@ -1,7 +1,12 @@
 """Lint of one list, or of the lists of one XML file: bytes -> parsed list -> the lint engine.
 
-parse -> `lintengine.run` (enabled rules -> `noqa` suppressions -> LIS009 -> severity overrides -> sort)
-      -> a `FileResult` with what the machine step needs (`machine.summary`)
+parse -> kind (`list_kind`) -> `lintengine.run` with that kind's catalogue and rules (enabled rules ->
+      `noqa` suppressions -> LIS009 -> severity overrides -> sort)
+      -> a `FileResult` with what the machine step needs (`machine.summary`, axis lists only)
+
+A list of a kind with a catalogue (channel, tool data, start-up ... `catalogue.kinds`) is checked by the
+rules that apply to its kind (`Rule.kinds`: the LIS0/1/2 families); a kind without one is skipped with
+a note.
 """
 
 from __future__ import annotations
@@ -13,7 +18,7 @@ from typing import TYPE_CHECKING
 
 from ..axis.source import NOT_A_LIST, looks_like_a_list
 from ..catalogue import catalogue
-from ..catalogue.kinds import AXIS, BY_ID, DEFAULT_AXIS, Kind, kind_of
+from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, DEFAULT_AXIS, Kind, kind_of
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml
@@ -115,10 +120,10 @@ def lint_file(
         return FileResult(name, [], f"{name}: {exc}")
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
-    skipped = not_checked(file, name, settings.kind)
-    if skipped is not None:
-        return FileResult(name, [], note=skipped)
-    return _check_file(file, name, settings, default_file=default_file)
+    kind = list_kind(file, name, settings.kind)
+    if not kind.has_catalogue:
+        return FileResult(name, [], note=_skip_note(kind, name))
+    return _check_file(file, name, settings, default_file=default_file, kind=kind)
 
 
 @lru_cache(maxsize=4)
@@ -158,13 +163,14 @@ EVIDENCE = 3  # parameter ids in comments, or paths of another kind (at least ha
 
 
 def not_checked(file: ListFile, name: str, given: str | None = None) -> str | None:
-    """The note for a list of a kind achslint does not check yet (a channel list, tool data ...), said once
-    instead of a finding for every parameter the axis catalogue does not know; None for an axis list."""
+    """The note for a list of a kind achslint has no catalogue of (HMI objects, cam tables), said once
+    instead of a finding for every parameter; None for a list achslint checks."""
     kind = list_kind(file, name, given)
-    if kind.id in (AXIS.id, DEFAULT_AXIS.id):
-        return None
-    ids = f" ({kind.prefix} parameters)" if kind.prefix else ""
-    return f"{name}: skipped, it is a {kind.name}{ids}; achslint checks axis lists only so far"
+    return None if kind.has_catalogue else _skip_note(kind, name)
+
+
+def _skip_note(kind: Kind, name: str) -> str:
+    return f"{name}: skipped, it is a {kind.name}; achslint has no catalogue of its parameters yet"
 
 
 def lint_parsed(
@@ -174,10 +180,10 @@ def lint_parsed(
     settings = settings or FileSettings()
     if not looks_like_a_list(file):
         return FileResult(name, [], f"{name}: {NOT_A_LIST}")
-    skipped = not_checked(file, name, settings.kind)
-    if skipped is not None:
-        return FileResult(name, [], note=skipped)
-    return _check_file(file, name, settings, default_file=default_file)
+    kind = list_kind(file, name, settings.kind)
+    if not kind.has_catalogue:
+        return FileResult(name, [], note=_skip_note(kind, name))
+    return _check_file(file, name, settings, default_file=default_file, kind=kind)
 
 
 def _check_file(
@@ -186,14 +192,21 @@ def _check_file(
     settings: FileSettings,
     embedded: EmbeddedList | None = None,
     default_file: ListFile | None = None,
+    kind: Kind = AXIS,
 ) -> FileResult:
+    if kind.prefix != AXIS_PREFIX:
+        return _check_other_kind(file, name, settings, kind)
     # A default list (default_mds.lis) only supplies values underneath every axis: alone it is no axis,
     # so the rules that judge a whole axis do not run on it (they run on the axis lists that load it).
-    partial = embedded is None and (
-        settings.kind == DEFAULT_AXIS.id if settings.kind is not None else machine.is_default_list(Path(name))
-    )
+    partial = embedded is None and kind.id == DEFAULT_AXIS.id
     ctx = Context(
-        name, file, settings.settings, embedded=embedded, default_file=default_file, default_list=partial
+        name,
+        file,
+        settings.settings,
+        embedded=embedded,
+        default_file=default_file,
+        default_list=partial,
+        kind=kind,
     )
     diagnostics = run(
         Scope.LIST,
@@ -201,6 +214,7 @@ def _check_file(
         settings.policy,
         suppressions=Suppressions.of_list(file, name),
         whole_axis=not partial,
+        kind=kind.id,
     )
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
     return FileResult(
@@ -211,6 +225,25 @@ def _check_file(
         summary=machine.summary(ctx.values),
         context=ctx if settings.keep_context else None,
     )
+
+
+def _check_other_kind(file: ListFile, name: str, settings: FileSettings, kind: Kind) -> FileResult:
+    """A list of another kind (channel, tool data ...) against its kind's catalogue, by the rules that apply
+    to it. It is no axis: no resolved axis, no machine summary (the machine step reads channel and start-up
+    lists itself), and no Context for the editor (its hover and completion know axis lists only)."""
+    cat = kind.catalogue()
+    assert cat is not None  # has_catalogue
+    ctx = Context(name, file, settings.settings, catalogue=cat, kind=kind)
+    diagnostics = run(
+        Scope.LIST,
+        (ctx,),
+        settings.policy,
+        suppressions=Suppressions.of_list(file, name),
+        whole_axis=False,
+        kind=kind.id,
+    )
+    lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
+    return FileResult(name, diagnostics, None, lines)
 
 
 def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:

@@ -6,7 +6,10 @@ Use instead / Reference, and one check function for each scope it takes part
 in; its severity is its line in the code table. The check function's name says
 the scope and what it is given:
 
-    check(ctx)                          LIST: one axis list (`context.Context`)
+    check(ctx)                          LIST: one list (`context.Context`) of a kind
+                                        the module's `KINDS` names (default: axis
+                                        lists; `ALL_KINDS`: every kind with a
+                                        catalogue)
     check_machine(members, startups)    MACHINE: the summaries of a machine's axis
                                         lists and its start-up lists (LIS5xx)
     check_program(program, machine)     PROGRAM: a homing program read against a
@@ -29,10 +32,22 @@ from functools import cached_property, lru_cache
 from types import ModuleType
 
 from ..core.diagnostics import Severity
-from .codes import RULE_MODULES, Check, Scope, known_codes, matches, selector_problem
+from .codes import (
+    ALL_KINDS,
+    AXIS_KINDS,
+    RULE_MODULES,
+    Check,
+    Scope,
+    applies_to,
+    known_codes,
+    matches,
+    selector_problem,
+)
 
 # The code table's names are the package's too: `from achslint.rules import Scope` reads as well as ever.
 __all__ = [
+    "ALL_KINDS",
+    "AXIS_KINDS",
     "RULE_MODULES",
     "SECTIONS",
     "Check",
@@ -63,6 +78,22 @@ class Rule:
     refuses_homing: bool = False  # a finding means the CNC does not run the homing (LIS306, LIS319)
     # an info finding says the check could not run (LIS317 on an axis too short for any assumed cam)
     info_when_unchecked: bool = False
+    kinds: tuple[str, ...] = AXIS_KINDS  # the list kinds its LIST check runs for (ALL_KINDS: every kind)
+
+    def applies_to(self, kind: str) -> bool:
+        """Whether the rule's LIST check runs for a list of `kind` (a `catalogue.kinds` id)."""
+        return applies_to(self.kinds, kind)
+
+    @property
+    def lists(self) -> str:
+        """The lists the rule checks, for its documentation; empty for a rule that checks no single list."""
+        if Scope.LIST not in self.scopes and Scope.AFTER not in self.scopes:
+            return ""
+        if self.kinds == ALL_KINDS:
+            return "lists of every kind with a catalogue"
+        if self.kinds == AXIS_KINDS:
+            return "axis lists"
+        return "lists of the kinds " + ", ".join(self.kinds)
 
     @property
     def severities(self) -> tuple[Severity, ...]:
@@ -116,5 +147,6 @@ def registry() -> dict[str, Rule]:
             produced_by=getattr(module, "PRODUCED_BY", "lint"),
             refuses_homing=getattr(module, "CNC_REFUSES_HOMING", False),
             info_when_unchecked=getattr(module, "INFO_WHEN_UNCHECKED", False),
+            kinds=tuple(getattr(module, "KINDS", AXIS_KINDS)),
         )
     return rules

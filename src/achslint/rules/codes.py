@@ -30,6 +30,18 @@ Check = Callable[..., Iterable[Diagnostic]]
 
 ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
+# The list kinds (`catalogue.kinds` ids) a rule's LIST check runs for: its module's `KINDS`. A rule that
+# declares none judges axis lists (an axis, its homing, its drive); the LIS0/1/2 families check any list
+# with a catalogue against that kind's own catalogue and declare ALL_KINDS.
+AXIS_KINDS: tuple[str, ...] = ("axis", "default_axis")
+ALL_KINDS: tuple[str, ...] = ("*",)
+
+
+def applies_to(kinds: tuple[str, ...], kind: str) -> bool:
+    """Whether a rule declaring `kinds` runs for a list of `kind`."""
+    return kinds == ALL_KINDS or kind in kinds
+
+
 # Every rule module (`rules/<name>.py`, the code in front) and the severity its findings have unless the
 # configuration's `[severity]` table says otherwise.
 RULE_MODULES: dict[str, Severity] = {

@@ -1,4 +1,9 @@
-"""What a rule sees: the parsed file, the typed settings and helpers to report."""
+"""What a rule sees: the parsed file, its kind, the typed settings and helpers to report.
+
+A list of another kind than an axis list (a channel list, tool data ...) is analysed against its kind's
+catalogue (`catalogue.kinds`); it is no axis, so the resolved axis and its homing strategy (`values`,
+`strategy`) are only asked for by the axis-only rules, which do not run on it.
+"""
 
 from __future__ import annotations
 
@@ -9,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from ..axis.analysis import Analysis, Setting, analyse
 from ..catalogue import Catalogue, catalogue
+from ..catalogue.kinds import AXIS, AXIS_PREFIX, Kind
 from ..core.diagnostics import Diagnostic, Fix, Related, Severity
 from ..syntax import parser as syntax
 from .codes import severity as default_severity
@@ -32,6 +38,17 @@ class Context:
     embedded: EmbeddedList | None = None  # when the list came from an XML file
     default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
     default_list: bool = False  # the list is itself a default axis list: no axis of its own
+    kind: Kind = AXIS  # the list's kind; `catalogue` is that kind's catalogue
+
+    @property
+    def axis_list(self) -> bool:
+        """Whether the list describes an axis (an axis list or a default axis list)."""
+        return self.kind.prefix == AXIS_PREFIX
+
+    @property
+    def kind_name(self) -> str:
+        """The list's kind for messages: "channel list", "tool data list" ..."""
+        return self.kind.name
 
     @cached_property
     def analysis(self) -> Analysis:
@@ -41,6 +58,9 @@ class Context:
     def values(self) -> ResolvedAxis:
         """The resolved axis: defaults, default list, the list, references and the CNC's corrections."""
         from ..axis.resolved import ResolvedAxis
+
+        if not self.axis_list:  # a rule that judges an axis declared a kind that is none
+            raise TypeError(f"{self.name} is a {self.kind_name}, not an axis list: it has no resolved axis")
 
         defaults = analyse(self.default_file, self.catalogue) if self.default_file is not None else None
         return ResolvedAxis(self.analysis, defaults, cat=self.catalogue)

@@ -9,6 +9,17 @@ When the intended name is unambiguous, a safe fix renames it.
 
 Severity follows the `unknown-parameters` setting (warn, error or ignore).
 
+In a list of another kind (a channel list, tool data, the start-up list ...)
+the name is looked up in that kind's catalogue, and an unknown name is only an
+`info`: those catalogues are built from reference tables that hold part of the
+vendor's parameters (params-chan.tsv has 560 of the roughly 1,009 channel
+parameters), so a name missing from them may well be a real parameter. The
+message says the catalogue was not complete enough to judge it, and names a
+parameter only when the written name is very close to one (a typo of a known
+name, or an index missing or too many); the rename is offered as an unsafe
+fix, never applied by `--fix` alone. `unknown-parameters = "ignore"` silences
+these too.
+
 Why
 ---
 The CNC reports an unknown name while reading the list and ignores the line,
@@ -32,6 +43,8 @@ antr.simu.rpf_weg_bis_nip       200
 Reference
 ---------
 Parameter catalogue (P-AXIS ids and paths); documented inconsistencies A.1–A.9.
+Other kinds: their catalogues (`catalogue.kinds`, from params-chan.tsv,
+params-stup.tsv, params-tool.tsv ... with P-CHAN, P-STUP, P-TOOL ... ids).
 """
 
 from __future__ import annotations
@@ -45,6 +58,7 @@ from ..core.closest import ratio_bound
 from ..core.diagnostics import Diagnostic, Severity
 from ..syntax import parser as syntax
 from ._common import replace_path_fix
+from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -54,6 +68,8 @@ CODE = "LIS101"
 NAME = "unknown-parameter"
 FIX = "sometimes"
 SUMMARY = "Unknown parameter name"
+KINDS = ALL_KINDS  # every list kind with a catalogue
+INFO_WHEN_UNCHECKED = True  # a name another kind's partial catalogue lacks is not judged: info
 
 
 def _with_indices(pattern: str, indices: tuple[int, ...]) -> tuple[str, bool]:
@@ -116,11 +132,40 @@ def _diagnose(ctx: Context, setting: Setting) -> tuple[str, str | None, str | No
     return message, best, "safe" if unambiguous else None
 
 
+def _diagnose_other_kind(ctx: Context, setting: Setting) -> tuple[str, str | None, str | None]:
+    """(message, suggestion, fix applicability or None) for a name a partial kind catalogue lacks: a
+    suggestion only for a missing or extra index or a clear, close winner, and never a safe rename."""
+    path = setting.line.path or ""
+    cat = ctx.catalogue
+    pattern, indices = syntax.path_pattern(path)
+    unknown = (
+        f"`{path}` is not in achslint's {ctx.kind_name} catalogue ({len(cat.by_pattern)} of the vendor's "
+        f"{ctx.kind.prefix} parameters), so it is not checked"
+    )
+    shape = cat.by_unindexed.get(pattern.replace("[i]", ""))
+    if shape and len(shape) == 1:
+        right = shape[0].path
+        count = right.count("[i]")
+        if count == 0:
+            return f"{unknown}; did you mean `{right}` (it is no array)?", right, "unsafe"
+        suggestion, _ = _with_indices(right, indices)
+        return f"{unknown}; did you mean `{suggestion}` (indices are zero-based)?", suggestion, None
+    candidates = cat.suggest(path)
+    if candidates:
+        best, fits = _with_indices(candidates[0], indices)
+        if fits and (candidates[0] == pattern.lower() or _clear_winner(pattern, candidates)):
+            return f"{unknown}; did you mean `{best}`?", best, "unsafe"
+    return unknown, None, None
+
+
 def check(ctx: Context) -> Iterator[Diagnostic]:
     mode = ctx.options.unknown_parameters
     if mode == "ignore":
         return
     severity = Severity.ERROR if mode == "error" else Severity.WARNING
+    if not ctx.axis_list:
+        yield from _check_other_kind(ctx)
+        return
     for setting in ctx.settings:
         if setting.known or syntax.is_misspelt_end(setting.line):
             continue
@@ -129,3 +174,14 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         start, end = ctx.path_span(line)
         fix = replace_path_fix(line, suggestion, applicability) if suggestion and applicability else None
         yield ctx.report(CODE, line, message, column=start, end_column=end, severity=severity, fix=fix)
+
+
+def _check_other_kind(ctx: Context) -> Iterator[Diagnostic]:
+    for setting in ctx.settings:
+        if setting.known or syntax.is_misspelt_end(setting.line):
+            continue
+        message, suggestion, applicability = _diagnose_other_kind(ctx, setting)
+        line = setting.line
+        start, end = ctx.path_span(line)
+        fix = replace_path_fix(line, suggestion, applicability) if suggestion and applicability else None
+        yield ctx.report(CODE, line, message, column=start, end_column=end, severity=Severity.INFO, fix=fix)

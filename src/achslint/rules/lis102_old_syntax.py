@@ -4,6 +4,9 @@ What
 A parameter written with its old name, which the CNC still accepts, for
 example `kenngr.homing_type` for `kenngr.homing.homing_type`.
 
+Old names come from the catalogue: only the axis catalogue has any so far, so
+in lists of other kinds the rule finds nothing until their tables list some.
+
 Why
 ---
 The old names keep working, but the manuals, the catalogue and newer tools use
@@ -33,6 +36,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ._common import known_settings, replace_path_fix
+from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -42,6 +46,7 @@ CODE = "LIS102"
 NAME = "old-syntax"
 FIX = "safe"
 SUMMARY = "Old parameter name (still accepted)"
+KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

@@ -3,7 +3,8 @@ What
 ----
 A parameter is set under its current name and under its old name (alias) with
 different values, for example `kenngr.homing_type` and
-`kenngr.homing.homing_type`.
+`kenngr.homing.homing_type`. Only the axis catalogue has old names so far
+(see LIS102).
 
 Why
 ---
@@ -36,7 +37,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
+from .codes import ALL_KINDS
+
 if TYPE_CHECKING:
+    from ..axis.analysis import Setting
     from ..core.diagnostics import Diagnostic
     from .context import Context
 
@@ -44,6 +48,7 @@ CODE = "LIS103"
 NAME = "alias-conflict"
 FIX = "none"
 SUMMARY = "Parameter and its old name set with different values"
+KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
@@ -60,10 +65,15 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
                 CODE,
                 setting.line,
                 f"`{setting.line.path}` = `{setting.written_value}` contradicts `{first.line.path}` = "
-                f"`{first.written_value}` on line {first.line.number}; both set {ctx.values.parameter(canonical).id} "
+                f"`{first.written_value}` on line {first.line.number}; both set {_id(setting)} "
                 f"`{canonical}`, keep one",
                 column=start,
                 end_column=end,
                 setting=setting,
                 related=(ctx.related(first, "first assignment"),),
             )
+
+
+def _id(setting: Setting) -> str:
+    parameter = setting.parameter
+    return parameter.id if parameter is not None else ""

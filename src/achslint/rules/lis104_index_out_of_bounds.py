@@ -4,6 +4,11 @@ What
 An array index outside the array: `getriebe[6]` (gear stages are 0..5),
 `lr_hw[2]` (0..1), `antr.fixed_stop.drive_ident[4]` (0..3).
 
+Only the axis catalogue has array sizes so far: the reference tables of the
+other list kinds (params-chan.tsv, params-tool.tsv ...) leave the "max array
+size" column empty, so in those lists the rule has no bound to check and finds
+nothing until their catalogues carry the sizes.
+
 Why
 ---
 The CNC rejects the line while reading the list; the value you wrote is lost.
@@ -33,6 +38,7 @@ from typing import TYPE_CHECKING
 
 from ..axis.facts import IndexOutOfBounds
 from ._common import value_facts
+from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -44,6 +50,7 @@ CODE = "LIS104"
 NAME = "index-out-of-bounds"
 FIX = "none"
 SUMMARY = "Array index out of bounds"
+KINDS = ALL_KINDS  # every list kind with a catalogue
 
 FACTS = (IndexOutOfBounds,)
 

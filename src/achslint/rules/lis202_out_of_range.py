@@ -7,6 +7,11 @@ literal bounds the manual gives (`encoder_bit_range` 1..31,
 `torq_detect_velocity_limit` 0..1000 per mille), or not one of the listed codes
 (`kenngr.antr_typ`).
 
+In a list of another kind (channel, tool data, start-up ...) the bounds come
+from that kind's catalogue: the range text of its reference table where it
+states bounds (`m_h_pre_outp_nbr_block` 50..200, P-CHAN-00274; `zahl_mds`
+1..32, P-STUP-00014), else the data type's range.
+
 Bounds that depend on other parameters (such as vb_refmax ≤ vb_max) are checked
 by the cross-parameter rules, not here. A parameter's documented default is
 always accepted, because several parameters use an out-of-range default
@@ -44,6 +49,7 @@ from typing import TYPE_CHECKING
 from ..axis.facts import NotAccepted, NotPositive, OutOfRange, UnusableNumber
 from ..catalogue.units import describe
 from ._common import expected, value_facts
+from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -55,6 +61,7 @@ CODE = "LIS202"
 NAME = "out-of-range"
 FIX = "none"
 SUMMARY = "Value outside the parameter's range"
+KINDS = ALL_KINDS  # every list kind with a catalogue
 
 Fact = UnusableNumber | NotAccepted | NotPositive | OutOfRange
 FACTS: tuple[type[Fact], ...] = (UnusableNumber, NotAccepted, NotPositive, OutOfRange)

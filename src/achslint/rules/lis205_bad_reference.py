@@ -6,6 +6,10 @@ that names a parameter that does not exist, names the parameter itself, names a
 parameter of another kind (text for a number) or with another unit, or uses an
 index outside the target's array.
 
+A reference names an axis parameter (P-AXIS), which only the axis catalogue
+holds: in a list of another kind (a channel list, tool data ...) achslint
+reports only a reference it cannot read, and leaves the target unchecked.
+
 Why
 ---
 The CNC cannot resolve such a reference while it reads the list (loader errors
@@ -38,6 +42,7 @@ from typing import TYPE_CHECKING
 from ..axis.facts import BadReference
 from ..catalogue.units import unit_label
 from ._common import value_facts
+from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -49,6 +54,7 @@ CODE = "LIS205"
 NAME = "bad-reference"
 FIX = "none"
 SUMMARY = "Parameter reference that cannot be resolved"
+KINDS = ALL_KINDS  # every list kind with a catalogue
 
 FACTS = (BadReference,)
 
