@@ -121,13 +121,12 @@ def test_lis514_and_lis515_leave_a_pure_channel_coupling_alone(tmp_path):
     assert lint(machine(tmp_path, TWO_AXES, channel, {1: "X", 2: "X2"})) == []
 
 
-def test_lis516_says_once_that_an_unwritten_zahl_mds_counts_no_axis_list(tmp_path):
-    startup = machine(
-        tmp_path, "achs_mds[0] ./achsmds1.lis\nachs_mds[1] ./achsmds2.lis\nEnde\n", None, {1: "X", 2: "Y"}
-    )
-    found = lint(startup, "LIS516")
-    assert where(found) == [("hochlauf.lis", 1, "LIS516")]
-    assert "zahl_mds is not written" in found[0]["message"] and "write `zahl_mds 2`" in found[0]["message"]
+def test_lis516_and_lis518_without_a_written_zahl_mds(tmp_path):
+    # No count to compare with: LIS516 says nothing, and LIS518 compares every entry (as explain reads them).
+    text = "achs_mds[0] ./achsmds1.lis\nachs_mds[1] ./achsmds2.lis\nachs_mds[2] ./achsmds1.lis\nEnde\n"
+    assert where(lint(machine(tmp_path, text, None, {1: "X", 2: "Y"}), "LIS516,LIS518")) == [
+        ("hochlauf.lis", 3, "LIS518")
+    ]
 
 
 def test_lis518_compares_the_files_entries_lead_to_and_only_entries_the_cnc_reads(tmp_path):

@@ -4,8 +4,9 @@ What
 A start-up list entry that its count leaves out: an axis list
 `achs_mds[i]` (P-STUP-00015) whose index is not below `zahl_mds`
 (P-STUP-00014), or an axis compensation list `achs_kw[i]` (P-STUP-00017)
-whose index is not below `zahl_kw` (P-STUP-00016). A count that is not
-written is 0, its default, and then leaves out every entry.
+whose index is not below `zahl_kw` (P-STUP-00016). A start-up list that
+writes no count is left alone: TwinCAT writes both counts itself, and
+achslint does not guess what a hand-kept list without one means.
 
 Why
 ---
@@ -13,8 +14,7 @@ The count says how many entries the CNC reads: `achs_mds[0]` up to
 `achs_mds[zahl_mds - 1]`. Entries beyond it are not considered, so the list
 such an entry names is never loaded: its axis does not exist in the CNC, or
 its compensation is not applied. A list added to the start-up list without
-raising the count is the usual cause. (TwinCAT writes both counts itself;
-this concerns start-up lists kept by hand.)
+raising the count is the usual cause.
 
 Example
 -------
@@ -50,7 +50,7 @@ achs_mds[1]       ./achsmds2.lis
 
 Reference
 ---------
-P-STUP-00014 (zahl_mds: the number of axis lists read, default 0),
+P-STUP-00014 (zahl_mds: the number of axis lists read),
 P-STUP-00015 (achs_mds[i]: files beyond zahl_mds are not considered),
 P-STUP-00016 (zahl_kw), P-STUP-00017 (achs_kw[i], the same for compensation
 lists); list format facts §9 (excess entries are ignored).
@@ -106,15 +106,7 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
             what = _WHAT[entry_key]
             count = startup.counts.get(count_key)
             if count is None:
-                first = min(entries, key=lambda entry: entry.line)
-                yield _at(
-                    startup,
-                    first,
-                    f"{count_key} is not written, so its default 0 counts none of the {len(entries)} {entry_key} "
-                    f"entries: the CNC loads no {what} of this start-up list; write `{count_key} "
-                    f"{max(index(entry) for entry in entries) + 1}`",
-                )
-                continue
+                continue  # no count written (TwinCAT writes both): nothing to compare the entries with
             if count.value is None:
                 continue  # not a number: the start-up list's own finding
             for entry in entries:

@@ -2,7 +2,8 @@
 What
 ----
 One axis list file named twice in a start-up list: by two `achs_mds[i]`
-entries (P-STUP-00015) that the CNC reads (below `zahl_mds`), or by an
+entries (P-STUP-00015) that the CNC reads (below `zahl_mds`, when it is
+written), or by an
 `achs_mds[i]` entry and the default axis list entry `default_achs_mds`
 (P-STUP-00035). Entries are compared by the file they lead to, so
 `./achsmds1.lis` and `../listen/achsmds1.lis` (or a link to it) are the same
@@ -66,6 +67,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..core.files import same_file
 from ._crosslist import index
 
 if TYPE_CHECKING:
@@ -78,11 +80,11 @@ SUMMARY = "Start-up list names one axis list file twice (two axes, or an axis an
 
 
 def _loaded(startup: Startup) -> list[StartupEntry]:
-    """The achs_mds entries the CNC reads: those below zahl_mds (none when zahl_mds is not written, LIS516;
-    none when it is not a number)."""
+    """The achs_mds entries the CNC reads: those below zahl_mds (LIS516 reports the others); every entry
+    when the start-up list writes no usable zahl_mds."""
     count = startup.counts.get("zahl_mds")
     if count is None or count.value is None:
-        return []
+        return startup.axes
     return [entry for entry in startup.axes if index(entry) < count.value]
 
 
@@ -91,8 +93,8 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
         first: dict[str, StartupEntry] = {}
         entries = [startup.default] if startup.default is not None else []
         for entry in sorted([*entries, *_loaded(startup)], key=lambda entry: entry.line):
-            if entry.path is None:
-                continue  # missing or not read: LIS504
+            if entry.path is None or same_file(entry.path, startup.path):
+                continue  # missing, not read, or the start-up list itself: LIS504
             earlier = first.setdefault(os.path.realpath(entry.path), entry)
             if earlier is entry or earlier.key == entry.key:
                 continue  # one entry written twice is the start-up list's own matter
