@@ -8,6 +8,7 @@ code `dataclasses` compiles is kept between runs without ever changing what a cl
 from __future__ import annotations
 
 import json
+import marshal
 import os
 import subprocess
 import sys
@@ -209,7 +210,12 @@ def test_a_damaged_or_foreign_cache_file_is_compiled_again(tmp_path: Path) -> No
     folder = tmp_path / "achslint"
     folder.mkdir(mode=0o700)
     path = Path(codecache.cache_path(str(folder)))
-    for damage in (b"", b"\x00garbage", b"{" * 100, __import__("marshal").dumps({"text": "not code", 1: 2})):
+    assert _probe(tmp_path)["compiled"] > 0
+    texts = marshal.loads(path.read_bytes())
+    damages = [b"", b"\x00garbage", b"{" * 100, marshal.dumps({"text": "not code", 1: 2})]
+    damages.append(marshal.dumps(dict.fromkeys(texts, b"\x00not marshal")))  # the right texts, bad code
+    damages.append(marshal.dumps(dict.fromkeys(texts, marshal.dumps("a string, not code"))))
+    for damage in damages:
         path.write_bytes(damage)
         result = _probe(tmp_path)
         assert result["compiled"] > 0 and result["frozen"]

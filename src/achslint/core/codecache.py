@@ -24,8 +24,8 @@ import sys
 from types import CodeType
 from typing import Any
 
-# Above this size the file is written anew with only what the last run used: edits to the classes leave
-# texts behind that no run asks for any more.
+# Above this size the file is written anew with only what the run that writes it used: edits to the classes
+# leave texts behind that no run asks for any more.
 MAX_BYTES = 2 << 20
 
 _installed = False
@@ -53,21 +53,38 @@ def cache_path(folder: str) -> str:
 
 
 class CodeCache:
-    """Compiled dataclass methods by their source text: those read from `path`, and those compiled since."""
+    """Compiled dataclass methods by their source text: those in the file at `path`, and those compiled since.
+
+    The file maps each text to its code in marshal's bytes, and a code object is made from them only when a
+    class asks for that text: a run reads the whole file but unpacks only what it uses.
+    """
 
     def __init__(self, path: str) -> None:
         self.path = path
-        self.known = _read(path)
-        self.used: dict[str, CodeType] = {}
-        self.compiled = 0  # texts not found in the file
+        self.stored = _read(path)
+        self.added: dict[str, bytes] = {}
+        self.found: set[str] = set()  # texts this run took from the file
+        self.made: dict[str, CodeType] = {}  # code this run has made, by text (two classes may share one)
+        self.compiled = 0  # texts not found in the file (or found damaged)
 
     def code(self, source: str) -> CodeType:
-        code = self.used.get(source) or self.known.get(source)
+        code = self.made.get(source)
         if code is None:
-            # What exec(source) compiles: file name "<string>", and no __future__ flags from this module.
-            code = compile(source, "<string>", "exec", dont_inherit=True)
-            self.compiled += 1
-        self.used[source] = code
+            code = self.made[source] = self._make(source)
+        return code
+
+    def _make(self, source: str) -> CodeType:
+        stored = self.stored.get(source)
+        if stored is not None:
+            with contextlib.suppress(EOFError, ValueError, TypeError):
+                code = marshal.loads(stored)
+                if type(code) is CodeType:
+                    self.found.add(source)
+                    return code
+        # What exec(source) compiles: file name "<string>", and no __future__ flags from this module.
+        code = compile(source, "<string>", "exec", dont_inherit=True)
+        self.compiled += 1
+        self.added[source] = marshal.dumps(code)
         return code
 
     def exec(self, source: Any, *args: Any, **kwargs: Any) -> None:
@@ -78,10 +95,9 @@ class CodeCache:
         """Write the file again when this run compiled something (atomically; failures are ignored)."""
         if not self.compiled:
             return
-        merged = {**self.known, **self.used}
-        data = marshal.dumps(merged)
-        if len(data) > MAX_BYTES:
-            data = marshal.dumps(self.used)
+        data = marshal.dumps({**self.stored, **self.added})
+        if len(data) > MAX_BYTES:  # texts of classes since changed pile up: keep only what this run used
+            data = marshal.dumps({**{text: self.stored[text] for text in self.found}, **self.added})
         temporary = f"{self.path}.{os.getpid()}.tmp"  # one per process: runs at once do not mix their bytes
         try:
             with open(temporary, "wb") as stream:
@@ -92,8 +108,9 @@ class CodeCache:
                 os.unlink(temporary)
 
 
-def _read(path: str) -> dict[str, CodeType]:
-    """The texts and code in the file; empty when it is missing, too large or not what this module writes."""
+def _read(path: str) -> dict[str, bytes]:
+    """The texts and their code's bytes in the file; empty when it is missing, too large or not what this
+    module writes."""
     try:
         with open(path, "rb") as stream:
             data = stream.read(MAX_BYTES + 1)
@@ -102,7 +119,7 @@ def _read(path: str) -> dict[str, CodeType]:
         return {}
     if not isinstance(table, dict):
         return {}
-    return {k: v for k, v in table.items() if type(k) is str and type(v) is CodeType}
+    return {k: v for k, v in table.items() if type(k) is str and type(v) is bytes}
 
 
 def install() -> CodeCache | None:
