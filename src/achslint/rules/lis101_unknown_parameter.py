@@ -139,8 +139,8 @@ def _diagnose_other_kind(ctx: Context, setting: Setting) -> tuple[str, str | Non
     cat = ctx.catalogue
     pattern, indices = syntax.path_pattern(path)
     unknown = (
-        f"`{path}` is not in achslint's {ctx.kind_name} catalogue ({len(cat.by_pattern)} of the vendor's "
-        f"{ctx.kind.prefix} parameters), so it is not checked"
+        f"unknown parameter `{path}` in this {ctx.kind_name}: not in achslint's catalogue of this kind, "
+        f"which holds {len(cat.by_pattern)} of the vendor's {ctx.kind.prefix} parameters, so it is not checked"
     )
     shape = cat.by_unindexed.get(pattern.replace("[i]", ""))
     if shape and len(shape) == 1:
