@@ -310,3 +310,25 @@ def test_any_catalogue_path_with_an_in_range_value_gives_no_lis1_or_lis2_finding
         assert [(code, message) for code, _, _, message in found if code[:4] in ("LIS1", "LIS2")] == []
 
     check()
+
+
+def test_or_combined_flags_of_a_start_up_list_are_each_checked() -> None:
+    # the SDK's start-up list combines flags with `|` and free spacing; before, the rest of the line was
+    # "text after a string" (LIS007) and `A|B` an unknown symbol
+    text = (
+        b"error_protocol_mode          REPORT | REPORT_EXTENDED |PRINT   ( flags | combined\n"
+        b"configuration.channel[0].path_preparation.function   FCT_DEFAULT|FCT_M_PRE_OUTPUT\n"
+        b"error_filter[0].action       HIDE | HIDE_PRNT\n"
+        b"error_filter[1].action       HIDE_PRNT | HIDE\n"
+        b"Ende\n"
+    )
+    result = lint_file(text, "hochlauf.lis", FileSettings(kind="startup"))
+    found = [(d.code, d.line, d.fix is not None) for d in result.diagnostics]
+    # the misspelt flag is named; a fix would rewrite the first token only, so a later flag gets none
+    assert found == [("LIS203", 3, False), ("LIS203", 4, True)]
+    assert all("`HIDE_PRNT` is not a value of" in d.message for d in result.diagnostics)
+    fix = result.diagnostics[1].fix
+    assert fix is not None and [edit.content for edit in fix.edits] == ["HIDE_PRINT"]
+    # an axis list reads no flags: the same text after a symbol is still LIS007 there
+    axis = lint_file(b"kenngr.homing.homing_type CNC_CONTROLLED | TORQ\nEnde\n", "achsmds1.lis")
+    assert [d.code for d in axis.diagnostics] == ["LIS007"]

@@ -51,7 +51,7 @@ from .facts import (
     ValueFact,
 )
 
-__all__ = ["Analysis", "Reference", "Setting", "analyse", "comment_in_value_position"]
+__all__ = ["Analysis", "Reference", "Setting", "analyse", "combined_flags", "comment_in_value_position"]
 
 
 @dataclass(slots=True, eq=False)
@@ -243,6 +243,10 @@ def _check_value(setting: Setting, parameter: Parameter, analysis: Analysis, cat
             add_problem(MissingValue(text))
         return
 
+    flags = combined_flags(line) if kind == SYMBOL and not _describes_axes(cat) else None
+    if flags is not None:
+        _check_flags(setting, parameter, flags)
+        return
     if kind == BOOL:
         _check_bool(setting, parameter, text, value_kind)
     elif kind == INTEGER:
@@ -348,6 +352,29 @@ def _check_symbol(setting: Setting, parameter: Parameter, text: str, value_kind:
                 setting.value = symbol
                 return
     _unknown_symbol(setting, parameter, text)
+
+
+def combined_flags(line: syntax.Line) -> tuple[str, ...] | None:
+    """The symbols of an OR-combined value (`REPORT | REPORT_EXTENDED |PRINT`), None for a single value.
+
+    Lists other than axis lists combine flags with `|` and free spacing (the start-up list's
+    `error_protocol_mode`, `...path_preparation.function`; format facts §6); a `(` starts the comment."""
+    if line.value_kind != syntax.SYMBOL:
+        return None
+    text = ((line.value or "") + line.sep2 + (line.rest or "")).split("(", 1)[0]
+    if "|" not in text:
+        return None
+    return tuple(part.strip() for part in text.split("|"))
+
+
+def _check_flags(setting: Setting, parameter: Parameter, flags: tuple[str, ...]) -> None:
+    """Every flag of an OR-combined value is one of the parameter's symbols (an empty one, as in
+    `REPORT |`, makes the whole combination unknown)."""
+    for flag in flags:
+        if flag not in parameter.symbols:
+            _unknown_symbol(setting, parameter, flag or " | ".join(flags).strip(" |") + " |")
+            return
+    setting.value = " | ".join(flags)
 
 
 def _unknown_symbol(setting: Setting, parameter: Parameter, text: str) -> None:

@@ -4,6 +4,11 @@ What
 A symbolic value that the parameter does not know, for example a misspelt
 homing type. The message names the closest accepted symbol.
 
+Lists of other kinds than axis lists combine flags with `|` and free spacing
+(`error_protocol_mode  REPORT | REPORT_EXTENDED |PRINT` in the SDK's start-up
+list): there every flag must be a symbol of the parameter, and a finding about
+a flag after the first has no fix.
+
 Why
 ---
 An unknown symbol is rejected when the list is read and the parameter keeps
@@ -36,6 +41,7 @@ from collections.abc import Iterator
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
+from ..axis.analysis import combined_flags
 from ..axis.facts import UnknownSymbol
 from ._common import value_facts
 from .codes import ALL_KINDS
@@ -96,5 +102,15 @@ def message(fact: UnknownSymbol, setting: Setting, parameter: Parameter) -> str:
     return text
 
 
+def _one_of_flags(fact: UnknownSymbol, setting: Setting) -> bool:
+    """A flag of an OR-combined value (`REPORT | REPORTT`) other than the written value token: replacing
+    the token would change another flag, so such a finding has no fix."""
+    return combined_flags(setting.line) is not None and fact.text != setting.line.value
+
+
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    yield from value_facts(ctx, CODE, FACTS, message, replacement, applicability="safe")
+    yield from value_facts(ctx, CODE, FACTS, message, replacement, applicability="safe", skip=_one_of_flags)
+    if not ctx.axis_list:  # OR-combined flags are read in lists of other kinds only
+        yield from value_facts(
+            ctx, CODE, FACTS, message, skip=lambda fact, setting: not _one_of_flags(fact, setting)
+        )
