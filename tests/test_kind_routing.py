@@ -67,3 +67,12 @@ def test_a_default_list_named_otherwise_is_judged_as_a_default_list(tmp_path: Pa
     (tmp_path / ".achslint.toml").write_text('include = ["*.lis"]\n')
     result = run_cli("lint", str(tmp_path), "--format", "json", "--select", "LIS506")
     assert ("basis.lis", "LIS506") in diagnostics(result)
+
+
+def test_a_channel_list_passed_alone_gets_its_machine_s_findings() -> None:
+    # pre-commit passes the changed channel list alone: the start-up list beside it makes it part of a
+    # machine, so a channel axis no axis list backs (LIS512) is reported on it, not "All checks passed!"
+    bad = FIXTURES / "rules" / "LIS512" / "bad"
+    result = run_cli("lint", str(bad / "sda_mds1.lis"), "--format", "json", "--select", "LIS5")
+    assert [code for name, code in diagnostics(result) if name == "sda_mds1.lis"] == ["LIS512", "LIS512"]
+    assert {name for name, _ in diagnostics(result)} == {"sda_mds1.lis"}  # only the file passed

@@ -41,7 +41,7 @@ from ..core.files import (
     reason,
     same_file,
 )
-from ..machine.startup import Startup, StartupEntry, is_default_list, is_startup_list, read_startup
+from ..machine.startup import Startup, StartupEntry, is_startup_list, read_startup
 from ..syntax.parser import parse_bytes
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
 from .linter import list_kind
@@ -331,8 +331,8 @@ class Finder:
                 found.add(Target(name, path, self.config_for(path), (), base))
                 continue
             kind = self.entry_kind(path, known)
-            axis = kind in (None, "axis")
-            machines = self.machines_of(path, known) if axis and not is_default_list(path) else []
+            # every kind belongs to the machines that name it (a channel list's cross-list findings are its own)
+            machines = self.machines_of(path, known)
             keys = tuple(m.key for m in machines)  # none: compared with no other list
             defaults = next((m.defaults for m in machines if m.defaults is not None), None)
             found.add(Target(name, path, self.config_for(path), keys, defaults, kind=kind))

@@ -62,7 +62,7 @@ def machine_findings(
             by_machine.setdefault(key, []).append(pair)
     for key, members in by_machine.items():
         for target, result in sorted(members, key=lambda pair: place(pair, key)):
-            if target.path is not None and is_default_list(target.path):
+            if target.kind == "default_axis" or (target.path is not None and is_default_list(target.path)):
                 continue  # loaded underneath the axes, not an axis of its own
             if result.error or (result.summary is None and not result.summaries):
                 continue
