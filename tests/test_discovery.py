@@ -184,3 +184,15 @@ def test_a_list_update_is_no_axis_and_is_checked_over_the_list_it_changes(tmp_pa
     result = run_cli("lint", str(alone), "--format", "json")
     assert json.loads(result.stdout)["diagnostics"] == []
     assert "a list update; the list it changes was not found" in result.stderr.decode()
+
+
+def test_axis_lists_beyond_zahl_mds_are_not_members_of_the_machine(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n")
+    (tmp_path / "achsmds2.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n")
+    (tmp_path / "hochlauf.lis").write_text(
+        "zahl_mds  1\nachs_mds[0]  ./achsmds1.lis\nachs_mds[1]  ./achsmds2.lis\nEnde\n"
+    )
+    # the CNC reads one axis list: the second is never loaded (LIS516 says so), so it repeats no number
+    [machine] = Finder().machines_of(tmp_path / "achsmds1.lis")
+    assert [t.path.name for t in machine.members if t.path] == ["achsmds1.lis"]
+    assert machine_findings_cli(tmp_path) == {("hochlauf.lis", 3, "LIS516")}

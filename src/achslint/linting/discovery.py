@@ -270,7 +270,7 @@ class Finder:
             Target(
                 shown(e.path), e.path, self.config_for(e.path), (str(startup.path),), defaults, kind="axis"
             )
-            for e in startup.axes
+            for e in startup.loaded_axes()
             if e.path is not None and not same_file(e.path, startup.path)
         ]
         return MachineFiles(str(startup.path), startup, members, defaults)
@@ -349,7 +349,7 @@ class Finder:
         for startup in _unique([*known, *self.startups_around(path.parent)]):
             named: list[tuple[str, Sequence[StartupEntry | None]]] = [
                 ("default_axis", [startup.default]),
-                ("axis", startup.axes),
+                ("axis", startup.loaded_axes()),
                 ("default_channel", [startup.default_channel]),
                 ("channel", startup.channels),
             ]
@@ -499,8 +499,9 @@ def _names(entry: Path | None, path: Path) -> bool:
 
 
 def _entries(startup: Startup) -> list[StartupEntry]:
-    """Every list a start-up list names: its default list, axis lists and (default) channel lists."""
-    return [e for e in (startup.default, *startup.axes, startup.default_channel, *startup.channels) if e]
+    """Every list a start-up list loads: its default list, axis lists (up to `zahl_mds`) and channel lists."""
+    named = (startup.default, *startup.loaded_axes(), startup.default_channel, *startup.channels)
+    return [e for e in named if e]
 
 
 def _named_by(startups: list[Startup], path: Path) -> bool:

@@ -70,6 +70,19 @@ class Startup:
     compensations: list[StartupEntry] = field(default_factory=list)  # axis compensation lists, achs_kw[i]
     counts: dict[str, StartupCount] = field(default_factory=dict)  # zahl_mds, zahl_kw when written
 
+    def loaded_axes(self) -> list[StartupEntry]:
+        """The axis lists the CNC loads: with `zahl_mds` written (P-STUP-00014), the entries below that count
+        — it ignores the others (LIS516 says so) —, else every `achs_mds[i]`."""
+        count = self.counts.get("zahl_mds")
+        if count is None or count.value is None:
+            return list(self.axes)
+        return [entry for entry in self.axes if entry_index(entry) < count.value]
+
+
+def entry_index(entry: StartupEntry) -> int:
+    """The index of an entry like `achs_mds[3]` (3)."""
+    return int(entry.key[entry.key.index("[") + 1 : -1])
+
 
 def is_startup_list(path: Path) -> bool:
     return any(fnmatch.fnmatch(path.name.lower(), pattern) for pattern in STARTUP_NAMES)

@@ -9,10 +9,11 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import entry_index
 
 if TYPE_CHECKING:
     from ..machine.channel import ChannelAxis, ChannelList
-    from ..machine.startup import Member, Startup, StartupEntry
+    from ..machine.startup import Member, Startup
 
 # A count's entries (`zahl_mds` counts `achs_mds[i]`) and the parameter id of each, for messages.
 COUNTED = {
@@ -49,9 +50,7 @@ def by_number(members: list[Member]) -> dict[int, Member]:
     return found
 
 
-def index(entry: StartupEntry) -> int:
-    """The index of an entry like `achs_mds[3]` (3)."""
-    return int(entry.key[entry.key.index("[") + 1 : -1])
+index = entry_index  # the index of an entry like `achs_mds[3]` (3)
 
 
 def every_axis_list_read(startup: Startup, members: list[Member]) -> bool:
