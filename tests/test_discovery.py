@@ -196,3 +196,16 @@ def test_axis_lists_beyond_zahl_mds_are_not_members_of_the_machine(tmp_path: Pat
     [machine] = Finder().machines_of(tmp_path / "achsmds1.lis")
     assert [t.path.name for t in machine.members if t.path] == ["achsmds1.lis"]
     assert machine_findings_cli(tmp_path) == {("hochlauf.lis", 3, "LIS516")}
+
+
+def test_an_unreadable_default_list_is_named_in_the_error(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n")
+    (tmp_path / "default_mds.lis").write_bytes("getriebe[0].a_ref 5\nEnde\n".encode("utf-16"))
+    (tmp_path / "hochlauf.lis").write_text(
+        "default_achs_mds  ./default_mds.lis\nachs_mds[0]  ./achsmds1.lis\nEnde\n"
+    )
+    result = run_cli("lint", str(tmp_path / "hochlauf.lis"))
+    assert result.returncode == 2
+    said = result.stderr.decode()
+    assert "achsmds1.lis: the list loaded under it," in said and "default_mds.lis, cannot be read" in said
+    assert "UTF-16" in said

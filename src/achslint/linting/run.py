@@ -238,7 +238,8 @@ def _lint_one(item: WorkItem) -> FileResult:
             str(exc) if isinstance(exc, Refused) else f"cannot read {exc.filename or name}: {reason(exc)}",
         )
     except UnreadableInput as exc:  # the list underneath (a default list, the list an update changes)
-        return FileResult(name, [], str(exc))
+        said = str(exc).removeprefix(f"{defaults}: ")
+        return FileResult(name, [], f"{name}: the list loaded under it, {defaults}, cannot be read: {said}")
     return _process(data, name, settings, mode, Path(path), default_data)
 
 
