@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from achslint.catalogue import BOOL, INTEGER, REAL, STRING, SYMBOL, Parameter
-from achslint.catalogue.kinds import AXIS, BY_ID, CHANNEL, CONTENT_KINDS, Kind
+from achslint.catalogue.kinds import AXIS, BY_ID, CHANNEL, CONTENT_KINDS, Kind, load_table
 from achslint.core.diagnostics import Severity
 from achslint.linting.engine import enabled_checks
 from achslint.linting.linter import FileSettings, lint_file, list_kind
@@ -332,3 +332,12 @@ def test_or_combined_flags_of_a_start_up_list_are_each_checked() -> None:
     # an axis list reads no flags: the same text after a symbol is still LIS007 there
     axis = lint_file(b"kenngr.homing.homing_type CNC_CONTROLLED | TORQ\nEnde\n", "achsmds1.lis")
     assert [d.code for d in axis.diagnostics] == ["LIS007"]
+
+
+def test_linting_an_axis_list_reads_no_other_catalogue_and_a_tool_list_only_its_own() -> None:
+    load_table.cache_clear()
+    axis = lint_file((GOOD / "achsmds_z.lis").read_bytes(), "achsmds_z.lis")
+    assert axis.note is None and axis.summary is not None  # an axis, resolved for the machine step
+    assert load_table.cache_info().currsize == 0
+    lint(GOOD / GOOD_LISTS["tools"], "tools")
+    assert load_table.cache_info().currsize == 1
