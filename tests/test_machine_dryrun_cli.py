@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
+from pathlib import Path
 
 import pytest
 
@@ -94,6 +96,70 @@ def test_gantry_and_drive_controlled_spindle_of_the_portal(cli):
     assert {p["kind"] for p in axes["Y2"]["phases"]} == {"following"}
     assert [p["start_time"] for p in axes["Y2"]["phases"]] == [p["start_time"] for p in axes["Y"]["phases"]]
     assert axes["S"]["outcome"] == "not_simulated"
+
+
+def portal_copy(tmp_path: Path, program: str, scenario: str) -> tuple[str, str, str]:
+    """The portal in tmp_path with Y2's reference position 1 mm above Y's (-1449 mm against -1450 mm), a
+    program and a machine scenario: start-up list, program, scenario."""
+    folder = tmp_path / "portal"
+    shutil.copytree(PORTAL, folder)
+    slave = folder / "listen" / "achsmds7.lis"
+    text = slave.read_text(encoding="latin-1")
+    assert "getriebe[0].pos_refpkt                    -14500000" in text
+    slave.write_text(text.replace("-14500000", "-14490000"), encoding="latin-1")
+    (folder / "p.nc").write_text(program, encoding="utf-8")
+    (folder / "machine.toml").write_text(scenario, encoding="utf-8")
+    return str(folder / "listen" / "hochlauf.lis"), str(folder / "p.nc"), str(folder / "machine.toml")
+
+
+def test_the_portal_s_gantry_slave_outside_the_channel_moves_and_homes_with_its_master(cli, tmp_path):
+    # Y2 is in no channel; it stands 3 mm ahead of Y and makes every move of Y: the homing and the 10 mm
+    # after it. It takes its own reference position (-1449 mm) when Y takes its own (-1450 mm).
+    startup, program, scenario = portal_copy(
+        tmp_path,
+        "N10 G74 Y1\nN20 G01 G91 Y10 F1000\nN30 M30\n",
+        "[axes.Y]\nstart_position = 0.0\n[axes.Y2]\nstart_position = 3.0\n",
+    )
+    result = cli("dry-run", startup, "--program", program, "--scenario", scenario, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    document = json.loads(result.stdout)
+    axes = {a["name"]: a for a in document["axes"]}
+    y, y2 = axes["Y"], axes["Y2"]
+    assert (y2["logical_number"], y2["gantry"], y2["outcome"]) == (
+        7,
+        {"role": "slave", "partner": "Y"},
+        "homed",
+    )
+    assert y["gantry"] == {"role": "master", "partner": "Y2"}
+    assert [p["kind"] for p in y2["phases"]] == ["following"] * len(y["phases"])
+    assert [p["kind"] for p in y["phases"]][-1] == "move"  # the G01 after the homing
+    for master, slave in zip(y["phases"], y2["phases"], strict=True):
+        assert (slave["start_time"], slave["end_time"]) == (master["start_time"], master["end_time"])
+        assert slave["start_position"] == pytest.approx(master["start_position"] + 3.0)
+        assert slave["end_position"] == pytest.approx(master["end_position"] + 3.0)
+    assert y2["position"] == pytest.approx(y["position"] + 3.0)
+    # both referenced at the same moment, each to its own reference position
+    assert y2["reference"]["time"] == y["reference"]["time"]
+    assert y2["reference"]["position"] == pytest.approx(y["reference"]["position"] + 3.0)
+    assert (y["reference"]["value"], y2["reference"]["value"]) == (-1450.0, -1449.0)
+    assert y2["final_position"] == pytest.approx(y["final_position"] + 1.0)
+    assert y["final_position"] == pytest.approx(y["reference"]["value"] + 10.0, abs=0.2)  # braking + 10 mm
+    groups = document["blocks"][0]["groups"]
+    assert [(g["axes"], g["following"]) for g in groups] == [(["Y"], ["Y2"])]
+
+
+def test_a_program_naming_the_gantry_slave_outside_the_channel_stops_there(cli, tmp_path):
+    startup, program, scenario = portal_copy(tmp_path, "N10 G74 Y2=1\nN20 G74 Y1\nN30 M30\n", "")
+    result = cli("dry-run", startup, "--program", program, "--scenario", scenario, "--format", "json")
+    assert result.returncode == 1, result.stderr
+    failure = json.loads(result.stdout)["failure"]
+    assert (failure["axis"], failure["line"], failure["cause"]) == (
+        "Y2",
+        1,
+        "gantry slave named in the program",
+    )
+    assert "G74 names Y2, the gantry slave of Y: it is no axis of the channel" in failure["reason"]
+    assert failure["reason"].endswith("moves only with its master; program Y")
 
 
 def test_disabled_axis_fails_with_exit_1(cli, tmp_path):

@@ -45,11 +45,14 @@ def test_the_sdk_layout_names_axes_from_its_channel_list():
     assert machine.gantry_pairs == [] and machine.notes == [] and machine.other_axes == []
 
 
-def test_the_portal_has_one_gantry_pair_from_two_sources():
+def test_the_portal_couples_its_slave_outside_the_channel_to_its_master():
     machine = build_machine(PORTAL)
-    # achsmds7.lis sets kenngr.gantry_ax_nr 2 and the channel list couples 2 and 7: one pair, said once
-    assert machine.gantry_pairs == [("Y", "Y2")]
-    assert machine.axes["Y2"].gantry_master == "Y"
+    # achsmds7.lis (Y2, logical 7) sets kenngr.gantry_ax_nr 2; the channel list names only its master Y
+    assert "Y2" not in machine.axes
+    assert [(axis.name, axis.logical_number, axis.gantry_master) for axis in machine.followers()] == [
+        ("Y2", 7, "Y")
+    ]
+    assert machine.gantry_pairs == [("Y", "Y2")] and machine.notes == []
     assert machine.axes["Y"].gantry_master is None
     assert {n: a.resolved.homing_type for n, a in machine.axes.items() if n in "BC"} == {
         "B": "IGNORE_ABS_POS",
@@ -91,6 +94,55 @@ def test_a_coupled_pair_of_the_channel_list_alone_makes_a_gantry(tmp_path):
     machine = build_machine(startup)
     assert list(machine.axes) == ["X", "XS"]  # the channel's names, not kopf.log_achs_name
     assert machine.gantry_pairs == [("X", "XS")]
+
+
+def gantry_outside_the_channel(tmp_path: Path, slave_name: str, *channel: str) -> Path:
+    """Y (logical 1) and its static gantry slave (logical 2); the channel names Y and whatever `channel`
+    adds (pairs of lines: name, logical number)."""
+    names = ["gruppe[0].achse[0].bezeichnung Y", "gruppe[0].achse[0].log_achs_nr 1"]
+    for i in range(0, len(channel), 2):
+        slot = i // 2 + 1
+        names += [f"gruppe[0].achse[{slot}].bezeichnung {channel[i]}"]
+        names += [f"gruppe[0].achse[{slot}].log_achs_nr {channel[i + 1]}"]
+    slave = "\n".join(["kopf.achs_nr 2", *([f"kopf.log_achs_name {slave_name}"] if slave_name else [])])
+    return machine_folder(
+        tmp_path,
+        {
+            "hochlauf.lis": "sda_mds[0] sda.lis\nachs_mds[0] a1.lis\nachs_mds[1] a2.lis\n"
+            "achs_mds[2] a3.lis\nEnde\n",
+            "a1.lis": axis_list(1, "Y"),
+            "a2.lis": slave + "\nkenngr.gantry_ax_nr 1\nEnde\n",
+            "a3.lis": axis_list(3, "X"),
+            "sda.lis": "\n".join(names) + "\nEnde\n",
+        },
+    )
+
+
+@pytest.mark.parametrize(
+    ("slave_name", "channel", "expected"),
+    [
+        ("Y2", ("X", "3"), "Y2"),  # its kopf.log_achs_name
+        ("", ("X", "3"), "slave of Y"),  # none: named after its master
+        ("X", ("X", "3"), "slave of Y"),  # the channel calls axis 3 X: the slave cannot go by X
+    ],
+)
+def test_a_gantry_slave_the_channel_leaves_out_follows_its_master(tmp_path, slave_name, channel, expected):
+    machine = build_machine(gantry_outside_the_channel(tmp_path, slave_name, *channel))
+    assert list(machine.axes) == ["Y", "X"]
+    assert [(a.name, a.logical_number, a.gantry_master) for a in machine.followers()] == [(expected, 2, "Y")]
+    assert machine.gantry_pairs == [("Y", expected)]
+    assert not any("left out" in note for note in machine.notes)
+
+
+def test_a_gantry_slave_whose_master_the_channel_leaves_out_too_is_no_pair(tmp_path):
+    # the channel names only axis 3: neither Y nor its slave is programmable, the pair is dropped with a note
+    startup = gantry_outside_the_channel(tmp_path, "Y2")
+    (tmp_path / "sda.lis").write_text(
+        "gruppe[0].achse[0].bezeichnung X\ngruppe[0].achse[0].log_achs_nr 3\nEnde\n"
+    )
+    machine = build_machine(startup)
+    assert list(machine.axes) == ["X"] and machine.gantry_pairs == [] and machine.followers() == []
+    assert any("logical number 1 has no name in this channel" in note for note in machine.notes)
 
 
 def test_channel_list_problems_are_notes_and_unknown_parameters_are_passed_over(tmp_path):

@@ -17,11 +17,18 @@ from .conftest import FIXTURES, run_cli
 
 PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
 SDK4 = FIXTURES / "machines" / "sdk4" / "listen" / "hochlauf.lis"
+# Z, Y and its gantry slave Y2 without a channel list: each goes by its kopf.log_achs_name, Y2 included.
+GANTRY = FIXTURES / "rules" / "LIS605" / "gantry" / "hochlauf.lis"
 
 
 @pytest.fixture(scope="module")
 def portal():
     return build_machine(PORTAL)
+
+
+@pytest.fixture(scope="module")
+def gantry():
+    return build_machine(GANTRY)
 
 
 def cli(*args: str):
@@ -44,7 +51,7 @@ def test_one_finding_of_each_kind_at_its_word(portal):
         "N5 G01 G90 Z200 F500\n"  # Z moves before it is homed: LIS606 at Z200 (column 12)
         "N10 G74 Z1 Q1 Z2\n"  # Q is no axis (LIS602, column 12); Z twice (LIS603, column 15)
         "N20 G74 X1 B1 C2\n"  # B stands while X moves (LIS607, column 12); C is DISABLED (LIS604, column 15)
-        "N30 G74 Y2=1 Y2\n"  # the slave at step 1, its master at step 2 (LIS605, column 9)
+        "N30 G74 Y2=1 Y2\n"  # the gantry slave is no channel axis (LIS602 alone, not LIS605, column 9)
         "N40 G74 A0\n"  # order 0 (LIS601, column 9)
     )
     assert findings(portal, text) == [
@@ -53,22 +60,36 @@ def test_one_finding_of_each_kind_at_its_word(portal):
         (2, 15, "LIS603"),
         (3, 12, "LIS607"),
         (3, 15, "LIS604"),
-        (4, 9, "LIS605"),
+        (4, 9, "LIS602"),
         (5, 9, "LIS601"),
     ]
 
 
-def test_homing_state_between_blocks(portal):
+def test_the_portals_gantry_slave_is_no_axis_of_its_channel(portal):
+    # Y2 follows Y (kenngr.gantry_ax_nr 2) and the channel names only Y: a program naming Y2 gets one
+    # finding, LIS602 telling to program the master, never LIS605 or LIS606 about an axis it cannot name.
+    found = check_program(read_program(b"N10 G74 Y2=1\nN20 G01 G91 Y2=5 F100\nN30 G74 Y1\n", "p.nc"), portal)
+    assert [(d.line, d.column, d.code) for d in found] == [(1, 9, "LIS602"), (2, 13, "LIS602")]
+    assert "Y2 is the gantry slave of Y" in found[0].message and "program Y instead" in found[0].message
+    assert findings(portal, "N10 G74 Y1\nN20 G01 G91 Y5 F100\n") == []
+
+
+def test_a_gantry_slave_that_goes_by_its_own_name_homed_before_its_master(gantry):
+    assert findings(gantry, "N10 G74 Y2=1 Y2\nN20 G74 Y2=1\n") == [(1, 9, "LIS605")]
+
+
+def test_homing_state_between_blocks(portal, gantry):
     # The slave Y2 is referenced with its master (gantry_slave_no_homing): it may move after N10.
+    assert findings(gantry, "N10 G74 Y1\nN20 G01 G91 Y2=5 F100\nN30 M30\n") == []
     # B has an absolute encoder: it may move at once. C is DISABLED: its G74 fails, but it is absolute too.
-    assert findings(portal, "N10 G74 Y1\nN20 G01 G91 Y2=5 B10 F100\nN30 M30\n") == []
+    assert findings(portal, "N10 G74 Y1\nN20 G01 G91 B10 F100\nN30 M30\n") == []
     # A move between two G74 blocks: X homed in N10 may move, A homed only in N30 may not yet.
     assert findings(portal, "N10 G74 X1\nN20 G00 X5 A10\nN30 G74 A1\n") == [(2, 12, "LIS606")]
 
 
-def test_a_slave_with_its_master_in_the_same_group_is_fine(portal):
-    assert findings(portal, "N10 G74 Y1 Y2=1\n") == []
-    assert findings(portal, "N10 G74 Y2=2 Y1\n") == []  # the master at step 1, the slave at step 2
+def test_a_slave_with_its_master_in_the_same_group_is_fine(gantry):
+    assert findings(gantry, "N10 G74 Y1 Y2=1\n") == []
+    assert findings(gantry, "N10 G74 Y2=2 Y1\n") == []  # the master at step 1, the slave at step 2
 
 
 def test_the_manuals_program_on_the_four_axis_machine():
@@ -131,15 +152,17 @@ def test_explain_a_machine_as_json():
     assert result.returncode == 0, result.stderr
     report = json.loads(result.stdout)
     axes = {row["name"]: row for row in report["axes"]}
-    assert list(axes) == ["X", "Y", "Z", "A", "B", "Y2", "C", "S"]
-    assert axes["Y2"]["gantry"] == {"role": "slave", "master": "Y", "homes_with_master": True}
+    assert list(axes) == ["X", "Y", "Z", "A", "B", "C", "S"]  # the channel's axes: not the gantry slave Y2
+    others = {row["name"]: row for row in report["other_axes"]}
+    assert list(others) == ["Y2"] and others["Y2"]["logical_number"] == 7
+    assert others["Y2"]["gantry"] == {"role": "slave", "master": "Y", "homes_with_master": True}
     assert axes["Y"]["gantry"] == {"role": "master", "slaves": ["Y2"]}
     assert axes["C"]["strategy"]["id"] == "disabled" and axes["S"]["axis_type"] == "spindle"
     assert axes["X"]["drive_type"] == 1 and axes["B"]["drive_type"] == 8
     # rfp.nc: N10 G74 Z1, N15 G01 G90 Z200 F500, N20 G74 X1 Y1 A2 S3
     assert axes["Z"]["homed"] == "line 3 (N10), step 1"
     assert axes["X"]["homed"] == axes["Y"]["homed"] == "line 5 (N20), step 1"
-    assert axes["Y2"]["homed"] == "line 5 (N20), step 1, with its master Y"
+    assert others["Y2"]["homed"] == "line 5 (N20), step 1, with its master Y"
     assert axes["A"]["homed"] == "line 5 (N20), step 2"
     assert axes["S"]["homed"] == "line 5 (N20), step 3"
     assert axes["B"]["homed"].startswith("not needed")
@@ -161,6 +184,17 @@ def test_explain_a_machine_as_text():
     assert "drive-controlled homing" in result.stdout  # the spindle S
     assert "line 5 N20: G74 homes X, Y; then S" in result.stdout
     assert "line 4 N15: G01 F500 G90 Z200" in result.stdout
+
+
+def test_explain_shows_the_portals_gantry_slave_beside_the_channel_s_axes():
+    result = cli("explain", str(PORTAL), "--program", str(FIXTURES / "machines" / "portal" / "rfp.nc"))
+    assert result.returncode == 0, result.stderr
+    assert (
+        "Gantry slave, no axis of this channel: Y2 (" in result.stdout
+        and "logical axis 7) moves with its master Y; homed: line 5 (N20), step 1, with its master Y"
+        in " ".join(result.stdout.split())
+    )
+    assert "Not named in this channel" not in result.stdout
 
 
 def test_explain_program_needs_a_start_up_list():

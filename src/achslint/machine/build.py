@@ -5,7 +5,9 @@ the CNC loads them) and the channel lists (`sda_mds[i]`, with `default_sda_mds` 
 list of the chosen channel gives the names NC programs use and their logical axis numbers; each name is
 matched to the axis list whose `kopf.achs_nr` has that number. Without a channel list, each axis goes by
 its `kopf.log_achs_name`. Gantry pairs come from the slaves' `kenngr.gantry_ax_nr` (P-AXIS-00070) and from
-the coupled pairs of the channel list (`synchro_data.koppel_gruppe[g].paar[i]`).
+the coupled pairs of the channel list (`synchro_data.koppel_gruppe[g].paar[i]`). A static gantry slave
+belongs to no channel (P-AXIS-00070): the channel list does not name it, so it is no programmable axis, but
+it stays part of the machine, coupled to its master (`Machine.followers()`).
 
 Anything the CNC would refuse to start with — the start-up list, an axis list or the channel list missing
 or unreadable — raises `MachineError` naming the file and the line of the start-up list that names it.
@@ -50,7 +52,7 @@ def build_machine(startup: Path, *, cnc_root: Path | None = None, channel: int =
     defaults = _read_entry(entries, entries.default, "default axis list") if entries.default else None
     machine = Machine(startup=startup, channel=channel)
     lists: list[tuple[StartupEntry, bytes, ResolvedAxis]] = []
-    for entry in entries.axes:
+    for entry in entries.loaded_axes():  # the entries beyond zahl_mds are never loaded (LIS516)
         data = _read_entry(entries, entry, "axis list")
         lists.append((entry, data, resolve_bytes(data, _shown(entry), defaults)))
     channel_list = _channel_list(entries, channel, machine)
@@ -301,16 +303,28 @@ def _named_by_channel(
 
 
 def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
-    """Gantry pairs by programmed name: from the slaves' kenngr.gantry_ax_nr, then the channel's pairs."""
-    pairs: list[tuple[int, int, str]] = []
+    """Gantry pairs by programmed name: from the slaves' kenngr.gantry_ax_nr, then the channel's pairs.
+
+    A static gantry slave (kenngr.gantry_ax_nr, P-AXIS-00070) belongs to no channel: when the channel does
+    not name it, it stays among `other_axes` and is coupled to its named master there, under its
+    kopf.log_achs_name (or "slave of <master>" when that is empty or a programmed name already), so that the
+    dry-run and `explain` move and home it with its master. A pair of the channel list couples axes of the
+    channel only."""
+    unnamed = {axis.logical_number: axis for axis in machine.other_axes}
+    pairs: list[tuple[int, int, str, bool]] = []  # master, slave, where it is written, static gantry
     for axis in [*machine.axes.values(), *machine.other_axes]:
         number = axis.resolved.get("kenngr.gantry_ax_nr")
         if isinstance(number, int) and number > 0:
-            pairs.append((number, axis.logical_number, f"{_shown_path(axis.list_path)} kenngr.gantry_ax_nr"))
+            where = f"{_shown_path(axis.list_path)} kenngr.gantry_ax_nr"
+            pairs.append((number, axis.logical_number, where, True))
     for pair in channel_list.pairs if channel_list else []:
-        pairs.append((pair.master, pair.slave, f"{pair.at.path}:{pair.at.line} {pair.slot}"))
-    for master_number, slave_number, source in pairs:
+        pairs.append((pair.master, pair.slave, f"{pair.at.path}:{pair.at.line} {pair.slot}", False))
+    for master_number, slave_number, source, static in pairs:
         master, slave = machine.by_number(master_number), machine.by_number(slave_number)
+        if slave is None and static and master is not None and master_number != slave_number:
+            slave = unnamed.get(slave_number)
+            if slave is not None and slave.gantry_master is None:
+                slave.name = _follower_name(machine, slave, master.name)
         if master is None or slave is None:
             missing = master_number if master is None else slave_number
             machine.notes.append(
@@ -327,6 +341,18 @@ def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
             continue
         slave.gantry_master = master.name
         machine.gantry_pairs.append((master.name, slave.name))
+
+
+def _follower_name(machine: Machine, slave: MachineAxis, master: str) -> str:
+    """The name a gantry slave outside the channel goes by: its kopf.log_achs_name, unless no list writes
+    one (the catalogue's default is no name), it is empty or taken by a programmed axis or another such
+    slave; then "slave of <master>" (with its logical number when that is taken too)."""
+    taken = set(machine.axes) | {axis.name for axis in machine.followers()}
+    own = slave.name if slave.defined_at is not None else ""
+    for name in (own, f"slave of {master}"):
+        if name and name not in taken:
+            return name
+    return f"slave of {master} (axis {slave.logical_number})"
 
 
 def rename(machine: Machine, names: dict[str, int], where: str) -> None:
@@ -349,14 +375,17 @@ def rename(machine: Machine, names: dict[str, int], where: str) -> None:
                 f"{where}: [names] {name} = {number}: the machine has no axis {number} (it has {known})"
             )
     old_to_new: dict[str, str] = {}
+    # a gantry slave coupled outside the names stays there unless [names] names it
+    followers = {id(axis) for axis in machine.followers()}
     for name, number in names.items():
         axis = by_number[number]
         old_to_new[axis.name] = name
         axis.name = name
+        followers.discard(id(axis))
     machine.axes = {}
     machine.other_axes = []
     for axis in everyone:
-        if axis.name and axis.name not in machine.axes:
+        if axis.name and axis.name not in machine.axes and id(axis) not in followers:
             machine.axes[axis.name] = axis
         else:
             machine.other_axes.append(axis)

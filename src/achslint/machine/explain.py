@@ -3,7 +3,8 @@
 `explain_machine` returns plain data (output/explain.py renders it as text or JSON): per axis its programmed name, its
 logical number, its axis and drive type, the homing strategy the CNC runs at power-up and the one a G74 that
 names it runs (from the homing registry, after the CNC's load-time corrections) and its part in a gantry; with a program, the homing order block by block
-and the program findings (LIS6xx).
+and the program findings (LIS6xx). A gantry slave the channel does not name is among the other axes, shown
+as its master's slave (with where the program homes it), never as an axis a program may name.
 """
 
 from __future__ import annotations
@@ -74,7 +75,7 @@ def _order(program: Program, machine: Machine) -> tuple[list[dict[str, Any]], di
                 groups.append({"sequence": number, "axes": names})
                 for name in names:
                     homed_by.setdefault(name, f"{where}, step {step}")
-                    for axis in machine.axes.values():
+                    for axis in [*machine.axes.values(), *machine.followers()]:
                         if axis.gantry_master == name and homes_with_master(axis):
                             homed_by.setdefault(axis.name, f"{where}, step {step}, with its master {name}")
             blocks.append({"line": block.at.line, "number": block.number, "kind": "homing", "groups": groups})
@@ -113,7 +114,10 @@ def explain_machine(machine: Machine, program: Program | None = None, gear: int 
     }
     if program is not None:
         blocks, homed_by = _order(program, machine)
-        for row, axis in zip(axes, machine.axes.values(), strict=True):
+        rows = [*zip(axes, machine.axes.values(), strict=True)]
+        others = zip(report["other_axes"], machine.other_axes, strict=True)
+        rows += [(row, axis) for row, axis in others if axis.gantry_master is not None]  # moved by a master
+        for row, axis in rows:
             if axis.name in homed_by:
                 row["homed"] = homed_by[axis.name]
             elif homed_from_start(axis):

@@ -59,11 +59,17 @@ class Machine:
     )
     channel_list: Path | None = None  # that channel's list
     # Axes of the start-up list that the channel does not name (or whose name was taken): not programmable
-    # in this channel, still part of the machine (shown by `explain`).
+    # in this channel, still part of the machine (shown by `explain`). A gantry slave among them carries
+    # `gantry_master` and a pair in `gantry_pairs`: it moves with its master (`followers()`).
     other_axes: list[MachineAxis] = field(default_factory=list)
 
     def by_number(self, logical_number: int) -> MachineAxis | None:
         return next((a for a in self.axes.values() if a.logical_number == logical_number), None)
+
+    def followers(self) -> list[MachineAxis]:
+        """Gantry slaves that are no programmable axis (in `other_axes`, coupled to a named master): a
+        program cannot name them, they move with their master (P-AXIS-00070)."""
+        return [axis for axis in self.other_axes if axis.gantry_master is not None]
 
 
 # -- the homing program ------------------------------------------------------------------------

@@ -21,7 +21,9 @@ How the program runs (TF5200 homing manual §2.2, P-AXIS-00074, P-AXIS-00299):
   which `G90` targets of a homed axis are read. After homing the axis stands where its braking left it.
 * A gantry slave whose own homing is suppressed (P-AXIS-00074) moves with its master and is homed with it
   (it takes its own `pos_refpkt`); one that homes itself does so after its master, which then follows it.
-  A slave named on its own with suppressed homing does not move.
+  A slave named on its own with suppressed homing does not move. A static gantry slave the channel does
+  not name (it belongs to no channel, P-AXIS-00070) is no axis a program may name, but it moves and homes
+  with its master all the same.
 * An axis with homing type `IGNORE_ABS_POS` stands still while the others of its group move (the manual
   warns that nothing then prevents a collision); one with `DISABLED` stops the program with P-ERR-50685.
   An axis with an absolute encoder and another homing type runs that homing type when G74 names it.
@@ -260,18 +262,22 @@ class MachinePlan:
                 f"{first.at.path}:{first.at.line}:{first.at.column}: {first.message}; the CNC does not run "
                 "this program (fix it, or see `achslint lint` for all its problems)"
             )
-        scenario.check_names(machine.axes)
+        followers = {axis.name: axis for axis in machine.followers()}
+        scenario.check_names([*machine.axes, *followers])
         if scenario.cycle_time_ms is not None:
             cycle_time_us = round(scenario.cycle_time_ms * 1000)
         self.machine = machine
         self.program = program
         self.scenario = scenario
         self.cycle_time_us = cycle_time_us
-        self.axes = {name: _Axis(axis, scenario, cycle_time_us) for name, axis in machine.axes.items()}
+        # The axes a program may name, and the gantry slaves outside the channel that move with their master.
+        self.programmable = set(machine.axes)
+        everyone = {**machine.axes, **followers}
+        self.axes = {name: _Axis(axis, scenario, cycle_time_us) for name, axis in everyone.items()}
         coupled: dict[str, str] = {}  # slave -> master
         for master, slave in machine.gantry_pairs:
             coupled[slave.upper()] = master.upper()
-        for name, axis in machine.axes.items():
+        for name, axis in everyone.items():
             if axis.gantry_master and name not in coupled:
                 coupled[name] = axis.gantry_master.upper()
         # Couplings without a master to lead them (LIS507) are not simulated: the axes involved are refused
@@ -579,11 +585,20 @@ class _Runner:
     def _known(self, index: int, word: AxisWord, t: float, doing: str) -> bool:
         """Whether a word names an axis of the machine; if not, the program fails here (`doing` begins the
         reason: "G74 names A")."""
-        if word.name.upper() in self.plan.axes:
+        name = word.name.upper()
+        if name in self.plan.programmable:
             return True
-        known = ", ".join(sorted(self.plan.axes)) or "none"
+        known = ", ".join(sorted(self.plan.programmable)) or "none"
+        master = self.plan.axes[name].axis.gantry_master if name in self.plan.axes else None
+        if master is not None:
+            reason = (
+                f"{doing}, the gantry slave of {master}: it is no axis of the channel (its axes: {known}) and "
+                f"moves only with its master; program {master}"
+            )
+            self._fail(index, word.at, name, reason, t, "gantry slave named in the program")
+            return False
         reason = f"{doing}, which is not an axis of the machine (its axes: {known})"
-        self._fail(index, word.at, word.name.upper(), reason, t, "unknown axis name")
+        self._fail(index, word.at, name, reason, t, "unknown axis name")
         return False
 
     # -- G74 ---------------------------------------------------------------------------------------

@@ -157,6 +157,14 @@ def machine_text(report: dict[str, Any], screen: Screen) -> None:
         table.add_row(*cells)
     console.print(table)
     for row in report["other_axes"]:
+        if row["gantry"] is not None and row["gantry"]["role"] == "slave":
+            homed = " and is homed with it" if row["gantry"]["homes_with_master"] else ""
+            console.print(
+                f"Gantry slave, no axis of this channel: {row['name']} ({row['list']}, logical axis "
+                f"{row['logical_number']}) moves with its master {row['gantry']['master']}"
+                + (f"; homed: {row['homed']}" if "homed" in row else homed)
+            )
+            continue
         console.print(
             f"Not named in this channel: {row['list']} (logical axis {row['logical_number']}, "
             f"kopf.log_achs_name {row['log_achs_name']})"

@@ -4,7 +4,9 @@ What
 A `G74` or move block names an axis the machine does not have under that name:
 no axis of the channel list (`gruppe[0].achse[i].bezeichnung`,
 `spindel[i].bezeichnung`) — or, without a channel list, no axis list's
-`kopf.log_achs_name` — is called so.
+`kopf.log_achs_name` — is called so. A gantry slave that the channel list does
+not name (its axis list couples it with `kenngr.gantry_ax_nr`) is no axis of
+the channel either: the finding says to program its master.
 
 Why
 ---
@@ -50,7 +52,9 @@ N20 M30
 Reference
 ---------
 P-CHAN-00006 / P-CHAN-00007 (axis and spindle names in the channel),
-P-CHAN-00035 / P-CHAN-00036 (their logical axis numbers), P-AXIS-00297.
+P-CHAN-00035 / P-CHAN-00036 (their logical axis numbers), P-AXIS-00297,
+P-AXIS-00070 (a gantry slave is not known in the channel; it moves when its
+master is programmed).
 """
 
 from __future__ import annotations
@@ -75,6 +79,7 @@ def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
     from .programcontext import diagnostic
 
     names = sorted(machine.axes)
+    slaves = {axis.name: axis.gantry_master for axis in machine.followers()}
     for block in program.blocks:
         if isinstance(block, HomingBlock):
             words = block.words
@@ -85,9 +90,20 @@ def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
         for word in words:
             if word.name in machine.axes:
                 continue
+            where = f"channel {machine.channel}" if machine.channel_list else "the machine"
+            master = slaves.get(word.name)
+            if master is not None:
+                yield diagnostic(
+                    CODE,
+                    word.at,
+                    f"{where} has no axis named {word.name}: {word.name} is the gantry slave of {master} "
+                    "(kenngr.gantry_ax_nr), which belongs to no channel and moves only with its master; "
+                    f"program {master} instead (the CNC stops the program at this block)",
+                    Severity.ERROR,
+                )
+                continue
             close = difflib.get_close_matches(word.name, names, n=2, cutoff=0.5)
             hint = f"; did you mean {' or '.join(close)}?" if close else ""
-            where = f"channel {machine.channel}" if machine.channel_list else "the machine"
             yield diagnostic(
                 CODE,
                 word.at,

@@ -6,6 +6,12 @@ a slave of a coupled pair in the channel list) while its master is not homed
 before it: the master is neither in an earlier G74 block nor earlier (or
 together with it) in the same block.
 
+Only a slave the program may name counts: on a machine without a channel list
+(each axis goes by its `kopf.log_achs_name`), or a slave the channel list names
+after all (LIS514) or couples in a pair. A static gantry slave that the channel
+list leaves out, as it should, is no axis of the channel: a program naming it
+gets LIS602 (program the master), not this finding.
+
 Why
 ---
 The two sides of a gantry are one mechanical unit. With
@@ -56,7 +62,7 @@ Reference
 ---------
 P-AXIS-00070 (gantry master of a slave), P-AXIS-00074 (slave homed with its
 master); TF5200 homing manual §2.2 and §2.3.3.4.5 (gantry coupling);
-P-CHAN-00037 / P-CHAN-00038 (coupled pairs of the channel).
+P-CHAN-00037 / P-CHAN-00038 (coupled pairs of the channel); LIS602, LIS514.
 """
 
 from __future__ import annotations
