@@ -70,6 +70,22 @@ def test_help_and_a_misspelt_command_see_every_command(
     assert "did you mean 'lint'" in capsys.readouterr().err.lower()
 
 
+def test_linting_leaves_the_formatter_and_the_api_module_unloaded() -> None:
+    """`lint` takes the lint run from `linting.run` itself: `api` re-exports it beside the format run."""
+    probe = (
+        "import contextlib, io, sys\n"
+        "from achslint.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    code = main(['lint', {str(FIXTURES / 'lists' / 'achsmds4.lis')!r}])\n"
+        "print(code, [m for m in ('achslint.api', 'achslint.fmt') if m in sys.modules])\n"
+    )
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    code, unloaded = done.stdout.split(" ", 1)
+    assert int(code) in (cli.EXIT_OK, cli.EXIT_FINDINGS)
+    assert unloaded.strip() == "[]"
+
+
 def test_the_options_are_annotated_with_types_not_strings() -> None:
     """typer reads each option's annotation; a string one would be compiled and evaluated on every run."""
     for name, command in cli._command_names().items():

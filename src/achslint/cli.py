@@ -284,8 +284,8 @@ def lint(
     ),
 ) -> None:
     """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
-    from .api import LintRequest, OutputIsInput, run_lint
     from .linting.config import ConfigError, Overrides
+    from .linting.run import LintRequest, OutputIsInput, run_lint  # what `api` re-exports, without fmt
     from .output import OutputFailed
     from .output import lint as shown
 
