@@ -243,7 +243,7 @@ def test_an_internal_error_is_one_line_unless_debugging(cli: Cli, monkeypatch: p
     def broken(*args: object, **kwargs: object) -> None:
         raise RuntimeError("something unexpected")
 
-    monkeypatch.setattr("achslint.api.run_lint", broken)
+    monkeypatch.setattr("achslint.linting.run.run_lint", broken)  # where `lint` takes it from
     result = cli("lint", X_AXIS)
     assert result.returncode == 2
     assert err(result) == (
