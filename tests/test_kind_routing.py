@@ -46,7 +46,9 @@ def test_a_start_up_list_named_otherwise_is_a_start_up_list(tmp_path: Path) -> N
 
 def test_an_axis_list_full_of_typos_is_still_an_axis_list(tmp_path: Path) -> None:
     axis = tmp_path / "achsmds1.lis"
-    axis.write_text("kopf.achs_nr 1\nkenngr.antr_typp 1\ngetriebe[0].vb_reflw 100\nkenngr.ref_richtng 1\nEnde\n")
+    axis.write_text(
+        "kopf.achs_nr 1\nkenngr.antr_typp 1\ngetriebe[0].vb_reflw 100\nkenngr.ref_richtng 1\nEnde\n"
+    )
     result = run_cli("lint", str(axis), "--format", "json", "--select", "LIS101")
     assert diagnostics(result) == [("achsmds1.lis", "LIS101")] * 3
 
@@ -76,3 +78,15 @@ def test_a_channel_list_passed_alone_gets_its_machine_s_findings() -> None:
     result = run_cli("lint", str(bad / "sda_mds1.lis"), "--format", "json", "--select", "LIS5")
     assert [code for name, code in diagnostics(result) if name == "sda_mds1.lis"] == ["LIS512", "LIS512"]
     assert {name for name, _ in diagnostics(result)} == {"sda_mds1.lis"}  # only the file passed
+
+
+def test_the_real_time_list_is_told_by_its_start_up_entry() -> None:
+    # rtconf.lis holds one line (`cycle_time`): too little for its content to tell, so the start-up list's
+    # `rtconf_lis` entry says what it is, and it is checked against the real-time catalogue (no LIS101)
+    rtconf = FIXTURES / "machines" / "extschedule" / "listen" / "rtconf.lis"
+    result = run_cli("lint", str(rtconf), "--format", "json")
+    assert result.returncode == 0 and diagnostics(result) == []
+    copy_alone = run_cli(
+        "lint", "-", "--stdin-filename", "rtconf.lis", "--format", "json", stdin=rtconf.read_bytes()
+    )
+    assert ("rtconf.lis", "LIS101") in diagnostics(copy_alone)  # without its start-up list: an axis list

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import shutil
 from pathlib import Path
 
@@ -143,8 +144,9 @@ def test_entries_are_read_under_the_cnc_root_only(tmp_path):
     (tmp_path / "outside.lis").write_text("kopf.achs_nr 8\nkopf.SECRET 1\nEnde\n")
     (machine / "listen" / "link.lis").symlink_to(tmp_path / "outside.lis")
     startup = machine / "listen" / "ExtSchedule" / "hochlauf.lis"
+    text = re.sub(r"zahl_mds +2", "zahl_mds 5", startup.read_text())  # five entries the CNC reads
     startup.write_text(
-        startup.read_text().replace(
+        text.replace(
             "#\nEnde",
             "achs_mds[2] ./listen/other/achsmds9.lis\nachs_mds[3] ../outside.lis\n"
             "achs_mds[4] ./listen/link.lis\nEnde",

@@ -28,7 +28,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..catalogue.kinds import STARTUP
+from ..catalogue.kinds import STARTUP, entry_kind
 from ..core.decode import UnreadableInput
 from ..core.files import (
     Scope,
@@ -345,7 +345,8 @@ class Finder:
     def entry_kind(self, path: Path, known: Sequence[Startup] = ()) -> str | None:
         """The kind of list a start-up list (of the run, or beside the list) names it as: `achs_mds[i]` an
         axis list, `default_achs_mds` the default axis list, `sda_mds[i]` / `default_sda_mds` a (default)
-        channel list; None when no start-up list names it (its content tells)."""
+        channel list, `rtconf_lis` the real-time configuration and so on (`catalogue.kinds.ENTRY_KINDS`);
+        None when no start-up list names it (its content tells)."""
         for startup in _unique([*known, *self.startups_around(path.parent)]):
             named: list[tuple[str, Sequence[StartupEntry | None]]] = [
                 ("default_axis", [startup.default]),
@@ -356,6 +357,10 @@ class Finder:
             for kind, entries in named:
                 if any(e is not None and _names(e.path, path) for e in entries):
                     return kind
+            for entry in startup.others:  # tool data, zero offsets, the real-time configuration ...
+                other = entry_kind(entry.key)
+                if other is not None and _names(entry.path, path):
+                    return other.id
         return None
 
     def _remember(self, machines: list[MachineFiles], found: Discovery) -> None:

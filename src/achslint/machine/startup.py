@@ -69,6 +69,8 @@ class Startup:
     default_channel: StartupEntry | None = None  # default_sda_mds
     compensations: list[StartupEntry] = field(default_factory=list)  # axis compensation lists, achs_kw[i]
     counts: dict[str, StartupCount] = field(default_factory=dict)  # zahl_mds, zahl_kw when written
+    # the other lists it names (werkz_data[i], nullp_data[i], rtconf_lis ...; `catalogue.kinds.ENTRY_KINDS`)
+    others: list[StartupEntry] = field(default_factory=list)
 
     def loaded_axes(self) -> list[StartupEntry]:
         """The axis lists the CNC loads: with `zahl_mds` written (P-STUP-00014), the entries below that count
@@ -149,6 +151,7 @@ def read_startup(
 
     Raises `OSError` / `decode.UnreadableInput` when the start-up list cannot be read.
     """
+    from ..catalogue.kinds import entry_kind
     from ..syntax.numbers import parse_integer
     from ..syntax.parser import parse_bytes
 
@@ -157,7 +160,7 @@ def read_startup(
     for line in parse_bytes(read_list(path), str(path)).assignments():
         if not line.path_ok or not line.path or line.value is None:
             continue
-        if _ENTRY.fullmatch(line.path):
+        if _ENTRY.fullmatch(line.path) or entry_kind(line.path) is not None:
             entries.append((line.path, line.value, line))
         elif line.path in COUNTS:
             number = parse_integer(line.value)
@@ -180,8 +183,10 @@ def read_startup(
             startup.channels.append(entry)
         elif entry.key.startswith("achs_kw"):
             startup.compensations.append(entry)
-        else:
+        elif _ENTRY.fullmatch(entry.key):
             startup.axes.append(entry)
+        else:  # tool data, zero offsets, the real-time configuration ...: `kinds.entry_kind` says which
+            startup.others.append(entry)
     return startup
 
 
