@@ -148,6 +148,28 @@ def test_the_portal_s_gantry_slave_outside_the_channel_moves_and_homes_with_its_
     assert [(g["axes"], g["following"]) for g in groups] == [(["Y"], ["Y2"])]
 
 
+def test_a_slave_outside_the_channel_with_a_homing_of_its_own_homes_after_its_master(cli, tmp_path):
+    # Without gantry_slave_no_homing Y2 follows Y's homing, then runs its own while Y follows it, though
+    # the program names Y alone; it is homed, with no note that its homing "still has to run".
+    startup, program, scenario = portal_copy(tmp_path, "N10 G74 Y1\nN20 M30\n", "")
+    slave = Path(startup).parent / "achsmds7.lis"
+    text = slave.read_text(encoding="latin-1")
+    slave.write_text(text.replace("gantry_slave_no_homing             1", "gantry_slave_no_homing 0"))
+    result = cli("dry-run", startup, "--program", program, "--scenario", scenario, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    axes = {a["name"]: a for a in json.loads(result.stdout)["axes"]}
+    y, y2 = axes["Y"], axes["Y2"]
+    own = [p for p in y2["phases"] if p["kind"] == "homing"]
+    assert own and [p["kind"] for p in y2["phases"]] == ["following"] * (len(y2["phases"]) - len(own)) + [
+        "homing"
+    ] * len(own)
+    master_done = [p for p in y["phases"] if p["kind"] == "homing"][-1]["end_time"]
+    assert own[0]["start_time"] == master_done  # its own homing starts when the master's has ended
+    assert [p["kind"] for p in y["phases"]][-len(own) :] == ["following"] * len(own)
+    assert (y2["outcome"], y2["reference"]["value"]) == ("homed", -1449.0)
+    assert y2["warnings"] == []
+
+
 def test_a_program_naming_the_gantry_slave_outside_the_channel_stops_there(cli, tmp_path):
     startup, program, scenario = portal_copy(tmp_path, "N10 G74 Y2=1\nN20 G74 Y1\nN30 M30\n", "")
     result = cli("dry-run", startup, "--program", program, "--scenario", scenario, "--format", "json")

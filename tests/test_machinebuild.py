@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from achslint.machine.build import MachineError, build_machine
+from achslint.machine.build import MachineError, build_machine, rename
 from achslint.machine.channel import read_channel_list
 
 from .conftest import FIXTURES
@@ -143,6 +143,25 @@ def test_a_gantry_slave_whose_master_the_channel_leaves_out_too_is_no_pair(tmp_p
     machine = build_machine(startup)
     assert list(machine.axes) == ["X"] and machine.gantry_pairs == [] and machine.followers() == []
     assert any("logical number 1 has no name in this channel" in note for note in machine.notes)
+
+
+def test_names_from_a_scenario_leave_a_coupled_slave_without_a_name_of_its_own_outside(tmp_path):
+    # No channel list; the slave's kopf.log_achs_name repeats its master's, so it goes by "slave of Y".
+    # [names] renames the master only: the slave keeps following it and does not become programmable.
+    startup = machine_folder(
+        tmp_path,
+        {
+            "hochlauf.lis": "achs_mds[0] a1.lis\nachs_mds[1] a2.lis\nEnde\n",
+            "a1.lis": axis_list(1, "Y"),
+            "a2.lis": axis_list(2, "Y", "kenngr.gantry_ax_nr 1"),
+        },
+    )
+    machine = build_machine(startup)
+    assert list(machine.axes) == ["Y"] and [a.name for a in machine.followers()] == ["slave of Y"]
+    rename(machine, {"Y1": 1}, "machine.toml")
+    assert list(machine.axes) == ["Y1"]
+    assert [(a.name, a.gantry_master) for a in machine.followers()] == [("slave of Y", "Y1")]
+    assert machine.gantry_pairs == [("Y1", "slave of Y")]
 
 
 def test_channel_list_problems_are_notes_and_unknown_parameters_are_passed_over(tmp_path):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import shutil
 
 import pytest
 
@@ -195,6 +196,20 @@ def test_explain_shows_the_portals_gantry_slave_beside_the_channel_s_axes():
         in " ".join(result.stdout.split())
     )
     assert "Not named in this channel" not in result.stdout
+
+
+def test_explain_says_a_slave_outside_the_channel_with_a_homing_of_its_own_homes_after_its_master(tmp_path):
+    from achslint.machine.explain import explain_startup
+
+    folder = tmp_path / "portal"
+    shutil.copytree(FIXTURES / "machines" / "portal", folder)
+    slave = folder / "listen" / "achsmds7.lis"
+    text = slave.read_text(encoding="latin-1")
+    slave.write_text(text.replace("gantry_slave_no_homing             1", "gantry_slave_no_homing 0"))
+    report = explain_startup(folder / "listen" / "hochlauf.lis", program=folder / "rfp.nc")
+    (row,) = report["other_axes"]
+    assert row["gantry"] == {"role": "slave", "master": "Y", "homes_with_master": False}
+    assert row["homed"] == "line 5 (N20), step 1, after its master Y"
 
 
 def test_explain_program_needs_a_start_up_list():

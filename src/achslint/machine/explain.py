@@ -65,6 +65,7 @@ def _order(program: Program, machine: Machine) -> tuple[list[dict[str, Any]], di
     """The program's blocks as the homing order, and for each axis where it is homed (in words)."""
     blocks: list[dict[str, Any]] = []
     homed_by: dict[str, str] = {}
+    followers = machine.followers()
     for block in program.blocks:
         label = f"N{block.number}" if not isinstance(block, SkippedBlock) and block.number is not None else ""
         where = f"line {block.at.line}" + (f" ({label})" if label else "")
@@ -75,9 +76,13 @@ def _order(program: Program, machine: Machine) -> tuple[list[dict[str, Any]], di
                 groups.append({"sequence": number, "axes": names})
                 for name in names:
                     homed_by.setdefault(name, f"{where}, step {step}")
-                    for axis in [*machine.axes.values(), *machine.followers()]:
-                        if axis.gantry_master == name and homes_with_master(axis):
+                    for axis in [*machine.axes.values(), *followers]:
+                        if axis.gantry_master != name:
+                            continue
+                        if homes_with_master(axis):
                             homed_by.setdefault(axis.name, f"{where}, step {step}, with its master {name}")
+                        elif axis.name not in machine.axes:  # outside the channel: its own homing follows
+                            homed_by.setdefault(axis.name, f"{where}, step {step}, after its master {name}")
             blocks.append({"line": block.at.line, "number": block.number, "kind": "homing", "groups": groups})
         elif isinstance(block, MoveBlock):
             blocks.append(

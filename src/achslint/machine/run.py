@@ -22,8 +22,9 @@ How the program runs (TF5200 homing manual §2.2, P-AXIS-00074, P-AXIS-00299):
 * A gantry slave whose own homing is suppressed (P-AXIS-00074) moves with its master and is homed with it
   (it takes its own `pos_refpkt`); one that homes itself does so after its master, which then follows it.
   A slave named on its own with suppressed homing does not move. A static gantry slave the channel does
-  not name (it belongs to no channel, P-AXIS-00070) is no axis a program may name, but it moves and homes
-  with its master all the same.
+  not name (it belongs to no channel, P-AXIS-00070) is no axis a program may name (a block naming it
+  stops the program), but it moves with its master all the same, and a G74 of the master homes it too
+  (after the master when its own homing is not suppressed).
 * An axis with homing type `IGNORE_ABS_POS` stands still while the others of its group move (the manual
   warns that nothing then prevents a collision); one with `DISABLED` stops the program with P-ERR-50685.
   An axis with an absolute encoder and another homing type runs that homing type when G74 names it.
@@ -667,6 +668,12 @@ class _Runner:
                 after_master.append(name)  # a slave that homes itself does so after its master
             else:
                 first.append(name)
+        # A gantry slave outside the channel cannot be named: it homes with its master, after it when it
+        # has a homing of its own (one whose homing is suppressed follows the master's, below).
+        for name in first:
+            for slave in plan.slaves.get(name, []):
+                if slave not in plan.programmable and not plan.suppressed(slave) and slave not in names:
+                    after_master.append(slave)
         legs: dict[str, _Leg] = {}
         for name in first:
             legs[name] = self._leg(index, name, t0)
@@ -703,7 +710,7 @@ class _Runner:
                     axes[leg.name].failure = f"stopped when the homing of {failed.name} failed"
         end = t0
         for name, leg in legs.items():
-            self._settle(leg, earliest)
+            self._settle(leg, earliest, set(legs))
             if leg.phases:
                 group.moving.append(name)
                 end = max(end, leg.phases[-1].end_time)
@@ -779,8 +786,9 @@ class _Runner:
         followers = [p for p in plan.partners(name) if p != name]
         return _Leg(name, start, x, trace, phases, fail_time, ref_time, followers)
 
-    def _settle(self, leg: _Leg, stop: float | None) -> None:
-        """Record a leg (already cut at `stop`) on its axis and its followers, and move them."""
+    def _settle(self, leg: _Leg, stop: float | None, homing: set[str]) -> None:
+        """Record a leg (already cut at `stop`) on its axis and its followers, and move them; `homing` are
+        the axes with a homing of their own in this group."""
         plan, axes = self.plan, self.result.axes
         name, trace = leg.name, leg.trace
         run = axes[name]
@@ -823,9 +831,9 @@ class _Runner:
             else:
                 run.outcome, run.failure = trace.outcome, trace.failure
         for follower in leg.followers:
-            self._follow(follower, leg, moved, homed)
+            self._follow(follower, leg, moved, homed, follower in homing)
 
-    def _follow(self, name: str, leg: _Leg, moved: float, leader_homed: bool) -> None:
+    def _follow(self, name: str, leg: _Leg, moved: float, leader_homed: bool, homes_next: bool) -> None:
         """A gantry partner tracks the leader: the same phases and times, shifted to its own position."""
         run = self.result.axes[name]
         shift = self.x[name] - leg.x_start
@@ -860,7 +868,12 @@ class _Runner:
             }
             if run.outcome not in ("failed", "aborted"):
                 run.outcome, run.failure = "homed", None
-        elif leg.name == self.plan.master.get(name) and run.outcome == "not_commanded" and leg.phases:
+        elif (
+            leg.name == self.plan.master.get(name)
+            and run.outcome == "not_commanded"
+            and leg.phases
+            and not homes_next  # its own homing runs next in this group
+        ):
             run.warn(
                 None,
                 f"moved with its gantry master {leg.name}; its own homing (not suppressed, P-AXIS-00074) "
