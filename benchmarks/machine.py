@@ -76,12 +76,18 @@ def build(root: Path, axes: int, channels: int) -> tuple[Path, Path]:
     for number in range(1, axes + 1):
         (listen / f"achsmds{number}.lis").write_text(axis_list(number), encoding="latin-1")
         shutil.copy(listen / f"achsmds{number}.lis", alone / f"achsmds{number}.lis")
-        entries.append(f"achs_mds[{number - 1}]                                  ./listen/achsmds{number}.lis")
+        entries.append(
+            f"achs_mds[{number - 1}]                                  ./listen/achsmds{number}.lis"
+        )
     per_channel = axes // channels
     for channel in range(channels):
         numbers = list(range(channel * per_channel + 1, (channel + 1) * per_channel + 1))
-        (listen / f"sda_mds{channel + 1}.lis").write_text(channel_list(channel + 1, numbers), encoding="latin-1")
-        entries.append(f"sda_mds[{channel}]                                   ./listen/sda_mds{channel + 1}.lis")
+        (listen / f"sda_mds{channel + 1}.lis").write_text(
+            channel_list(channel + 1, numbers), encoding="latin-1"
+        )
+        entries.append(
+            f"sda_mds[{channel}]                                   ./listen/sda_mds{channel + 1}.lis"
+        )
     (listen / "default_mds.lis").write_text("getriebe[0].dynamik.vb_max  300000\nEnde\n", encoding="latin-1")
     (listen / "default_sda.lis").write_text("gruppe[0].achs_anzahl  0\nEnde\n", encoding="latin-1")
     others = {
@@ -121,7 +127,9 @@ def main() -> int:
         lists = timed(["lint", str(alone), "--exit-zero", "--jobs", "1"], options.repeat)
     ratio = whole / lists
     verdict = "met" if ratio <= BUDGET else "MISSED"
-    print(f"machine of {options.axes} axes, {options.channels} channels, all list kinds: {whole * 1000:.0f} ms")
+    print(
+        f"machine of {options.axes} axes, {options.channels} channels, all list kinds: {whole * 1000:.0f} ms"
+    )
     print(f"its {options.axes} axis lists alone:                         {lists * 1000:.0f} ms")
     print(f"ratio {ratio:.2f} x (budget <= {BUDGET} x) -> {verdict}")
     return 0 if ratio <= BUDGET else 1

@@ -39,7 +39,9 @@ def test_default_list_is_applied_under_each_axis_list(cli, tmp_path):
     assert findings(named) == [("achsmds1.lis", 4, "LIS302")]
     # A copy no start-up list names is linted without it: vb_refmax default 83333 > 50000.
     write(tmp_path / "elsewhere" / "achsmds1.lis", (tmp_path / "listen" / "achsmds1.lis").read_text())
-    alone = cli("lint", str(tmp_path / "elsewhere" / "achsmds1.lis"), "--format", "json", "--select", "LIS302")
+    alone = cli(
+        "lint", str(tmp_path / "elsewhere" / "achsmds1.lis"), "--format", "json", "--select", "LIS302"
+    )
     assert findings(alone) == []
 
 
