@@ -90,3 +90,18 @@ def test_the_real_time_list_is_told_by_its_start_up_entry() -> None:
         "lint", "-", "--stdin-filename", "rtconf.lis", "--format", "json", stdin=rtconf.read_bytes()
     )
     assert ("rtconf.lis", "LIS101") in diagnostics(copy_alone)  # without its start-up list: an axis list
+
+
+def test_telling_a_start_up_list_by_content_does_not_parse_an_axis_list(monkeypatch, tmp_path: Path) -> None:
+    # every named list is asked whether it is a start-up list; an axis list must not be parsed for that
+    from achslint.linting import discovery
+
+    parsed: list[str] = []
+    real = discovery.parse_bytes
+    monkeypatch.setattr(discovery, "parse_bytes", lambda data, name: parsed.append(name) or real(data, name))
+    axis = tmp_path / "achsmds1.lis"
+    axis.write_text("kopf.achs_nr 1\nkenngr.antr_typ 1\nEnde\n")
+    startup = tmp_path / "basis.lis"
+    startup.write_text("zahl_mds 1\nachs_mds[0] ./achsmds1.lis\nEnde\n")
+    assert not discovery.is_startup(axis) and parsed == []
+    assert discovery.is_startup(startup) and parsed == [str(startup)]

@@ -24,6 +24,7 @@ machine, and it is linted with the list it updates underneath (found by name bes
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -468,10 +469,21 @@ def is_startup(path: Path) -> bool:
     if is_xml(path.name):
         return False
     try:
-        file = parse_bytes(read_list(path, HEAD_BYTES), str(path))
-    except (OSError, UnreadableInput):
+        head = read_list(path, HEAD_BYTES)
+    except OSError:
         return False  # the lint of the file says why
+    if not _STARTUP_KEYS.search(head):  # no entry naming an axis list: no start-up list, nothing to parse
+        return False
+    try:
+        file = parse_bytes(head, str(path))
+    except UnreadableInput:
+        return False
     return list_kind(file, str(path)).id == STARTUP.id
+
+
+# The keys only a start-up list has at the start of a line: a list without any is none (a cheap look at the
+# bytes before the list is parsed, which every named axis list would otherwise pay for).
+_STARTUP_KEYS = re.compile(rb"^[ \t]*(?:achs_mds\[|default_achs_mds|zahl_mds|sda_mds\[|kanal_anzahl)", re.M)
 
 
 UPDATE_SUFFIXES = ("-update", "-revert", "_update", "_revert")
