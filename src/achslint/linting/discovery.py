@@ -29,7 +29,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..catalogue.kinds import STARTUP, entry_kind
+from ..catalogue.kinds import STARTUP, entry_kind, kind_of
 from ..core.decode import UnreadableInput
 from ..core.files import (
     Scope,
@@ -45,7 +45,6 @@ from ..core.files import (
 from ..machine.startup import Startup, StartupEntry, is_startup_list, read_startup
 from ..syntax.parser import parse_bytes
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
-from .linter import list_kind
 
 # Files found in a folder that are skipped with a note rather than reported as unreadable.
 SKIPPED_KINDS = (
@@ -478,7 +477,9 @@ def is_startup(path: Path) -> bool:
         file = parse_bytes(head, str(path))
     except UnreadableInput:
         return False
-    return list_kind(file, str(path)).id == STARTUP.id
+    # The start-up keys at the start of a line are clear evidence already: the content decides (no minimum
+    # number of lines; a start-up list may name one axis list).
+    return kind_of(file).id == STARTUP.id
 
 
 # The keys only a start-up list has at the start of a line: a list without any is none (a cheap look at the
