@@ -143,6 +143,7 @@ def test_an_axis_list_added_and_removed(tmp_path: Path) -> None:
             "achs_mds[2]",
             "achs_mds[2] ./listen/achsmds3.lis\nachs_mds[3] ./listen/achsmds4.lis",
         ),
+        ("hochlauf.lis", "zahl_mds", "zahl_mds 4"),  # the CNC loads four lists (P-STUP-00014)
     )
     code, report = _json(str(a), str(b))
     assert code == 1

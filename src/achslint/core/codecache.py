@@ -34,7 +34,9 @@ _installed = False
 def private_folder() -> str | None:
     """The per-user cache folder (`$XDG_CACHE_HOME/achslint`, else `~/.cache/achslint`), created if missing;
     None when it cannot be made or when anyone but the user could write to it."""
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    given = os.environ.get("XDG_CACHE_HOME", "")
+    # A relative XDG_CACHE_HOME is to be ignored (XDG base directory spec): it would put the cache in the cwd.
+    base = given if os.path.isabs(given) else os.path.join(os.path.expanduser("~"), ".cache")
     folder = os.path.join(base, "achslint")
     try:
         os.makedirs(folder, mode=0o700, exist_ok=True)

@@ -115,6 +115,13 @@ class MachineTable:
     lists: list[str] = _key(factory=list, min_length=1)
     name: str | None = _key(None, min_length=1)  # how messages name it (default: its number in the file)
 
+    def __post_init__(self) -> None:
+        for pattern in self.lists:
+            if not pattern.strip() or PurePosixPath(pattern).is_absolute() or Path(pattern).is_absolute():
+                raise ValueError(f"lists: {pattern!r} is not a pattern relative to the configuration file")
+            if ".." in PurePosixPath(pattern.replace("\\", "/")).parts:
+                raise ValueError(f"lists: {pattern!r} leads out of the configuration file's folder (`..`)")
+
 
 @dataclass(frozen=True)
 class Settings:

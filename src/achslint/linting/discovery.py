@@ -257,6 +257,7 @@ class Finder:
                         if not self._excluded(config, f)
                         and not_a_list_file(f) is None
                         and not is_startup_list(f)
+                        and not is_list_update(f)  # an update changes one list: no member of its own
                     ],
                 )
                 for name, files in config.declared_machines()
@@ -347,6 +348,7 @@ class Finder:
         axis list, `default_achs_mds` the default axis list, `sda_mds[i]` / `default_sda_mds` a (default)
         channel list, `rtconf_lis` the real-time configuration and so on (`catalogue.kinds.ENTRY_KINDS`);
         None when no start-up list names it (its content tells)."""
+        kinds: list[str] = []
         for startup in _unique([*known, *self.startups_around(path.parent)]):
             named: list[tuple[str, Sequence[StartupEntry | None]]] = [
                 ("default_axis", [startup.default]),
@@ -356,12 +358,17 @@ class Finder:
             ]
             for kind, entries in named:
                 if any(e is not None and _names(e.path, path) for e in entries):
-                    return kind
+                    kinds.append(kind)
             for entry in startup.others:  # tool data, zero offsets, the real-time configuration ...
                 other = entry_kind(entry.key)
                 if other is not None and _names(entry.path, path):
-                    return other.id
-        return None
+                    kinds.append(other.id)
+        # Start-up lists that disagree (an old variant naming an axis list as a channel list): an axis list
+        # of a machine stays one, so no axis rule is switched off by another file's entry.
+        for preferred in ("axis", "default_axis"):
+            if preferred in kinds:
+                return preferred
+        return kinds[0] if kinds else None
 
     def _remember(self, machines: list[MachineFiles], found: Discovery) -> None:
         for machine in machines:

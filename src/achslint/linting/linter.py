@@ -153,6 +153,9 @@ def list_kind(file: ListFile, name: str, given: str | None = None) -> Kind:
     # its typos found), so a few names another catalogue happens to have are not enough.
     assignments = sum(1 for line in file.lines[: guess.lines] if line.kind == ASSIGNMENT)
     paths, ids = guess.paths.get(kind.id, 0), guess.ids.get(kind.id, 0)
+    axis_paths = guess.paths.get(AXIS.id, 0)
+    if axis_paths >= paths or 2 * axis_paths >= assignments:  # mostly axis parameters, whatever comments cite
+        return AXIS
     if ids >= EVIDENCE or (paths >= EVIDENCE and 2 * paths >= assignments):
         return kind
     return AXIS

@@ -363,9 +363,9 @@ class Session:
         found.members(machines)  # in the machine's order: a repeated number is reported where it repeats
         if not snapshot.startup:
             keys = tuple(m.key for m in machines)
-            found.add(
-                Target(str(document.path), document.path, self._config(document.path), keys), context=True
-            )
+            kind = self.finder.entry_kind(document.path)  # a default list named otherwise is no axis
+            config = self._config(document.path)
+            found.add(Target(str(document.path), document.path, config, keys, kind=kind), context=True)
         pairs: list[tuple[Target, FileResult]] = []
         for target in [*found.targets, *found.context]:
             if _real(target.path or target.name) == real and not snapshot.startup:

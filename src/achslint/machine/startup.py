@@ -91,8 +91,10 @@ def is_startup_list(path: Path) -> bool:
 
 
 def is_default_list(path: Path) -> bool:
-    """A default axis list (`default_mds.lis`): loaded underneath the axes, not an axis of its own."""
-    return fnmatch.fnmatch(path.name.lower(), "default*mds*.lis")
+    """A default axis list (`default_mds.lis`): loaded underneath the axes, not an axis of its own. A default
+    channel list (`default_sda_mds.lis`, `default_sda.lis`) is none."""
+    name = path.name.lower()
+    return fnmatch.fnmatch(name, "default*mds*.lis") and "sda" not in name
 
 
 def _entry_path(raw: str) -> Path:

@@ -78,6 +78,9 @@ def _span(key: str, count: int) -> str:
     return f"{key}[0]" if count == 1 else f"{key}[0] … {key}[{count - 1}]"
 
 
+MAX_ENTRIES = 32  # zahl_mds and zahl_kw range 1 ... 32 (P-STUP-00014, P-STUP-00016)
+
+
 def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     for startup in startups:
         for count_key, (entry_key, _, _) in COUNTED.items():
@@ -86,7 +89,9 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
                 continue
             entries = startup.axes if entry_key == "achs_mds" else startup.compensations
             named = {index(entry) for entry in entries}
-            missing = [number for number in range(count.value) if number not in named]
+            # Only indices up to the largest the CNC accepts (32, P-STUP-00014/16) can be missing: a count of
+            # 10**12 is out of range (LIS202 on the start-up list's own line), not 10**12 missing entries.
+            missing = [number for number in range(min(count.value, MAX_ENTRIES)) if number not in named]
             if not missing:
                 continue
             shown = ", ".join(f"{entry_key}[{number}]" for number in missing[:SHOWN])

@@ -1,0 +1,145 @@
+"""Edge cases of machines and list kinds that a review of issue 24's work found (each failed before its fix)."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+from pathlib import Path
+
+from achslint.lsp.documents import Document
+from achslint.lsp.session import Session
+
+from .conftest import FIXTURES, run_cli
+
+SDK = FIXTURES / "machines" / "sdk" / "listen"
+
+
+def machine_copy(tmp_path: Path) -> Path:
+    listen = tmp_path / "listen"
+    shutil.copytree(SDK, listen)
+    return listen
+
+
+def found(result) -> list[tuple[str, str, str]]:
+    return [(Path(d["path"]).name, d["code"], d["message"]) for d in json.loads(result.stdout)["diagnostics"]]
+
+
+def test_a_huge_zahl_mds_is_judged_without_looping_over_it(tmp_path: Path) -> None:
+    listen = machine_copy(tmp_path)
+    startup = listen / "hochlauf.lis"
+    startup.write_text(
+        startup.read_text().replace(
+            "zahl_mds                                              3", "zahl_mds 999999999999"
+        )
+    )
+    result = run_cli("lint", str(listen / "achsmds1.lis"), "--format", "json", "--select", "LIS517")
+    assert result.returncode == 0  # the start-up list is context here: its own findings are not reported
+    named = run_cli("lint", str(startup), "--format", "json", "--select", "LIS517")
+    (message,) = [m for _, code, m in found(named) if code == "LIS517"]
+    assert "achs_mds[3]" in message and "achs_mds[31]" not in message.split("and")[0]
+
+
+def test_an_axis_entry_wins_over_another_start_up_list_naming_the_file_as_a_channel_list(
+    tmp_path: Path,
+) -> None:
+    listen = machine_copy(tmp_path)
+    axis = listen / "achsmds1.lis"
+    text = axis.read_text(encoding="latin-1")
+    axis.write_text(text.replace("kopf.achs_nr ", "kopf.achs_nr -5 ( was ", 1), encoding="latin-1")
+    (listen / "hochlauf-alt.lis").write_text("sda_mds[0]  ./listen/achsmds1.lis\nEnde\n")
+    result = run_cli("lint", str(axis), "--format", "json", "--select", "LIS202,LIS101")
+    assert ("achsmds1.lis", "LIS202") in [(name, code) for name, code, _ in found(result)]
+
+
+def test_comments_citing_start_up_ids_do_not_make_an_axis_list_a_start_up_list(tmp_path: Path) -> None:
+    axis = tmp_path / "achsmds1.lis"
+    axis.write_text(
+        "# zahl_mds (P-STUP-00014), achs_mds (P-STUP-00015) and hand_mds (P-STUP-00013) name this list\n"
+        "# see P-STUP-00014\n# see P-STUP-00015\n"
+        "kopf.achs_nr 1\nkenngr.swe_negg 5\ngetriebe[0].dynamik.vb_max -7\nEnde\n"
+    )
+    result = run_cli("lint", str(axis), "--format", "json")
+    codes = {code for _, code, _ in found(result)}
+    assert "LIS202" in codes and result.returncode == 1
+
+
+def test_a_machine_table_pattern_must_stay_inside_the_configuration_folder(tmp_path: Path) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    for pattern, said in (
+        ("/etc/*", "not a pattern relative"),
+        ("", "not a pattern relative"),
+        ("../*.lis", "`..`"),
+    ):
+        (tmp_path / ".achslint.toml").write_text(f'[[machine]]\nlists = ["{pattern}"]\n')
+        result = run_cli("lint", str(tmp_path / "achsmds1.lis"))
+        assert result.returncode == 2 and said in result.stderr.decode(), result.stderr
+        assert b"internal error" not in result.stderr
+
+
+def test_a_machine_table_never_takes_in_list_updates(tmp_path: Path) -> None:
+    listen = tmp_path / "listen"
+    shutil.copytree(FIXTURES / "machines" / "update" / "listen", listen)
+    (listen / "hochlauf.lis").unlink()
+    (tmp_path / ".achslint.toml").write_text('[[machine]]\nlists = ["listen/**/*"]\n')
+    result = run_cli("lint", str(listen / "achsmds1.lis"), "--format", "json", "--select", "LIS501,LIS502")
+    assert found(result) == []
+
+
+def test_machine_diff_compares_the_axis_lists_the_cnc_loads(tmp_path: Path) -> None:
+    first, second = tmp_path / "a", tmp_path / "b"
+    shutil.copytree(SDK.parent, first)
+    shutil.copytree(SDK.parent, second)
+    startup = second / "listen" / "hochlauf.lis"
+    startup.write_text(
+        startup.read_text().replace("zahl_mds                                              3", "zahl_mds 2")
+    )
+    assert run_cli("diff", str(first), str(second)).returncode == 1  # b loads two axes, a three
+    (second / "listen" / "achsmds3.lis").unlink()  # never loaded in b anyway
+    result = run_cli("diff", str(first), str(second))
+    assert result.returncode == 1 and b"internal error" not in result.stderr
+
+
+def test_lis504_is_quiet_about_an_entry_the_cnc_never_reads(tmp_path: Path) -> None:
+    listen = machine_copy(tmp_path)
+    startup = listen / "hochlauf.lis"
+    startup.write_text(
+        startup.read_text().replace("zahl_mds                                              3", "zahl_mds 2")
+    )
+    (listen / "achsmds3.lis").unlink()
+    result = run_cli("lint", str(startup), "--format", "json", "--select", "LIS504,LIS516")
+    assert [code for _, code, _ in found(result)] == ["LIS516"]
+
+
+def test_a_default_channel_list_named_like_its_entry_is_no_default_axis_list(tmp_path: Path) -> None:
+    channel = tmp_path / "default_sda_mds.lis"
+    shutil.copy(FIXTURES / "machines" / "sdk4" / "listen" / "sda_mds1.lis", channel)
+    result = run_cli("lint", str(channel), "--format", "json")
+    assert all(not (code == "LIS101" and "warning" in m) for _, code, m in found(result))
+    assert [d["severity"] for d in json.loads(result.stdout)["diagnostics"] if d["code"] == "LIS101"] in (
+        [],
+        ["info"],
+    )
+
+
+def test_the_editor_judges_a_default_list_named_otherwise_as_a_default_list(tmp_path: Path) -> None:
+    listen = machine_copy(tmp_path)
+    (listen / "default_mds.lis").rename(listen / "basis.lis")
+    startup = listen / "hochlauf.lis"
+    startup.write_text(startup.read_text().replace("default_mds.lis", "basis.lis"))
+    path = listen / "basis.lis"
+    session = Session(tmp_path)
+    document = Document(path.as_uri(), path, path.read_bytes().decode("latin-1"), 1)
+    session.open(document)
+    assert [d.code for d in session.diagnostics(document.uri)[1] if d.code.startswith("LIS50")] == []
+    assert found(run_cli("lint", str(path), "--format", "json", "--select", "LIS50")) == []
+
+
+def test_a_relative_cache_home_is_ignored(tmp_path: Path, monkeypatch) -> None:
+    from achslint.core import codecache
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("XDG_CACHE_HOME", "relcache")
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    folder = codecache.private_folder()
+    assert folder is not None and os.path.isabs(folder) and not (tmp_path / "relcache").exists()
