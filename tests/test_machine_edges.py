@@ -143,3 +143,28 @@ def test_a_relative_cache_home_is_ignored(tmp_path: Path, monkeypatch) -> None:
     monkeypatch.setenv("HOME", str(tmp_path / "home"))
     folder = codecache.private_folder()
     assert folder is not None and os.path.isabs(folder) and not (tmp_path / "relcache").exists()
+
+
+def test_a_start_up_list_named_otherwise_makes_its_machine_in_a_folder_lint(tmp_path: Path) -> None:
+    listen = machine_copy(tmp_path)
+    (listen / "hochlauf.lis").rename(listen / "machine.lis")
+    axis = listen / "achsmds1.lis"
+    text = axis.read_text(encoding="latin-1")
+    axis.write_text(text.replace("kopf.achs_nr ", "kopf.achs_nr 2 ( was ", 1), encoding="latin-1")
+    for target in (listen, axis):  # the folder, and the list alone (pre-commit)
+        result = run_cli("lint", str(target), "--format", "json", "--select", "LIS501")
+        assert [code for _, code, _ in found(result)] == ["LIS501"], target
+
+
+def test_one_file_named_twice_through_a_hard_link_is_lis518(tmp_path: Path) -> None:
+    listen = machine_copy(tmp_path)
+    os.link(listen / "achsmds1.lis", listen / "achsmds1_copy.lis")
+    startup = listen / "hochlauf.lis"
+    text = startup.read_text(encoding="latin-1").replace(
+        "zahl_mds                                              3", "zahl_mds 4"
+    )
+    startup.write_text(
+        text.replace("Ende", "achs_mds[3] ./listen/achsmds1_copy.lis\nEnde"), encoding="latin-1"
+    )
+    result = run_cli("lint", str(startup), "--format", "json", "--select", "LIS518")
+    assert [code for _, code, _ in found(result)] == ["LIS518"]

@@ -204,7 +204,7 @@ class Finder:
             found: list[Startup] = []
             for place in (folder, folder.parent):
                 try:
-                    candidates = sorted(p for p in place.iterdir() if is_startup_list(p))
+                    candidates = sorted(p for p in place.iterdir() if _may_be_startup(p) and is_startup(p))
                 except (OSError, ValueError):  # ValueError: a NUL in the name
                     continue
                 for candidate in candidates:
@@ -430,7 +430,10 @@ class Finder:
             include = self.overrides.apply(config.settings).include
             for name in sorted(files):
                 path = Path(root) / name
-                startup = is_startup_list(path)
+                # a start-up list by its name, or (a `.lis` the include patterns do not take) by its content
+                startup = is_startup_list(path) or (
+                    path.suffix.lower() == ".lis" and not _included(name, include) and is_startup(path)
+                )
                 if startup and config.settings.homing_programs:
                     found.program_startups.append(path)  # its homing programs are checked too
                 xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
@@ -465,6 +468,15 @@ class Finder:
 
 
 HEAD_BYTES = 64 * 1024  # what is read of a named file to tell a start-up list by its content
+
+
+def _may_be_startup(path: Path) -> bool:
+    """A file that may hold a start-up list: named like one, or any `.lis` (its content then tells)."""
+    return is_startup_list(path) or path.suffix.lower() == ".lis"
+
+
+def _included(name: str, include: list[str]) -> bool:
+    return any(matches_glob(name.lower(), pattern.lower()) for pattern in include)
 
 
 def is_startup(path: Path) -> bool:

@@ -64,6 +64,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterator
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
@@ -90,12 +91,12 @@ def _loaded(startup: Startup) -> list[StartupEntry]:
 
 def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     for startup in startups:
-        first: dict[str, StartupEntry] = {}
+        first: dict[object, StartupEntry] = {}
         entries = [startup.default] if startup.default is not None else []
         for entry in sorted([*entries, *_loaded(startup)], key=lambda entry: entry.line):
             if entry.path is None or same_file(entry.path, startup.path):
                 continue  # missing, not read, or the start-up list itself: LIS504
-            earlier = first.setdefault(os.path.realpath(entry.path), entry)
+            earlier = first.setdefault(_file_key(entry.path), entry)
             if earlier is entry or earlier.key == entry.key:
                 continue  # one entry written twice is the start-up list's own matter
             if "default_achs_mds" in (earlier.key, entry.key):
@@ -124,3 +125,13 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
                     Related(str(startup.path), earlier.line, earlier.column, earlier.key, "named first"),
                 ),
             )
+
+
+def _file_key(path: Path) -> object:
+    """One file, however it is named: device and inode (hard links and symbolic links alike), else its real
+    path when it cannot be looked at."""
+    try:
+        info = os.stat(path)
+    except OSError:
+        return os.path.realpath(path)
+    return (info.st_dev, info.st_ino)
