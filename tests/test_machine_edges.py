@@ -168,3 +168,34 @@ def test_one_file_named_twice_through_a_hard_link_is_lis518(tmp_path: Path) -> N
     )
     result = run_cli("lint", str(startup), "--format", "json", "--select", "LIS518")
     assert [code for _, code, _ in found(result)] == ["LIS518"]
+
+
+def test_the_machine_dry_run_names_a_gantry_slave_it_cannot_couple(tmp_path: Path) -> None:
+    portal = tmp_path / "portal"
+    shutil.copytree(FIXTURES / "machines" / "portal", portal)
+    run = run_cli("dry-run", str(portal / "listen" / "hochlauf.lis"), "--program", str(portal / "rfp.nc"))
+    assert b"cannot couple" not in run.stdout  # Y2 follows Y
+    slave = portal / "listen" / "achsmds7.lis"
+    lines = slave.read_text(encoding="latin-1").splitlines()
+    lines = ["kenngr.gantry_ax_nr 99" if line.startswith("kenngr.gantry_ax_nr") else line for line in lines]
+    slave.write_text("\n".join(lines) + "\n", encoding="latin-1")
+    run = run_cli("dry-run", str(portal / "listen" / "hochlauf.lis"), "--program", str(portal / "rfp.nc"))
+    said = run.stdout.decode()
+    assert "LIS503: Y2" in said and "gantry slave of logical axis 99" in said and "does not move it" in said
+
+
+def test_a_start_up_list_named_otherwise_shows_its_machine_findings_in_the_editor(tmp_path: Path) -> None:
+    listen = machine_copy(tmp_path)
+    startup = listen / "machine.lis"
+    (listen / "hochlauf.lis").rename(startup)
+    startup.write_text(
+        startup.read_text(encoding="latin-1").replace("achsmds3.lis", "nowhere.lis"), encoding="latin-1"
+    )
+    session = Session(tmp_path)
+    document = Document(startup.as_uri(), startup, startup.read_bytes().decode("latin-1"), 1)
+    session.open(document)
+    editor = [d.code for d in session.diagnostics(document.uri)[1] if d.code.startswith("LIS5")]
+    cli = [
+        code for _, code, _ in found(run_cli("lint", str(startup), "--format", "json", "--select", "LIS5"))
+    ]
+    assert editor == cli == ["LIS504"]

@@ -223,7 +223,7 @@ class Finder:
         beside the list) and every `[[machine]]` table of its configuration that names it; else, for axis XML,
         the XML files of its folder. A start-up list is a machine of its own. Nothing for a list that is no
         member of any machine: it is compared with no other list."""
-        if is_startup_list(path):
+        if is_startup(path):  # by its name, or by its content (a start-up list named otherwise)
             try:
                 startup = self.startup(path)
             except (OSError, UnreadableInput):

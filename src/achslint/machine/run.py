@@ -534,6 +534,17 @@ class _Runner:
                 for i, b in enumerate(plan.program.blocks)
             ],
         )
+        coupled = {slave for _, slave in plan.machine.gantry_pairs}
+        for axis in plan.machine.other_axes:  # a gantry slave the run cannot couple is said, not dropped
+            master = axis.resolved.get("kenngr.gantry_ax_nr")
+            if isinstance(master, int) and master > 0 and axis.name not in coupled:
+                where = f" ({axis.list_path})" if axis.list_path is not None else ""
+                self.result.warn(
+                    "LIS503",
+                    f"{axis.name}{where} is the gantry slave of logical axis {master}, which this machine's "
+                    "channel does not name (or no axis list has): the run cannot couple it, so it does not "
+                    "move it",
+                )
 
     # -- the program ---------------------------------------------------------------------------
     def run(self) -> MachineRun:
