@@ -199,3 +199,18 @@ def test_a_start_up_list_named_otherwise_shows_its_machine_findings_in_the_edito
         code for _, code, _ in found(run_cli("lint", str(startup), "--format", "json", "--select", "LIS5"))
     ]
     assert editor == cli == ["LIS504"]
+
+
+def test_a_gantry_circle_is_lis507_alone_not_also_lis514(tmp_path: Path) -> None:
+    portal = tmp_path / "portal"
+    shutil.copytree(FIXTURES / "machines" / "portal", portal)
+    master = portal / "listen" / "achsmds2.lis"  # Y, whose slave Y2 (logical 7) names it as master
+    master.write_text(
+        master.read_text(encoding="latin-1").replace("Ende", "kenngr.gantry_ax_nr 7\nEnde"),
+        encoding="latin-1",
+    )
+    result = run_cli(
+        "lint", str(portal / "listen" / "hochlauf.lis"), "--format", "json", "--select", "LIS507,LIS514"
+    )
+    codes = {code for _, code, _ in found(result)}
+    assert codes == {"LIS507"}

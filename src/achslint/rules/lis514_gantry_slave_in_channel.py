@@ -74,6 +74,7 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
 from ._crosslist import at_channel_axis, at_member, axis_words, by_number, channel_lists
+from .lis507_gantry_master_chain import coupling_faults
 
 if TYPE_CHECKING:
     from ..machine.startup import Member, Startup
@@ -87,13 +88,21 @@ SUMMARY = "Channel list names a gantry slave, which moves only with its master"
 
 def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
     numbers = by_number(members)
+    # A slave in a circle or a chain of couplings is LIS507's: whichever of them the CNC takes for the master,
+    # telling the user to program "its master" would contradict that finding.
+    master_of = {
+        number: master
+        for number, (_, summary) in numbers.items()
+        if isinstance(master := summary.get("gantry_ax_nr"), int) and master > 0
+    }
+    tangled = set(coupling_faults(master_of))
     for _, channel in channel_lists(startups):
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes) if not axis.spindle}
         for axis in channel.axes:
             member = numbers.get(axis.logical_number)
             master = member[1].get("gantry_ax_nr") if member is not None else None
-            if member is None or not isinstance(master, int) or master <= 0 or master == axis.logical_number:
-                continue  # no list (LIS512), no slave, or an axis that names itself (LIS507)
+            if member is None or not isinstance(master, int) or master <= 0 or axis.logical_number in tangled:
+                continue  # no list (LIS512), no slave, or a coupling LIS507 reports (itself, chain, circle)
             program = f"`{names[master]}`" if master in names else f"axis {master}"
             yield at_channel_axis(
                 CODE,
