@@ -40,7 +40,7 @@ def test_a_start_up_list_named_otherwise_is_a_start_up_list(tmp_path: Path) -> N
     result = run_cli("lint", str(folder / "basis.lis"), "--format", "json", "--select", "LIS101,LIS5")
     assert result.returncode == 0, result.stderr
     # its entries were followed (the axis lists were linted), its own lines were not read as axis parameters
-    assert json.loads(result.stdout)["summary"]["files"] == 3
+    assert json.loads(result.stdout)["summary"]["files"] == 4  # three axis lists and the default list
     assert diagnostics(result) == []
 
 
@@ -105,3 +105,21 @@ def test_telling_a_start_up_list_by_content_does_not_parse_an_axis_list(monkeypa
     startup.write_text("zahl_mds 1\nachs_mds[0] ./achsmds1.lis\nEnde\n")
     assert not discovery.is_startup(axis) and parsed == []
     assert discovery.is_startup(startup) and parsed == [str(startup)]
+
+
+def test_linting_a_start_up_list_checks_every_list_it_names_against_its_own_catalogue(tmp_path: Path) -> None:
+    listen = tmp_path / "listen"
+    shutil.copytree(SDK4, listen)
+    channel = listen / "sda_mds1.lis"
+    channel.write_text(
+        channel.read_text(encoding="latin-1").replace("Ende", "gruppe[0].bezeichnug x\nEnd"),
+        encoding="latin-1",
+    )
+    result = run_cli("lint", str(listen / "hochlauf.lis"), "--format", "json")
+    by_file = {(name, code) for name, code in diagnostics(result)}
+    assert ("sda_mds1.lis", "LIS004") in by_file  # the channel list's misspelt end marker
+    assert ("sda_mds1.lis", "LIS101") in by_file  # its unknown parameter, judged in the channel catalogue
+    names = {Path(d["path"]).name for d in json.loads(result.stdout)["diagnostics"]}
+    assert "default_sda.lis" not in names  # the default channel list is checked and clean
+    fixed = run_cli("lint", "--fix", str(listen / "hochlauf.lis"))
+    assert channel.read_text(encoding="latin-1").endswith("Ende\n"), fixed.stderr

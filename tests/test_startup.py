@@ -122,7 +122,8 @@ def test_the_ext_schedule_variant_reads_the_lists_one_folder_up(tmp_path, where,
     assert result.returncode == 0, result.stderr.decode()
     document = json.loads(result.stdout)
     assert [d["message"] for d in document["diagnostics"] if d["code"] == "LIS504"] == []
-    assert document["summary"]["files"] == 2  # achsmds1.lis and achsmds2.lis, read through the entries
+    # achsmds1.lis and achsmds2.lis, and the default list default_mds.lis, read through the entries
+    assert document["summary"]["files"] == 3
     if where != "listen/ExtSchedule":
         return
     # Read and compared as one machine: a second axis 1 is found across the two lists.
@@ -158,6 +159,6 @@ def test_entries_are_read_under_the_cnc_root_only(tmp_path):
     assert len(refused) == 2
     assert "`../outside.lis`" in refused[0] and "lies outside the CNC root" in refused[0]
     assert "`./listen/link.lis`" in refused[1] and "symbolic link that leads outside" in refused[1]
-    # achsmds1, achsmds2, other/achsmds9, and the start-up list with its LIS504 findings
-    assert document["summary"]["files"] == 4
+    # achsmds1, achsmds2, other/achsmds9, the default list, and the start-up list with its LIS504 findings
+    assert document["summary"]["files"] == 5
     assert b"SECRET" not in result.stdout + result.stderr

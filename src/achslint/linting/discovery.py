@@ -29,6 +29,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from ..axis.source import read_one_list
 from ..catalogue.kinds import STARTUP, entry_kind, kind_of
 from ..core.decode import UnreadableInput
 from ..core.files import (
@@ -404,7 +405,41 @@ class Finder:
                 found_inside.append((member.name, member.path))
             else:
                 found.add(member, context=True)
+        # The lists of other kinds it names (its default list, channel lists, tool data, the real-time
+        # configuration ...) are checked against their own catalogues: named with it, or in a linted folder.
+        folder = Path(os.path.abspath(path)).parent
+        for entry, kind in self._other_lists(startup):
+            assert entry.path is not None
+            if not named and (
+                not scope.contains(entry.path) or self._excluded(self.config_for(entry.path), entry.path)
+            ):
+                continue
+            mine = inside(entry.path, folder) or scope.contains(entry.path)
+            target = Target(shown(entry.path), entry.path, self.config_for(entry.path), (str(startup.path),))
+            found.add(replace(target, writable=self.follow_startup or mine, kind=kind))
         return found_inside
+
+    def _other_lists(self, startup: Startup) -> list[tuple[StartupEntry, str]]:
+        """The lists besides its axis lists a start-up list names and achslint can read, with their kinds. One
+        that cannot be read is left to LIS504 (default and channel lists) or said in a note by its lint."""
+        named: list[tuple[StartupEntry | None, str | None]] = [
+            (startup.default, "default_axis"),
+            (startup.default_channel, "default_channel"),
+            *((entry, "channel") for entry in startup.channels),
+            *((entry, other.id if (other := entry_kind(entry.key)) else None) for entry in startup.others),
+        ]
+        lists = []
+        for entry, kind in named:
+            if entry is None or entry.path is None or kind is None or _names(entry.path, startup.path):
+                continue
+            if is_xml(entry.path.name):
+                continue  # XML lists of other kinds are not read yet
+            try:
+                read_one_list(entry.path, str(entry.path))
+            except (OSError, UnreadableInput):
+                continue  # LIS504 says why (a default or channel list), the CNC too for the others
+            lists.append((entry, kind))
+        return lists
 
     def _walk(
         self, folder: Path, scope: Scope, found: Discovery, *, recursive: bool = True
