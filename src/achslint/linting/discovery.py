@@ -294,9 +294,8 @@ class Finder:
         machines it belongs to (see the module's description)."""
         found = Discovery()
         scope = Scope.of(paths)
-        lists: list[
-            tuple[str, Path]
-        ] = []  # (name shown, path): named, found in a folder or by a start-up list
+        # (name shown, path) of every list: named, found in a folder, or reached through a start-up list
+        lists: list[tuple[str, Path]] = []
         named: list[Path] = []
         for raw in paths:
             if raw == "-":
