@@ -50,9 +50,14 @@ def test_hook_definition_fits_whole_machines():
         "Project.tsproj",
         "Update/ax_mds_1.xml",
         "ACHSMDS2.LIS",
+        "listen/sda_mds1.lis",  # every kind of list (issue 25): routed by its start-up entry or content
+        "listen/werkz_d1.lis",
+        "listen/basis.lis",
     ):
         assert lint_pattern.search(name), name
     assert not lint_pattern.search("README.md")
+    fmt_pattern = re.compile(patterns[1])
+    assert fmt_pattern.search("listen/sda_mds1.lis") and not fmt_pattern.search("Axes/Axis_X.xti")
 
 
 def test_a_list_passed_alone_is_checked_against_its_neighbours(tmp_path):
