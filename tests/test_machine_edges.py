@@ -214,3 +214,27 @@ def test_a_gantry_circle_is_lis507_alone_not_also_lis514(tmp_path: Path) -> None
     )
     codes = {code for _, code, _ in found(result)}
     assert codes == {"LIS507"}
+
+
+def test_the_editor_judges_a_channel_list_as_its_buffer_has_it(tmp_path: Path) -> None:
+    portal = tmp_path / "portal"
+    shutil.copytree(FIXTURES / "machines" / "portal", portal)
+    channel = portal / "listen" / "sda_mds1.lis"
+    clean = channel.read_bytes().decode("latin-1")
+    slot = "gruppe[0].achse[5].log_achs_nr"
+    assert slot in clean
+    lines = clean.splitlines()
+    # the buffer puts the gantry slave Y2 (logical 7) into the channel, the file on disk does not
+    edited = "\n".join(
+        line.replace(line.split()[-1], "7") if line.startswith(slot) else line for line in lines
+    )
+    session = Session(tmp_path)
+    document = Document(channel.as_uri(), channel, edited + "\n", 2)
+    session.open(document)
+    assert "LIS514" in [d.code for d in session.diagnostics(document.uri)[1]]
+    # and the other way round: the file has it, the buffer does not
+    channel.write_text(edited + "\n", encoding="latin-1")
+    session = Session(tmp_path)
+    document = Document(channel.as_uri(), channel, clean, 1)
+    session.open(document)
+    assert "LIS514" not in [d.code for d in session.diagnostics(document.uri)[1]]

@@ -374,6 +374,8 @@ class Session:
                 result = self._summary_result(target)
             pairs.append((target, result))
         startups = [m.startup for m in machines if m.startup is not None]
+        for startup in startups:  # the channel lists the machine rules read: as the editor has them
+            startup.reader = self.text_of
         extra = machine_findings(
             pairs,
             startups,

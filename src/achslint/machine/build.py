@@ -17,6 +17,7 @@ What can be worked around (a channel entry without an axis list, a name given tw
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from ..axis.resolved import ResolvedAxis, resolve_bytes
@@ -167,7 +168,9 @@ def _channel_list(startup: Startup, channel: int, machine: Machine) -> ChannelLi
     return result
 
 
-def read_channel_entry(entry: StartupEntry, default: StartupEntry | None) -> ChannelList | None:
+def read_channel_entry(
+    entry: StartupEntry, default: StartupEntry | None, read: Callable[[Path], bytes] = read_list
+) -> ChannelList | None:
     """The channel list a start-up entry names, with the default channel list underneath, for the machine
     rules (LIS508, the default list only when it is read); None when the channel list cannot be read
     (LIS504 and `build_machine` say why)."""
@@ -175,9 +178,9 @@ def read_channel_entry(entry: StartupEntry, default: StartupEntry | None) -> Cha
     if entry.path is None:
         return None
     try:
-        defaults = read_list(under) if under is not None else None
+        defaults = read(under) if under is not None else None
         return read_channel_list(
-            read_list(entry.path),
+            read(entry.path),
             str(_relative(entry.path)),
             defaults,
             str(_relative(under)) if under else "",

@@ -71,6 +71,8 @@ class Startup:
     counts: dict[str, StartupCount] = field(default_factory=dict)  # zahl_mds, zahl_kw when written
     # the other lists it names (werkz_data[i], nullp_data[i], rtconf_lis ...; `catalogue.kinds.ENTRY_KINDS`)
     others: list[StartupEntry] = field(default_factory=list)
+    # How the lists it names are read for the machine rules: the files, or what the editor has open.
+    reader: Callable[[Path], bytes] = field(default=read_list, compare=False, repr=False)
 
     def loaded_axes(self) -> list[StartupEntry]:
         """The axis lists the CNC loads: with `zahl_mds` written (P-STUP-00014), the entries below that count

@@ -35,7 +35,7 @@ def channel_lists(startups: list[Startup]) -> Iterator[tuple[Startup, ChannelLis
             if entry.path is None or str(entry.path) in read:
                 continue
             read.add(str(entry.path))
-            channel = read_channel_entry(entry, startup.default_channel)
+            channel = read_channel_entry(entry, startup.default_channel, startup.reader)
             if channel is not None:
                 yield startup, channel
 
