@@ -471,11 +471,7 @@ class Finder:
                 if startup and config.settings.homing_programs:
                     found.program_startups.append(path)  # its homing programs are checked too
                 xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
-                if (
-                    not xml
-                    and not startup
-                    and not any(matches_glob(name.lower(), pattern.lower()) for pattern in include)
-                ):
+                if not xml and not startup and not _included(name, include):
                     continue
                 if self._excluded(config, path):
                     continue
