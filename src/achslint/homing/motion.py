@@ -128,13 +128,25 @@ class Event:
 
 
 class ReferenceEvent(TypedDict):
-    """The reference event: its kind, where it happened (scenario frame), the value set there (homed frame)
-    and the speed the axis had."""
+    """The reference event: its kind, where it happened (scenario frame), the value set there (homed frame),
+    the speed the axis had and when (seconds after the homing start)."""
 
     kind: str
     position: float
     value: float
     speed: float
+    time: float
+
+
+@dataclass(frozen=True)
+class Arming:
+    """Where the zero-pulse logic of §2.6 was armed in a run that references on a zero pulse (scenario frame,
+    continuous): `cam` where the reference cam was operated (its edge as the CNC saw it; None without a cam,
+    where the logic is armed when the search starts) and `armed` that point plus
+    shift_offset_zero_pulse_activation (P-AXIS-00494)."""
+
+    cam: float | None
+    armed: float
 
 
 class TraceWarning(TypedDict):
@@ -207,6 +219,17 @@ class Trace:
     warnings: list[TraceWarning] = field(default_factory=list)  # notes, and the facts once worded
     facts: list[Fact] = field(default_factory=list)  # in the order they were found
     ends_moving: bool = False  # flying spindle homing: the trace ends at the reference, still turning
+    arming: Arming | None = None  # where the zero-pulse logic was armed (zero-pulse references only)
+    reference_at: float | None = None  # the reference event's position, scenario frame, not wrapped
+
+    @property
+    def cam_zero_pulse_offset(self) -> float | None:
+        """The distance from where the reference cam was operated to the zero pulse taken as the reference,
+        along the homing direction: what the CNC object "reference cam - zero pulse offset" reads after homing
+        (§2.6). It includes shift_offset_zero_pulse_activation; None without a cam or a zero-pulse reference."""
+        if self.arming is None or self.arming.cam is None or self.reference_at is None:
+            return None
+        return abs(self.reference_at - self.arming.cam)
 
     @property
     def total_time(self) -> float:
@@ -472,10 +495,18 @@ class Simulator:
     def reference(
         self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float
     ) -> float:
-        """Record the reference event; returns the position after homing (homed frame)."""
+        """Record the reference event at `time` and `position`; returns the position after homing (homed
+        frame)."""
         trace.events.append(Event(time, position, kind))
+        trace.reference_at = position
         speed = abs(trace.phases[-1].segments[-1].v0)  # the braking segment starts at the event
-        trace.reference = {"kind": kind, "position": self.wrap(position), "value": value, "speed": speed}
+        trace.reference = {
+            "kind": kind,
+            "position": self.wrap(position),
+            "value": value,
+            "speed": speed,
+            "time": time,
+        }
         final = trace.final_position = self.wrap(value + (x_end - position))
         return final
 

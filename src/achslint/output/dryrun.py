@@ -5,15 +5,22 @@ JSON (version 1): {"version", "axis": {..., "acceleration", "acceleration_source
 "strategy": {"id", "description"}, "scenario", "phases": [{"name", "direction",
 "velocity", "start_position", "end_position", "start_time", "end_time",
 "ended_by"}], "events": [{"time", "position", "kind"}], "reference": {"kind",
-"position", "value", "speed"} | null, "final_position", "ends_moving",
+"position", "value", "speed", "time", "armed_at", "cam_zero_pulse_offset"} |
+null, "final_position", "ends_moving",
 "total_time", "total_distance", "outcome", "failure", "warnings": [{"code",
 "message"}], "corrections", "units"}. Positions are mm (degrees for rotary
 axes and spindles), velocities per second, times in seconds; phase and event
 positions are in the scenario frame (actual values before homing, continuous:
 on a modulo axis they keep counting past the modulo range so a revolution
 shows as 360°), `reference.position` (wrapped into the modulo range),
-`reference.value` and `final_position` in the homed frame. Numbers are always
-finite: the JSON never contains NaN or Infinity.
+`reference.value` and `final_position` in the homed frame. The engineering
+numbers of the reference: `time` (seconds after the homing start), `armed_at`
+(where the zero-pulse logic of §2.6 was armed, wrapped like `position`; null
+when the reference is no zero pulse) and `cam_zero_pulse_offset` (the distance
+from where the cam was operated to that zero pulse along the homing direction,
+shift included: what the CNC object "reference cam - zero pulse offset" reads
+after homing, §2.6; null without a cam). Numbers are always finite: the JSON
+never contains NaN or Infinity.
 """
 
 from __future__ import annotations
@@ -116,6 +123,9 @@ def trace_json(run: DryRun) -> dict[str, Any]:
                 "position": r(trace.reference["position"]),
                 "value": r(trace.reference["value"]),
                 "speed": r(trace.reference["speed"]),
+                "time": r(trace.reference["time"]),
+                "armed_at": None if trace.arming is None else r(run.simulator.wrap(trace.arming.armed)),
+                "cam_zero_pulse_offset": r(trace.cam_zero_pulse_offset),
             },
             "final_position": r(trace.final_position),
             "ends_moving": trace.ends_moving,
@@ -221,9 +231,18 @@ def render(run: DryRun, console: Console) -> None:
         console.print(
             Text(
                 f"Reference: {ref['kind']} at {number_text(ref['position'])} {unit} (actual value before "
-                f"homing) becomes {number_text(ref['value'])} {unit}"
+                f"homing) becomes {number_text(ref['value'])} {unit}, at {number_text(ref['time'], 3)} s"
             )
         )
+        offset = trace.cam_zero_pulse_offset
+        if trace.arming is not None and offset is not None:
+            console.print(
+                Text(
+                    f"Zero-pulse logic armed at {number_text(run.simulator.wrap(trace.arming.armed))} {unit}; "
+                    f"reference cam - zero pulse offset {number_text(offset)} {unit} (what the CNC reports "
+                    "after homing, §2.6)"
+                )
+            )
     if trace.final_position is not None:
         where = (
             "the spindle turns on at " + number_text(trace.reference["speed"], 3) + f" {unit}/s"

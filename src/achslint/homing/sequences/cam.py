@@ -9,6 +9,7 @@ from ..motion import (
     INF,
     ZERO_SEARCH_EXCEEDED,
     Active,
+    Arming,
     Crossing,
     Event,
     Ramp,
@@ -94,6 +95,7 @@ def reference_search(
     )
     if cam_distance <= abs(x_end - x) or x_ref is not None:
         _zero_pulse.arming_events(sim, trace, "cam edge detected", t + t_cam, x_cam, s)
+        trace.arming = Arming(x_cam, activation)
     if x_ref is not None:
         t_ref = trace.phases[-1].segments[-1].t0
         sim.reference(trace, event, x_ref, t_ref, sim.refpkt, x_end)
@@ -201,6 +203,7 @@ def one_phase_zero_pulse(sim: Simulator, trace: Trace, x: float, s: int, cam_dis
         return trace
     cam = trace.events[-1]
     armed = cam.position + s * sim.shift
+    trace.arming = Arming(cam.position, armed)
     pulse = armed + s * sim.next_pulse(armed, s)
     event = "encoder overflow" if sim.overflow else "zero pulse"
     latched = sim.scenario.hardware_latch or sim.overflow

@@ -46,7 +46,13 @@ def _by_method(sim: Simulator, trace: Trace, x: float, drive: DriveInput, cam_sh
     if reference is None:
         reference = sim.refpkt if values.get("kenngr.write_reference_position_to_drive") else 0.0
     if drive.method == "immediate":
-        trace.reference = {"kind": "immediate (no position set)", "position": x, "value": x, "speed": 0.0}
+        trace.reference = {
+            "kind": "immediate (no position set)",
+            "position": x,
+            "value": x,
+            "speed": 0.0,
+            "time": 0.0,
+        }
         trace.final_position = x
         return trace
     if drive.method == "at-position":
@@ -55,12 +61,19 @@ def _by_method(sim: Simulator, trace: Trace, x: float, drive: DriveInput, cam_sh
             "position": x,
             "value": reference,
             "speed": 0.0,
+            "time": 0.0,
         }
         trace.final_position = reference
         return trace
     if drive.method == "absolute-encoder":
         value = x + drive.encoder_offset
-        trace.reference = {"kind": "absolute encoder offset", "position": x, "value": value, "speed": 0.0}
+        trace.reference = {
+            "kind": "absolute encoder offset",
+            "position": x,
+            "value": value,
+            "speed": 0.0,
+            "time": 0.0,
+        }
         trace.final_position = value
         return trace
     if drive.method == "nc":

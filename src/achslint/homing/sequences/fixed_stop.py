@@ -100,7 +100,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
     value = values.number("kenngr.homing.torq_homing_position") * POSITION
     retraction = values.number("kenngr.homing.torq_retraction_distance") * POSITION
     trace.events.append(Event(t_detect, stop, "fixed stop detected"))
-    trace.reference = {"kind": "fixed stop", "position": stop, "value": value, "speed": 0.0}
+    trace.reference = {"kind": "fixed stop", "position": stop, "value": value, "speed": 0.0, "time": t_detect}
     x_end, t_end = point_to_point(
         trace, "retract from the stop", stop, t_detect, -s, speed, float(acceleration), retraction
     )

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..motion import INF, Event, PhaseRecord, Ramp, Simulator, Trace, direction_word
+from ..motion import INF, Arming, Event, PhaseRecord, Ramp, Simulator, Trace, direction_word
 from . import _zero_pulse
 
 
@@ -20,6 +20,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
     ramp = Ramp(0.0, x, s, speed, sim.ramp_acceleration)
     name = "reference on the fly"
     t_edge = None
+    cam_at: float | None = None  # where the cam counts as operated (its not-operated edge)
     if sim.strategy.with_cam:
         if scenario.cam is None:
             return sim.stand_still(
@@ -37,10 +38,11 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
         if edge > bound:
             return _abort(sim, trace, ramp, name, bound, reason)
         t_edge = sim.sample(ramp, edge, False)
-        x_edge = x + s * ramp.distance_at(t_edge)
-        activation = x_edge + s * sim.shift
+        cam_at = x + s * ramp.distance_at(t_edge)
+        activation = cam_at + s * sim.shift
     else:
         activation = x
+    trace.arming = Arming(cam_at, activation)
     event = "encoder overflow" if sim.overflow else "zero pulse"
     latched = scenario.hardware_latch or sim.overflow
     distance = abs(activation - x) + sim.next_pulse(activation, s)
@@ -69,11 +71,13 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
     if t_edge is not None:
         _edge_event(sim, trace, t_edge, x + s * ramp.distance_at(t_edge))
     trace.events.append(Event(t_ref, x_ref, event))
+    trace.reference_at = x_ref
     trace.reference = {
         "kind": event,
         "position": sim.wrap(x_ref),
         "value": sim.refpkt,
         "speed": ramp.speed_at(t_ref),
+        "time": t_ref,
     }
     trace.final_position = sim.wrap(sim.refpkt)
     trace.ends_moving = True

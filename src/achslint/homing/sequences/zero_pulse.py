@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..motion import INF, Simulator, Trace
+from ..motion import INF, Arming, Simulator, Trace
 
 
 def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
@@ -17,6 +17,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
     event = "encoder overflow" if sim.overflow else "zero pulse"
     latched = sim.scenario.hardware_latch or sim.overflow
     search_max = sim.zero_search_max if sim.zero_search_max > 0 else INF
+    trace.arming = Arming(None, x)  # without a cam the zero-pulse logic is armed at the start (§2.3.3.3)
     x_end, _t_end, x_ref = sim.move(
         trace,
         f"to the {event}",
