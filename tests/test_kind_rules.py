@@ -169,9 +169,11 @@ def test_a_list_of_another_kind_resolves_no_axis() -> None:
     assert not ctx.axis_list and [s.canonical for s in ctx.settings] == ["grp_anzahl"]
     with pytest.raises(TypeError, match="channel list, not an axis list"):
         _ = ctx.values
-    # and the linter asks for none: no machine summary, no Context kept for the editor
+    # and the linter asks for none: no machine summary; the editor keeps the Context for its kind (hover,
+    # completion from the channel catalogue), which resolves no axis either
     result = lint_file(b"grp_anzahl 1\nEnde\n", "kanal.lis", FileSettings(kind="channel", keep_context=True))
-    assert result.diagnostics == [] and result.summary is None and result.context is None
+    assert result.diagnostics == [] and result.summary is None
+    assert result.context is not None and result.context.kind is CHANNEL and not result.context.axis_list
 
 
 def test_an_axis_parameter_in_a_channel_list_is_unknown_there() -> None:

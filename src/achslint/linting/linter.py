@@ -23,6 +23,7 @@ from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml
 from ..machine import startup as machine
+from ..machine.resolved import Machine
 from ..rules import Scope
 from ..rules.context import Context
 from ..syntax.parser import ASSIGNMENT, ListFile, parse_bytes
@@ -232,8 +233,8 @@ def _check_file(
 
 def _check_other_kind(file: ListFile, name: str, settings: FileSettings, kind: Kind) -> FileResult:
     """A list of another kind (channel, tool data ...) against its kind's catalogue, by the rules that apply
-    to it. It is no axis: no resolved axis, no machine summary (the machine step reads channel and start-up
-    lists itself), and no Context for the editor (its hover and completion know axis lists only)."""
+    to it. It is no axis: no resolved axis and no machine summary (the machine step reads channel and start-up
+    lists itself); the editor keeps its Context for the kind and its catalogue (hover, completion)."""
     cat = kind.catalogue()
     assert cat is not None  # has_catalogue
     ctx = Context(name, file, settings.settings, catalogue=cat, kind=kind)
@@ -246,7 +247,7 @@ def _check_other_kind(file: ListFile, name: str, settings: FileSettings, kind: K
         kind=kind.id,
     )
     lines = [line.body for line in file.lines] if diagnostics and settings.keep_source else []
-    return FileResult(name, diagnostics, None, lines)
+    return FileResult(name, diagnostics, None, lines, context=ctx if settings.keep_context else None)
 
 
 def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
@@ -299,7 +300,7 @@ def _check_xml(
             d.fix = None  # edits refer to the embedded text; XML files are not rewritten
             diagnostics.append(d)
     if len(members) > 1 and settings.machine_in_file:  # a TwinCAT project: its axes form one machine
-        diagnostics.extend(run(Scope.MACHINE, (members, []), settings.policy))
+        diagnostics.extend(run(Scope.MACHINE, (Machine(name, members=members),), settings.policy))
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
     return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])

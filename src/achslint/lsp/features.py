@@ -1,7 +1,8 @@
 """Editor features as Language Server Protocol answers, computed from achslint's own data.
 
 Each function takes the session's document and snapshot and returns lsprotocol types. The
-texts come from the catalogue (`explain.parameter_card`), the resolved axis
+texts come from the catalogue of the document's kind (`explain.parameter_card`; a channel list's
+hover and completion read the channel catalogue: `document_kind`), the resolved axis of an axis list
 (`explain.parameter_row`: value, source, correction, effect under the homing strategy), the
 units module, the rules' documentation and their fixes; formatting is `fmt`'s.
 """
@@ -22,9 +23,9 @@ from ..catalogue import (
     INTEGER,
     REAL,
     Parameter,
-    catalogue,
     fill_indices,
 )
+from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, STARTUP, Kind
 from ..catalogue.units import describe, unit_label
 from ..core.diagnostics import Diagnostic, Fix, Severity
 from ..rules import registry
@@ -221,14 +222,28 @@ def setting_of(context: Context | None, line: syntax.Line) -> Setting | None:
 # -- hover --------------------------------------------------------------------------------------------
 
 
-def card_text(parameter: Parameter, markdown: bool = True) -> list[str]:
+def document_kind(snapshot: Snapshot | None) -> Kind | None:
+    """The kind of list a document is, as its lint decided it (the start-up entry that names it, or its
+    content: `linter.list_kind`): a start-up list, the kind of its rules' Context, the axis kind before the
+    first lint. None for a kind achslint has no catalogue of (HMI objects, cam tables): nothing to offer."""
+    if snapshot is None:
+        return AXIS
+    if snapshot.startup:
+        return STARTUP
+    if snapshot.context is not None:
+        return snapshot.context.kind
+    return None if snapshot.result.note else AXIS
+
+
+def card_text(parameter: Parameter, markdown: bool = True, kind: Kind = AXIS) -> list[str]:
     from ..explanation import parameter_card
 
-    card = parameter_card(parameter)
+    card = parameter_card(parameter, kind)
     b = (lambda s: f"**{s}**") if markdown else (lambda s: s)
     c = (lambda s: f"`{s}`") if markdown else (lambda s: s)
     out = [f"{b(card['p_axis'])} {c(card['path'])}", "", card["description"], ""]
     rows = [
+        ("list", card["list"] if kind.prefix != AXIS_PREFIX else None),
         ("type", card["type"]),
         ("unit", card["units"] and ", ".join(f"{v} ({k})" for k, v in card["units"].items())),
         ("range", card["range"]),
@@ -297,8 +312,10 @@ def hover_text(
     line_number: int,
     column: int,
     markdown: bool = True,
+    kind: Kind | None = AXIS,
 ) -> str | None:
-    """The hover text at a 1-based (line, column) of a parsed list with its context."""
+    """The hover text at a 1-based (line, column) of a parsed list with its context: a parameter's card from
+    the catalogue of the list's kind (the context's, else `kind`; None: no catalogue, no card)."""
     if file is None or not 1 <= line_number <= len(file.lines):
         return None
     line = file.lines[line_number - 1]
@@ -321,25 +338,32 @@ def hover_text(
         start = line.rest_column if part == "rest" else 1
         code = code_at(text or "", column - start)
         return rule_text(code, markdown) if code else None
+    if context is not None:
+        kind = context.kind
+    cat = kind.catalogue() if kind is not None else None
     setting = setting_of(context, line)
-    resolution = catalogue().resolve(line.path or "") if line.path_ok else None
-    if resolution is None:
+    resolution = cat.resolve(line.path or "") if cat is not None and line.path_ok else None
+    if kind is None or resolution is None:
         return None
     parameter = resolution.parameter
     canonical = setting.canonical if setting is not None else None
+    axis = context is not None and context.axis_list
     if part == "path":
-        out = card_text(parameter, markdown)
+        out = card_text(parameter, markdown, kind)
         if resolution.alias is not None and resolution.alias.kind != "alternative":
             out.insert(2, f"(written with the {resolution.alias.kind} name {line.path})")
-        if context is not None and canonical is not None:
+        if context is not None and axis and canonical is not None:
             out += ["", *axis_lines(context, canonical, markdown)]
         return "\n".join(out)
     # the value
     if context is None or canonical is None:
         return None
+    written = setting.value if setting is not None else None
+    if not axis:  # no resolved axis: the value as written, in the unit the parameter has whatever the axis
+        units = set(parameter.units.values()) - {None, ""}
+        return _value_text(parameter, written, units.pop() if len(units) == 1 else None)
     values = context.values
     unit = parameter.unit(values.axis_type)
-    written = setting.value if setting is not None else None
     if isinstance(written, Reference):
         target = values.referenced(canonical, written)
         referenced = values.parameter(target)
@@ -351,13 +375,8 @@ def hover_text(
             origin,
         ]
         return "\n".join(out)
-    if isinstance(written, bool):
-        words = f"{int(written)} ({'on' if written else 'off'})"
-    elif isinstance(written, (int, float)):
-        words = describe(written, unit)
-    elif written is not None and parameter.symbols:
-        words = f"{written} (one of {', '.join(parameter.symbols)})"
-    else:
+    words = _value_text(parameter, written, unit)
+    if words is None:
         return None
     out = [words]
     correction = values.correction(canonical)
@@ -366,6 +385,17 @@ def hover_text(
             f"the CNC uses {value_words(values, canonical)} instead ({correction.error}: {correction.reason})"
         )
     return "\n\n".join(out)
+
+
+def _value_text(parameter: Parameter, written: object, unit: str | None) -> str | None:
+    """A written value in words: a number in human units, a switch as on or off, symbols with their choice."""
+    if isinstance(written, bool):
+        return f"{int(written)} ({'on' if written else 'off'})"
+    if isinstance(written, (int, float)):
+        return describe(written, unit)
+    if written is not None and parameter.symbols:
+        return f"{written} (one of {', '.join(parameter.symbols)})"
+    return None
 
 
 def rule_text(code: str, markdown: bool = True) -> str | None:
@@ -388,12 +418,15 @@ def rule_text(code: str, markdown: bool = True) -> str | None:
 
 _PATH_PREFIX = re.compile(r"^[ \t]*([A-Za-z_][A-Za-z0-9_\-.\[\]]*)?$")
 _VALUE_PREFIX = re.compile(r"^[ \t]*([A-Za-z_][A-Za-z0-9_\-.\[\]]*)[ \t]+(\S*)$")
+# A flag after `|` in an OR-combined value (`error_protocol_mode  REPORT | REP`), before any `(` comment.
+_FLAG_PREFIX = re.compile(r"^[ \t]*([A-Za-z_][A-Za-z0-9_\-.\[\]]*)[ \t]+[^(]*\|[ \t]*([^ \t|(]*)$")
 _NOQA_PREFIX = re.compile(r"noqa:[ \t]*(?:[A-Za-z0-9]+[ \t]*,[ \t]*)*([A-Za-z0-9]*)$", re.IGNORECASE)
 
 
 def _applies(parameter: Parameter, context: Context | None) -> bool:
-    """Whether a parameter takes effect for the list's drive and axis type (as LIS105 judges it)."""
-    if context is None:
+    """Whether a parameter takes effect for the list's drive and axis type (as LIS105 judges it; lists of
+    other kinds describe no axis)."""
+    if context is None or not context.axis_list:
         return True
     analysis = context.analysis
     if (
@@ -433,28 +466,35 @@ def complete(
     edit_range_default: bool = False,
 ) -> lsp.CompletionList:
     """Completion at a 1-based position: rule codes after `noqa:`, parameter paths at the start of a
-    line, symbols and references in the value. With `edit_range_default` (the client supports
-    `itemDefaults.editRange`) the range the items replace is sent once instead of with every item."""
+    line, symbols and references in the value (and a flag after `|`), all from the catalogue of the
+    document's kind. With `edit_range_default` (the client supports `itemDefaults.editRange`) the range
+    the items replace is sent once instead of with every item."""
     text = document.line(line_number)
     before = text[: column - 1]
     context = snapshot.context if snapshot is not None else None
+    kind = document_kind(snapshot)
     noqa = _NOQA_PREFIX.search(before)
     if noqa and "noqa" in before.lower():
         start = column - len(noqa.group(1))
         return lsp.CompletionList(False, _code_items(document, snapshot, line_number, start, column))
+    if kind is None:
+        return lsp.CompletionList(False, [])
     match = _PATH_PREFIX.match(before)
     if match:
         typed = match.group(1) or ""
         start = column - len(typed)
         where = lsp_range(document, line_number, start, line_number, column)
-        items = _path_items(context, typed, snippets, None if edit_range_default else where)
+        items = _path_items(context, kind, typed, snippets, None if edit_range_default else where)
         defaults = lsp.CompletionItemDefaults(edit_range=where) if edit_range_default else None
         return lsp.CompletionList(False, items, item_defaults=defaults)
-    match = _VALUE_PREFIX.match(before)
+    match = _VALUE_PREFIX.match(before) or (
+        _FLAG_PREFIX.match(before) if kind.prefix != AXIS_PREFIX else None
+    )
     if match:
         start = column - len(match.group(2))
         return lsp.CompletionList(
-            False, _value_items(document, context, line_number, start, column, match.group(1), match.group(2))
+            False,
+            _value_items(document, context, kind, line_number, start, column, match.group(1), match.group(2)),
         )
     return lsp.CompletionList(False, [])
 
@@ -464,17 +504,22 @@ def _edit(document: Document, line: int, start: int, end: int, text: str) -> lsp
 
 
 def _path_items(
-    context: Context | None, typed: str, snippets: bool, where: lsp.Range | None
+    context: Context | None, kind: Kind, typed: str, snippets: bool, where: lsp.Range | None
 ) -> list[lsp.CompletionItem]:
-    """Paths that take effect for the list's drive and axis type; old names marked deprecated. Items carry
-    no documentation: `completionItem/resolve` adds the card of the one the user looks at."""
+    """The paths of the kind's catalogue (of an axis list: those that take effect for its drive and axis
+    type); old names marked deprecated. Items carry no documentation: `completionItem/resolve` adds the card
+    of the one the user looks at (an item of another kind than axis lists names its kind in `data`)."""
+    cat = kind.catalogue()
+    if cat is None:
+        return []
+    data = {"kind": kind.id} if kind.prefix != AXIS_PREFIX else None
     pattern, indices = syntax.path_pattern(typed)
     # Segments the user finished (up to the last dot) must match; the client filters the rest.
     done = pattern.rsplit(".", 1)[0] + "." if "." in pattern else ""
     done_indices = indices[: done.count("[i]")]
     items = []
     plain, snippet = lsp.InsertTextFormat.PlainText, lsp.InsertTextFormat.Snippet
-    for parameter in catalogue().parameters:
+    for parameter in cat.parameters:
         if not parameter.path.startswith(done) or not _applies(parameter, context):
             continue
         insert = _snippet_path(parameter.path, done_indices, parameter.index_bounds, snippets)
@@ -488,6 +533,7 @@ def _path_items(
                 text_edit=lsp.TextEdit(where, insert) if where is not None else None,
                 text_edit_text=insert if where is None and insert != label else None,
                 insert_text_format=snippet if is_snippet else plain,
+                data=data,
             )
         )
         for alias in parameter.aliases:
@@ -507,10 +553,20 @@ def _path_items(
 
 
 def _value_items(
-    document: Document, context: Context | None, line: int, start: int, end: int, path: str, typed: str
+    document: Document,
+    context: Context | None,
+    kind: Kind,
+    line: int,
+    start: int,
+    end: int,
+    path: str,
+    typed: str,
 ) -> list[lsp.CompletionItem]:
-    resolution = catalogue().resolve(path)
-    if resolution is None:
+    """The symbols of the parameter on the line, 0 and 1 for a switch, and (in axis lists) references to
+    parameters of the same unit."""
+    cat = kind.catalogue()
+    resolution = cat.resolve(path) if cat is not None else None
+    if cat is None or resolution is None:
         return []
     parameter = resolution.parameter
     items = []
@@ -534,10 +590,12 @@ def _value_items(
                     text_edit=_edit(document, line, start, end, value),
                 )
             )
+    if kind.prefix != AXIS_PREFIX:  # a reference names an axis parameter: none of this kind's
+        return items
     if parameter.kind in (INTEGER, REAL) and (typed.upper().startswith("P") or not typed):
-        axis_type = context.values.axis_type if context is not None else "T"
+        axis_type = context.values.axis_type if context is not None and context.axis_list else "T"
         unit = parameter.unit(axis_type)
-        for other in catalogue().parameters:
+        for other in cat.parameters:
             if other is parameter or other.kind not in (INTEGER, REAL) or other.unit(axis_type) != unit:
                 continue
             label = other.id + (".0" if "[i]" in other.path else "")
@@ -576,10 +634,14 @@ def _code_items(
 
 
 def resolve_item(item: lsp.CompletionItem, markdown: bool = True) -> lsp.CompletionItem:
-    """Add the parameter card to a path item (computed only for the item the user looks at)."""
-    resolution = catalogue().resolve(item.label) if item.kind == lsp.CompletionItemKind.Field else None
+    """Add the parameter card to a path item (computed only for the item the user looks at), from the
+    catalogue of the kind its `data` names (axis lists when it names none)."""
+    named = item.data.get("kind") if isinstance(item.data, dict) else None
+    kind = BY_ID.get(named, AXIS) if isinstance(named, str) else AXIS
+    cat = kind.catalogue() if item.kind == lsp.CompletionItemKind.Field else None
+    resolution = cat.resolve(item.label) if cat is not None else None
     if resolution is not None and item.documentation is None:
-        text = "\n".join(card_text(resolution.parameter, markdown))
+        text = "\n".join(card_text(resolution.parameter, markdown, kind))
         item.documentation = lsp.MarkupContent(
             lsp.MarkupKind.Markdown if markdown else lsp.MarkupKind.PlainText, text
         )
@@ -814,6 +876,7 @@ def definition(
     setting = setting_of(context, line)
     if (
         context is None
+        or not context.axis_list  # a reference resolves in a resolved axis only
         or setting is None
         or not isinstance(setting.value, Reference)
         or setting.canonical is None
@@ -852,7 +915,7 @@ def inlay_hints(document: Document, snapshot: Snapshot | None, request: lsp.Rang
     from ..catalogue.units import to_human
 
     context = snapshot.context if snapshot is not None else None
-    if context is None:
+    if context is None or not context.axis_list:  # human units need the axis type: axis lists only
         return []
     hints = []
     first, last = request.start.line + 1, request.end.line + 1

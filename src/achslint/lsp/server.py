@@ -747,6 +747,8 @@ def _xml_target(
 @feature(lsp.TEXT_DOCUMENT_HOVER)
 @guarded()
 async def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None:
+    from ..syntax.parser import parse_text
+
     uri = params.text_document.uri
     analysis = await ls.analysis(uri)
     document = ls.documents.get(uri)
@@ -755,6 +757,7 @@ async def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None
     line, column = document.from_lsp(params.position.line, params.position.character)
     context: Context | None
     file: ListFile | None
+    kind = features.document_kind(analysis.snapshot)
     if is_xml(document.name):
         copy, session = document.copy(), ls.session
         found = await ls.run_on_worker(lambda: _xml_target(session, copy, line, column))
@@ -763,7 +766,10 @@ async def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None
         context, file, line, column = found
     else:
         context, file = analysis.snapshot.context, analysis.snapshot.file
-    text = features.hover_text(context, file, line, column, ls.markdown)
+        if file is None and analysis.snapshot.startup:  # a start-up list is not parsed by its lint
+            copy = document.copy()
+            file = await ls.run_on_worker(lambda: parse_text(copy.text, copy.name))
+    text = features.hover_text(context, file, line, column, ls.markdown, kind)
     if not text:
         return None
     kind = lsp.MarkupKind.Markdown if ls.markdown else lsp.MarkupKind.PlainText
@@ -816,13 +822,9 @@ async def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[
 async def _formatted(
     ls: AchslintServer, uri: str, edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]]
 ) -> list[lsp.TextEdit]:
-    """Formatting edits for the document's current text (not XML, not a start-up list), on the worker."""
-    from ..machine.startup import is_startup_list
-
+    """Formatting edits for the document's current text (a list of any kind, not XML), on the worker."""
     document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
-        return []
-    if document.path is not None and is_startup_list(document.path):
         return []
     copy, session = document.copy(), ls.session
 
