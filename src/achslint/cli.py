@@ -31,6 +31,7 @@ gc.set_threshold(50_000, 10, 10)
 import typer  # noqa: E402
 
 from . import __version__  # noqa: E402
+from .catalogue.kinds import CONTENT_KINDS  # noqa: E402
 from .homing.scenario import CYCLE_TIME_US  # noqa: E402
 from .linting.config import MAX_TOLERANCE_UM, SeverityName  # noqa: E402
 from .linting.config import UnknownParameters as UnknownParametersChoice  # noqa: E402
@@ -53,16 +54,19 @@ def _choices(name: str, values: Iterable[str]) -> type[Enum]:
 
 
 if TYPE_CHECKING:
+    from .explanation import Found
     from .output import Screen
 
 if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
     OutputFormat = Enum
     FailOn = Enum
     UnknownParameters = Enum
+    ListKind = Enum
 else:
     OutputFormat = _choices("OutputFormat", REPORTERS)
     FailOn = _choices("FailOn", get_args(SeverityName))
     UnknownParameters = _choices("UnknownParameters", get_args(UnknownParametersChoice))
+    ListKind = _choices("ListKind", (kind.id for kind in CONTENT_KINDS))  # one per catalogue
 
 
 class Color(str, Enum):
@@ -503,7 +507,14 @@ class ExplainFormat(str, Enum):
 def explain(
     target: str = typer.Argument(
         ...,
-        help="An axis list file, or a parameter: name, alias or id (vb_reflow, getriebe[0].vb_reflow, P-AXIS-00218).",
+        help="An axis list file, or a parameter of any list: name, alias or id (vb_reflow, getriebe[0].vb_reflow, "
+        "P-AXIS-00218, P-CHAN-00036).",
+    ),
+    kind: ListKind | None = typer.Option(
+        None,
+        "--kind",
+        help="With a parameter: look it up in this kind of list (channel, startup, tools ...); "
+        "without it an axis parameter wins, then the one kind that knows the name.",
     ),
     output_format: ExplainFormat = typer.Option(
         ExplainFormat.text, "--format", "--output-format", help="text or json."
@@ -533,6 +544,8 @@ def explain(
     path = Path(target)
     problem = not_a_list_file(path)
     screen = _screen(color)
+    if kind is not None and (problem is None or problem not in NOT_A_FILE):
+        _fail("--kind goes with a parameter name, not with a file")
     if problem is None and is_startup_list(path):
         report = _machine_report(path, program, channel, cnc_root, gear)
         shown.MACHINE[output_format.value](report, screen)
@@ -541,16 +554,28 @@ def explain(
     elif problem is None or problem not in NOT_A_FILE:
         shown.LIST[output_format.value](explain_list(_one_list(path, target), target, gear), screen)
     else:
-        from .catalogue import catalogue
+        found = _parameter(target, kind.value if kind is not None else None)
+        shown.PARAMETER[output_format.value](parameter_card(found.parameter, found.kind), screen)
 
-        parameter = catalogue().find(target)
-        if parameter is None:
-            hint = ""
-            suggestions = catalogue().suggest(target)
-            if suggestions:
-                hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?"
-            _fail(f"{target!r} is neither a file nor a known parameter{hint}")
-        shown.PARAMETER[output_format.value](parameter_card(parameter), screen)
+
+def _parameter(target: str, kind_id: str | None) -> "Found":
+    """The one parameter `explain PARAM` describes, or a one-line failure: unknown (with the closest names of
+    the kind asked for, or of axis lists), or known to several kinds of list (then --kind chooses)."""
+    from .catalogue.kinds import AXIS, BY_ID
+    from .explanation import find_parameters
+
+    kind = BY_ID[kind_id] if kind_id is not None else None
+    found = find_parameters(target, kind)
+    if len(found) > 1:
+        kinds = ", ".join(f"{hit.kind.id} ({hit.parameter.id})" for hit in found)
+        _fail(f"{target!r} is a parameter of several kinds of list: {kinds}; choose one with --kind")
+    if not found:
+        cat = (kind or AXIS).catalogue()
+        suggestions = cat.suggest(target) if cat is not None else []
+        hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?" if suggestions else ""
+        where = f"of a {kind.name}" if kind is not None else "(--kind looks in another kind of list)"
+        _fail(f"{target!r} is neither a file nor a known parameter {where}{hint}")
+    return found[0]
 
 
 def _screen(color: Color) -> "Screen":

@@ -4,14 +4,20 @@
 homing strategy with its phases in words, and every homing parameter with its
 value, where it came from, its unit and human unit, and whether it takes effect
 under the strategy, with the reason.
+
+`find_parameters` looks a parameter up in the catalogue of any list kind (`catalogue.kinds`) and
+`parameter_card` describes it; the editor's hover shows the same card.
 """
 
 from __future__ import annotations
 
+import re
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, TypedDict
 
 from .axis.resolved import CorrectionData, plain, resolve_bytes
 from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, Scalar, Value, catalogue
+from .catalogue.kinds import AXIS, AXIS_PREFIX, BY_PREFIX, CONTENT_KINDS, Kind
 from .catalogue.units import describe, to_human, unit_label
 from .homing import HOMING_PARAMETERS, classify, effect, homing_parameter_paths, strategies_reading
 from .rules import registry
@@ -118,7 +124,9 @@ class StrategyUse(TypedDict):
 
 
 class ParameterCard(TypedDict):
-    p_axis: str
+    p_axis: str  # the parameter's id (P-AXIS-00218, or P-CHAN-00036 & co. for a parameter of another kind)
+    kind: str  # the kind of list it belongs to (`catalogue.kinds` id: axis, channel, startup ...)
+    list: str  # that kind for people: "axis list", "channel list" ...
     path: str
     aliases: list[AliasInfo]
     type: str
@@ -264,30 +272,82 @@ def strategies_using(parameter: Parameter) -> list[StrategyUse] | None:
     return [{"id": d.id, "title": d.title, "example": d.example} for d in strategies_reading(generic)]
 
 
-def rules_checking(parameter: Parameter) -> list[str]:
+def rules_checking(parameter: Parameter, kind: Kind = AXIS) -> list[str]:
+    """The rules that check a parameter in a list of `kind`: the value rules that run for that kind, and
+    (in axis lists) the rules that read the parameter together with others."""
+    rules = registry()
     codes: list[str] = []
-    kind = parameter.kind
-    if kind in (BOOL, INTEGER, REAL, SYMBOL):
+    value = parameter.kind
+    if value in (BOOL, INTEGER, REAL, SYMBOL):
         codes.append("LIS201")
-    if kind in (INTEGER, REAL):
+    if value in (INTEGER, REAL):
         codes.append("LIS202")
-    if kind == SYMBOL or parameter.symbols:
+    if value == SYMBOL or parameter.symbols:
         codes.append("LIS203")
     if parameter.max_length:
         codes.append("LIS206")
+    codes = [code for code in codes if rules[code].applies_to(kind.id)]
+    if kind.prefix != AXIS_PREFIX:
+        return codes  # the rules' PARAMETERS are axis paths: a channel's `kopf.achs_nr` is another parameter
     if parameter.id == "P-AXIS-00015":
         codes.append("LIS204")
-    for code, rule in registry().items():
+    for code, rule in rules.items():
         if parameter.path in rule.parameters and code not in codes:
             codes.append(code)
     return codes
 
 
-def parameter_card(parameter: Parameter) -> ParameterCard:
+@dataclass(frozen=True)
+class Found:
+    """A parameter and the kind of list whose catalogue holds it."""
+
+    kind: Kind
+    parameter: Parameter
+
+
+_ID = re.compile(r"(P-[A-Z]{4})-?([0-9]+)", re.IGNORECASE)
+
+
+def find_parameters(query: str, kind: Kind | None = None) -> list[Found]:
+    """The parameters a name, alias or id stands for (`vb_reflow`, `gruppe[0].achse[0].bezeichnung`,
+    `P-CHAN-00036`), in the catalogue of `kind`, or else of the kind its id prefix names, else the axis
+    catalogue's parameter (as `explain` always answered), else the one of every other kind that knows the
+    name; several when kinds other than the axis kind share it. Empty: no catalogue knows it."""
+    text = query.strip()
+    match = _ID.fullmatch(text)
+    if match and match.group(1).upper() != AXIS_PREFIX:
+        owner = BY_PREFIX.get(match.group(1).upper())
+        if owner is None or (kind is not None and kind.table != owner.table):
+            return []
+        cat = owner.catalogue()
+        found = cat.by_id.get(f"{owner.prefix}-{int(match.group(2)):05d}") if cat is not None else None
+        return [Found(kind or owner, found)] if found is not None else []
+    if kind is not None:
+        cat = kind.catalogue()
+        found = cat.find(text) if cat is not None else None
+        return [Found(kind, found)] if found is not None else []
+    found = catalogue().find(text)
+    if found is not None or match:
+        return [Found(AXIS, found)] if found is not None else []
+    hits = []
+    for other in CONTENT_KINDS:
+        cat = other.catalogue() if other.prefix != AXIS_PREFIX else None
+        found = cat.find(text) if cat is not None else None
+        if found is not None:
+            hits.append(Found(other, found))
+    return hits
+
+
+def parameter_card(parameter: Parameter, kind: Kind = AXIS) -> ParameterCard:
+    """A parameter's card: what the catalogue of its kind says, and (in axis lists) the drive and axis
+    types it applies to and the homing strategies that read it."""
     low, high = parameter.limits
-    drives = catalogue().drive_type_names
+    axis = kind.prefix == AXIS_PREFIX
+    drives = catalogue().drive_type_names if axis else {}
     return {
         "p_axis": parameter.id,
+        "kind": kind.id,
+        "list": kind.name,
         "path": parameter.path,
         "aliases": [{"path": a.path, "kind": a.kind} for a in parameter.aliases],
         "type": parameter.type,
@@ -307,6 +367,6 @@ def parameter_card(parameter: Parameter) -> ParameterCard:
         "description": parameter.summary,
         "manual_title": parameter.title or None,
         "manual": parameter.source or None,
-        "strategies": strategies_using(parameter),
-        "rules": rules_checking(parameter),
+        "strategies": strategies_using(parameter) if axis else None,
+        "rules": rules_checking(parameter, kind),
     }

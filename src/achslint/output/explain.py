@@ -84,13 +84,15 @@ def list_text(report: ListReport, screen: Screen) -> None:
 
 
 def card_text(card: ParameterCard, screen: Screen) -> None:
-    """`explain PARAM`: the parameter's id and path, its description, then one line per fact it has."""
+    """`explain PARAM`: the parameter's id and path, its description, then one line per fact it has (the
+    first: the kind of list it belongs to)."""
     from rich.text import Text
 
     console = screen.console
     console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))
     console.print(card["description"])
     rows = [
+        ("list", card["list"]),
         ("type", card["type"]),
         ("range (manual)", card["range"]),
         (
