@@ -165,6 +165,11 @@ class HomingStrategy:
         return self.definition.retracts
 
     @property
+    def flying(self) -> bool:
+        """Flying homing of a spindle (§2.3.2.1): from standstill or from endless rotation, without stopping."""
+        return self.definition.flying
+
+    @property
     def falling_edge(self) -> bool:
         return self.setup.falling_edge and self.with_cam
 
@@ -195,11 +200,13 @@ class HomingStrategy:
                 f"{self.title} (homing type {setup.homing_type}): remove the [drive] table"
             )
         braking = setup.fast * setup.fast / (2 * (setup.acceleration.value or 1.0))
+        turning = given.start_velocity if given is not None and setup.spindle else None
+        direction = (1 if turning > 0 else -1) if turning else self.direction  # endless rotation: its way
 
         def build(cam_place: tuple[float, float] | None = None) -> Scenario:
             return complete(
                 given,
-                direction=self.direction,
+                direction=direction,
                 rotary=setup.rotary,
                 soft_limits=setup.soft_limits,
                 cycle_time=cycle_time_us / 1e6,
@@ -214,7 +221,7 @@ class HomingStrategy:
         scenario = build()
         if not self.cam_may_move(scenario) or not geometry_failure(self.trial(scenario).failure):
             return scenario
-        for place in fitted_cams(scenario.start_position, self.direction, setup.soft_limits, braking):
+        for place in fitted_cams(scenario.start_position, direction, setup.soft_limits, braking):
             fitted = build(place)
             if self.trial(fitted).reference is not None:
                 return fitted

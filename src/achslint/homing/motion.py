@@ -42,6 +42,8 @@ if TYPE_CHECKING:
 
 INF = math.inf
 ZERO_SEARCH_EXCEEDED = "zero_pulse_search_max_dist exceeded (maximum search distance)"
+# The outcome of a run the simulator does not cover: not a failure of the homing (exit 0, with a note).
+NOT_SIMULATED = "not_simulated"
 __all__ = ["POSITION", "VELOCITY", "Simulator", "Trace"]
 
 # Where the cam signal is active: is(x) active, and the distance from x in direction s to where it
@@ -82,6 +84,12 @@ class Homing(Protocol):
 
     @property
     def retracts(self) -> bool: ...
+
+    @property
+    def flying(self) -> bool: ...
+
+    @property
+    def controlled_by(self) -> str: ...
 
     @property
     def moves(self) -> bool: ...
@@ -252,35 +260,51 @@ class NoMotion(Exception):
 
 
 class Ramp:
-    """A move from rest at (t0, x0) in direction s with speed v and acceleration a, until it is stopped."""
+    """A move from (t0, x0) in direction s that reaches speed v with acceleration a, until it is stopped.
 
-    __slots__ = ("a", "d_acc", "s", "t0", "t_acc", "v", "x0")
+    It starts from rest, or at the speed `v0` (≥ 0, along s) of a spindle turning endlessly (§2.3.2.1), which
+    then accelerates or decelerates to v: during the first t_acc = |v - v0|/a the speed changes linearly and
+    the axis covers d_acc = |v² - v0²|/2a."""
 
-    def __init__(self, t0: float, x0: float, s: int, v: float, a: float) -> None:
+    __slots__ = ("a", "d_acc", "k", "s", "t0", "t_acc", "v", "v0", "x0")
+
+    def __init__(self, t0: float, x0: float, s: int, v: float, a: float, v0: float = 0.0) -> None:
         if not (v > 0 and a > 0):  # also NaN
             raise NoMotion(v, a)
-        self.t0, self.x0, self.s, self.v, self.a = t0, x0, s, v, a
-        self.t_acc = v / a
-        self.d_acc = v * v / (2 * a)
+        self.t0, self.x0, self.s, self.v, self.a, self.v0 = t0, x0, s, v, a, v0
+        self.k = 1.0 if v >= v0 else -1.0  # accelerating (+1) or decelerating (-1) to v
+        self.t_acc = abs(v - v0) / a
+        self.d_acc = abs(v * v - v0 * v0) / (2 * a)
 
     def time_to(self, distance: float) -> float:
         """Time after t0 at which the axis has travelled `distance` (≥ 0)."""
         if distance <= self.d_acc:
-            return math.sqrt(2 * distance / self.a)
+            if not self.v0:
+                return math.sqrt(2 * distance / self.a)
+            # v0·t + k·a·t²/2 = d, in the form that stays exact when the speed barely changes
+            root = math.sqrt(max(self.v0 * self.v0 + 2 * self.k * self.a * distance, 0.0))
+            return 2 * distance / (self.v0 + root)
         return self.t_acc + (distance - self.d_acc) / self.v
 
     def distance_at(self, t: float) -> float:
         if t <= self.t_acc:
-            return 0.5 * self.a * t * t
+            return self.v0 * t + 0.5 * self.k * self.a * t * t
         return self.d_acc + self.v * (t - self.t_acc)
 
     def speed_at(self, t: float) -> float:
-        return min(self.a * t, self.v)
+        return self.v0 + self.k * self.a * min(t, self.t_acc)
+
+    def _speed_change(self, t: float) -> list[Segment]:
+        """The segment of the speed change up to t after the start (none when the move starts at v)."""
+        if not self.t_acc:
+            return []
+        t0 = self.t0
+        return [Segment(t0, t0 + min(t, self.t_acc), self.x0, self.s * self.v0, self.s * self.k * self.a)]
 
     def run_until(self, t: float) -> list[Segment]:
         """The segments up to t after the start, without braking (the axis is still moving then)."""
-        t0, x0, s, a = self.t0, self.x0, self.s, self.a
-        segments = [Segment(t0, t0 + min(t, self.t_acc), x0, 0.0, s * a)]
+        t0, x0, s = self.t0, self.x0, self.s
+        segments = self._speed_change(t)
         if t > self.t_acc:
             segments.append(Segment(t0 + self.t_acc, t0 + t, x0 + s * self.d_acc, s * self.v, 0.0))
         return segments
@@ -288,9 +312,7 @@ class Ramp:
     def stop(self, t_brake: float) -> tuple[list[Segment], float, float]:
         """Brake from time t0 + t_brake; returns the segments, the end time and the end position."""
         s, a, t0, x0 = self.s, self.a, self.t0, self.x0
-        segments: list[Segment] = []
-        accel_end = min(t_brake, self.t_acc)
-        segments.append(Segment(t0, t0 + accel_end, x0, 0.0, s * a))
+        segments = self._speed_change(t_brake)
         if t_brake > self.t_acc:
             segments.append(Segment(t0 + self.t_acc, t0 + t_brake, x0 + s * self.d_acc, s * self.v, 0.0))
         speed = self.speed_at(t_brake)
@@ -515,7 +537,10 @@ class Simulator:
         trace = Trace(self.strategy, self.scenario, self.unit, self.acceleration, self.acceleration_source)
         x = self.scenario.start_position if start is None else start
         self.start = x
+        turning = self.scenario.start_velocity
         try:
+            if turning and self.strategy.moves and not self.strategy.flying:
+                return self._from_rotation(trace, turning)
             return self.strategy.simulate(self, trace, x, cam_shift)
         except NoMotion as stuck:
             unit = f"{self.unit}/s"
@@ -526,6 +551,26 @@ class Simulator:
                 f"{stuck.acceleration:g} {unit}² never gets anywhere (homing speeds and acceleration "
                 "must be above 0)",
             )
+
+    def _from_rotation(self, trace: Trace, turning: float) -> Trace:
+        """A spindle turning endlessly whose homing is not flying homing (§2.3.2: from endless rotation homing
+        "can only be executed if ref_ohne_rev is set to TRUE. Otherwise, an error message is output"; LIS320).
+        Drive-controlled homing from rotation is the drive's affair and not simulated."""
+        speed = f"{turning:g} {self.unit}/s"
+        if self.strategy.controlled_by != "cnc":
+            return self.stand_still(
+                trace,
+                NOT_SIMULATED,
+                note=f"{self.strategy.title} of a spindle turning at {speed} is not simulated: the drive "
+                "runs its own sequence from rotation",
+            )
+        return self.stand_still(
+            trace,
+            "failed",
+            f"the spindle turns endlessly at {speed}, and from endless rotation the CNC homes only without "
+            "reversal (ref_ohne_rev 1, flying homing, §2.3.2); it reports an error and goes to the error "
+            f"state instead of running {self.strategy.title} (LIS320)",
+        )
 
     def check_soft_limits(self, trace: Trace) -> SoftLimitOvershoot | None:
         """The reference value or the position after homing outside the software limits (not on spindles, whose

@@ -6,7 +6,9 @@ axes and spindles; seconds) in TOML, or given as command-line options. What is
 not given is filled from a documented default geometry, and every filled-in
 value is listed as "assumed" in the output:
 
-* the axis starts at 0;
+* the axis starts at 0, at standstill (a spindle may instead turn endlessly:
+  `start_velocity`, signed °/s, §2.3.2.1; only spindles, which list it as
+  assumed when it is not given);
 * the reference cam begins 100 (mm or °) away from the start in the homing
   direction and is 20 wide, or three braking distances at the fast homing speed
   when that is wider (so the axis can stop on it). On an axis too short for
@@ -89,6 +91,7 @@ class Scenario:
     modulo: tuple[float, float] | None = (
         None  # positions recur every revolution (spindles, modulo rotary axes)
     )
+    start_velocity: float = 0.0  # a spindle turning endlessly at the start (signed, °/s); 0: standstill
 
     def as_dict(self) -> ScenarioData:
         return {
@@ -102,6 +105,7 @@ class Scenario:
             "cam_jitter": self.cam_jitter,
             "drive": self.drive.model_dump() if self.drive else None,
             "modulo": list(self.modulo) if self.modulo else None,
+            "start_velocity": self.start_velocity,
             "cycle_time_ms": self.cycle_time * 1000,
             "assumed": list(self.assumed),
         }
@@ -120,6 +124,7 @@ class ScenarioData(TypedDict):
     cam_jitter: float
     drive: dict[str, Any] | None
     modulo: list[float] | None
+    start_velocity: float
     cycle_time_ms: float
     assumed: list[str]
 
@@ -194,6 +199,14 @@ def complete(
         return value
 
     start = pick("start_position", 0.0)
+    velocity = getattr(given, "start_velocity", None)
+    if velocity and not spindle:
+        raise ScenarioError(
+            f"scenario: `start_velocity` ({velocity:g}) is for a spindle turning endlessly when homing starts "
+            "(§2.3.2.1); this axis starts homing at standstill: remove it"
+        )
+    if velocity is None and spindle:
+        assumed.append("start_velocity")
     cam = getattr(given, "cam", None)
     if cam is None:
         assumed.append("cam")
@@ -242,6 +255,7 @@ def complete(
         getattr(given, "drive", None),
         assumed,
         modulo,
+        velocity or 0.0,
     )
 
 

@@ -72,6 +72,8 @@ class ScenarioInput(BaseModel):
     model_config = _STRICT
 
     start_position: Position | None = None
+    # A spindle turning endlessly when homing starts (°/s, signed: its rotation direction); 0 is standstill.
+    start_velocity: float | None = Field(None, ge=-MAX_RATE, le=MAX_RATE)
     cam: tuple[Position, Position] | None = None
     zero_pulse_period: float | None = Field(None, ge=MIN_PERIOD, le=ANY_POSITION)
     zero_pulse_phase: Position | None = None

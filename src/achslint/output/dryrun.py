@@ -161,7 +161,13 @@ def header_lines(run: DryRun) -> list[str]:
         else "none"
     )
     lines = [
-        f"Scenario: start {number_text(scenario.start_position)} {unit}, cam {cam}, zero pulse every "
+        f"Scenario: start {number_text(scenario.start_position)} {unit}"
+        + (
+            f" turning at {scenario.start_velocity:+g} {unit}/s (endless rotation)"
+            if scenario.start_velocity
+            else ""
+        )
+        + f", cam {cam}, zero pulse every "
         f"{number_text(scenario.zero_pulse_period)} {unit} (one at {number_text(scenario.zero_pulse_phase)}), "
         f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {number_text(scenario.cycle_time * 1000)} ms, "
         f"limit switches {switches}"

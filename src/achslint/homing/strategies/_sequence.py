@@ -10,6 +10,13 @@ if TYPE_CHECKING:
     from ..setup import HomingSetup
 
 
+ROTATION = (
+    "From endless rotation (before M19 or a gear change) the spindle keeps its rotation direction and first "
+    "decelerates or accelerates to vb_reflow; the referencing starts once it runs at vb_reflow (§2.3.2.1; "
+    "the tool's reading of 'before being referenced')"
+)
+
+
 def direction(setup: HomingSetup) -> str:
     return POSITIVE if setup.direction > 0 else NEGATIVE
 

@@ -22,6 +22,7 @@ def _phases(setup: HomingSetup) -> list[Phase]:
             setup.speed("vb_reflow"),
             "the cam changes from operated to not operated (a spindle on the cam first turns until it is "
             "left) and the next zero pulse arrives; the spindle keeps turning",
+            _sequence.ROTATION,
         )
     ]
 

@@ -21,6 +21,7 @@ def _phases(setup: HomingSetup) -> list[Phase]:
             setup.stage("vb_reflow"),
             setup.speed("vb_reflow"),
             "the zero pulse arrives (one per spindle revolution); the spindle keeps turning",
+            _sequence.ROTATION,
         )
     ]
 
