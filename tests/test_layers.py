@@ -62,6 +62,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "machine.identity",
             "machine.channel",
             "machine.program",
+            "machine.resolved",
             "machine.build",
             "machine",
         ),

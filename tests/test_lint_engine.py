@@ -15,6 +15,7 @@ from achslint.linting.config import Settings
 from achslint.linting.engine import Policy, enabled_checks, enabled_codes, run
 from achslint.linting.linter import FileSettings, lint_file
 from achslint.linting.suppression import Suppressions
+from achslint.machine.resolved import Machine
 from achslint.rules import Scope, registry
 from achslint.syntax.parser import parse_text
 
@@ -168,7 +169,7 @@ def test_machine_findings_take_the_policy_of_their_own_file() -> None:
     policies = {"a.lis": Policy.of(ignore=["LIS501"]), "b.lis": Policy.of(severity={"LIS501": "error"})}
 
     def repeated() -> list[tuple[str, str, Severity]]:
-        found = run(Scope.MACHINE, (members, []), lambda path: policies[path])
+        found = run(Scope.MACHINE, (Machine("a folder", members=members),), lambda path: policies[path])
         return [(d.path, d.code, d.severity) for d in found]
 
     assert repeated() == [("b.lis", "LIS501", Severity.ERROR)]

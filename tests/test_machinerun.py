@@ -14,9 +14,9 @@ from achslint.dryrun import DryRunRefused
 from achslint.homing.scenario import ScenarioError
 from achslint.machine.model import (
     AxisWord,
+    ChannelView,
     HomingBlock,
     Location,
-    Machine,
     MachineAxis,
     MoveBlock,
     Program,
@@ -60,8 +60,8 @@ def make_axis(name: str, number: int, text: str, **extra: object) -> MachineAxis
     return MachineAxis(name, number, None, data, None, resolve_bytes(data, f"{name}.lis"), **extra)
 
 
-def make_machine(*axes: MachineAxis, pairs: list[tuple[str, str]] | None = None) -> Machine:
-    return Machine(None, {a.name: a for a in axes}, pairs or [])
+def make_machine(*axes: MachineAxis, pairs: list[tuple[str, str]] | None = None) -> ChannelView:
+    return ChannelView(None, {a.name: a for a in axes}, pairs or [])
 
 
 def at(line: int, column: int = 1) -> Location:

@@ -11,7 +11,7 @@ from achslint.axis.resolved import resolve_bytes
 from achslint.homing import classify
 from achslint.linting.program import check_program
 from achslint.machine.build import build_machine
-from achslint.machine.model import Machine, MachineAxis
+from achslint.machine.model import ChannelView, MachineAxis
 from achslint.machine.program import read_program
 
 from .conftest import FIXTURES, run_cli
@@ -273,7 +273,7 @@ def test_what_a_program_counts_as_homed_follows_the_axis_strategy():
     )
     follows = _axis("X3", 3, "kenngr.gantry_ax_nr 1\nkenngr.gantry_slave_no_homing 1\n", "X1")
     own = _axis("X4", 4, "kenngr.gantry_ax_nr 1\n", "X1")
-    machine = Machine(
+    machine = ChannelView(
         None, {a.name: a for a in (master, absolute, follows, own)}, [("X1", n) for n in ("X2", "X3", "X4")]
     )
     assert classify(absolute.resolved).id == "gantry_slave"

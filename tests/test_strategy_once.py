@@ -20,7 +20,7 @@ from achslint.explanation import explain_list
 from achslint.homing.registry import by_id, classify, strategies
 from achslint.machine.build import build_machine
 from achslint.machine.explain import explain_machine
-from achslint.machine.model import Machine, MachineAxis
+from achslint.machine.model import ChannelView, MachineAxis
 from achslint.machine.program import read_program
 from achslint.machine.run import run_machine
 from achslint.machine.scenario import MachineScenario
@@ -50,7 +50,7 @@ def _dry_run_strategy(data: bytes, name: str, defaults: bytes | None) -> str:
         return prepare(data, name, defaults=defaults).strategy.id
 
 
-def _named(axis: MachineAxis, machine: Machine, program: bytes) -> Named:
+def _named(axis: MachineAxis, machine: ChannelView, program: bytes) -> Named:
     """What every product names for `axis`, the machine run with `program` (a G74 block)."""
     name = str(axis.list_path or "axis.lis")
     report = explain_list(axis.data, name, defaults=axis.defaults)
@@ -77,11 +77,11 @@ def _check(named: Named) -> None:
     assert named.explain_g74 == named.explain or by_id(named.explain).power_up_only, named
 
 
-def _alone(path: Path) -> tuple[MachineAxis, Machine]:
+def _alone(path: Path) -> tuple[MachineAxis, ChannelView]:
     """A fixture list as the one axis X of a machine."""
     data = path.read_bytes()
     axis = MachineAxis("X", 1, path, data, None, resolve_bytes(data, str(path)))
-    return axis, Machine(startup=None, axes={"X": axis})
+    return axis, ChannelView(startup=None, axes={"X": axis})
 
 
 LISTS = sorted(FIXTURES.glob("**/*.lis"))

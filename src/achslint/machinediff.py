@@ -1,6 +1,6 @@
 """`achslint diff A B` of two machines: A and B are start-up lists (or folders holding one).
 
-Each machine is read the way the CNC loads it (`machine.build.build_machine`, with the CNC root of
+Each machine is read the way the CNC loads it (`machine.resolved.Machine`, with the CNC root of
 `--cnc-root`, else the machine's configuration's `cnc-root`, else the default): every axis list its
 `achs_mds[i]` entries name, resolved with its `default_achs_mds` underneath, and every channel list
 (`sda_mds[i]`, with `default_sda_mds` underneath). Then:
@@ -21,19 +21,17 @@ Which entry and file each axis came from is shown but is no difference: the CNC 
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal, TypedDict
 
-from .axis.resolved import ResolvedAxis, resolve_bytes
-from .axis.source import read_one_list
+from .axis.resolved import ResolvedAxis
 from .core.decode import UnreadableInput
 from .core.files import MISSING, is_folder, not_a_list_file, reason
 from .homing import classify
 from .listdiff import Comparison, Difference, UnknownDifference, WrittenDifference, compare_axes, differ
-from .machine.build import MachineError, build_machine, read_channel_entry
 from .machine.channel import ChannelList
+from .machine.resolved import Machine, MachineError
 from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup, is_startup_list, read_startup
 
 VERSION = 1
@@ -225,43 +223,20 @@ def read_machine(startup: Path, cnc_root: Path | None) -> _Machine:
         raise MachineError(f"cannot read the start-up list: {reason(exc)}", startup) from None
     except UnreadableInput as exc:
         raise MachineError(str(exc), startup) from None
-    numbers = sorted({_channel_number(entry.key) for entry in entries.channels})
-    # The build reads and resolves every axis list (with the default list) and checks the first channel.
-    machine = build_machine(startup, cnc_root=cnc_root, channel=numbers[0] if numbers else 1)
-    built = [*machine.axes.values(), *machine.other_axes]
-    by_file = {os.path.abspath(axis.list_path): axis for axis in built if axis.list_path is not None}
+    machine = Machine.of(entries)
     axes = []
-    for entry in entries.loaded_axes():  # the entries beyond zahl_mds are never loaded (LIS516)
-        if entry.path is None:  # pragma: no cover - the build refuses a start-up list with a missing list
-            continue
-        found = by_file.get(os.path.abspath(entry.path))
-        shown = _shown_entry(entry.path) or entry.raw
-        if found is not None:
-            values = found.resolved
-        else:
-            # A second list with a number an earlier list has: the build leaves it out of the machine.
-            defaults = built[0].defaults if built else None
-            values = resolve_bytes(
-                _read_axis_list(startup, entry.key, entry.path, entry.line), shown, defaults
-            )
+    # Every loaded axis list (the entries beyond zahl_mds are never loaded, LIS516), a repeated number too.
+    for entry, _, values in machine.resolved_axes():
         number = values.get("kopf.achs_nr")
         name = str(values.get("kopf.log_achs_name") or "").upper()
+        shown = _shown_entry(entry.path) or entry.raw
         axes.append(_Axis(entry.key, shown, values, number if isinstance(number, int) else 0, name))
     channels: dict[int, tuple[str, ChannelList]] = {}
     for entry in entries.channels:  # the later entry of a channel wins, as in the build
-        channel = read_channel_entry(entry, entries.default_channel)
-        if channel is None:
-            build_machine(startup, cnc_root=cnc_root, channel=_channel_number(entry.key))  # raises: why
-            raise MachineError(f"cannot read the channel list `{entry.raw}`", startup, entry.line)
+        channel = machine.channel(entry, strict=True)
+        assert channel is not None
         channels[_channel_number(entry.key)] = (_shown_entry(entry.path) or entry.raw, channel)
     return _Machine(entries, axes, channels)
-
-
-def _read_axis_list(startup: Path, key: str, path: Path, line: int) -> bytes:
-    try:
-        return read_one_list(path, str(path))
-    except (OSError, UnreadableInput) as exc:
-        raise MachineError(f"`{key}`: cannot read the axis list {path}: {exc}", startup, line) from None
 
 
 # -- the comparison -----------------------------------------------------------------------------------

@@ -3,6 +3,7 @@ machine build), and the check that a file is an axis list at all."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from ..core.decode import UnreadableInput
@@ -29,17 +30,18 @@ def looks_like_a_list(file: ListFile) -> bool:
     return not content
 
 
-def read_one_list(path: Path, name: str) -> bytes:
+def read_one_list(path: Path, name: str, read: Callable[[Path], bytes] = read_list) -> bytes:
     """The one axis list a file holds, for the commands that read a single list (explain, dry-run, diff).
 
     The same checks as for lint: a regular file only (never a FIFO or /proc), XML through the one XML
     parser (DTDs and entities refused; the file's only `<AchsMds>` / `<AX_MDS>` list), and a file that is
-    not an axis list refused without showing it. Raises `OSError` or `UnreadableInput` with a message.
+    not an axis list refused without showing it. `read` reads the file (the editor: its open buffer).
+    Raises `OSError` or `UnreadableInput` with a message.
     """
     problem = not_a_list_file(path)
     if problem is not None:
         raise Refused(f"{name}: {problem}")
-    data = read_list(path)
+    data = read(path)
     if is_xml(name):
         from ..syntax.xmlinput import single_list
 

@@ -7,8 +7,8 @@ the whole pipeline:
 
     scope     subject                                      caller
     LIST      (Context,)                                   linter: one list (its kind's rules)
-    MACHINE   (members, start-up lists)                    api (a machine's lists), linter (XML projects)
-    PROGRAM   (Program, Machine)                           programlint: a homing program on its machine
+    MACHINE   (Machine,)                                   machines (a run's machines), linter (XML projects)
+    PROGRAM   (Program, ChannelView)                       programlint: a homing program on its machine
     AFTER     (path, directives, enabled)                  run itself, after LIST or PROGRAM
 
 Which rules run and how severe their findings are is a `Policy`: select / extend-select / ignore and the

@@ -16,7 +16,8 @@ from pathlib import Path
 from ..core.decode import UnreadableInput, decode
 from ..core.diagnostics import Diagnostic
 from ..core.files import read_list
-from ..machine.startup import Member, Startup, is_default_list, machines
+from ..machine.resolved import Machine
+from ..machine.startup import Member, Startup, is_default_list
 from ..rules import Scope as RuleScope
 from ..syntax.parser import split_lines
 from .config import ResolvedConfig
@@ -84,8 +85,8 @@ def machine_findings(
 
     extra: dict[str, FileResult] = {}
     seen: set[tuple[object, ...]] = set()
-    for machine in machines(groups, list(startups)):
-        for d in run(RuleScope.MACHINE, machine, policy_of):
+    for machine in _machines(groups, startups):
+        for d in run(RuleScope.MACHINE, (machine,), policy_of):
             said = (d.path, d.line, d.column, d.code, d.message)
             if d.path in hidden or said in seen:  # a list in two machines: one finding, said once
                 continue
@@ -100,3 +101,14 @@ def machine_findings(
             with contextlib.suppress(OSError, UnreadableInput):
                 result.source_lines = split_lines(decode(read_list(Path(result.name))).text)
     return list(extra.values())
+
+
+def _machines(groups: dict[str, list[Member]], startups: Sequence[Startup]) -> list[Machine]:
+    """Every machine to check: the members of each machine key (the path of the start-up list that names
+    them, a `[[machine]]` table's name, or a folder of XML exports) with its start-up list, and every
+    start-up list none of whose axis lists was read (its entries may all be missing) as a machine of its own.
+    Each is read once for every rule (its channel lists, ...)."""
+    by_key = {str(startup.path): startup for startup in startups}
+    found = [Machine(key, by_key.get(key), members=members) for key, members in groups.items()]
+    found.extend(Machine(str(s.path), s) for s in startups if str(s.path) not in groups)
+    return found

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from ..core.diagnostics import Diagnostic
-from ..machine.model import Machine, Program
+from ..machine.model import ChannelView, Program
 from ..rules import Scope
 from ..syntax.parser import split_lines
 from .engine import run
@@ -22,7 +22,7 @@ from .suppression import Suppressions
 
 
 def check_program(
-    program: Program, machine: Machine, settings: FileSettings | None = None
+    program: Program, machine: ChannelView, settings: FileSettings | None = None
 ) -> list[Diagnostic]:
     """The findings of the enabled program rules (LIS6xx), severities overridden as configured, sorted; no
     `noqa` applied (`lint_program_on` applies the program's)."""
@@ -50,7 +50,7 @@ def lint_program(
 
 
 def lint_program_on(
-    path: Path, machine: Machine, *, name: str | None = None, settings: FileSettings | None = None
+    path: Path, machine: ChannelView, *, name: str | None = None, settings: FileSettings | None = None
 ) -> FileResult:
     """Lint one homing program against a machine that is already built."""
     from ..core.files import Refused, not_a_list_file, read_program_file, reason
@@ -69,7 +69,7 @@ def lint_program_on(
     return lint_program_bytes(data, machine, shown, settings)
 
 
-def lint_program_bytes(data: bytes, machine: Machine, name: str, settings: FileSettings) -> FileResult:
+def lint_program_bytes(data: bytes, machine: ChannelView, name: str, settings: FileSettings) -> FileResult:
     """Lint the bytes of one homing program (already read) against a machine that is already built."""
     from ..machine.program import program_text, read_program
 

@@ -1,4 +1,4 @@
-"""A machine from its start-up list: `build_machine(hochlauf.lis) -> Machine`.
+"""A machine's axes as one channel's programs name them: `build_machine(hochlauf.lis) -> ChannelView`.
 
 The start-up list names the axis lists (`achs_mds[i]`, each read with `default_achs_mds` underneath, as
 the CNC loads them) and the channel lists (`sda_mds[i]`, with `default_sda_mds` underneath). The channel
@@ -7,62 +7,52 @@ matched to the axis list whose `kopf.achs_nr` has that number. Without a channel
 its `kopf.log_achs_name`. Gantry pairs come from the slaves' `kenngr.gantry_ax_nr` (P-AXIS-00070) and from
 the coupled pairs of the channel list (`synchro_data.koppel_gruppe[g].paar[i]`). A static gantry slave
 belongs to no channel (P-AXIS-00070): the channel list does not name it, so it is no programmable axis, but
-it stays part of the machine, coupled to its master (`Machine.followers()`).
+it stays part of the machine, coupled to its master (`ChannelView.followers()`).
 
 Anything the CNC would refuse to start with — the start-up list, an axis list or the channel list missing
 or unreadable — raises `MachineError` naming the file and the line of the start-up list that names it.
 What can be worked around (a channel entry without an axis list, a name given twice) is kept in
-`Machine.notes`, in words.
+`ChannelView.notes`, in words.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 
-from ..axis.resolved import ResolvedAxis, resolve_bytes
+from ..axis.resolved import ResolvedAxis
 from ..core.decode import UnreadableInput
-from ..core.files import read_list, reason, same_file
-from .channel import ChannelList, read_channel_list
-from .model import Location, Machine, MachineAxis
+from ..core.files import reason
+from .channel import ChannelList
+from .model import ChannelView, Location, MachineAxis
+from .resolved import Machine, MachineError
 from .startup import Startup, StartupEntry, read_startup
 
-
-class MachineError(Exception):
-    """The machine cannot be built: a file is missing or unreadable. `str()` names file and line."""
-
-    def __init__(self, message: str, path: Path | str | None = None, line: int | None = None):
-        super().__init__(message)
-        self.message = message
-        self.path = None if path is None else str(path)
-        self.line = line
-
-    def __str__(self) -> str:
-        if self.path is None:
-            return self.message
-        where = self.path if self.line is None else f"{self.path}:{self.line}"
-        return f"{where}: {self.message}"
+__all__ = ["MachineError", "build_machine", "channel_view", "rename"]
 
 
-def build_machine(startup: Path, *, cnc_root: Path | None = None, channel: int = 1) -> Machine:
+def build_machine(startup: Path, *, cnc_root: Path | None = None, channel: int = 1) -> ChannelView:
     """The axes of the machine the start-up list describes, named as channel `channel` names them.
 
     Raises `MachineError` when the start-up list, an axis list it names or the channel list cannot be read.
     """
-    entries = _read_startup(startup, cnc_root)
-    defaults = _read_entry(entries, entries.default, "default axis list") if entries.default else None
-    machine = Machine(startup=startup, channel=channel)
-    lists: list[tuple[StartupEntry, bytes, ResolvedAxis]] = []
-    for entry in entries.loaded_axes():  # the entries beyond zahl_mds are never loaded (LIS516)
-        data = _read_entry(entries, entry, "axis list")
-        lists.append((entry, data, resolve_bytes(data, _shown(entry), defaults)))
-    channel_list = _channel_list(entries, channel, machine)
+    return channel_view(Machine.of(_read_startup(startup, cnc_root)), channel)
+
+
+def channel_view(machine: Machine, channel: int = 1) -> ChannelView:
+    """A machine's axes as channel `channel`'s programs name them. Raises `MachineError` like `build_machine`."""
+    startup = machine.startup
+    assert startup is not None
+    lists = machine.resolved_axes()  # the default list and every loaded axis list, or the first failure
+    default = machine.default_list()
+    defaults = default.data if default is not None else None
+    view = ChannelView(startup=startup.path, channel=channel)
+    channel_list = _channel_list(machine, channel, view)
     if channel_list is None:
-        _named_by_axis_lists(machine, lists, defaults)
+        _named_by_axis_lists(view, lists, defaults)
     else:
-        _named_by_channel(machine, channel_list, lists, defaults)
-    _gantry(machine, channel_list)
-    return machine
+        _named_by_channel(view, channel_list, lists, defaults)
+    _gantry(view, channel_list)
+    return view
 
 
 def _read_startup(startup: Path, cnc_root: Path | None) -> Startup:
@@ -91,102 +81,21 @@ def _shown(entry: StartupEntry) -> str:
     return str(entry.path) if entry.path is not None else entry.raw
 
 
-def _read_entry(startup: Startup, entry: StartupEntry, kind: str) -> bytes:
-    """The bytes of a list the start-up list names; `MachineError` at the entry's line when it cannot be read."""
-    from ..axis.source import read_one_list
-
-    if entry.refused:
-        raise MachineError(
-            f"`{entry.key}` names the {kind} `{entry.raw}`, which achslint does not read: {entry.refused}; "
-            "give the CNC's working directory with --cnc-root",
-            startup.path,
-            entry.line,
-        )
-    if entry.path is not None and same_file(entry.path, startup.path):
-        raise MachineError(
-            f"`{entry.key}` names this start-up list itself (`{entry.raw}`), not the {kind}: name the {kind}'s "
-            "file",
-            startup.path,
-            entry.line,
-        )
-    if entry.path is None:
-        raise MachineError(
-            f"`{entry.key}` names the {kind} `{entry.raw}`, which does not exist (looked for `{entry.looked}`); "
-            "the CNC does not start without it: correct the entry or give the CNC's working directory "
-            "with --cnc-root",
-            startup.path,
-            entry.line,
-        )
-    try:
-        return read_one_list(entry.path, str(entry.path))
-    except OSError as exc:
-        why = str(exc) if exc.errno is None else reason(exc)
-        raise MachineError(f"cannot read the {kind} `{entry.raw}`: {why}", startup.path, entry.line) from None
-    except UnreadableInput as exc:
-        raise MachineError(
-            f"the {kind} `{entry.raw}` cannot be read: {exc}", startup.path, entry.line
-        ) from None
-
-
-def _index(entry: StartupEntry) -> int:
-    return int(entry.key[entry.key.index("[") + 1 : -1])
-
-
-def _channel_list(startup: Startup, channel: int, machine: Machine) -> ChannelList | None:
+def _channel_list(machine: Machine, channel: int, view: ChannelView) -> ChannelList | None:
     """The chosen channel's list (with the default channel list underneath); None when the start-up list
     names no channel list at all."""
-    if not startup.channels:
-        machine.notes.append(
+    entry = machine.channel_entry(channel)
+    if entry is None:
+        view.notes.append(
             "the start-up list names no channel list (sda_mds[i]): each axis goes by its kopf.log_achs_name"
         )
         return None
-    chosen = [entry for entry in startup.channels if _index(entry) == channel - 1]
-    if not chosen:
-        named = ", ".join(str(_index(entry) + 1) for entry in startup.channels)
-        raise MachineError(
-            f"there is no channel {channel}: the start-up list names channel lists for channel {named} "
-            f"(sda_mds[{channel - 1}] is channel {channel})",
-            startup.path,
-        )
-    entry = chosen[-1]
-    data = _read_entry(startup, entry, "channel list")
-    defaults = (
-        _read_entry(startup, startup.default_channel, "default channel list")
-        if startup.default_channel
-        else None
-    )
-    default_name = _shown(startup.default_channel) if startup.default_channel else ""
-    try:
-        result = read_channel_list(data, _shown(entry), defaults, default_name)
-    except UnreadableInput as exc:
-        raise MachineError(
-            f"the channel list `{entry.raw}` cannot be read: {exc}", startup.path, entry.line
-        ) from None
-    machine.channel_list = entry.path
+    result = machine.channel(entry, strict=True)
+    assert result is not None
+    view.channel_list = entry.path
     for problem in result.problems:
-        machine.notes.append(f"{problem.at.path}:{problem.at.line}: {problem.message}")
+        view.notes.append(f"{problem.at.path}:{problem.at.line}: {problem.message}")
     return result
-
-
-def read_channel_entry(
-    entry: StartupEntry, default: StartupEntry | None, read: Callable[[Path], bytes] = read_list
-) -> ChannelList | None:
-    """The channel list a start-up entry names, with the default channel list underneath, for the machine
-    rules (LIS508, the default list only when it is read); None when the channel list cannot be read
-    (LIS504 and `build_machine` say why)."""
-    under = default.path if default is not None else None
-    if entry.path is None:
-        return None
-    try:
-        defaults = read(under) if under is not None else None
-        return read_channel_list(
-            read(entry.path),
-            str(_relative(entry.path)),
-            defaults,
-            str(_relative(under)) if under else "",
-        )
-    except (OSError, UnreadableInput):
-        return None
 
 
 def _number(values: ResolvedAxis) -> int:
@@ -233,7 +142,7 @@ def _log_name(values: ResolvedAxis, entry: StartupEntry) -> tuple[str, Location 
 
 
 def _named_by_axis_lists(
-    machine: Machine, lists: list[tuple[StartupEntry, bytes, ResolvedAxis]], defaults: bytes | None
+    machine: ChannelView, lists: list[tuple[StartupEntry, bytes, ResolvedAxis]], defaults: bytes | None
 ) -> None:
     for entry, data, values in lists:
         name, at = _log_name(values, entry)
@@ -256,7 +165,7 @@ def _shown_path(path: Path | None) -> str:
 
 
 def _named_by_channel(
-    machine: Machine,
+    machine: ChannelView,
     channel_list: ChannelList,
     lists: list[tuple[StartupEntry, bytes, ResolvedAxis]],
     defaults: bytes | None,
@@ -305,7 +214,7 @@ def _named_by_channel(
             machine.other_axes.append(_axis(name, entry, data, values, defaults, at))
 
 
-def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
+def _gantry(machine: ChannelView, channel_list: ChannelList | None) -> None:
     """Gantry pairs by programmed name: from the slaves' kenngr.gantry_ax_nr, then the channel's pairs.
 
     A static gantry slave (kenngr.gantry_ax_nr, P-AXIS-00070) belongs to no channel: when the channel does
@@ -346,7 +255,7 @@ def _gantry(machine: Machine, channel_list: ChannelList | None) -> None:
         machine.gantry_pairs.append((master.name, slave.name))
 
 
-def _follower_name(machine: Machine, slave: MachineAxis, master: str) -> str:
+def _follower_name(machine: ChannelView, slave: MachineAxis, master: str) -> str:
     """The name a gantry slave outside the channel goes by: its kopf.log_achs_name, unless no list writes
     one (the catalogue's default is no name), it is empty or taken by a programmed axis or another such
     slave; then "slave of <master>" (with its logical number when that is taken too)."""
@@ -358,7 +267,7 @@ def _follower_name(machine: Machine, slave: MachineAxis, master: str) -> str:
     return f"slave of {master} (axis {slave.logical_number})"
 
 
-def rename(machine: Machine, names: dict[str, int], where: str) -> None:
+def rename(machine: ChannelView, names: dict[str, int], where: str) -> None:
     """Give axes the programmed names of a machine scenario's [names] table (logical number -> name): the
     fallback for a machine without a channel list, whose axes otherwise go by kopf.log_achs_name. Raises
     ValueError (with `where` in its message) when the machine has a channel list or lacks a number."""

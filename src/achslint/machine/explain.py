@@ -16,12 +16,12 @@ from ..catalogue import AXIS_TYPE_NAMES
 from ..homing import classify
 from ..linting.program import check_program
 from ..rules.programcontext import homed_from_start, homes_with_master
-from .model import HomingBlock, Machine, MachineAxis, MoveBlock, Program, SkippedBlock
+from .model import ChannelView, HomingBlock, MachineAxis, MoveBlock, Program, SkippedBlock
 
 VERSION = 1
 
 
-def _gantry(axis: MachineAxis, machine: Machine) -> dict[str, Any] | None:
+def _gantry(axis: MachineAxis, machine: ChannelView) -> dict[str, Any] | None:
     slaves = [slave for master, slave in machine.gantry_pairs if master == axis.name]
     if axis.gantry_master is not None:
         return {
@@ -34,7 +34,7 @@ def _gantry(axis: MachineAxis, machine: Machine) -> dict[str, Any] | None:
     return None
 
 
-def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
+def _axis(axis: MachineAxis, machine: ChannelView, gear: int) -> dict[str, Any]:
     values = axis.resolved
     strategy = classify(values, gear)
     commanded = classify(values, gear, commanded=True)
@@ -61,7 +61,7 @@ def _axis(axis: MachineAxis, machine: Machine, gear: int) -> dict[str, Any]:
     }
 
 
-def _order(program: Program, machine: Machine) -> tuple[list[dict[str, Any]], dict[str, str]]:
+def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]], dict[str, str]]:
     """The program's blocks as the homing order, and for each axis where it is homed (in words)."""
     blocks: list[dict[str, Any]] = []
     homed_by: dict[str, str] = {}
@@ -103,7 +103,7 @@ def _order(program: Program, machine: Machine) -> tuple[list[dict[str, Any]], di
     return blocks, homed_by
 
 
-def explain_machine(machine: Machine, program: Program | None = None, gear: int = 0) -> dict[str, Any]:
+def explain_machine(machine: ChannelView, program: Program | None = None, gear: int = 0) -> dict[str, Any]:
     """Everything `explain hochlauf.lis` shows, as JSON-ready data."""
     axes = [_axis(axis, machine, gear) for axis in machine.axes.values()]
     report: dict[str, Any] = {

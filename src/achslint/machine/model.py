@@ -47,8 +47,9 @@ class MachineAxis:
 
 
 @dataclass
-class Machine:
-    """The axes of a machine by programmed name, and how they are coupled."""
+class ChannelView:
+    """A machine's axes by the names one channel's programs use, and how they are coupled: what the homing
+    program sees of the machine (`resolved.Machine` is the machine itself; `build.channel_view` makes this)."""
 
     startup: Path | None
     axes: dict[str, MachineAxis] = field(default_factory=dict)  # key: programmed name, upper case

@@ -55,9 +55,9 @@ from ..rules.lis507_gantry_master_chain import CODE as CHAIN_CODE
 from ..rules.lis507_gantry_master_chain import CouplingFault, circle_words, coupling_faults
 from .model import (
     AxisWord,
+    ChannelView,
     HomingBlock,
     Location,
-    Machine,
     MachineAxis,
     MoveBlock,
     Program,
@@ -183,7 +183,7 @@ class MachineFailure:
 
 @dataclass
 class MachineRun:
-    machine: Machine
+    machine: ChannelView
     program: Program
     scenario: MachineScenario
     cycle_time: float  # s
@@ -255,7 +255,7 @@ class MachinePlan:
     """A machine, a program and a scenario, prepared once; `run` simulates (from other start positions)."""
 
     def __init__(
-        self, machine: Machine, program: Program, scenario: MachineScenario, *, cycle_time_us: int = 1000
+        self, machine: ChannelView, program: Program, scenario: MachineScenario, *, cycle_time_us: int = 1000
     ):
         if program.problems:
             first = program.problems[0]
@@ -332,7 +332,7 @@ def _no_master(slave: str, fault: CouplingFault[str]) -> str:
 
 
 def run_machine(
-    machine: Machine, program: Program, scenario: MachineScenario, *, cycle_time_us: int = 1000
+    machine: ChannelView, program: Program, scenario: MachineScenario, *, cycle_time_us: int = 1000
 ) -> MachineRun:
     """Simulate the homing program over the machine once (see the module docstring).
 

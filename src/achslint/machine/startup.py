@@ -4,8 +4,8 @@ A machine is the set of axis lists named by a start-up list (`hochlauf.lis`,
 entries `achs_mds[i]`, with `default_achs_mds` applied under each of them the
 way the CNC loads them), or else the axis lists of one folder. Each linted list
 contributes a small summary (logical axis number, axis name, gantry settings,
-with their lines); rules with a `check_machine(members, startups)` function
-compare the summaries, run by the lint engine over each machine `machines` gives.
+with their lines); rules with a `check_machine(machine)` function compare the
+summaries of one `resolved.Machine`, run by the lint engine over each machine.
 """
 
 from __future__ import annotations
@@ -279,19 +279,3 @@ def gantry_pairs(members: list[Member]) -> Iterator[tuple[Member, Member | None]
             master = by_number.get(info["gantry_ax_nr"])
             # An axis naming its own number has no master (lists of one XML file share their name).
             yield (name, info), (master if master is not None and master[1] is not info else None)
-
-
-def machines(
-    groups: dict[str, list[Member]], startups: list[Startup]
-) -> Iterator[tuple[list[Member], list[Startup]]]:
-    """Every machine to check, as (its members, its start-up lists): what the machine-level rules get.
-
-    `groups` holds each machine's members (list name, `summary`) by machine key: the path of the start-up
-    list that names them, or their folder. A start-up list none of whose axis lists was read is still a
-    machine of its own (its entries may all be missing).
-    """
-    for key, members in groups.items():
-        yield members, [startup for startup in startups if str(startup.path) == key]
-    for startup in startups:
-        if str(startup.path) not in groups:
-            yield [], [startup]

@@ -10,8 +10,10 @@ the scope and what it is given:
                                         the module's `KINDS` names (default: axis
                                         lists; `ALL_KINDS`: every kind with a
                                         catalogue)
-    check_machine(members, startups)    MACHINE: the summaries of a machine's axis
-                                        lists and its start-up lists (LIS5xx)
+    check_machine(machine)              MACHINE: one machine (`machine.resolved.
+                                        Machine`): the summaries of its axis lists
+                                        as linted, its start-up list and the lists
+                                        that names, read once (LIS5xx)
     check_program(program, machine)     PROGRAM: a homing program read against a
                                         machine (LIS6xx)
     check_after(path, directives, enabled)
@@ -106,7 +108,13 @@ class Rule:
 
     def checker(self, scope: Scope) -> Check | None:
         """The rule's check for `scope`, or None when the rule does not look at that scope."""
-        return next((check for own, check in self.checks if own is scope), None)
+        found = next((check for own, check in self.checks if own is scope), None)
+        if found is not None and scope is Scope.MACHINE and found.__code__.co_argcount == 2:
+            # TODO(session 23): a machine rule written against the old (members, startups) signature, while
+            # the rules are moved to one machine; removed before this session ends.
+            old = found
+            return lambda machine: old(machine.members, machine.startups)
+        return found
 
     @property
     def needs_whole_axis(self) -> bool:

@@ -1,11 +1,10 @@
 """What the cross-list machine rules (LIS512–LIS518) share: the channel lists a start-up list names, read
-once per rule with the default channel list underneath; the machine's axis lists by logical axis number;
+once per machine with the default channel list underneath; the machine's axis lists by logical axis number;
 the entries a count (`zahl_mds`, `zahl_kw`) lets the CNC read; and a finding at a channel list's value."""
 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
@@ -13,6 +12,7 @@ from ..machine.startup import entry_index
 
 if TYPE_CHECKING:
     from ..machine.channel import ChannelAxis, ChannelList
+    from ..machine.resolved import Machine
     from ..machine.startup import Member, Startup
 
 # A count's entries (`zahl_mds` counts `achs_mds[i]`) and the parameter id of each, for messages.
@@ -22,22 +22,12 @@ COUNTED = {
 }
 
 
-def channel_lists(startups: list[Startup]) -> Iterator[tuple[Startup, ChannelList]]:
-    """Every channel list (`sda_mds[i]`) the start-up lists name that can be read, once, with its start-up
-    list. A missing or unreadable one is LIS504's."""
-    if not any(startup.channels for startup in startups):
-        return
-    from ..machine.build import read_channel_entry  # only for start-up lists that name a channel list
-
-    read: set[str] = set()
-    for startup in startups:
-        for entry in startup.channels:
-            if entry.path is None or str(entry.path) in read:
-                continue
-            read.add(str(entry.path))
-            channel = read_channel_entry(entry, startup.default_channel, startup.reader)
-            if channel is not None:
-                yield startup, channel
+def channel_lists(machine: Machine) -> list[tuple[Startup, ChannelList]]:
+    """Every channel list (`sda_mds[i]`) the machine's start-up list names that can be read, each file once,
+    with its start-up list (read once per machine: `Machine.channel_lists`). A missing or unreadable one is
+    LIS504's."""
+    startup = machine.startup
+    return [] if startup is None else [(startup, channel) for _, channel in machine.channel_lists()]
 
 
 def by_number(members: list[Member]) -> dict[int, Member]:

@@ -45,10 +45,10 @@ from typing import TYPE_CHECKING, Any
 
 from ..catalogue.units import describe
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ..machine.startup import Startup, diagnostic
+from ..machine.startup import diagnostic
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member
+    from ..machine.resolved import Machine
     from .context import Context
 
 CODE = "LIS316"
@@ -72,7 +72,8 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         )
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     by_number = {info["achs_nr"]: (name, info) for name, info in members}
     for name, info in members:
         master = by_number.get(info["gantry_ax_nr"]) if info["gantry_ax_nr"] else None

@@ -80,9 +80,10 @@ from typing import TYPE_CHECKING, Any
 
 from ..core.diagnostics import Diagnostic
 from ..machine.identity import repeated_identities, tree_items
-from ..machine.startup import Startup, repeated_values
+from ..machine.startup import repeated_values
 
 if TYPE_CHECKING:
+    from ..machine.resolved import Machine
     from ..machine.startup import Member
 
 CODE = "LIS501"
@@ -92,7 +93,8 @@ PARAMETERS = ("kopf.achs_nr",)  # parameters this rule reads
 SUMMARY = "Two axis lists of a machine with the same logical axis number"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     items, lists = tree_items(members)
     yield from repeated_values(
         CODE,

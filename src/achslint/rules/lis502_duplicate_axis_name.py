@@ -64,9 +64,10 @@ from typing import TYPE_CHECKING, Any
 
 from ..core.diagnostics import Diagnostic
 from ..machine.identity import repeated_identities, tree_items
-from ..machine.startup import Startup, repeated_values
+from ..machine.startup import repeated_values
 
 if TYPE_CHECKING:
+    from ..machine.resolved import Machine
     from ..machine.startup import Member
 
 CODE = "LIS502"
@@ -103,7 +104,8 @@ def _one_per_item(items: list[Member]) -> list[Member]:
     return first
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     items, lists = tree_items(members)
     yield from repeated_values(
         CODE,

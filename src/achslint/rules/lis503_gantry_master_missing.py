@@ -46,10 +46,10 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
-from ..machine.startup import Startup, diagnostic
+from ..machine.startup import diagnostic
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member
+    from ..machine.resolved import Machine
 
 CODE = "LIS503"
 NAME = "gantry-master-missing"
@@ -58,7 +58,8 @@ PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule rea
 SUMMARY = "Gantry slave whose master axis is not in the machine"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     numbers = {info["achs_nr"] for _, info in members}
     for member in members:
         master = member[1]["gantry_ax_nr"]

@@ -61,7 +61,7 @@ from ..core.files import read_list, reason, same_file
 if TYPE_CHECKING:
     from pathlib import Path
 
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
 
 CODE = "LIS504"
 NAME = "missing-list"
@@ -87,7 +87,8 @@ def _unreadable(path: Path) -> str | None:
     return None
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    startups = machine.startups
     for startup in startups:
         defaults = [entry for entry in (startup.default, startup.default_channel) if entry is not None]
         not_linted = {id(entry) for entry in [*defaults, *startup.channels]}  # no finding of their own

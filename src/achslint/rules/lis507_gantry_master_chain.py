@@ -60,9 +60,10 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ..machine.startup import Startup, diagnostic
+from ..machine.startup import diagnostic
 
 if TYPE_CHECKING:
+    from ..machine.resolved import Machine
     from ..machine.startup import Member
 
 CODE = "LIS507"
@@ -133,7 +134,8 @@ def circle_words(fault: CouplingFault[Axis]) -> str:
     return " → ".join([*shown, str(slave)])
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     by_number: dict[int, Member] = {}
     for member in members:
         if isinstance(member[1]["achs_nr"], int):

@@ -75,7 +75,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
 
 CODE = "LIS508"
 NAME = "axis-named-twice-in-channel"
@@ -83,38 +83,28 @@ FIX = "none"
 SUMMARY = "Channel list gives one logical axis two different names"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
-    if not any(startup.channels for startup in startups):
-        return
-    from ..machine.build import read_channel_entry  # only for start-up lists that name a channel list
-
-    read: set[str] = set()
-    for startup in startups:
-        for entry in startup.channels:
-            if entry.path is None or str(entry.path) in read:
-                continue  # missing or not read: LIS504
-            read.add(str(entry.path))
-            channel = read_channel_entry(entry, startup.default_channel)
-            for first, again in channel.other_names() if channel else []:
-                end = again.at.end_column or again.at.column + len(again.name)
-                yield Diagnostic(
-                    again.at.path,
-                    again.at.line,
-                    again.at.column,
-                    again.at.line,
-                    end,
-                    CODE,
-                    Severity.WARNING,
-                    f"{again.slot} names logical axis {again.logical_number} `{again.name}`, but {first.slot} "
-                    f"already names it `{first.name}`: an axis has one name in a channel; give this slot the "
-                    "logical number of the axis it is meant for, or remove it",
-                    related=(
-                        Related(
-                            first.at.path,
-                            first.at.line,
-                            first.at.column,
-                            f"{first.slot}.bezeichnung",
-                            "first name",
-                        ),
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    for _, channel in machine.channel_lists():  # a missing or unreadable one is LIS504
+        for first, again in channel.other_names():
+            end = again.at.end_column or again.at.column + len(again.name)
+            yield Diagnostic(
+                again.at.path,
+                again.at.line,
+                again.at.column,
+                again.at.line,
+                end,
+                CODE,
+                Severity.WARNING,
+                f"{again.slot} names logical axis {again.logical_number} `{again.name}`, but {first.slot} "
+                f"already names it `{first.name}`: an axis has one name in a channel; give this slot the "
+                "logical number of the axis it is meant for, or remove it",
+                related=(
+                    Related(
+                        first.at.path,
+                        first.at.line,
+                        first.at.column,
+                        f"{first.slot}.bezeichnung",
+                        "first name",
                     ),
-                )
+                ),
+            )

@@ -63,9 +63,10 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ..machine.startup import Startup, diagnostic, gantry_pairs
+from ..machine.startup import diagnostic, gantry_pairs
 
 if TYPE_CHECKING:
+    from ..machine.resolved import Machine
     from ..machine.startup import Member
 
 CODE = "LIS510"
@@ -79,7 +80,8 @@ PARAMETERS = (
 SUMMARY = "Gantry master and slave with different homing types"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     for slave, master in gantry_pairs(members):
         if master is None or slave[1]["homing_type"] == master[1]["homing_type"]:
             continue

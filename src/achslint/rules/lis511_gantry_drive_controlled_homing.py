@@ -72,9 +72,10 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ..machine.startup import Startup, diagnostic, gantry_pairs
+from ..machine.startup import diagnostic, gantry_pairs
 
 if TYPE_CHECKING:
+    from ..machine.resolved import Machine
     from ..machine.startup import Member
 
 CODE = "LIS511"
@@ -90,7 +91,8 @@ SUMMARY = "Drive-controlled homing on a gantry pair"
 DRIVE = "DRIVE_CONTROLLED"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     slaves: dict[int, tuple[Member, list[Member]]] = {}  # by id of the master's summary
     for slave, master in gantry_pairs(members):
         if master is not None:

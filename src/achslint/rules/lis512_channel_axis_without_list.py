@@ -81,7 +81,7 @@ from ..core.diagnostics import Diagnostic, Severity
 from ._crosslist import at_channel_axis, axis_words, by_number, channel_lists, every_axis_list_read
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
 
 CODE = "LIS512"
 NAME = "channel-axis-without-list"
@@ -99,10 +99,11 @@ def _numbers(known: list[int]) -> str:
     return f"its axis lists have {shown}{more}"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     numbers = by_number(members)
     known = sorted(numbers)
-    for startup, channel in channel_lists(startups):
+    for startup, channel in channel_lists(machine):
         if not every_axis_list_read(startup, members):
             continue
         for axis in channel.axes:

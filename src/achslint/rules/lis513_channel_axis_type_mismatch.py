@@ -81,7 +81,8 @@ from ..core.diagnostics import Diagnostic, Severity
 from ._crosslist import at_channel_axis, at_member, axis_words, by_number, channel_lists
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
+    from ..machine.startup import Member
 
 CODE = "LIS513"
 NAME = "channel-axis-type-mismatch"
@@ -102,9 +103,10 @@ def _written(member: Member) -> str:
     return f"kenngr.achs_typ {written}{where} makes it {_TYPES[info.get('axis_type', 'T')]}"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     numbers = by_number(members)
-    for _, channel in channel_lists(startups):
+    for _, channel in channel_lists(machine):
         for axis in channel.axes:
             member = numbers.get(axis.logical_number)
             if member is None:

@@ -77,7 +77,7 @@ from ._crosslist import at_channel_axis, at_member, axis_words, by_number, chann
 from .lis507_gantry_master_chain import coupling_faults
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
 
 CODE = "LIS514"
 NAME = "gantry-slave-in-channel"
@@ -86,7 +86,8 @@ PARAMETERS = ("kenngr.gantry_ax_nr", "kopf.achs_nr")  # parameters this rule rea
 SUMMARY = "Channel list names a gantry slave, which moves only with its master"
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     numbers = by_number(members)
     # A slave in a circle or a chain of couplings is LIS507's: whichever of them the CNC takes for the master,
     # telling the user to program "its master" would contradict that finding.
@@ -96,7 +97,7 @@ def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Di
         if isinstance(master := summary.get("gantry_ax_nr"), int) and master > 0
     }
     tangled = set(coupling_faults(master_of))
-    for _, channel in channel_lists(startups):
+    for _, channel in channel_lists(machine):
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes) if not axis.spindle}
         for axis in channel.axes:
             member = numbers.get(axis.logical_number)

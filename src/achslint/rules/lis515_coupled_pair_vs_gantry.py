@@ -97,7 +97,8 @@ from ._crosslist import at_member, by_number, channel_lists
 
 if TYPE_CHECKING:
     from ..machine.channel import CoupledPair
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
+    from ..machine.startup import Member
 
 CODE = "LIS515"
 NAME = "coupled-pair-vs-gantry"
@@ -152,9 +153,10 @@ def _contradiction(
     return None
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    members = machine.members
     numbers = by_number(members)
-    for _, channel in channel_lists(startups):
+    for _, channel in channel_lists(machine):
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes)}
         for pair in channel.pairs:
             if pair.master == pair.slave:

@@ -65,7 +65,8 @@ from ..core.diagnostics import Diagnostic, Related, Severity
 from ._crosslist import COUNTED, index
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup, StartupEntry
+    from ..machine.resolved import Machine
+    from ..machine.startup import Startup, StartupEntry
 
 CODE = "LIS516"
 NAME = "entry-beyond-count"
@@ -97,7 +98,8 @@ def _at(startup: Startup, entry: StartupEntry, message: str, related: tuple[Rela
     )
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    startups = machine.startups
     for startup in startups:
         for count_key, (entry_key, _, _) in COUNTED.items():
             entries = startup.axes if entry_key == "achs_mds" else startup.compensations

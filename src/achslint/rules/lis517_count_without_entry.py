@@ -64,7 +64,7 @@ from ..core.diagnostics import Diagnostic, Severity
 from ._crosslist import COUNTED, index
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup
+    from ..machine.resolved import Machine
 
 CODE = "LIS517"
 NAME = "count-without-entry"
@@ -81,7 +81,8 @@ def _span(key: str, count: int) -> str:
 MAX_ENTRIES = 32  # zahl_mds and zahl_kw range 1 ... 32 (P-STUP-00014, P-STUP-00016)
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    startups = machine.startups
     for startup in startups:
         for count_key, (entry_key, _, _) in COUNTED.items():
             count = startup.counts.get(count_key)

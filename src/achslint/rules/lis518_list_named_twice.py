@@ -72,7 +72,8 @@ from ..core.files import same_file
 from ._crosslist import index
 
 if TYPE_CHECKING:
-    from ..machine.startup import Member, Startup, StartupEntry
+    from ..machine.resolved import Machine
+    from ..machine.startup import Startup, StartupEntry
 
 CODE = "LIS518"
 NAME = "list-named-twice"
@@ -89,7 +90,8 @@ def _loaded(startup: Startup) -> list[StartupEntry]:
     return [entry for entry in startup.axes if index(entry) < count.value]
 
 
-def check_machine(members: list[Member], startups: list[Startup]) -> Iterator[Diagnostic]:
+def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    startups = machine.startups
     for startup in startups:
         first: dict[object, StartupEntry] = {}
         entries = [startup.default] if startup.default is not None else []

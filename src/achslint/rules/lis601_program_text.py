@@ -56,7 +56,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import Machine, Program
+    from ..machine.model import ChannelView, Program
 
 CODE = "LIS601"
 NAME = "program-text"
@@ -64,7 +64,7 @@ FIX = "none"
 SUMMARY = "Homing program text the CNC cannot run as written"
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from .programcontext import diagnostic
 
     for problem in program.problems:

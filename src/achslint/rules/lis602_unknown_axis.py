@@ -66,7 +66,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import Machine, Program
+    from ..machine.model import ChannelView, Program
 
 CODE = "LIS602"
 NAME = "unknown-axis"
@@ -74,7 +74,7 @@ FIX = "none"
 SUMMARY = "Program names an axis the machine does not have"
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from ..machine.model import HomingBlock, MoveBlock
     from .programcontext import diagnostic
 

@@ -57,7 +57,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import AxisWord, Machine, Program
+    from ..machine.model import AxisWord, ChannelView, Program
 
 CODE = "LIS603"
 NAME = "axis-twice-in-g74"
@@ -65,7 +65,7 @@ FIX = "none"
 SUMMARY = "G74 names the same axis twice"
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from .programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):

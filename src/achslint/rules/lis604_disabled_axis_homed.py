@@ -65,7 +65,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import Machine, Program
+    from ..machine.model import ChannelView, Program
 
 CODE = "LIS604"
 NAME = "disabled-axis-homed"
@@ -73,7 +73,7 @@ FIX = "none"
 SUMMARY = "G74 commands an axis whose homing is DISABLED"
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from .programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):

@@ -73,7 +73,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import Machine, Program
+    from ..machine.model import ChannelView, Program
 
 CODE = "LIS605"
 NAME = "gantry-slave-alone"
@@ -81,7 +81,7 @@ FIX = "none"
 SUMMARY = "Gantry slave homed before its master"
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from ..machine.model import HomingBlock
     from .programcontext import defined, diagnostic, steps
 

@@ -65,7 +65,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import Machine, Program
+    from ..machine.model import ChannelView, Program
 
 CODE = "LIS606"
 NAME = "move-before-homing"
@@ -73,7 +73,7 @@ FIX = "none"
 SUMMARY = "Move of an axis that is not homed yet"
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from ..machine.model import MoveBlock
     from .programcontext import diagnostic, steps
 

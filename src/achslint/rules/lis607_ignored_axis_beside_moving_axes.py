@@ -65,7 +65,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import Machine, Program
+    from ..machine.model import ChannelView, Program
 
 CODE = "LIS607"
 NAME = "ignored-axis-beside-moving-axes"
@@ -75,7 +75,7 @@ SUMMARY = "IGNORE_ABS_POS axis in a G74 block where other axes move"
 _STILL = ("IGNORE_ABS_POS", "DISABLED")
 
 
-def check_program(program: Program, machine: Machine) -> Iterator[Diagnostic]:
+def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
     from .programcontext import diagnostic, homing_blocks
 
     for block in homing_blocks(program):

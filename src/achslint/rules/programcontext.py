@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ..homing.registry import classify
-from ..machine.model import HomingBlock, Location, Machine, MachineAxis, MoveBlock, Program
+from ..machine.model import ChannelView, HomingBlock, Location, MachineAxis, MoveBlock, Program
 
 
 def diagnostic(
@@ -71,7 +71,7 @@ class Step:
     homed: frozenset[str]
 
 
-def steps(program: Program, machine: Machine) -> Iterator[Step]:
+def steps(program: Program, machine: ChannelView) -> Iterator[Step]:
     """The homing and move blocks in order, each with the names of the axes homed before it.
 
     A G74 block homes the machine axes it names (DISABLED axes excepted: the CNC stops there), and with a
