@@ -118,7 +118,7 @@ def test_lists_no_start_up_list_names_are_compared_only_when_a_machine_is_declar
     forget_cached()
     [machine] = Finder().machines_of(tmp_path / "achsmds2.lis")
     assert machine.key.endswith(".achslint.toml#mill") and machine.startup is None
-    assert [t.path.name for t in machine.members if t.path] == ["achsmds1.lis", "achsmds2.lis"]
+    assert [f.name for f in machine.files] == ["achsmds1.lis", "achsmds2.lis"]
     assert len(Finder().machines_of(tmp_path / "achsmds1.lis")) == 2
     assert machine_findings_cli(tmp_path) == {("achsmds2.lis", 1, "LIS501")}
     assert machine_findings_editor(tmp_path) == {("achsmds2.lis", 1, "LIS501")}
@@ -194,7 +194,7 @@ def test_axis_lists_beyond_zahl_mds_are_not_members_of_the_machine(tmp_path: Pat
     )
     # the CNC reads one axis list: the second is never loaded (LIS516 says so), so it repeats no number
     [machine] = Finder().machines_of(tmp_path / "achsmds1.lis")
-    assert [t.path.name for t in machine.members if t.path] == ["achsmds1.lis"]
+    assert [f.name for f in machine.files] == ["achsmds1.lis"]
     assert machine_findings_cli(tmp_path) == {("hochlauf.lis", 3, "LIS516")}
 
 

@@ -527,7 +527,7 @@ def test_start_up_lists_that_do_not_name_the_list_leave_its_declared_machine(
     document = opened(session, tmp_path / "achsmds1.lis")
     [machine] = session.machines(document)
     assert machine.startup is None
-    assert [Path(t.path).name for t in machine.members if t.path] == ["achsmds1.lis", "achsmds2.lis"]
+    assert [f.name for f in machine.files] == ["achsmds1.lis", "achsmds2.lis"]
     assert session.diagnostics(document.uri)[1] == []  # the finding goes to the second list
     second = opened(session, tmp_path / "achsmds2.lis")
     _, found, peers = session.diagnostics(second.uri)

@@ -43,6 +43,7 @@ from ..core.files import (
     reason,
     same_file,
 )
+from ..machine.resolved import Machine
 from ..machine.startup import Startup, StartupEntry, is_startup_list, read_startup
 from ..syntax.parser import parse_bytes
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
@@ -113,21 +114,10 @@ class Discovery:
         if machines != before.machines:
             taken[index] = replace(before, machines=machines, defaults=before.defaults or target.defaults)
 
-    def members(self, machines: Sequence[MachineFiles]) -> None:
-        """Take the members of machines as context."""
-        for machine in machines:
-            for member in machine.members:
-                self.add(member, context=True)
-
-
-@dataclass
-class MachineFiles:
-    """The files that form one machine with a list: its start-up list (if any) and its members."""
-
-    key: str
-    startup: Startup | None
-    members: list[Target]
-    defaults: Path | None = None  # the default axis list the start-up list loads under its axis lists
+    def members(self, targets: Sequence[Target]) -> None:
+        """Take the members of machines (`Finder.member_targets`) as context."""
+        for target in targets:
+            self.add(target, context=True)
 
 
 def _identity(path: Path) -> object:
@@ -162,7 +152,7 @@ class Finder:
     _fixed: ResolvedConfig | None = None
     _startups: dict[str, Startup | None] = field(default_factory=dict)  # by absolute path
     _around: dict[str, list[Startup]] = field(default_factory=dict)  # by folder
-    _tables: dict[str, list[MachineFiles]] = field(default_factory=dict)  # [[machine]] tables by config file
+    _tables: dict[str, list[Machine]] = field(default_factory=dict)  # [[machine]] tables by config file
 
     def __post_init__(self) -> None:
         self._fixed = load_file(Path(self.config_file)) if self.config_file else None
@@ -219,7 +209,7 @@ class Finder:
         return self._around[key]
 
     # -- machines ------------------------------------------------------------------------------------------
-    def machines_of(self, path: Path, known: Sequence[Startup] = ()) -> list[MachineFiles]:
+    def machines_of(self, path: Path, known: Sequence[Startup] = ()) -> list[Machine]:
         """The machines a list belongs to (see the module's description): every start-up list (of `known`, or
         beside the list) and every `[[machine]]` table of its configuration that names it; else, for axis XML,
         the XML files of its folder. A start-up list is a machine of its own. Nothing for a list that is no
@@ -229,31 +219,30 @@ class Finder:
                 startup = self.startup(path)
             except (OSError, UnreadableInput):
                 return []
-            return [self._startup_machine(startup)]
+            return [Machine.of(startup)]
         if is_list_update(path):
             return []  # it changes one list; it is no axis of its own
         startups = _unique([*known, *self.startups_around(path.parent)])
         naming = [s for s in startups if any(_names(e.path, path) for e in _entries(s))]
-        declared = [m for m in self._declared(path) if any(_names(t.path, path) for t in m.members)]
+        declared = [m for m in self._declared(path) if any(_names(f, path) for f in m.files)]
         if naming or declared:
-            return [*(self._startup_machine(startup) for startup in naming), *declared]
+            return [*(Machine.of(startup) for startup in naming), *declared]
         if is_xml(path.name):
             folder = self._folder_machine(path.parent, startups)
-            if any(same_file(m.path, path) for m in folder.members if m.path is not None):
+            if any(same_file(f, path) for f in folder.files):
                 return [folder]
         return []
 
-    def _declared(self, path: Path) -> list[MachineFiles]:
+    def _declared(self, path: Path) -> list[Machine]:
         """The machines the `[[machine]]` tables of a list's configuration declare."""
         config = self.config_for(path)
         key = str(config.path)
         if key not in self._tables:
             self._tables[key] = [
-                MachineFiles(
+                Machine(
                     name,
-                    None,
-                    [
-                        Target(shown(f), f, self.config_for(f), (name,))
+                    files=[
+                        f
                         for f in files
                         if not self._excluded(config, f)
                         and not_a_list_file(f) is None
@@ -265,27 +254,31 @@ class Finder:
             ]
         return self._tables[key]
 
-    def _startup_machine(self, startup: Startup) -> MachineFiles:
-        default = startup.default
-        defaults = default.path if default is not None and not _names(default.path, startup.path) else None
-        members = [
-            Target(
-                shown(e.path), e.path, self.config_for(e.path), (str(startup.path),), defaults, kind="axis"
-            )
-            for e in startup.loaded_axes()
-            if e.path is not None and not same_file(e.path, startup.path)
-        ]
-        return MachineFiles(str(startup.path), startup, members, defaults)
-
-    def _folder_machine(self, folder: Path, startups: list[Startup]) -> MachineFiles:
+    def _folder_machine(self, folder: Path, startups: list[Startup]) -> Machine:
         """The axis XML files of a folder that no start-up list names: the exports of one TwinCAT project."""
         lists, _ = self._walk(folder, Scope.of([str(folder)]), Discovery(), recursive=False)
         members = [
-            Target(str(path), path, self.config_for(path), (str(folder),))
+            path
             for path in lists
             if is_xml(path.name) and not is_list_update(path) and not _named_by(startups, path)
         ]
-        return MachineFiles(str(folder), None, members)
+        return Machine(str(folder), files=members)
+
+    def member_targets(self, machines: Sequence[Machine]) -> list[Target]:
+        """The axis lists of machines as lists to read (for the machine-level rules), in the machines' order;
+        a start-up list's with the default list it loads underneath."""
+        return [
+            Target(
+                shown(f),
+                f,
+                self.config_for(f),
+                (machine.key,),
+                machine.defaults,
+                kind="axis" if machine.startup is not None else None,
+            )
+            for machine in machines
+            for f in machine.files
+        ]
 
     # -- a run's paths -------------------------------------------------------------------------------------
     def find(self, paths: list[str]) -> Discovery:
@@ -340,7 +333,7 @@ class Finder:
             self._remember(machines, found)
         for path in named:  # the other members of its machines, for the machine-level rules
             if self.machine_rules(path):
-                found.members(self.machines_of(path, known))
+                found.members(self.member_targets(self.machines_of(path, known)))
         return found
 
     def entry_kind(self, path: Path, known: Sequence[Startup] = ()) -> str | None:
@@ -370,7 +363,7 @@ class Finder:
                 return preferred
         return kinds[0] if kinds else None
 
-    def _remember(self, machines: list[MachineFiles], found: Discovery) -> None:
+    def _remember(self, machines: list[Machine], found: Discovery) -> None:
         for machine in machines:
             if machine.startup is not None and all(s is not machine.startup for s in found.startups):
                 found.startups.append(machine.startup)
@@ -394,7 +387,7 @@ class Finder:
             found.startups.append(startup)
         found.reported.add(str(startup.path))
         found_inside = []
-        for member in self._startup_machine(startup).members:
+        for member in self.member_targets([Machine.of(startup)]):
             assert member.path is not None  # members are files
             if named:
                 # Its own folder counts as named with it; lists in other folders are only checked.

@@ -29,9 +29,10 @@ from ..linting.config import (
     discover,
     parse_codes,
 )
-from ..linting.discovery import Discovery, Finder, MachineFiles, Target, is_list_update, updated_list
+from ..linting.discovery import Discovery, Finder, Target, is_list_update, updated_list
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
+from ..machine.resolved import Machine
 from ..machine.startup import is_startup_list
 from ..syntax.parser import ListFile, parse_bytes
 from ..syntax.xmlinput import single_list
@@ -142,7 +143,7 @@ class Session:
         self._disk: dict[_DiskKey, FileResult] = {}  # (real path, stamp, defaults stamp, settings) -> result
         self._by_real: dict[str, Document] = {}  # open files by real path
         self._machines: dict[
-            str, list[MachineFiles]
+            str, list[Machine]
         ] = {}  # real path of a list -> its machines (until forget_disk)
         self._finder: Finder | None = None  # with the editor's settings (until they or the disk change)
         self._machine_found: dict[str, list[_Found]] = {}  # uri -> the machine findings last reported for it
@@ -306,7 +307,7 @@ class Session:
         self._finder = None
         self._machines.clear()
 
-    def machines(self, document: Document) -> list[MachineFiles]:
+    def machines(self, document: Document) -> list[Machine]:
         """The machines of a document, found as `achslint lint` finds them (`Finder.machines_of`): the
         start-up lists beside it that name it, else the lists of its folder."""
         path = document.path
@@ -360,7 +361,8 @@ class Session:
             return {}
         real = _real(document.path)
         found = Discovery()
-        found.members(machines)  # in the machine's order: a repeated number is reported where it repeats
+        # in the machine's order: a repeated number is reported where it repeats
+        found.members(self.finder.member_targets(machines))
         if not snapshot.startup:
             keys = tuple(m.key for m in machines)
             kind = self.finder.entry_kind(document.path)  # a default list named otherwise is no axis
