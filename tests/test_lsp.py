@@ -355,6 +355,34 @@ async def test_completion_paths_symbols_references_and_codes(client: LanguageCli
     close_doc(client, uri)
 
 
+async def test_hover_and_completion_in_lists_of_other_kinds(client: LanguageClient, folder: Path):
+    """A channel list and a start-up list get their own kind's cards and paths (issue 25 item 4)."""
+    listen = folder / "kinds" / "listen"
+    shutil.copytree(FIXTURES / "kinds", listen)
+    channel = (listen / "sda_mds1.lis").read_bytes().decode("latin-1")
+    uri = open_doc(client, listen / "sda_mds1.lis", channel)
+    await diagnostics_when(client, uri)
+    where = position_of(channel, "spindel[0].log_achs_nr", 2)
+    assert "P-CHAN-00036" in await hover_at(client, uri, where.line, where.character)
+    close_doc(client, uri)
+    startup = (listen / "hochlauf.lis").read_bytes().decode("latin-1").replace("\nEnde", "   \nEnde")
+    uri = open_doc(client, listen / "hochlauf.lis", startup)
+    await diagnostics_when(client, uri)
+    where = position_of(startup, "kanal_anzahl", 2)
+    assert "P-STUP-" in await hover_at(client, uri, where.line, where.character)
+    found = await client.text_document_completion_async(
+        lsp.CompletionParams(lsp.TextDocumentIdentifier(uri), lsp.Position(where.line, 0))
+    )
+    items = found.items if isinstance(found, lsp.CompletionList) else found
+    assert "zahl_mds" in {i.label for i in items} and not any(i.label.startswith("kenngr.") for i in items)
+    formatted = await client.text_document_formatting_async(
+        lsp.DocumentFormattingParams(lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True))
+    )
+    # formatted like a list of any kind: the trailing blanks go, nothing else changes
+    assert apply_edits(startup, list(formatted)) == startup.replace("   \nEnde", "\nEnde")
+    close_doc(client, uri)
+
+
 # -- formatting, outline, definitions, inlay hints ---------------------------------------------------------
 
 

@@ -772,8 +772,8 @@ async def hover(ls: AchslintServer, params: lsp.HoverParams) -> lsp.Hover | None
     text = features.hover_text(context, file, line, column, ls.markdown, kind)
     if not text:
         return None
-    kind = lsp.MarkupKind.Markdown if ls.markdown else lsp.MarkupKind.PlainText
-    return lsp.Hover(lsp.MarkupContent(kind, text))
+    markup = lsp.MarkupKind.Markdown if ls.markdown else lsp.MarkupKind.PlainText
+    return lsp.Hover(lsp.MarkupContent(markup, text))
 
 
 @feature(
