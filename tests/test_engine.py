@@ -103,7 +103,10 @@ def test_a_limit_switch_on_the_cam_stops_the_move_off_it():
     # The switch is 5 mm away: the axis reaches sqrt(2 · 500 · 5) = 70.7 mm/s there and brakes another 5 mm.
     trace = run(start_position=-110.0, limit_switches=(-1010.0, -105.0))
     assert trace.outcome == "failed"
-    assert trace.failure == "off the reference cam: limit switch reached before the event was found"
+    # The failure names the switch and what it searched for beyond it: the cam's end at -100 (issue 26 item 11).
+    assert trace.failure == (
+        "off the reference cam: the limit switch at -105 mm was reached before the end of the cam at -100 mm"
+    )
     [phase] = trace.phases
     assert phase.ended_by == "limit switch reached" and approx(phase.end_position, -100.0, 1e-6)
 
@@ -218,7 +221,11 @@ def test_missed_cam_fails_cleanly_at_the_limit_switch():
     trace = run(start_position=-200.0)  # behind the cam in the homing direction
     assert trace.outcome == "failed"
     assert trace.phases[-1].ended_by == "limit switch reached"
-    assert "before the event was found" in trace.failure
+    # The cam [-120, -100] lies behind the start: nothing ahead in the homing direction (issue 26 item 11).
+    assert trace.failure == (
+        "to the reference cam: the limit switch at -1010 mm was reached before the cam, which lies nowhere "
+        "ahead in the negative direction"
+    )
     assert trace.phases[-1].end_position <= -1010.0
 
 
@@ -595,7 +602,9 @@ def test_nc_reference_modes_that_cannot_be_simulated_or_find_nothing():
     back = drive_run(
         80.0, {**NC, "reference_mode": "hardware-sync", "invert_sync_search": True}, fixed_stop=30.0
     )
-    assert back.outcome == "failed" and back.failure == "a sync search back towards the cam is not simulated"
+    # A mode the simulator does not cover is "not simulated", not a failure (issue 26 item 11): exit 0, a note.
+    assert back.outcome == "not_simulated" and back.failure is None
+    assert "the sync search back towards the cam (invert_sync_search) is not simulated" in back.warnings[0]["message"]
     no_latch = drive_run(80.0, {**NC, "reference_mode": "hardware-latch-pos"}, fixed_stop=30.0)
     assert no_latch.outcome == "failed"
     assert no_latch.failure == "no latch signal after the cam edge (scenario latch_position)"

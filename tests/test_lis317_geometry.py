@@ -96,7 +96,8 @@ def test_no_fitting_geometry_is_said_not_passed() -> None:
     [(severity, message)] = lis317(NO_ROOM)
     assert severity == "info"
     assert message.startswith("not checked: homing with the assumed cam at [100, 120] mm fails (")
-    assert "limit switch reached" in message
+    # The failure names the switch (swe_pos 0 + 10 mm) and what was searched beyond it (issue 26 item 11).
+    assert "(to the reference cam: the limit switch at 10 mm was reached before the cam at 100 mm)" in message
     assert "achslint dry-run --scenario" in message
     # The dry-run keeps that cam and fails at the limit switch, as the finding says.
     trace = dryrun.dry_run(NO_ROOM.encode(), "achsmds1.lis").trace

@@ -42,6 +42,8 @@ if TYPE_CHECKING:
 
 INF = math.inf
 ZERO_SEARCH_EXCEEDED = "zero_pulse_search_max_dist exceeded (maximum search distance)"
+LIMIT_SWITCH = "limit switch reached"
+PATH_LIMIT = "homing_max_movement_dist exceeded (P-ERR-70394)"
 # The outcome of a run the simulator does not cover: not a failure of the homing (exit 0, with a note).
 NOT_SIMULATED = "not_simulated"
 __all__ = ["POSITION", "VELOCITY", "Simulator", "Trace"]
@@ -228,6 +230,9 @@ class Trace:
     facts: list[Fact] = field(default_factory=list)  # in the order they were found
     ends_moving: bool = False  # flying spindle homing: the trace ends at the reference, still turning
     arming: Arming | None = None  # where the zero-pulse logic was armed (zero-pulse references only)
+    searched: tuple[str, float] | None = (
+        None  # a failed search: what it looked for and where (scenario frame)
+    )
     reference_at: float | None = None  # the reference event's position, scenario frame, not wrapped
 
     @property
@@ -436,10 +441,10 @@ class Simulator:
         bounds: list[tuple[float, str]] = []
         if switches is not None:
             switch = switches[1] - x if s > 0 else x - switches[0]
-            bounds.append((max(switch, 0.0), "limit switch reached"))
+            bounds.append((max(switch, 0.0), LIMIT_SWITCH))
         if self.total_max > 0:
             room = self.total_max - s * (x - self.start)
-            bounds.append((max(room, 0.0), "homing_max_movement_dist exceeded (P-ERR-70394)"))
+            bounds.append((max(room, 0.0), PATH_LIMIT))
         if extra < INF:
             bounds.append((max(extra, 0.0), ZERO_SEARCH_EXCEEDED))
         if not bounds:
@@ -472,8 +477,9 @@ class Simulator:
         travelled: float,
         search_max: float = INF,
         before_bound: float = 0.0,
+        target: str = "the event",
     ) -> tuple[float, float, float | None]:
-        """Move until an event `distance` ahead (detected at a cycle unless latched), then brake.
+        """Move until `target` (an event `distance` ahead, detected at a cycle unless latched), then brake.
 
         Returns (end position, end time, detection position or None when a bound stopped the move).
         """
@@ -484,7 +490,7 @@ class Simulator:
             trace.phases.append(
                 PhaseRecord(name, direction_word(s), speed, x, x_end, t, t_end, reason, segments)
             )
-            trace.outcome, trace.failure = "failed", f"{name}: {reason} before the event was found"
+            self.stopped(trace, name, reason, s, target, x, distance)
             return x_end, t_end, None
         t_detect = self.sample(ramp, distance, latched)
         segments, t_end, x_end = ramp.stop(t_detect)
@@ -506,13 +512,56 @@ class Simulator:
         ended_by: str,
         event: str,
         travelled: float,
+        target: str = "the cam",
     ) -> tuple[float, float, bool]:
         """A sampled move to a cam edge that records the edge as an event; False when a bound stopped it."""
-        x_end, t_end, x_edge = self.move(trace, name, x, t, s, speed, distance, False, ended_by, travelled)
+        x_end, t_end, x_edge = self.move(
+            trace, name, x, t, s, speed, distance, False, ended_by, travelled, target=target
+        )
         if x_edge is None:
             return x_end, t_end, False
         trace.events.append(Event(trace.phases[-1].segments[-1].t0, x_edge, event))
         return x_end, t_end, True
+
+    def stopped(
+        self,
+        trace: Trace,
+        name: str,
+        reason: str,
+        s: int,
+        target: str,
+        x: float,
+        distance: float,
+        when: str = "",
+    ) -> None:
+        """Homing failed: a bound (`reason`, from `bound`) stopped the move from x (`when`: while it did what)
+        before `target`, which lay `distance` ahead (infinite: nowhere ahead). The failure names the bound with
+        its value and the target with its position, and the trace keeps the target's position for the plot."""
+        if math.isfinite(distance):
+            where = x + s * distance
+            trace.searched = (target, where)
+            what = f"{target} at {number(where)} {self.unit}"
+        else:
+            what = f"{target}, which lies nowhere ahead in the {direction_word(s)} direction"
+        trace.outcome, trace.failure = "failed", f"{name}: {self.why(reason, s)}{when} before {what}"
+
+    def why(self, reason: str, s: int) -> str:
+        """A bound that stopped a move, with its value: which limit switch, which parameter and how far."""
+        unit = self.unit
+        switches = self.scenario.limit_switches
+        if reason == LIMIT_SWITCH and switches is not None:
+            return f"the limit switch at {number(switches[1] if s > 0 else switches[0])} {unit} was reached"
+        if reason == PATH_LIMIT:
+            return (
+                f"homing_max_movement_dist ({number(self.total_max)} {unit} from the start at "
+                f"{number(self.start)} {unit}) was exceeded (P-ERR-70394)"
+            )
+        if reason == ZERO_SEARCH_EXCEEDED:
+            return (
+                f"zero_pulse_search_max_dist ({number(self.zero_search_max)} {unit} from where the zero-pulse "
+                "logic was armed) was exceeded"
+            )
+        return reason
 
     def reference(
         self, trace: Trace, kind: str, position: float, time: float, value: float, x_end: float
@@ -668,6 +717,12 @@ def trapezoid(length: float, speed: float, acceleration: float) -> tuple[float, 
     t_acc = peak / acceleration
     cruise = max((length - peak * peak / acceleration) / peak, 0.0) if peak else 0.0
     return peak, t_acc, cruise
+
+
+def number(value: float) -> str:
+    """A position or distance in a message: up to four decimals, without trailing zeros."""
+    text = f"{value:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
 
 
 def direction_word(s: int) -> str:

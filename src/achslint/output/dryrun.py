@@ -7,8 +7,10 @@ JSON (version 1): {"version", "axis": {..., "acceleration", "acceleration_source
 "ended_by"}], "events": [{"time", "position", "kind"}], "reference": {"kind",
 "position", "value", "speed", "time", "armed_at", "cam_zero_pulse_offset"} |
 null, "final_position", "ends_moving",
-"total_time", "total_distance", "outcome", "failure", "warnings": [{"code",
-"message"}], "corrections", "units"}. Positions are mm (degrees for rotary
+"total_time", "total_distance", "outcome" ("homed", "failed", "not_required",
+"skipped" or "not_simulated": a mode the simulator does not cover, with a note),
+"failure" (a failed search names the bound with its value and what it searched
+for, and where), "warnings": [{"code", "message"}], "corrections", "units"}. Positions are mm (degrees for rotary
 axes and spindles), velocities per second, times in seconds; phase and event
 positions are in the scenario frame (actual values before homing, continuous:
 on a modulo axis they keep counting past the modulo range so a revolution

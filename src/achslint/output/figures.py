@@ -3,7 +3,8 @@
 What the figure shows: each phase in its own shade with its number and name in a legend beside the plot
 (labels never overlap the curves); the cam zone (every revolution of it on a modulo axis); zero-pulse marks;
 limit switches and software limits as lines; the reference point with "actual value -> new value"; the
-final position; a failure marker with the reason; and an inset zooming on the phase where the reference is
+final position; a failure marker with the reason and, for a search a bound ended, what it searched for
+(within the view); and an inset zooming on the phase where the reference is
 found. `build_figure` returns the figure (tests read its data series); `plot_trace` writes PNG or SVG.
 """
 
@@ -134,6 +135,8 @@ def build_figure(trace: Trace) -> Figure:
         )
 
     low, high = (min(positions), max(positions)) if positions else (trace.scenario.start_position,) * 2
+    if trace.searched is not None:  # a failed search: the view includes what it looked for
+        low, high = min(low, trace.searched[1]), max(high, trace.searched[1])
     span = max(high - low, 1e-6)
     y_low, y_high = low - 0.08 * span, high + 0.08 * span
     scenario = trace.scenario
@@ -198,6 +201,18 @@ def build_figure(trace: Trace) -> Figure:
         colour, style = styles[name]
         handles.append(
             Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}")
+        )
+    if trace.searched is not None:
+        target, where = trace.searched
+        top.axhline(where, color="#cc3311", linestyle=":", linewidth=1.2, gid="searched")
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color="#cc3311",
+                linestyle=":",
+                label=_wrap(f"searched for: {target} at {_fmt(where)} {unit}", 48),
+            )
         )
     top.set_ylim(y_low - 0.02 * span, y_high + 0.02 * span)
 

@@ -56,6 +56,7 @@ def reference_search(
             False,
             "the cam edge was detected (sampled each cycle)",
             travelled,
+            target="the cam edge",
         )
         if x_cam is not None:
             t_cam = trace.phases[-1].segments[-1].t0
@@ -64,7 +65,7 @@ def reference_search(
         return trace
     if cam_distance > sim.bound(x, s, travelled)[0]:
         # The cam is never reached: the move ends at a limit and homing fails.
-        sim.move(trace, name, x, t, s, speed, cam_distance, False, "", travelled)
+        sim.move(trace, name, x, t, s, speed, cam_distance, False, "", travelled, target="the cam edge")
         return trace
     # The cam edge is sampled; the zero-pulse logic starts `shift` later; the pulse itself may be latched.
     ramp = Ramp(t, x, s, speed, sim.ramp_acceleration)
@@ -92,6 +93,7 @@ def reference_search(
         travelled,
         search_max,
         before,
+        target=f"the {event} after the cam",
     )
     if cam_distance <= abs(x_end - x) or x_ref is not None:
         _zero_pulse.arming_events(sim, trace, "cam edge detected", t + t_cam, x_cam, s)
@@ -152,6 +154,7 @@ def three_phases(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Tr
         "the cam was left (sampled each cycle)",
         "cam left",
         travelled,
+        target="the end of the cam",
     )
     if not left:
         return trace
@@ -215,7 +218,7 @@ def one_phase_zero_pulse(sim: Simulator, trace: Trace, x: float, s: int, cam_dis
     if s * (x_stop - stop_at) >= 0:  # passed while braking after the cam
         if sim.shift:
             _zero_pulse.arming_events(sim, trace, "", cam.time, cam.position, s)
-        return _end_while_braking(sim, trace, stop_at, found, latched, event, s)
+        return _end_while_braking(sim, trace, stop_at, found, latched, event, s, pulse)
     x_end, _t_end, x_ref = sim.move(
         trace,
         "on to the reference",
@@ -229,6 +232,7 @@ def one_phase_zero_pulse(sim: Simulator, trace: Trace, x: float, s: int, cam_dis
         abs(x_stop - x),
         search_max,
         s * (armed - x_stop),
+        target=f"the {event} after the arming point",
     )
     if sim.shift:
         _zero_pulse.arming_events(sim, trace, "", cam.time, cam.position, s)
@@ -238,19 +242,26 @@ def one_phase_zero_pulse(sim: Simulator, trace: Trace, x: float, s: int, cam_dis
 
 
 def _end_while_braking(
-    sim: Simulator, trace: Trace, point: float, found: bool, latched: bool, event: str, s: int
+    sim: Simulator, trace: Trace, point: float, found: bool, latched: bool, event: str, s: int, pulse: float
 ) -> Trace:
     """The search ends at `point` while the axis brakes after the cam: at the reference event (`found`) or
-    at the search limit. The braking segment is split there, so the reference's speed is the speed then."""
+    at the search limit, short of the `pulse`. The braking segment is split there, so the reference's speed
+    is the speed then."""
     phase = trace.phases[-1]
     t_pass = sim.passing_time(trace, point, s, phase.segments[-1].t0)
     if t_pass is None:  # pragma: no cover - the point lies within the braking travel
         raise AssertionError("a point within the braking travel is passed")
     if not found:
         phase.ended_by = ZERO_SEARCH_EXCEEDED
-        trace.outcome = "failed"
-        trace.failure = (
-            f"{phase.name}: {ZERO_SEARCH_EXCEEDED} while braking after the cam, before the {event}"
+        sim.stopped(
+            trace,
+            phase.name,
+            ZERO_SEARCH_EXCEEDED,
+            s,
+            f"the {event}",
+            pulse,
+            0.0,
+            " while braking after the cam",
         )
         return trace
     t_detect = t_pass

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 from ..motion import (
     INF,
+    NOT_SIMULATED,
     Active,
     Event,
     PhaseRecord,
@@ -32,9 +33,9 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
     if sim.scenario.drive is None:
         return sim.stand_still(
             trace,
-            "skipped",
-            note="drive-controlled homing: the drive runs its own sequence; "
-            "describe its method in the scenario's [drive] table to simulate it",
+            NOT_SIMULATED,
+            note="drive-controlled homing: the drive runs its own sequence, not simulated without a "
+            "description; describe its method in the scenario's [drive] table to simulate it",
         )
     return _by_method(sim, trace, x, sim.scenario.drive, cam_shift)
 
@@ -174,11 +175,12 @@ def _nc_reference(
             ramp_edge = x + away * edge
             sync = away if not drive.invert_sync_search else toward
             if sync != away:
-                trace.outcome, trace.failure = (
-                    "failed",
-                    "a sync search back towards the cam is not simulated",
+                return sim.stand_still(
+                    trace,
+                    NOT_SIMULATED,
+                    note="the sync search back towards the cam (invert_sync_search) is not simulated: the run "
+                    "stops after the cam search",
                 )
-                return trace
             if mode == "hardware-sync":
                 distance, event = edge + sim.next_pulse(ramp_edge, away), "sync pulse"
             elif mode == "software-sync":
@@ -208,6 +210,7 @@ def _nc_reference(
             latched,
             f"the {event} was detected",
             travelled,
+            target=f"the {event}",
         )
         if x_ref is not None:
             sim.reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, reference, x_end)

@@ -32,7 +32,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
         _rotation_events(sim, trace, x, start, t_start, turning, ramp)
         bound, reason = sim.bound(x, s)
         if lead > bound:
-            return _abort(sim, trace, ramp, name, bound, reason)
+            return _abort(sim, trace, ramp, name, bound, reason, "vb_reflow", lead)
     t_edge = None
     cam_at: float | None = None  # where the cam counts as operated (its not-operated edge)
     if sim.strategy.with_cam:
@@ -51,7 +51,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
             edge = lead + entry(start, s) + span
         bound, reason = sim.bound(x, s)
         if edge > bound:
-            return _abort(sim, trace, ramp, name, bound, reason)
+            return _abort(sim, trace, ramp, name, bound, reason, "the end of the cam", edge)
         t_edge = sim.sample(ramp, edge, False)
         cam_at = x + s * ramp.distance_at(t_edge)
         activation = cam_at + s * sim.shift
@@ -64,7 +64,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
     extra = abs(activation - x) + sim.zero_search_max if sim.zero_search_max > 0 else INF
     bound, reason = sim.bound(x, s, 0.0, extra)
     if distance > bound:
-        return _abort(sim, trace, ramp, name, bound, reason, t_edge)
+        return _abort(sim, trace, ramp, name, bound, reason, f"the {event}", distance, t_edge)
     if t_edge is not None:
         _zero_pulse.pulse_margin(sim, trace, activation, s, speed)
     t_ref = sim.sample(ramp, distance, latched)
@@ -138,14 +138,17 @@ def _abort(
     name: str,
     bound: float,
     reason: str,
+    target: str,
+    distance: float,
     t_edge: float | None = None,
 ) -> Trace:
-    """A flying search that a bound ends: the CNC aborts homing and the spindle brakes."""
+    """A flying search that a bound ends before `target`, `distance` ahead: the CNC aborts homing and the
+    spindle brakes."""
     segments, t_end, x_end = ramp.stop(ramp.time_to(bound))
     trace.phases.append(
         PhaseRecord(name, direction_word(ramp.s), ramp.v, ramp.x0, x_end, ramp.t0, t_end, reason, segments)
     )
     if t_edge is not None and t_edge <= ramp.time_to(bound):
         _edge_event(sim, trace, t_edge, ramp.x0 + ramp.s * ramp.distance_at(t_edge), ramp.s)
-    trace.outcome, trace.failure = "failed", f"{name}: {reason} before the event was found"
+    sim.stopped(trace, name, reason, ramp.s, target, ramp.x0, distance)
     return trace

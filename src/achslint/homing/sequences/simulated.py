@@ -22,6 +22,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
         True,
         "the simulated zero pulse was reached",
         0.0,
+        target="the simulated zero pulse",
     )
     if x_ref is not None:
         sim.reference(

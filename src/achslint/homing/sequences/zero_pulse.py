@@ -30,6 +30,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
         f"the {event} was detected",
         0.0,
         search_max,
+        target=f"the {event}",
     )
     if x_ref is not None:
         sim.reference(trace, event, x_ref, trace.phases[-1].segments[-1].t0, sim.refpkt, x_end)
