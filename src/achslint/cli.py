@@ -552,7 +552,9 @@ def explain(
     elif program is not None:
         _fail("--program goes with a start-up list (hochlauf.lis)")
     elif problem is None or problem not in NOT_A_FILE:
-        shown.LIST[output_format.value](explain_list(_one_list(path, target), target, gear), screen)
+        defaults, under = _loaded_under(path)
+        report = explain_list(_one_list(path, target), target, gear, defaults, under)
+        shown.LIST[output_format.value](report, screen)
     else:
         found = _parameter(target, kind.value if kind is not None else None)
         shown.PARAMETER[output_format.value](parameter_card(found.parameter, found.kind), screen)
@@ -627,6 +629,32 @@ def _one_list(path: Path, name: str) -> bytes:
         _fail(f"cannot read {name}: {reason(exc)}")
     except UnreadableInput as exc:
         _fail(str(exc))
+
+
+def _loaded_under(path: Path) -> tuple[bytes | None, str | None]:
+    """The default axis list the CNC loads under an axis list (its machine's `default_achs_mds`, found as
+    lint finds it), and where it comes from in words; (None, None) for a list no start-up list names. One
+    that cannot be read is left out, and the words say so (lint reports it as LIS504)."""
+    from .axis.source import read_one_list
+    from .core.decode import UnreadableInput
+    from .linting.config import ConfigError
+    from .linting.discovery import Finder, shown
+
+    try:
+        found = Finder(lenient=True).loaded_under(path)
+    except (OSError, ValueError, ConfigError):
+        return None, None
+    if found is None:
+        return None, None
+    default, startup = found
+    try:
+        data = read_one_list(default, shown(default))
+    except (OSError, UnreadableInput) as exc:
+        return None, (
+            f"the default axis list {shown(default)} that {shown(startup)} loads underneath cannot be read "
+            f"({exc}); catalogue defaults are used instead"
+        )
+    return data, f"default axis list {shown(default)} underneath, as {shown(startup)} loads it"
 
 
 def _pair(text: str | None, name: str) -> tuple[float, float] | None:
@@ -737,7 +765,11 @@ def dry_run_command(
     except OSError as exc:
         _fail(f"cannot read {scenario}: {reason(exc)}")
     try:
-        run = dry_run(_one_list(Path(file), file), file, given, gear=gear, cycle_time_us=cycle_time_us)
+        data = _one_list(Path(file), file)
+        defaults, under = _loaded_under(Path(file))
+        run = dry_run(data, file, given, gear=gear, cycle_time_us=cycle_time_us, defaults=defaults)
+        if under is not None:
+            run.trace.warn(None, f"read as the CNC loads it: {under}")
         summary = sweep(run.simulator, sweep_runs) if sweep_runs else None
     except (ScenarioError, DryRunRefused) as exc:
         _fail(str(exc))

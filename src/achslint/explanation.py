@@ -105,6 +105,7 @@ class ListReport(TypedDict):
     commanded: CommandedInfo
     corrections: list[CorrectionData]
     parameters: list[ParameterRow]
+    loaded_under: str | None  # the default axis list the machine loads underneath, in words (None: none)
 
 
 class AliasInfo(TypedDict):
@@ -189,9 +190,12 @@ def phase_infos(strategy: HomingStrategy) -> list[PhaseInfo]:
     return phases
 
 
-def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None = None) -> ListReport:
+def explain_list(
+    data: bytes, name: str, gear: int = 0, defaults: bytes | None = None, under: str | None = None
+) -> ListReport:
     """Everything `explain FILE` shows, as JSON-ready data: the strategy the CNC runs after its corrections, at
-    power-up (`strategy`, `phases`) and when a G74 names the axis (`commanded`)."""
+    power-up (`strategy`, `phases`) and when a G74 names the axis (`commanded`). `defaults`: the default axis
+    list loaded underneath, `under` says which (and from which start-up list) in words."""
     values = resolve_bytes(data, name, defaults)
     strategy = classify(values, gear)
     commanded = classify(values, gear, commanded=True)
@@ -234,6 +238,7 @@ def explain_list(data: bytes, name: str, gear: int = 0, defaults: bytes | None =
         },
         "corrections": [c.as_dict() for c in values.corrections],
         "parameters": parameters,
+        "loaded_under": under,
     }
 
 

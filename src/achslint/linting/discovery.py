@@ -280,6 +280,15 @@ class Finder:
             for f in machine.files
         ]
 
+    def loaded_under(self, path: Path) -> tuple[Path, Path] | None:
+        """(default axis list, start-up list) when a start-up list that names an axis list (found as for lint:
+        named by the run or beside the list) loads a default axis list under it, as the CNC does; the first
+        such start-up list when several name the list. None for a list no start-up list names."""
+        for machine in self.machines_of(path):
+            if machine.defaults is not None and machine.startup is not None and not is_startup(path):
+                return machine.defaults, machine.startup.path
+        return None
+
     # -- a run's paths -------------------------------------------------------------------------------------
     def find(self, paths: list[str]) -> Discovery:
         """Expand folders by the include/exclude globs and start-up lists by their entries; named files are

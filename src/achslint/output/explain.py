@@ -25,6 +25,8 @@ def list_text(report: ListReport, screen: Screen) -> None:
     console = screen.console
     axis = report["axis"]
     console.print(Text(f"{report['file']}", style="bold"))
+    if report.get("loaded_under"):
+        console.print(f"Read as the CNC loads it: {report['loaded_under']}")
     drive_note = "" if axis["drive_type_set"] else " (not set in the list: CNC default)"
     console.print(
         f"Axis {axis['name']} (logical axis {axis['number']}): {axis['axis_type']} axis, "
@@ -68,7 +70,14 @@ def list_text(report: ListReport, screen: Screen) -> None:
     for column in ("parameter", "id", "value", "unit", "human", "source", "effective", "why"):
         table.add_column(column, overflow="fold")
     for row in report["parameters"]:
-        source = "default" if row["source"]["kind"] == "default" else f"line {row['source']['line']}"
+        kind, line = row["source"]["kind"], row["source"]["line"]
+        source = (
+            "default"
+            if kind == "default"
+            else f"line {line}"
+            if kind == "list"
+            else f"default list line {line}"
+        )
         table.add_row(
             row["parameter"],
             row["p_axis"],

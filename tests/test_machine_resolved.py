@@ -1,0 +1,104 @@
+"""One machine as the CNC loads it (issue 24 item 3): lint, explain and the dry-run of one axis list read the
+list with the default axis list its start-up list loads underneath, and the machine reads each list it names
+once, through the start-up list's reader."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+from achslint.axis.resolved import resolve_bytes
+from achslint.linting.discovery import Finder
+from achslint.machine.build import channel_view
+from achslint.machine.resolved import Machine, MachineError
+from achslint.machine.startup import read_startup
+
+from .conftest import FIXTURES, run_cli
+
+PORTAL = FIXTURES / "machines" / "portal"
+
+
+def _portal(tmp_path: Path) -> Path:
+    shutil.copytree(PORTAL, tmp_path / "portal")
+    return tmp_path / "portal" / "listen"
+
+
+def test_explain_shows_the_values_of_the_default_list_the_start_up_list_loads(tmp_path: Path) -> None:
+    listen = _portal(tmp_path)
+    # achsmds5.lis writes no homing speed; default_mds.lis (default_achs_mds of hochlauf.lis) writes
+    # getriebe[0].vb_refmax 50000 on its line 2. The catalogue's default would be 83333.
+    done = run_cli("explain", str(listen / "achsmds5.lis"), "--format", "json")
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout)
+    row = next(r for r in report["parameters"] if r["parameter"] == "getriebe[0].vb_refmax")
+    assert row["value"] == 50000 and row["source"] == {"kind": "default list", "line": 2}
+    assert "default_mds.lis" in report["loaded_under"] and "hochlauf.lis" in report["loaded_under"]
+    # and the value is the one lint judges: the resolved axis over the same default list
+    [machine] = Finder().machines_of(listen / "achsmds5.lis")
+    assert machine.defaults is not None
+    values = resolve_bytes((listen / "achsmds5.lis").read_bytes(), "achsmds5.lis", machine.defaults.read_bytes())
+    assert values.get("getriebe[0].vb_refmax") == row["value"]
+    text = run_cli("explain", str(listen / "achsmds5.lis")).stdout.decode()
+    assert "Read as the CNC loads it: default axis list" in text and "default list line 2" in text
+
+
+def test_a_list_no_start_up_list_names_is_explained_alone(tmp_path: Path) -> None:
+    alone = tmp_path / "achsmds1.lis"
+    shutil.copy(PORTAL / "listen" / "achsmds5.lis", alone)
+    report = json.loads(run_cli("explain", str(alone), "--format", "json").stdout)
+    row = next(r for r in report["parameters"] if r["parameter"] == "getriebe[0].vb_refmax")
+    assert report["loaded_under"] is None and row["source"]["kind"] == "default" and row["value"] == 83333
+
+
+def test_the_dry_run_of_one_list_homes_with_the_default_lists_speeds(tmp_path: Path) -> None:
+    listen = _portal(tmp_path)
+    # achsmds3.lis writes its own speeds (vb_refmax 60000 µm/s on line 24): the list wins over the default list
+    done = run_cli("dry-run", str(listen / "achsmds3.lis"), "--format", "json")
+    report = json.loads(done.stdout)
+    assert any("default axis list" in w["message"] for w in report["warnings"]), report["warnings"]
+    # with its speed line removed, the default list's 50000 µm/s = 50 mm/s is the speed of phase 1
+    text = (listen / "achsmds3.lis").read_text(encoding="latin-1")
+    kept = [line for line in text.splitlines() if not line.startswith("getriebe[0].vb_refmax")]
+    (listen / "achsmds3.lis").write_text("\n".join(kept) + "\n", encoding="latin-1")
+    report = json.loads(run_cli("dry-run", str(listen / "achsmds3.lis"), "--format", "json").stdout)
+    explained = json.loads(run_cli("explain", str(listen / "achsmds3.lis"), "--format", "json").stdout)
+    row = next(r for r in explained["parameters"] if r["parameter"] == "getriebe[0].vb_refmax")
+    assert row["value"] == 50000
+    speeds = [abs(p["velocity"]) for p in report["phases"] if p.get("velocity") is not None]
+    assert speeds and max(speeds) == 50.0, report["phases"]
+
+
+def test_a_machine_reads_each_list_once_through_its_reader(tmp_path: Path) -> None:
+    listen = _portal(tmp_path)
+    reads: list[str] = []
+    startup = read_startup(listen / "hochlauf.lis")
+
+    def counting(path: Path) -> bytes:
+        reads.append(Path(path).name)
+        return Path(path).read_bytes()
+
+    startup.reader = counting
+    machine = Machine.of(startup)
+    for _ in range(3):  # every rule asks; the lists are read once
+        channels = machine.channel_lists()
+    assert [channel.name.rsplit("/", 1)[-1] for _, channel in channels] == ["sda_mds1.lis"]
+    view = channel_view(machine, 1)
+    assert sorted(reads) == sorted(
+        ["sda_mds1.lis", "default_sda.lis", "default_mds.lis", *(f"achsmds{n}.lis" for n in range(1, 9))]
+    )
+    assert {"X", "Y", "Z"} <= set(view.axes)
+
+
+def test_a_missing_list_is_the_error_of_the_entry_that_names_it(tmp_path: Path) -> None:
+    listen = _portal(tmp_path)
+    (listen / "sda_mds1.lis").unlink()
+    machine = Machine.of(read_startup(listen / "hochlauf.lis"))
+    [entry] = machine.startup.channels if machine.startup else []
+    assert machine.channel(entry) is None and machine.channel_lists() == []
+    try:
+        machine.channel(entry, strict=True)
+    except MachineError as exc:
+        assert exc.line == entry.line and "which does not exist" in str(exc) and "sda_mds1.lis" in str(exc)
+    else:
+        raise AssertionError("a missing channel list is an error when it is needed")
