@@ -102,3 +102,19 @@ def test_a_missing_list_is_the_error_of_the_entry_that_names_it(tmp_path: Path) 
         assert exc.line == entry.line and "which does not exist" in str(exc) and "sda_mds1.lis" in str(exc)
     else:
         raise AssertionError("a missing channel list is an error when it is needed")
+
+
+def test_a_start_up_list_named_otherwise_is_explained_and_compared_as_a_machine(tmp_path: Path) -> None:
+    listen = _portal(tmp_path)
+    (listen / "hochlauf.lis").rename(listen / "basis.lis")  # told by its content: achs_mds[i], zahl_mds ...
+    done = run_cli("explain", str(listen / "basis.lis"), "--format", "json")
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout)
+    assert {"X", "Y", "Z"} <= {axis["name"] for axis in report["axes"]}
+    backup = tmp_path / "backup"
+    shutil.copytree(tmp_path / "portal", backup)
+    same = run_cli("diff", str(listen / "basis.lis"), str(backup / "listen" / "basis.lis"), "--format", "json")
+    assert same.returncode == 0 and json.loads(same.stdout)["kind"] == "machines", same.stderr
+    # a folder holding it is a machine too
+    folders = run_cli("diff", str(listen), str(backup / "listen"), "--format", "json")
+    assert folders.returncode == 0 and json.loads(folders.stdout)["differ"] is False, folders.stderr

@@ -29,10 +29,11 @@ from .axis.resolved import ResolvedAxis
 from .core.decode import UnreadableInput
 from .core.files import MISSING, is_folder, not_a_list_file, reason
 from .homing import classify
+from .linting.discovery import is_startup
 from .listdiff import Comparison, Difference, UnknownDifference, WrittenDifference, compare_axes, differ
 from .machine.channel import ChannelList
 from .machine.resolved import Machine, MachineError
-from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup, is_startup_list, read_startup
+from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup, read_startup
 
 VERSION = 1
 BY_NUMBER, BY_NAME, BY_ORDER = "logical axis number", "axis name", "number and name (in start-up order)"
@@ -115,14 +116,14 @@ class MachineDiffReport(TypedDict):
 
 
 def startup_in(path: Path) -> Path | None:
-    """The start-up list `path` is or holds: itself, the only start-up list in the folder (or, when the
-    folder has none, in its `listen/` folder), or None for a file that is not one. `MachineDiffError` for a
-    folder without exactly one."""
+    """The start-up list `path` is or holds (by name, or by content when named otherwise): itself, the only
+    start-up list in the folder (or, when the folder has none, in its `listen/` folder), or None for a file
+    that is not one. `MachineDiffError` for a folder without exactly one."""
     if not is_folder(path):
-        return path if is_startup_list(path) else None
+        return path if is_startup(path) else None
     for folder in (path, path / LISTS_FOLDER):
         try:
-            found = sorted(p for p in folder.iterdir() if is_startup_list(p) and p.is_file())
+            found = sorted(p for p in folder.iterdir() if p.is_file() and is_startup(p))
         except FileNotFoundError:
             continue
         except OSError as exc:
