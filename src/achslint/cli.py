@@ -538,7 +538,7 @@ def explain(
 
     from .core.files import not_a_list_file
     from .explanation import explain_list, parameter_card
-    from .machine.startup import is_startup_list
+    from .linting.discovery import is_startup
     from .output import explain as shown
 
     path = Path(target)
@@ -546,7 +546,7 @@ def explain(
     screen = _screen(color)
     if kind is not None and (problem is None or problem not in NOT_A_FILE):
         _fail("--kind goes with a parameter name, not with a file")
-    if problem is None and is_startup_list(path):
+    if problem is None and is_startup(path):  # by its name, or by its content when named otherwise
         report = _machine_report(path, program, channel, cnc_root, gear)
         shown.MACHINE[output_format.value](report, screen)
     elif program is not None:
