@@ -150,12 +150,22 @@ def test_a_bad_list_of_each_kind_gives_exactly_its_findings(kind_id: str) -> Non
 
 def test_only_the_rules_of_the_list_kind_run() -> None:
     # the registry exposes every rule's kinds; for a channel list the engine picks the LIS0/1/2 families
-    # except the axis-only LIS105 (drive type) and LIS204 (achs_mode bits)
+    # except the axis-only LIS105 (drive type) and LIS204 (achs_mode bits), and the channel's kind rules
     rules = registry()
     every_kind = {code for code, rule in rules.items() if rule.kinds == ALL_KINDS}
     families = {code for code in rules if code[:4] in ("LIS0", "LIS1", "LIS2")}
     assert every_kind == families - {"LIS105", "LIS204"}
-    assert {code for code, _ in enabled_checks(Scope.LIST, None, False, "channel")} == every_kind - {"LIS009"}
+    channel_rules = {"LIS701", "LIS702", "LIS703"}
+    assert {code for code, _ in enabled_checks(Scope.LIST, None, False, "channel")} == (
+        every_kind - {"LIS009"}
+    ) | channel_rules
+    assert {code for code, _ in enabled_checks(Scope.LIST, None, False, "compensation")} == (
+        every_kind - {"LIS009"}
+    ) | {"LIS704", "LIS705"}
+    # a default channel list lies under the channel lists: its counts and slots are not a channel's own
+    assert not channel_rules & {
+        code for code, _ in enabled_checks(Scope.LIST, None, False, "default_channel")
+    }
     assert {code for code, _ in enabled_checks(Scope.AFTER, None, False, "tools")} == {"LIS009"}
     # an axis list still runs every list rule (homing, drive, achs_mode)
     axis = {code for code, _ in enabled_checks(Scope.LIST, None, True, "axis")}

@@ -115,6 +115,10 @@ RULE_MODULES: dict[str, Severity] = {
     "lis516_entry_beyond_count": WARNING,
     "lis517_count_without_entry": ERROR,
     "lis518_list_named_twice": ERROR,
+    "lis519_compensation_for_missing_axis": WARNING,
+    "lis520_compensation_axis_number_mismatch": ERROR,
+    "lis521_offset_for_missing_channel_axis": WARNING,
+    "lis522_channel_count_vs_lists": WARNING,
     "lis601_program_text": ERROR,
     "lis602_unknown_axis": ERROR,
     "lis603_axis_twice_in_g74": ERROR,
@@ -122,6 +126,11 @@ RULE_MODULES: dict[str, Severity] = {
     "lis605_gantry_slave_alone": WARNING,
     "lis606_move_before_homing": WARNING,
     "lis607_ignored_axis_beside_moving_axes": WARNING,
+    "lis701_path_axis_also_spindle": ERROR,
+    "lis702_channel_name_twice": ERROR,
+    "lis703_channel_count_vs_entries": WARNING,
+    "lis704_compensation_table_vs_count": WARNING,
+    "lis705_compensation_table_above_max_points": ERROR,
 }
 _SEVERITY = {name[:6].upper(): severity for name, severity in RULE_MODULES.items()}
 
