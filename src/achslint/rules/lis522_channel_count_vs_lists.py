@@ -9,7 +9,9 @@ channel the count leaves out: `sda_mds[i]`, tool data `werkz_data[i]`
 offsets `pzv_data[i]` (P-STUP-00012) with an index not below the count. The
 index of these entries is the channel's (0 for the first channel). A start-up
 list that does not write `kanal_anzahl` is not judged, nor one whose count is
-out of range (LIS202). The start-up list is judged as the machine it
+out of range (LIS202); missing channel lists are reported only when the
+start-up list names a channel list at all (one that names none may be the
+axis part of a start-up list, kept for its axis lists). The start-up list is judged as the machine it
 defines, with LIS516 and LIS517, which compare its counts `zahl_mds` and
 `zahl_kw` with their entries.
 
@@ -141,8 +143,10 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             [related_at(name, setting, "the number of channels")],
             value=False,
         )
+    # a start-up list that names no channel list at all (the axis part of one, kept for the axis lists) is
+    # not told it misses them all
     missing = [f"sda_mds[{index}]" for index in range(count) if index not in channel_lists]
-    if missing:
+    if missing and channel_lists:
         yield at_setting(
             CODE,
             name,
