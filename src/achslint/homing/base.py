@@ -216,6 +216,7 @@ class HomingStrategy:
                 spindle=setup.spindle,
                 armed_on_exit=self.definition.arms_on_cam_exit,
                 cam_place=cam_place,
+                needs=self.geometry(given),
             )
 
         scenario = build()
@@ -226,6 +227,38 @@ class HomingStrategy:
             if self.trial(fitted).reference is not None:
                 return fitted
         return scenario  # nothing fits: the default stays, and the run says where it stops
+
+    def geometry(self, given: ScenarioInput | None = None) -> frozenset[str]:
+        """What this strategy's run reads of the scenario (names of scenario.GEOMETRY_NEEDS): the cam only with
+        a cam, the zero pulses and the latch only with a zero pulse, the fixed stop only for TORQ on a real
+        drive (a simulated drive's stop lies torq_distance_to_block away), the limit switches and the cycle
+        only when the axis moves, a start velocity only on a moving spindle. Drive-controlled homing reads what
+        the scenario's [drive] table searches for; without one it does not move."""
+        if self.controlled_by == "drive":
+            drive = given.drive if given is not None else None
+            if drive is None:
+                return frozenset()
+            needs = {"limit_switches", "cycle_time"}
+            if drive.method == "nc":
+                needs.add("cam")
+                if drive.reference_mode in ("hardware-sync", "software-sync"):
+                    needs.add("zero_pulse")
+            for search in (drive.first_search, drive.second_search):
+                if search is not None and drive.method == "standard":
+                    needs.add({"limit_switch": "limit_switches"}.get(search.trigger, search.trigger))
+            return frozenset(needs)
+        if not self.moves:
+            return frozenset()
+        needs = {"limit_switches", "cycle_time"}
+        if self.with_cam:
+            needs.add("cam")
+        if self.with_zero_pulse and not self.setup.simulated:  # a simulated drive's pulse: rpf_weg_bis_nip
+            needs |= {"zero_pulse", "hardware_latch"}
+        if self.retracts and not self.setup.simulated:
+            needs.add("fixed_stop")
+        if self.setup.spindle:
+            needs.add("start_velocity")
+        return frozenset(needs)
 
     def cam_may_move(self, scenario: Scenario) -> bool:
         """The cam is assumed and may be moved to fit the axis: CNC-controlled homing on a cam of a linear or

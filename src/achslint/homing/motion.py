@@ -730,7 +730,10 @@ def direction_word(s: int) -> str:
 
 
 def _acceleration(strategy: Homing, scenario: Scenario) -> tuple[float | None, str]:
-    """The acceleration the strategy's moves use, and where it comes from (shown in the header and JSON)."""
+    """The acceleration the strategy's moves use, and where it comes from (shown in the header and JSON); none
+    for an axis that makes no homing move (absolute, DISABLED, IGNORE_ABS_POS, a gantry slave, NONE)."""
+    if not strategy.moves and strategy.controlled_by != "drive":
+        return None, "none: the axis makes no homing move"
     acceleration = strategy.acceleration
     if acceleration is not None:
         return acceleration.ramp, acceleration.words

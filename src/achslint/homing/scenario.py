@@ -26,6 +26,12 @@ value is listed as "assumed" in the output:
   modulo rotary axes, where the cam and the zero pulses recur every revolution);
 * a fixed stop (TORQ) sits 100 away from the start in the homing direction.
 
+Only what the strategy's run reads is filled in and listed as assumed (`HomingStrategy.geometry`): no cam
+for zero-pulse homing without cam, flying spindle homing without cam or simulated drives; no cam, zero
+pulses, latch or limit switches for axes that do not move (absolute, DISABLED, IGNORE_ABS_POS, gantry
+slaves, drive-controlled homing without a `[drive]` table); a fixed stop only for TORQ on a real drive
+(or a drive search for one); a start velocity only for moving spindles.
+
 Drive-controlled homing is simulated when the scenario describes the drive's
 method in a `[drive]` table (Triamec drive homing: "standard" with two
 searches, a relocation and a move to the home position; "immediate";
@@ -56,6 +62,14 @@ class ScenarioError(Exception):
 
 
 DEFAULT_CAM_DISTANCE = 100.0  # from the start to the cam's near edge, mm or °
+
+# What a run may read of the scenario besides the start position: the cam (and its jitter), the zero pulses
+# (period and phase), the hardware latch, the limit switches, the fixed stop, the cycle time and a spindle's
+# start velocity. A strategy names the ones its run reads (HomingStrategy.geometry); only those are filled in
+# from the default geometry and listed as assumed.
+GEOMETRY_NEEDS = frozenset(
+    ("cam", "zero_pulse", "hardware_latch", "limit_switches", "fixed_stop", "cycle_time", "start_velocity")
+)
 
 
 _T = TypeVar("_T")
@@ -92,14 +106,17 @@ class Scenario:
         None  # positions recur every revolution (spindles, modulo rotary axes)
     )
     start_velocity: float = 0.0  # a spindle turning endlessly at the start (signed, °/s); 0: standstill
+    uses: frozenset[str] = GEOMETRY_NEEDS  # what the strategy's run reads (GEOMETRY_NEEDS)
 
     def as_dict(self) -> ScenarioData:
+        """The scenario as JSON; the zero pulses and the latch are null when the run reads none."""
+        pulses = "zero_pulse" in self.uses
         return {
             "start_position": self.start_position,
             "cam": list(self.cam) if self.cam else None,
-            "zero_pulse_period": self.zero_pulse_period,
-            "zero_pulse_phase": self.zero_pulse_phase,
-            "hardware_latch": self.hardware_latch,
+            "zero_pulse_period": self.zero_pulse_period if pulses else None,
+            "zero_pulse_phase": self.zero_pulse_phase if pulses else None,
+            "hardware_latch": self.hardware_latch if "hardware_latch" in self.uses else None,
             "limit_switches": list(self.limit_switches) if self.limit_switches else None,
             "fixed_stop": self.fixed_stop,
             "cam_jitter": self.cam_jitter,
@@ -116,9 +133,9 @@ class ScenarioData(TypedDict):
 
     start_position: float
     cam: list[float] | None
-    zero_pulse_period: float
-    zero_pulse_phase: float
-    hardware_latch: bool
+    zero_pulse_period: float | None
+    zero_pulse_phase: float | None
+    hardware_latch: bool | None
     limit_switches: list[float] | None
     fixed_stop: float | None
     cam_jitter: float
@@ -179,22 +196,26 @@ def complete(
     spindle: bool = False,
     armed_on_exit: bool = False,
     cam_place: tuple[float, float] | None = None,
+    needs: frozenset[str] = GEOMETRY_NEEDS,
 ) -> Scenario:
     """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry.
 
     On a modulo axis (spindle, rotary axis with MODULO) positions recur every revolution: there are no limit
     switches unless the scenario names them, a spindle has one zero pulse per revolution, and the cam must be
     narrower than a revolution. `cam_place` (distance from the start to the cam, width) replaces the default
-    cam when the scenario names none. Raises ScenarioError for values beyond the unit's plausibility bound."""
+    cam when the scenario names none. Only what the run `needs` (GEOMETRY_NEEDS) is assumed: a cam, limit
+    switches or a fixed stop it does not read stay None unless given, and unread numbers are not listed as
+    assumed. Raises ScenarioError for values beyond the unit's plausibility bound."""
     unit = "deg" if rotary else "mm"
     _check_bounds(given, unit)
     revolution = modulo[1] - modulo[0] if modulo else 0.0
     assumed: list[str] = []
 
-    def pick(name: str, default: _T) -> _T:
+    def pick(name: str, default: _T, needed: bool = True) -> _T:
         value: _T | None = getattr(given, name, None)
         if value is None:
-            assumed.append(name)
+            if needed:
+                assumed.append(name)
             return default
         return value
 
@@ -205,11 +226,12 @@ def complete(
             f"scenario: `start_velocity` ({velocity:g}) is for a spindle turning endlessly when homing starts "
             "(§2.3.2.1); this axis starts homing at standstill: remove it"
         )
-    if velocity is None and spindle:
+    if velocity is None and spindle and "start_velocity" in needs:
         assumed.append("start_velocity")
     cam = getattr(given, "cam", None)
     if cam is None:
-        assumed.append("cam")
+        if "cam" in needs:
+            assumed.append("cam")
         distance, width = cam_place or (DEFAULT_CAM_DISTANCE, max(20.0, 3 * braking))
         near = start + direction * distance
         if revolution:
@@ -220,31 +242,40 @@ def complete(
             f"scenario: `cam` [{cam[0]:g}, {cam[1]:g}] is as wide as the modulo range of "
             f"{revolution:g}° or wider: the cam would be operated all the time"
         )
-    period = pick("zero_pulse_period", revolution if spindle and revolution else (10.0 if rotary else 5.0))
+    pulses = "zero_pulse" in needs
+    period = pick(
+        "zero_pulse_period", revolution if spindle and revolution else (10.0 if rotary else 5.0), pulses
+    )
     # Ideal phase: the first pulse half a period after the cam edge that arms the zero-pulse logic (the edge
     # where the cam is reached; for flying spindle homing the edge where it is left).
     edge = cam[1] if (direction < 0) != armed_on_exit else cam[0]
-    phase = pick("zero_pulse_phase", edge + direction * period / 2)
-    latch = pick("hardware_latch", zero_pulse)
+    phase = pick("zero_pulse_phase", edge + direction * period / 2, pulses)
+    latch = pick("hardware_latch", zero_pulse, "hardware_latch" in needs)
     cycle_ms = getattr(given, "cycle_time_ms", None)
     cycle = cycle_ms / 1000 if cycle_ms is not None else cycle_time
-    if cycle_ms is None:
+    if cycle_ms is None and "cycle_time" in needs:
         assumed.append("cycle_time_ms")
     low, high = soft_limits
-    if modulo:
+    if modulo or "limit_switches" not in needs:
         limits = getattr(given, "limit_switches", None)  # none unless the scenario names them
     else:
         limits = pick("limit_switches", (low - 10.0, high + 10.0))
-    stop = pick("fixed_stop", start + direction * 100.0)
-    jitter = pick("cam_jitter", 0.0)
+    stop = (
+        pick("fixed_stop", start + direction * 100.0)
+        if "fixed_stop" in needs
+        else getattr(given, "fixed_stop", None)
+    )
+    jitter = pick("cam_jitter", 0.0, "cam" in needs)
     if jitter and jitter >= period:
         raise ScenarioError(
             f"scenario: `cam_jitter` ({jitter:g}) must be smaller than the zero-pulse period "
             f"({period:g} {unit})"
         )
+    if "cam" not in needs and getattr(given, "cam", None) is None:
+        cam = None  # the run reads no cam: none is assumed (the default one only placed the pulses)
     return Scenario(
         start,
-        tuple(cam),
+        tuple(cam) if cam else None,
         period,
         phase,
         latch,
@@ -256,6 +287,7 @@ def complete(
         assumed,
         modulo,
         velocity or 0.0,
+        needs,
     )
 
 

@@ -153,33 +153,48 @@ def number_text(value: float, digits: int = 4, fixed: bool = False) -> str:
 
 
 def header_lines(run: DryRun) -> list[str]:
+    """The scenario as far as the run reads it (an absolute axis: its valid position instead), what was
+    assumed, and the homing acceleration of an axis that moves."""
     trace = run.trace
     unit = trace.unit
     scenario = trace.scenario
-    cam = f"[{number_text(scenario.cam[0])}, {number_text(scenario.cam[1])}]" if scenario.cam else "none"
-    switches = (
-        f"[{number_text(scenario.limit_switches[0])}, {number_text(scenario.limit_switches[1])}]"
-        if scenario.limit_switches
-        else "none"
-    )
-    lines = [
-        f"Scenario: start {number_text(scenario.start_position)} {unit}"
-        + (
-            f" turning at {scenario.start_velocity:+g} {unit}/s (endless rotation)"
-            if scenario.start_velocity
-            else ""
+    uses = scenario.uses
+    parts = [f"start {number_text(scenario.start_position)} {unit}"]
+    if scenario.start_velocity:
+        parts[0] += f" turning at {scenario.start_velocity:+g} {unit}/s (endless rotation)"
+    if scenario.cam is not None:
+        parts.append(f"cam [{number_text(scenario.cam[0])}, {number_text(scenario.cam[1])}]")
+    elif "cam" in uses:
+        parts.append("cam none")
+    if "zero_pulse" in uses:
+        parts.append(
+            f"zero pulse every {number_text(scenario.zero_pulse_period)} {unit} "
+            f"(one at {number_text(scenario.zero_pulse_phase)})"
         )
-        + f", cam {cam}, zero pulse every "
-        f"{number_text(scenario.zero_pulse_period)} {unit} (one at {number_text(scenario.zero_pulse_phase)}), "
-        f"{'hardware latch' if scenario.hardware_latch else 'no latch'}, cycle {number_text(scenario.cycle_time * 1000)} ms, "
-        f"limit switches {switches}"
-        + (
-            f", modulo [{number_text(scenario.modulo[0])}, {number_text(scenario.modulo[1])}) {unit}"
-            if scenario.modulo
-            else ""
+    if "hardware_latch" in uses:
+        parts.append("hardware latch" if scenario.hardware_latch else "no latch")
+    if "cycle_time" in uses:
+        parts.append(f"cycle {number_text(scenario.cycle_time * 1000)} ms")
+    if scenario.limit_switches is not None:
+        parts.append(
+            f"limit switches [{number_text(scenario.limit_switches[0])}, {number_text(scenario.limit_switches[1])}]"
         )
-    ]
+    elif "limit_switches" in uses:
+        parts.append("limit switches none")
+    if "fixed_stop" in uses and scenario.fixed_stop is not None:
+        parts.append(f"fixed stop {number_text(scenario.fixed_stop)}")
+    if scenario.modulo:
+        parts.append(f"modulo [{number_text(scenario.modulo[0])}, {number_text(scenario.modulo[1])}) {unit}")
+    lines = ["Scenario: " + ", ".join(parts)]
     lines.append(f"Assumed (not given): {', '.join(scenario.assumed) or 'nothing'}")
+    strategy = trace.strategy
+    if strategy.setup.absolute:
+        lines.append(
+            "Absolute, position valid: the absolute measuring system gives the position at power-up "
+            "(kenngr.abs_pos_gueltig 1, P-AXIS-00014)"
+        )
+    if not strategy.moves and strategy.controlled_by != "drive":
+        return lines  # no homing move: no acceleration to speak of
     if trace.acceleration is None:
         lines.append(f"Homing acceleration: {trace.acceleration_source}")
     else:
