@@ -74,7 +74,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("lint", ("linting.*",)),
     # products built on the stages below: the model, explanations, machine runs, diff, layout, rule docs
     ("model base", ("model.base",)),
-    ("model fields", ("model.generated",)),
+    ("model fields", ("model.generated", "model.generated_channel", "model.generated_startup")),
     (
         "products",
         (
@@ -435,24 +435,32 @@ def test_the_walk_sees_deferred_type_checking_and_registry_imports(tmp_path: Pat
 
 
 def test_linting_a_list_leaves_pydantic_matplotlib_and_pygls_unloaded(tmp_path: Path) -> None:
-    """Start-up time: the CLI and the API lint lists without the model, plotting or editor libraries."""
+    """Start-up time: the CLI and the API lint lists of every kind (and explain a parameter of another kind)
+    without the model, plotting or editor libraries."""
     probe = (
         "import json, sys\n"
         "import achslint\n"
         "from achslint.cli import main\n"
         "code = main(['lint', *sys.argv[1:]])\n"
         "found = achslint.lint(sys.argv[1])\n"
+        "explained = main(['explain', 'P-CHAN-00036'])\n"
         "heavy = [name for name in ('pydantic', 'matplotlib', 'pygls') if name in sys.modules]\n"
-        "print(json.dumps({'code': code, 'found': len(found), 'heavy': heavy}))\n"
+        "print(json.dumps({'code': code, 'found': len(found), 'explained': explained, 'heavy': heavy}))\n"
     )
-    lists = (str(FIXTURES / "multi_rule.lis"), str(FIXTURES / "lists" / "achsmds1.lis"))
+    kinds = FIXTURES / "kinds"
+    lists = (
+        str(FIXTURES / "multi_rule.lis"),
+        str(FIXTURES / "lists" / "achsmds1.lis"),
+        str(kinds / "sda_mds1.lis"),  # a channel list and a start-up list: the kinds with a typed model
+        str(kinds / "basis.lis"),
+    )
     done = subprocess.run(
         [sys.executable, "-c", probe, *lists], cwd=tmp_path, capture_output=True, text=True, timeout=60
     )
     assert done.returncode == 0, done.stderr
     report = json.loads(done.stdout.splitlines()[-1])
     assert report["code"] == 1 and report["found"] > 0  # the lint ran and found what multi_rule.lis holds
-    assert report["heavy"] == []
+    assert report["explained"] == 0 and report["heavy"] == []
 
 
 @pytest.mark.parametrize("definition", strategies(), ids=lambda definition: definition.id)

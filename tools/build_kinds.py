@@ -275,12 +275,22 @@ def main(argv: list[str] | None = None) -> int:
         ]
         for name in stale:
             print(f"{args.output / name} is stale: run python tools/build_kinds.py", file=sys.stderr)
-        return 1 if stale else 0
+        return 1 if stale else _models(args.output, ["--check"])
     args.output.mkdir(parents=True, exist_ok=True)
     for name, text in files.items():
         (args.output / name).write_text(text, encoding="utf-8", newline="\n")
     print(f"wrote {len(files) - 1} kind catalogues and {INDEX_FILE} to {args.output}", file=sys.stderr)
-    return 0
+    return _models(args.output, [])
+
+
+def _models(output: Path, flags: list[str]) -> int:
+    """The typed models of channel and start-up lists are generated from the packaged catalogues (those in
+    OUTPUT): rebuilt, or checked, after them (tools/gen_model.py)."""
+    if output.resolve() != OUTPUT.resolve():
+        return 0
+    import gen_model  # after the catalogues exist: the models are generated from them
+
+    return int(gen_model.main(flags))
 
 
 if __name__ == "__main__":

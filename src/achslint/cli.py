@@ -903,6 +903,12 @@ class SchemaOutput(str, Enum):
     lint = "lint"
 
 
+class SchemaKind(str, Enum):  # the kinds of list with a typed model (achslint.model.MODELS; a test checks)
+    axis = "axis"
+    channel = "channel"
+    startup = "startup"
+
+
 @app.command()
 def server() -> None:
     """Run the language server for editors on standard input/output (needs `pip install 'achslint[lsp]'`)."""
@@ -920,10 +926,15 @@ def schema(
     output: SchemaOutput = typer.Option(
         SchemaOutput.model,
         "--output",
-        help="model: the typed axis parameter model; lint: the output of `lint --format json`.",
+        help="model: the typed parameter model of a kind of list (--kind); lint: the output of "
+        "`lint --format json`.",
+    ),
+    kind: SchemaKind = typer.Option(
+        SchemaKind.axis, "--kind", help="With --output model: the model of axis, channel or start-up lists."
     ),
 ) -> None:
-    """Print a JSON Schema: of the axis parameter model, or of the lint JSON output."""
+    """Print a JSON Schema: of the parameter model of axis, channel or start-up lists, or of the lint JSON
+    output."""
     from .output import write_json
 
     if output == SchemaOutput.lint:
@@ -931,7 +942,7 @@ def schema(
     else:
         from .model import json_schema
 
-        document = json_schema()
+        document = json_schema(kind.value)
     write_json(document, _screen(Color.never))
 
 

@@ -1,7 +1,9 @@
-"""The behaviour of the typed axis model; its fields are generated into `model/generated.py`.
+"""The behaviour of the typed list models; their fields are generated into `model/generated*.py`.
 
-`AxisBase` is the base class of the generated root class `AxisParameters`: it holds where each value came
-from, the CNC's corrections and the rules' findings, and runs the cross-parameter rules when data is validated.
+`ListBase` is the base class of every generated root class: it holds the names the catalogue does not know
+and where each value came from. `AxisBase`, the base of `AxisParameters`, adds the CNC's corrections and the
+rules' findings, and runs the cross-parameter rules when data is validated; the channel and start-up models
+(`ChannelParameters`, `StartupParameters`) sit on `ListBase` itself.
 What that needs sits here too, below the generated classes: how a canonical path names the model's fields
 (`field_name`, `model_parts`), the model written back as a list (`dumps`), and rule findings as one
 `ValidationError` (`rule_errors`).
@@ -13,7 +15,7 @@ import keyword
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from pydantic import (
     BaseModel,
@@ -26,7 +28,8 @@ from pydantic import (
 )
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from ..catalogue import catalogue
+from ..catalogue import Catalogue
+from ..catalogue.kinds import BY_ID
 from ..linting.linter import FileSettings, findings
 
 if TYPE_CHECKING:
@@ -52,14 +55,43 @@ class Source:
 DEFAULT = Source("default")
 
 
-class AxisBase(BaseModel):
-    """Shared behaviour of the generated root model."""
+class ListBase(BaseModel):
+    """Shared behaviour of the generated root models: names the catalogue does not know, where each value
+    came from, and a value by its canonical path."""
 
     model_config = ConfigDict(populate_by_name=True, extra="forbid")
+    KIND: ClassVar[str] = "axis"  # the kind of list (`catalogue.kinds` id) whose catalogue the model mirrors
     unknown: dict[str, str] = Field(
         default_factory=dict, description="Parameters the catalogue does not know, as written."
     )
     _sources: dict[str, Source] = PrivateAttr(default_factory=dict)
+
+    @classmethod
+    def catalogue(cls) -> Catalogue:
+        """The catalogue of the model's kind of list."""
+        cat = BY_ID[cls.KIND].catalogue()
+        if cat is None:
+            raise TypeError(f"{cls.__name__}: no catalogue of {cls.KIND} lists")
+        return cat
+
+    def source_of(self, path: str) -> Source:
+        """Where the value of a canonical path (`getriebe[0].vb_reflow`, `gruppe[0].achs_anzahl`) came from."""
+        return self._sources.get(path, DEFAULT)
+
+    def get(self, path: str) -> Any:
+        """The value of a canonical path, e.g. `getriebe[0].vb_reflow`."""
+        value: Any = self
+        for name, indices in model_parts(type(self), path):
+            value = getattr(value, field_name(name))
+            for index in indices:
+                value = value[index]
+        return value
+
+
+class AxisBase(ListBase):
+    """Shared behaviour of the generated axis model: the CNC's corrections, the rules' findings, and the
+    cross-parameter rules run when data is validated."""
+
     _corrections: list[Correction] = PrivateAttr(default_factory=list)
     _findings: list[Diagnostic] = PrivateAttr(default_factory=list)
 
@@ -83,38 +115,30 @@ class AxisBase(BaseModel):
             raise rule_errors(errors, type(self))
         return self
 
-    def source_of(self, path: str) -> Source:
-        """Where the effective value of a canonical path (`getriebe[0].vb_reflow`) came from."""
-        return self._sources.get(path, DEFAULT)
-
-    def get(self, path: str) -> Any:
-        """The effective value of a canonical path, e.g. `getriebe[0].vb_reflow`."""
-        value: Any = self
-        for name, index in model_parts(type(self), path):
-            value = getattr(value, field_name(name))
-            if index:
-                value = value[int(index)]
-        return value
-
 
 def field_name(name: str) -> str:
     """The Python name of a list member: keywords and `model_*` get a trailing "_", dotted rests are joined
-    with "_". tools/gen_model.py names the generated fields with this same function."""
+    with "_", a name that starts with a digit (`2nd_path_on_actual_1st_path`, P-CHAN-00396) gets "p_" in
+    front. tools/gen_model.py names the generated fields with this same function."""
     if "." in name:
-        return name.replace(".", "_")
-    return name + "_" if keyword.iskeyword(name) or name.startswith("model_") else name
+        name = name.replace(".", "_")
+    elif keyword.iskeyword(name) or name.startswith("model_"):
+        name += "_"
+    return "p_" + name if name[:1].isdigit() else name
 
 
-_MEMBER = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?")
+# A member (it may start with a digit: P-CHAN-00396) and its indices (two for `trafo[i].linkage[i][i]`).
+_MEMBER = re.compile(r"([A-Za-z0-9_]+)((?:\[\d+\])*)")
+_INDEX = re.compile(r"\d+")
 
 
-def model_parts(model: type[BaseModel], path: str) -> list[tuple[str, str]]:
-    """A canonical path as (member, index) pairs of `model`'s fields.
+def model_parts(model: type[BaseModel], path: str) -> list[tuple[str, tuple[int, ...]]]:
+    """A canonical path as (member, indices) pairs of `model`'s fields.
 
     A parameter below another parameter (`kenngr.swe_pos.zero_limit` beside `kenngr.swe_pos`, P-AXIS-00560)
     is one field of the group, named by joining the rest (`swe_pos_zero_limit`): the walk meets a value
     where the path goes on, and the rest is that field."""
-    parts: list[tuple[str, str]] = _MEMBER.findall(path)
+    parts = [(name, tuple(map(int, _INDEX.findall(written)))) for name, written in _MEMBER.findall(path)]
     group: type[BaseModel] = model
     for position, (name, _) in enumerate(parts):
         info = group.model_fields.get(field_name(name))
@@ -123,7 +147,7 @@ def model_parts(model: type[BaseModel], path: str) -> list[tuple[str, str]]:
         inner = inner_model(info.annotation)
         if inner is None:
             if position < len(parts) - 1:
-                return [*parts[:position], (field_name(".".join(n for n, _ in parts[position:])), "")]
+                return [*parts[:position], (field_name(".".join(n for n, _ in parts[position:])), ())]
             break
         group = inner
     return parts
@@ -157,10 +181,9 @@ def rule_errors(diagnostics: Iterable[Diagnostic], model: type[BaseModel]) -> Va
 
 def _loc(model: type[BaseModel], path: str) -> tuple[str | int, ...]:
     loc: list[str | int] = []
-    for name, index in model_parts(model, path):
+    for name, indices in model_parts(model, path):
         loc.append(name)
-        if index:
-            loc.append(int(index))
+        loc.extend(indices)
     return tuple(loc)
 
 
@@ -169,34 +192,45 @@ def _rule_findings(text: str) -> list[Diagnostic]:
     return findings(text.encode("utf-8"), "<model>", settings)
 
 
-def dumps(axis: BaseModel) -> str:
-    """The model as an axis list in canonical layout: every value that differs from the CNC's default, then `Ende`."""
-    lines = [f"{path:<48}{_written(value)}".rstrip() for path, value in _changed(axis, "")]
+def dumps(model: ListBase) -> str:
+    """The model as a list of its kind in canonical layout: every value that differs from the CNC's default,
+    then `Ende`."""
+    cat = type(model).catalogue()
+    lines = [
+        f"{path:<47} {_written(value, symbols)}".rstrip() for path, value, symbols in _changed(model, "", cat)
+    ]
     return "\n".join([*lines, "Ende", ""])
 
 
-def _changed(node: BaseModel, prefix: str) -> Iterator[tuple[str, Any]]:
+def _changed(node: BaseModel, prefix: str, cat: Catalogue) -> Iterator[tuple[str, Any, bool]]:
+    """(path, value, whether the parameter takes symbols) of every value that differs from its default."""
     for name, info in type(node).model_fields.items():
         if name == "unknown":
             continue
-        member = prefix + (info.alias or name)
-        value = getattr(node, name)
-        items = list(enumerate(value)) if isinstance(value, list) else [(None, value)]
-        for index, item in items:
-            path = member if index is None else f"{member}[{index}]"
+        for path, item in _elements(prefix + (info.alias or name), getattr(node, name)):
             if isinstance(item, BaseModel):
-                yield from _changed(item, path + ".")
+                yield from _changed(item, path + ".", cat)
                 continue
-            resolution = catalogue().resolve(path)
+            resolution = cat.resolve(path)
             if resolution is not None and item is not None and item != resolution.parameter.typed_default:
-                yield path, item
+                yield path, item, bool(resolution.parameter.symbols)
 
 
-def _written(value: Any) -> str:
+def _elements(path: str, value: Any) -> Iterator[tuple[str, Any]]:
+    """A field's value with its path, or each element of an array (of arrays) with its indices."""
+    if not isinstance(value, list):
+        yield path, value
+        return
+    for index, item in enumerate(value):
+        yield from _elements(f"{path}[{index}]", item)
+
+
+def _written(value: Any, symbols: bool = False) -> str:
+    """A value as the list writes it; symbols bare, OR-combined flags (`REPORT | PRINT`) too."""
     if isinstance(value, bool):
         return "1" if value else "0"
     if isinstance(value, float):
         return repr(value)
-    if isinstance(value, str) and (not value or any(c in value for c in ' \t"(')):
+    if isinstance(value, str) and not symbols and (not value or any(c in value for c in ' \t"(')):
         return '"' + value.replace('"', "") + '"' if value else ""
     return str(value)
