@@ -11,9 +11,11 @@ from __future__ import annotations
 
 import re
 import sys
+import threading
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from functools import lru_cache
+from operator import attrgetter
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
 
@@ -266,15 +268,65 @@ def parser() -> Lark:
     return Lark(grammar, **options)
 
 
+class _RecentParses:
+    """The lines of the last small texts parsed, so that parsing one again costs copies of them.
+
+    One process often parses the same text again: a start-up list is read for its entries and then
+    linted, a folder's lists are read for the machine rules and linted, the editor lints an unchanged
+    buffer again. Texts up to `text_limit` characters are kept, `total_limit` characters in all (the
+    least recently used go first); each line as the tuple of its fields, from which every parse gets new
+    `Line` objects (about fifty times cheaper than parsing), which the caller may change as before.
+    """
+
+    text_limit = 1 << 16
+    total_limit = 1 << 20
+    _fields = attrgetter(*(f.name for f in fields(Line)))
+
+    def __init__(self) -> None:
+        self._kept: dict[str, list[tuple[Any, ...]]] = {}
+        self._total = 0
+        self._lock = threading.Lock()  # the language server parses on more than one thread
+
+    def lines(self, text: str) -> list[Line] | None:
+        with self._lock:
+            kept = self._kept.pop(text, None)
+            if kept is None:
+                return None
+            self._kept[text] = kept  # now the most recently used
+        return [Line(*values) for values in kept]
+
+    def keep(self, text: str, lines: list[Line]) -> None:
+        if len(text) > self.text_limit:
+            return
+        kept = [self._fields(line) for line in lines]
+        with self._lock:
+            if text not in self._kept:
+                self._total += len(text)
+            self._kept[text] = kept
+            while self._total > self.total_limit:
+                oldest = next(iter(self._kept))
+                del self._kept[oldest]
+                self._total -= len(oldest)
+
+
+_recent = _RecentParses()
+
+
+def _parsed_lines(text: str) -> list[Line]:
+    lines = _recent.lines(text)
+    if lines is None:
+        # The inline transformer builds the result while parsing: `_Builder.start` returns the lines.
+        lines = cast("list[Line]", parser().parse(text))
+        for index, line in enumerate(lines):
+            line.number = index + 1
+        _recent.keep(text, lines)
+    return lines
+
+
 def parse_text(text: str, name: str = "<string>", *, encoding: str = "utf-8", bom: bool = False) -> ListFile:
     """Parse list text (already decoded, without BOM) into a `ListFile`."""
-    # The inline transformer builds the result while parsing: `_Builder.start` returns the lines.
-    lines = cast("list[Line]", parser().parse(text))
-    end_index = None
-    for index, line in enumerate(lines):
-        line.number = index + 1
-        if end_index is None and line.kind == END:
-            end_index = index
+    lines = _parsed_lines(text)
+    end_index = next((index for index, line in enumerate(lines) if line.kind == END), None)
     return ListFile(name=name, lines=lines, encoding=encoding, bom=bom, end_index=end_index)
 
 
