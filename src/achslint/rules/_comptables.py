@@ -124,13 +124,18 @@ class Table:
         return (written, setting) if written else (self.kind.default_max, None)
 
 
-def tables(values: Values) -> Iterator[Table]:
-    """The tables a compensation list writes an entry or a count of."""
+def tables(values: Values, unusable: set[str]) -> Iterator[Table]:
+    """The tables a compensation list writes an entry or a count of; not those with a count (or their
+    max_points) written with a value the list family reports (`unusable`): that count is not known."""
     for kind in TABLES:
         counts = tuple(values.get(path) for path, _ in kind.counts)
         written = entries(values, kind.prefix)
         if not written and all(count is None for count in counts):
             continue
+        if any(path in unusable for path, _ in kind.counts) or kind.max_points in unusable:
+            continue
+        if kind is SSFK and {"kw.ssfk.interval", "kw.ssfk.bilateral"} & unusable:
+            continue  # which members an entry needs is not known
         if any(count is not None and whole(count) is None for count in counts):
             continue  # a count that is not a whole number: the list family's finding
         # a count not written has its default 0: no entry for a number, one entry (index 0) for a last index

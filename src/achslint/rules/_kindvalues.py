@@ -37,6 +37,16 @@ def written(settings: Iterable[Setting]) -> Values:
     return found
 
 
+def unusable(settings: Iterable[Setting]) -> set[str]:
+    """The canonical paths whose last assignment `written` does not read (a wrong type, out of range, a
+    reference): a rule that would take such a parameter's default instead stays silent."""
+    last: dict[str, Setting] = {}
+    for setting, _, path in known_settings(settings):
+        last[path] = setting
+    usable = written(last.values())
+    return {path for path in last if path not in usable}
+
+
 def read_settings(data: bytes, name: str, cat: Catalogue) -> list[Setting]:
     """The assignments of a list read from bytes (a list a start-up list names, for the machine rules).
 
@@ -174,12 +184,12 @@ def loaded_settings(machine: Machine, entry: StartupEntry, what: str, kind: Kind
         return None
 
 
-def startup_values(startup: Startup) -> Values | None:
-    """The usable assignments of a start-up list (its entries beyond the list names the machine keeps:
-    `achs_kw_log_ax_nr[i]` ...), read through its reader; None when it cannot be read."""
+def startup_settings(startup: Startup) -> list[Setting] | None:
+    """The assignments of a start-up list (its entries beyond the lists the machine keeps:
+    `achs_kw_log_ax_nr[i]`, `kanal_anzahl` ...), read through its reader; None when it cannot be read."""
     cat = STARTUP.catalogue()
     assert cat is not None
     try:
-        return written(read_settings(startup.reader(startup.path), str(startup.path), cat))
+        return read_settings(startup.reader(startup.path), str(startup.path), cat)
     except (OSError, UnreadableInput):
         return None

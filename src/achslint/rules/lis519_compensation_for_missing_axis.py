@@ -3,7 +3,7 @@ What
 ----
 An axis compensation list `achs_kw[i]` (P-STUP-00017) of the start-up list
 that is assigned to no axis of the machine: its axis assignment
-`achs_kw_log_ax_nr[i]` (P-STUP-00036) is not written, or names a logical axis
+`achs_kw_log_ax_nr[i]` (P-STUP-00036) is not written or 0, or names a logical axis
 number that none of the machine's axis lists has as its `kopf.achs_nr`
 (P-AXIS-00016). Only the compensation lists the CNC reads are judged (below
 `zahl_kw` when it is written, LIS516), and a missing axis only when every
@@ -87,7 +87,7 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ._crosslist import by_number, every_axis_list_read, index
-from ._kindvalues import at_setting, startup_values, whole
+from ._kindvalues import at_setting, startup_settings, unusable, whole, written
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -102,9 +102,10 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
     if startup is None or not startup.compensations:
         return
-    values = startup_values(startup)
-    if values is None:
+    settings = startup_settings(startup)
+    if settings is None:
         return
+    values, unread = written(settings), unusable(settings)
     count = whole(values.get("zahl_kw"))
     numbers = by_number(machine.members) if every_axis_list_read(startup, machine.members) else None
     name = str(startup.path)
@@ -113,6 +114,8 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             continue  # never loaded: LIS516
         key = f"achs_kw_log_ax_nr[{index(entry)}]"
         assignment = values.get(key)
+        if key in unread:
+            continue  # written, but not a usable number: the start-up list's own finding (LIS202)
         if assignment is None:
             yield Diagnostic(
                 name,
@@ -128,6 +131,17 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             )
             continue
         number = whole(assignment)
+        if number == 0:  # the default, accepted as written: it is no logical axis number (1 ... MAX(UNS16))
+            yield at_setting(
+                CODE,
+                name,
+                assignment,
+                Severity.WARNING,
+                f"`{key}` = 0 assigns the axis compensation list `{entry.raw}` to no axis (logical axis numbers "
+                "start at 1), so no axis uses the list; give the number of the axis it compensates",
+                [Related(name, entry.line, entry.column, entry.key, "the compensation list")],
+            )
+            continue
         if numbers is None or number is None or number in numbers:
             continue
         known = ", ".join(str(n) for n in sorted(numbers)) or "none"

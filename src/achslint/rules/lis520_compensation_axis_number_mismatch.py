@@ -79,7 +79,16 @@ from typing import TYPE_CHECKING
 from ..catalogue.kinds import COMPENSATION
 from ..core.diagnostics import Diagnostic, Severity
 from ._crosslist import index
-from ._kindvalues import at_setting, loaded_settings, related_at, shown_path, startup_values, whole, written
+from ._kindvalues import (
+    at_setting,
+    loaded_settings,
+    related_at,
+    shown_path,
+    startup_settings,
+    unusable,
+    whole,
+    written,
+)
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -94,22 +103,23 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
     if startup is None or not startup.compensations:
         return
-    values = startup_values(startup)
-    if values is None:
+    listed = startup_settings(startup)
+    if listed is None:
         return
+    values = written(listed)
     count = whole(values.get("zahl_kw"))
     for entry in startup.compensations:
         if entry.path is None or (count is not None and index(entry) >= count):
             continue  # missing (LIS504) or never loaded (LIS516)
         assignment = values.get(f"achs_kw_log_ax_nr[{index(entry)}]")
         expected = whole(assignment)
-        if assignment is None or expected is None:
-            continue  # no assignment: LIS519
+        if assignment is None or not expected:
+            continue  # no assignment (or 0, no axis): LIS519
         settings = loaded_settings(machine, entry, "axis compensation list", COMPENSATION)
         if settings is None:
             continue
         header = written(settings).get("kopf.achs_nr")
-        if header is None and any(setting.canonical == "kopf.achs_nr" for setting in settings):
+        if "kopf.achs_nr" in unusable(settings):
             continue  # written, but not a usable number: the list's own finding (LIS201, LIS202)
         number = whole(header) if header is not None else 0
         if number == expected or number is None:

@@ -92,7 +92,7 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
 from ..syntax.parser import path_pattern
-from ._kindvalues import at_setting, related_at, shown, startup_values, whole
+from ._kindvalues import at_setting, related_at, shown, startup_settings, whole, written
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -116,7 +116,8 @@ def _channels(count: int) -> str:
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
-    values = startup_values(startup) if startup is not None else None
+    settings = startup_settings(startup) if startup is not None else None
+    values = written(settings) if settings is not None else None
     setting = values.get("kanal_anzahl") if values is not None else None
     count = whole(setting)
     if values is None or setting is None or count is None:

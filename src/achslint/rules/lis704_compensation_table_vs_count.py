@@ -72,7 +72,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ._comptables import tables
-from ._kindvalues import shown, written
+from ._kindvalues import shown, unusable, written
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -87,7 +87,7 @@ KINDS = ("compensation",)
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     values = written(ctx.settings)
-    for table in tables(values):
+    for table in tables(values, unusable(ctx.settings)):
         if table.size > table.max_points(values)[0]:
             continue  # a count out of its range: LIS705 (what the CNC makes of the table is not known)
         counts = [count for count in table.counts if count is not None]

@@ -65,7 +65,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ._comptables import tables
-from ._kindvalues import written
+from ._kindvalues import unusable, written
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -80,7 +80,7 @@ KINDS = ("compensation",)
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     values = written(ctx.settings)
-    for table in tables(values):
+    for table in tables(values, unusable(ctx.settings)):
         limit, reserved = table.max_points(values)
         counts = [count for count in table.counts if count is not None]
         if not counts or table.size <= limit:
