@@ -553,8 +553,8 @@ def explain(
         _fail("--program goes with a start-up list (hochlauf.lis)")
     elif problem is None or problem not in NOT_A_FILE:
         defaults, under = _loaded_under(path)
-        report = explain_list(_one_list(path, target), target, gear, defaults, under)
-        shown.LIST[output_format.value](report, screen)
+        axis_report = explain_list(_one_list(path, target), target, gear, defaults, under)
+        shown.LIST[output_format.value](axis_report, screen)
     else:
         found = _parameter(target, kind.value if kind is not None else None)
         shown.PARAMETER[output_format.value](parameter_card(found.parameter, found.kind), screen)
