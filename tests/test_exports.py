@@ -1,4 +1,5 @@
-"""TwinCAT exports: axis XML found by content, other XML skipped with a note, an export folder is one machine."""
+"""TwinCAT exports: axis XML and channel items found by content (each embedded list linted as its kind), other
+XML skipped with a note, an export folder is one machine."""
 
 from __future__ import annotations
 
@@ -44,10 +45,10 @@ def test_export_folder_is_found_by_content_and_is_one_machine(cli, tmp_path):
     result = cli("lint", str(folder), "--format", "json", "--fail-on", "warning")
     assert result.returncode == 1, result.stderr.decode()  # LIS501 is a warning
     assert codes(result) == [("Axis_Z.xti", "LIS501")]  # across files, not only inside one
-    assert json.loads(result.stdout)["summary"]["files"] == 3
+    # the channel item is linted too (its channel list), the zero offsets of another tool are not a list
+    assert json.loads(result.stdout)["summary"]["files"] == 4
     notes = result.stderr.decode().splitlines()
-    assert len(notes) == 2 and all("skipped, an XML file without an axis list" in n for n in notes)
-    assert any("Channel_1.xti" in n and "<TreeItem>" in n for n in notes)
+    assert len(notes) == 1 and "ZeroOffsets.xml: skipped, an XML file without a list" in notes[0]
 
 
 def test_non_axis_xml_named_with_axis_xml_is_skipped_not_an_abort(cli, tmp_path):
@@ -61,18 +62,33 @@ def test_non_axis_xml_named_with_axis_xml_is_skipped_not_an_abort(cli, tmp_path)
         "json",
     )
     assert result.returncode == 0, result.stderr.decode()
-    assert json.loads(result.stdout)["summary"]["files"] == 1
-    assert result.stderr.decode().count("skipped") == 2
-    quiet = cli("lint", str(folder / "Axis_X.xti"), str(folder / "Channel_1.xti"), "-q")
+    assert json.loads(result.stdout)["summary"]["files"] == 2  # the axis and the channel item
+    assert result.stderr.decode().count("skipped") == 1
+    quiet = cli("lint", str(folder / "Axis_X.xti"), str(folder / "ZeroOffsets.xml"), "-q")
     assert quiet.returncode == 0 and quiet.stderr == b""
 
 
 def test_a_folder_of_only_other_xml_is_an_empty_run(cli, tmp_path):
-    folder = tmp_path / "Update"
+    folder = tmp_path / "Export"
     folder.mkdir()
-    (folder / "Channel_1.xti").write_text(CHANNEL)
+    (folder / "ZeroOffsets.xml").write_text(ZERO_OFFSETS)
     result = cli("lint", str(folder))
     assert result.returncode == 2 and "no axis list found" in result.stderr.decode()
+
+
+def test_the_lists_of_a_channel_item_are_linted_as_their_kinds(cli, tmp_path):
+    # <IsgChannelDef>: SdaMds is a channel list, NullpD zero offsets (format.md §12); a finding lands on the
+    # XML line of the parameter
+    item = tmp_path / "Channel_1.xti"
+    item.write_text(
+        '<?xml version="1.0"?>\n<TreeItem><IsgChannelDef>\n<SdaMds><![CDATA[gruppe[0].achse[0].bezeichnunk X\n'
+        "Ende\n]]></SdaMds>\n<NullpD><![CDATA[Ende\n]]></NullpD></IsgChannelDef></TreeItem>\n"
+    )
+    result = cli("lint", str(item), "--format", "json")
+    assert result.returncode == 0, result.stderr.decode()
+    [finding] = json.loads(result.stdout)["diagnostics"]
+    assert (finding["code"], finding["line"], finding["column"]) == ("LIS101", 3, 18)
+    assert "channel list" in finding["message"] and "gruppe[0].achse[0].bezeichnung" in finding["message"]
 
 
 def test_fmt_leaves_xml_found_in_a_folder_alone(cli, tmp_path):

@@ -118,3 +118,42 @@ def test_a_start_up_list_named_otherwise_is_explained_and_compared_as_a_machine(
     # a folder holding it is a machine too
     folders = run_cli("diff", str(listen), str(backup / "listen"), "--format", "json")
     assert folders.returncode == 0 and json.loads(folders.stdout)["differ"] is False, folders.stderr
+
+
+_TREE_ITEM = """<?xml version="1.0" encoding="utf-8"?>
+<TreeItem><ItemName>Axis_{name}</ItemName><PathName>TICC^CNC^Axes^Axis_{name}</PathName><ItemId>{item}</ItemId>
+<IsgAxisDef><DriveType>4</DriveType><Spindle>false</Spindle><DefaultChannel>1</DefaultChannel>
+<DefaultProgName>{name}</DefaultProgName>
+<AchsMds><![CDATA[#TC_AXIS_DESC:    axis
+kopf.achs_nr                     {number}
+kopf.log_achs_name               {header}
+kenngr.antr_typ                  4
+{extra}Ende
+]]></AchsMds></IsgAxisDef></TreeItem>
+"""
+
+
+def _export(folder: Path, numbers: tuple[int, int, int]) -> Path:
+    folder.mkdir()
+    for item, (name, number) in enumerate(zip("XYZ", numbers, strict=True), start=1):
+        # Y is a gantry slave of logical axis 7, which no axis of the export has by its header
+        extra = "kenngr.gantry_ax_nr              7\n" if name == "Y" else ""
+        header = "X_Achse" if len(set(numbers)) == 1 else name
+        (folder / f"Axis_{name}.xti").write_text(
+            _TREE_ITEM.format(name=name, item=item, number=number, header=header, extra=extra)
+        )
+    return folder
+
+
+def test_gantry_rules_do_not_pair_axes_by_the_template_number_of_an_export(tmp_path: Path) -> None:
+    # Every axis embeds TwinCAT's template header (kopf.achs_nr 1): that number is not the axis's, so the
+    # gantry rules cannot tell whether logical axis 7 exists — no LIS503 from a template number.
+    template = _export(tmp_path / "template", (1, 1, 1))
+    found = json.loads(run_cli("lint", str(template), "--format", "json").stdout)["diagnostics"]
+    assert [d["code"] for d in found if d["code"].startswith("LIS5")] == []
+    # With headers that tell the axes apart (1, 2, 3) the number is the axis's: the missing master is LIS503.
+    numbered = _export(tmp_path / "numbered", (1, 2, 3))
+    found = json.loads(run_cli("lint", str(numbered), "--format", "json").stdout)["diagnostics"]
+    assert [(Path(d["path"]).name, d["code"]) for d in found if d["code"].startswith("LIS5")] == [
+        ("Axis_Y.xti", "LIS503")
+    ]

@@ -127,13 +127,13 @@ def test_source_text_never_holds_a_lone_surrogate(encoding, body):
 
 
 def test_a_skipped_xml_in_an_unusable_encoding_gets_its_note(run, tmp_path):
-    # An XML file without an axis list is only named in a note; working out its root element must not
+    # An XML file without a list is only named in a note; working out its root element must not
     # decode it with a codec that fails.
     (tmp_path / "achsmds1.lis").write_bytes(DUPLICATE)
     (tmp_path / "tools.xml").write_bytes(b'<?xml version="1.0" encoding="IDNA"?>\n<Tools>.xn--a</Tools>\n')
     code, out, err = run("lint", tmp_path)
     assert "internal error" not in err and "Traceback" not in err
-    assert "skipped, an XML file without an axis list (<Tools>)" in err
+    assert "skipped, an XML file without a list (<Tools>)" in err
     assert code == 0 and "achsmds1.lis:2:1: LIS005" in out
 
 

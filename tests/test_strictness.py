@@ -84,7 +84,7 @@ def test_unknown_code_in_a_file_level_noqa_is_reported():
 def test_no_list_found_is_exit_2_unless_allowed(cli, tmp_path, make):
     if make == "xml-only":
         (tmp_path / "Update").mkdir()
-        (tmp_path / "Update" / "channel.xml").write_text("<IsgChannelDef><SdaMds>x</SdaMds></IsgChannelDef>")
+        (tmp_path / "Update" / "tools.xml").write_text("<Tools><Tool>x</Tool></Tools>")
     elif make == "wrong-names":
         (tmp_path / "notes.txt").write_text("kenngr.antr_typ 1\n")
     result = cli("lint", str(tmp_path))

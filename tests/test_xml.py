@@ -86,10 +86,10 @@ def test_broken_xml_is_exit_2_and_listless_xml_is_skipped(cli, tmp_path):
     assert result.returncode == 2 and b"not well-formed" in result.stderr
     empty = tmp_path / "empty.xml"
     empty.write_bytes(b"<TreeItem/>")
-    # XML without an axis list (a channel item of a TwinCAT export, say) is skipped with a note, as other
-    # kinds of list are: pre-commit may pass it alone, and that is no failure.
+    # XML without any list achslint reads is skipped with a note: pre-commit may pass it alone, and that is no
+    # failure.
     skipped = cli("lint", str(empty))
-    assert skipped.returncode == 0 and b"skipped, an XML file without an axis list" in skipped.stderr
+    assert skipped.returncode == 0 and b"skipped, an XML file without a list" in skipped.stderr
 
 
 def test_cli_json_for_xml(cli, tmp_path):

@@ -589,17 +589,18 @@ def _unique(startups: list[Startup]) -> list[Startup]:
 
 
 def _axis_xml(path: Path, found: Discovery) -> bool:
-    """Whether an XML file found in a folder may hold axis lists; the others get a note."""
-    from ..syntax.xmlinput import may_hold_axis_list, root_element
+    """Whether an XML file found in a folder may hold lists (axis lists, a TwinCAT channel item); the others
+    get a note."""
+    from ..syntax.xmlinput import may_hold_list, root_element
 
     try:
         data = read_list(path)
     except OSError as exc:
         found.errors.append(f"cannot read {path}: {reason(exc)}")
         return False
-    if may_hold_axis_list(data):
+    if may_hold_list(data):
         return True
-    found.notes.append(f"{path}: skipped, an XML file without an axis list (<{root_element(data)}>)")
+    found.notes.append(f"{path}: skipped, an XML file without a list (<{root_element(data)}>)")
     return False
 
 

@@ -264,46 +264,54 @@ def _mapped_summary(summary: Summary, embedded: EmbeddedList) -> Summary:
 def _check_xml(
     data: bytes, name: str, settings: FileSettings, default_file: ListFile | None = None
 ) -> FileResult:
-    """Lint every list in an XML file; positions are moved to the XML file's lines and columns."""
+    """Lint every list in an XML file — its axis lists, and the lists of a TwinCAT channel item against their
+    own kinds —; positions are moved to the XML file's lines and columns."""
     from ..syntax.parser import parse_text, split_lines
-    from ..syntax.xmlinput import NoAxisList, extract, root_element, source_text
+    from ..syntax.xmlinput import NoAxisList, extract_lists, root_element, source_text
 
     try:
-        lists = extract(data, name)
+        lists = extract_lists(data, name)
     except NoAxisList:
         return FileResult(
             name,
             [],
-            note=f"{name}: skipped, an XML file without an axis list "
-            f"(<{root_element(data)}>: no <AchsMds> or <AX_MDS> in it)",
+            note=f"{name}: skipped, an XML file without a list "
+            f"(<{root_element(data)}>: no <AchsMds>, <AX_MDS> or <IsgChannelDef> in it)",
         )
     except UnreadableInput as exc:
         return FileResult(name, [], str(exc))
     diagnostics: list[Diagnostic] = []
     members: list[Member] = []
     for embedded in lists:
-        result = _check_file(parse_text(embedded.text, name), name, settings, embedded, default_file)
-        members.append((name, _mapped_summary(result.summary or {}, embedded)))
-        for d in result.diagnostics:
-            d.line, d.column = embedded.position(d.line, d.column)
-            d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
-            if d.end_line < d.line or (d.end_line == d.line and d.end_column <= d.column):
-                d.end_line, d.end_column = d.line, d.column + 1
-            d.related = tuple(
-                replace(
-                    r,
-                    line=embedded.position(r.line, r.column)[0],
-                    column=embedded.position(r.line, r.column)[1],
-                )
-                for r in d.related
-            )
-            d.fix = None  # edits refer to the embedded text; XML files are not rewritten
-            diagnostics.append(d)
+        file = parse_text(embedded.text, name)
+        kind = BY_ID.get(embedded.kind, AXIS)
+        if kind.id == AXIS.id:
+            result = _check_file(file, name, settings, embedded, default_file)
+            members.append((name, _mapped_summary(result.summary or {}, embedded)))
+        elif kind.has_catalogue:
+            result = _check_other_kind(file, name, settings, kind)
+        else:  # pragma: no cover - every list a channel item holds has a catalogue
+            continue
+        diagnostics.extend(_moved(d, embedded) for d in result.diagnostics)
     if len(members) > 1 and settings.machine_in_file:  # a TwinCAT project: its axes form one machine
         diagnostics.extend(run(Scope.MACHINE, (Machine(name, members=members),), settings.policy))
     diagnostics.sort(key=Diagnostic.sort_key)
     lines = split_lines(source_text(data)) if diagnostics and settings.keep_source else []
     return FileResult(name, diagnostics, None, lines, summaries=[summary for _, summary in members])
+
+
+def _moved(d: Diagnostic, embedded: EmbeddedList) -> Diagnostic:
+    """A finding on an embedded list, moved to the XML file's line and column (no fix: XML is not rewritten)."""
+    d.line, d.column = embedded.position(d.line, d.column)
+    d.end_line, d.end_column = embedded.position(d.end_line, d.end_column)
+    if d.end_line < d.line or (d.end_line == d.line and d.end_column <= d.column):
+        d.end_line, d.end_column = d.line, d.column + 1
+    d.related = tuple(
+        replace(r, line=embedded.position(r.line, r.column)[0], column=embedded.position(r.line, r.column)[1])
+        for r in d.related
+    )
+    d.fix = None  # edits refer to the embedded text; XML files are not rewritten
+    return d
 
 
 def findings(data: bytes, name: str, settings: FileSettings | None = None) -> list[Diagnostic]:

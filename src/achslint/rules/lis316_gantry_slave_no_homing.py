@@ -73,7 +73,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
-    members = machine.members
+    members = machine.numbered()  # not by a template number TwinCAT repeats in every export
     by_number = {info["achs_nr"]: (name, info) for name, info in members}
     for name, info in members:
         master = by_number.get(info["gantry_ax_nr"]) if info["gantry_ax_nr"] else None

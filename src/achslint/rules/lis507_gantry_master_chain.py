@@ -135,7 +135,7 @@ def circle_words(fault: CouplingFault[Axis]) -> str:
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
-    members = machine.members
+    members = machine.numbered()  # not by a template number TwinCAT repeats in every export
     by_number: dict[int, Member] = {}
     for member in members:
         if isinstance(member[1]["achs_nr"], int):

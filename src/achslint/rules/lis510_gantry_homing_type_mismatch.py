@@ -81,7 +81,7 @@ SUMMARY = "Gantry master and slave with different homing types"
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
-    members = machine.members
+    members = machine.numbered()  # not by a template number TwinCAT repeats in every export
     for slave, master in gantry_pairs(members):
         if master is None or slave[1]["homing_type"] == master[1]["homing_type"]:
             continue

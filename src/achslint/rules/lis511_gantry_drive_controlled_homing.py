@@ -92,7 +92,7 @@ DRIVE = "DRIVE_CONTROLLED"
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
-    members = machine.members
+    members = machine.numbered()  # not by a template number TwinCAT repeats in every export
     slaves: dict[int, tuple[Member, list[Member]]] = {}  # by id of the master's summary
     for slave, master in gantry_pairs(members):
         if master is not None:

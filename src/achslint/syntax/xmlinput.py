@@ -8,6 +8,10 @@
   (`TICC^CNC^Axes^<name>`), `<ItemId>` and `<ObjectId>`, with the
   `<DefaultChannel>` / `<DefaultIndex>` / `<DefaultProgName>` of the
   `<IsgAxisDef>`, are the identity TwinCAT gives the axis (`TreeItem`).
+  The channel's tree item holds `<IsgChannelDef>` with the channel's other lists
+  as text the same way (`_CHANNEL_ITEM_LISTS`: `<SdaMds>` the channel list,
+  `<NullpD>` zero offsets, `<WerkzD>` tool data, `<PzvD>` clamp position
+  offsets, `<VeD>` external variables; each with its list kind).
 * ISG XML lists: `<AX_MDS>` with one element per parameter, named by id and
   index (`<P-AXIS-00152.0 Value="0"/>`), inside optional grouping elements.
 
@@ -46,6 +50,14 @@ _ISG_ELEMENT = re.compile(r"(P-AXIS-[0-9]+)((?:\.[0-9]+)*)")
 # Elements of the <IsgAxisDef> itself, and those of the tree item around it (children of its parent element)
 _AXIS_FIELDS = frozenset(("DriveType", "Spindle", "DefaultChannel", "DefaultIndex", "DefaultProgName"))
 _ITEM_FIELDS = frozenset(("ItemName", "PathName", "ItemId", "ObjectId"))
+# The lists a TwinCAT channel item (<IsgChannelDef>) holds as text, with the kind of each (`catalogue.kinds` ids)
+_CHANNEL_ITEM_LISTS = {
+    "SdaMds": "channel",
+    "NullpD": "zero_offsets",
+    "WerkzD": "tools",
+    "PzvD": "clamp_offsets",
+    "VeD": "external_variables",
+}
 # (text, XML line, XML column) of one such element, by element name
 Fields = dict[str, tuple[str, int, int]]
 
@@ -119,10 +131,10 @@ class TreeItem:
 
 @dataclass
 class EmbeddedList:
-    """One axis list found in an XML file, with what is needed to map positions back."""
+    """One list found in an XML file, with what is needed to map positions back."""
 
     text: str
-    label: str  # "AchsMds" or "AX_MDS"
+    label: str  # "AchsMds" or "AX_MDS"; "SdaMds", "NullpD" ... for the lists of a channel item
     first_line: int  # XML line of the element that holds the list
     first_column: int
     line_map: list[tuple[int, int]] | None = None  # ISG: XML (line, column) of every synthetic line
@@ -135,6 +147,7 @@ class EmbeddedList:
     # text offsets (ascending) and the XML (line, column) of each.
     pieces: list[int] = field(default_factory=list)
     piece_positions: list[tuple[int, int]] = field(default_factory=list)
+    kind: str = "axis"  # the list kind (`catalogue.kinds` id): the lists of a channel item are of others
 
     @cached_property
     def _line_starts(self) -> list[int]:
@@ -171,6 +184,11 @@ _MARKERS = tuple(
     for marker in ("<AchsMds", "<AX_MDS", ":AchsMds", ":AX_MDS")
     for encoding in ("ascii", "utf-16-le", "utf-16-be")
 )
+_CHANNEL_MARKERS = tuple(
+    marker.encode(encoding)
+    for marker in ("<IsgChannelDef", ":IsgChannelDef")
+    for encoding in ("ascii", "utf-16-le", "utf-16-be")
+)
 
 
 def may_hold_axis_list(data: bytes) -> bool:
@@ -180,6 +198,11 @@ def may_hold_axis_list(data: bytes) -> bool:
     (`Axis_X.xti`), and the same folder holds channel lists and zero-offset tables.
     """
     return any(marker in data for marker in _MARKERS)
+
+
+def may_hold_list(data: bytes) -> bool:
+    """Whether an XML file can hold any list achslint reads: an axis list, or a TwinCAT channel item."""
+    return may_hold_axis_list(data) or any(marker in data for marker in _CHANNEL_MARKERS)
 
 
 def root_element(data: bytes) -> str:
@@ -230,7 +253,9 @@ class _Collector(ContentHandler):
         self.isg: list[tuple[EmbeddedList, list[str], list[tuple[int, int]]]] = []
         self.isg_depth = 0  # how many <AX_MDS> elements we are inside
         self.axis_defs: list[list[EmbeddedList]] = []  # the <IsgAxisDef> elements we are inside
-        self.current: EmbeddedList | None = None  # the <AchsMds> being read
+        self.current: EmbeddedList | None = None  # the <AchsMds> (or list of a channel item) being read
+        self.channel_defs = 0  # how many <IsgChannelDef> elements we are inside
+        self.others: list[EmbeddedList] = []  # the lists of channel items
         self.chunks: list[str] = []
         self.offset = 0
         self.field: tuple[str, int, int] | None = None  # an element of _AXIS_FIELDS / _ITEM_FIELDS being read
@@ -256,6 +281,11 @@ class _Collector(ContentHandler):
             self.axis_fields.append({})
         elif local == "AchsMds" and self.current is None:
             self.current = EmbeddedList("", "AchsMds", line, column)
+            self.chunks, self.offset = [], 0
+        elif local == "IsgChannelDef":
+            self.channel_defs += 1
+        elif self.channel_defs and local in _CHANNEL_ITEM_LISTS and self.current is None:
+            self.current = EmbeddedList("", local, line, column, kind=_CHANNEL_ITEM_LISTS[local])
             self.chunks, self.offset = [], 0
         elif (local in _AXIS_FIELDS and self.axis_defs) or local in _ITEM_FIELDS:
             self.field, self.field_text = (local, line, column), []
@@ -284,6 +314,12 @@ class _Collector(ContentHandler):
             if self.axis_defs:
                 self.axis_defs[-1].append(self.current)
             self.current = None
+        elif self.current is not None and local == self.current.label:  # a list of a channel item
+            self.current.text = "".join(self.chunks)
+            self.others.append(self.current)
+            self.current = None
+        elif local == "IsgChannelDef" and self.channel_defs:
+            self.channel_defs -= 1
         elif self.field is not None and local == self.field[0]:
             read = ("".join(self.field_text).strip(), *self.field[1:])
             if local in _ITEM_FIELDS:
@@ -387,7 +423,22 @@ def _where(exc: SAXException) -> str:
 
 def extract(data: bytes, name: str) -> list[EmbeddedList]:
     """Every axis list in an XML file. Raises `UnreadableInput` for unsafe or broken XML, or XML without lists."""
+    return _axis_lists(_parse(data, name), name)
+
+
+def extract_lists(data: bytes, name: str) -> list[EmbeddedList]:
+    """Every list in an XML file: its axis lists, then the lists of its TwinCAT channel items (their `kind`
+    says which). Raises `UnreadableInput` for unsafe or broken XML, `NoAxisList` for XML without any list."""
     collected = _parse(data, name)
+    try:
+        return [*_axis_lists(collected, name), *collected.others]
+    except NoAxisList:
+        if collected.others:
+            return list(collected.others)
+        raise
+
+
+def _axis_lists(collected: _Collector, name: str) -> list[EmbeddedList]:
     found = list(collected.twincat)
     if not found:
         for embedded, lines, _ in collected.isg:
