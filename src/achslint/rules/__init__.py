@@ -108,13 +108,7 @@ class Rule:
 
     def checker(self, scope: Scope) -> Check | None:
         """The rule's check for `scope`, or None when the rule does not look at that scope."""
-        found = next((check for own, check in self.checks if own is scope), None)
-        if found is not None and scope is Scope.MACHINE and found.__code__.co_argcount == 2:
-            # TODO(session 23): a machine rule written against the old (members, startups) signature, while
-            # the rules are moved to one machine; removed before this session ends.
-            old = found
-            return lambda machine: old(machine.members, machine.startups)
-        return found
+        return next((check for own, check in self.checks if own is scope), None)
 
     @property
     def needs_whole_axis(self) -> bool:
