@@ -284,6 +284,8 @@ def _trigger(sim: Simulator, search: SearchInput, cam_shift: float) -> tuple[Act
         return (lambda x: False), (lambda x, s, initially: INF)
     lo, hi = scenario.cam[0] + cam_shift, scenario.cam[1] + cam_shift
     low = search.active_low
+    if sim.modulo:
+        return _modulo_cam(lo, hi, low, sim.revolution)
 
     def active(x: float) -> bool:
         return (lo <= x <= hi) != low
@@ -295,5 +297,25 @@ def _trigger(sim: Simulator, search: SearchInput, cam_shift: float) -> tuple[Act
         if s > 0:
             return lo - x if x < lo else INF
         return x - hi if x > hi else INF
+
+    return active, edge
+
+
+def _modulo_cam(lo: float, hi: float, low: bool, period: float) -> tuple[Active, TriggerEdge]:
+    """The cam trigger of a modulo axis: the cam [lo, hi] recurs every revolution, so a search that wraps past
+    the modulo range meets it on the next revolution (its distance is always finite)."""
+    width = hi - lo
+
+    def offset(x: float) -> float:  # where x lies past the cam's start, within one revolution
+        return (x - lo) % period
+
+    def active(x: float) -> bool:
+        return (offset(x) <= width) != low
+
+    def edge(x: float, s: int, initially: bool) -> float:
+        r = offset(x)
+        if r <= width:  # on the cam: to its end (s > 0) or back to its start
+            return width - r if s > 0 else r
+        return period - r if s > 0 else r - width  # off the cam: to its next start or back to its end
 
     return active, edge
