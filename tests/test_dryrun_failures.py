@@ -135,3 +135,22 @@ def test_the_plot_range_includes_the_position_searched_for():
     labels = [text.get_text() for text in top.get_legend().get_texts()]
     assert any(label.startswith("searched for: the zero pulse at −30 mm") for label in labels)
     plt.close("all")
+
+
+TORQ = (
+    b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+    b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+    b"kenngr.homing.torq_max_distance 2000000\nEnde\n"
+)
+
+
+def test_a_fixed_stop_beyond_torq_max_distance_names_both():
+    # torq_max_distance 2000000 × 0.1 µm = 200 mm (§2.3.3.4); the stop at 300 mm lies 300 mm from the start 0.
+    trace = dry_run(TORQ, "t.lis", ScenarioInput(start_position=0.0, fixed_stop=300.0)).trace
+    assert trace.failure == (
+        "no fixed stop within torq_max_distance (200 mm): the fixed stop at 300 mm lies 300 mm away; homing aborted"
+    )
+    assert trace.searched == ("the fixed stop", 300.0)
+    behind = dry_run(TORQ, "t.lis", ScenarioInput(start_position=0.0, fixed_stop=-300.0)).trace
+    assert "the scenario has no fixed stop ahead in the positive direction" in behind.failure
+    assert behind.searched is None

@@ -12,6 +12,7 @@ from ..motion import (
     Simulator,
     Trace,
     direction_word,
+    number,
     point_to_point,
 )
 
@@ -55,7 +56,21 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
                 segments,
             )
         )
-        trace.outcome, trace.failure = "failed", "no fixed stop within torq_max_distance: homing aborted"
+        unit = sim.unit
+        if stop is not None and reach > 0:
+            trace.searched = ("the fixed stop", stop)
+            beyond = f"the fixed stop at {number(stop)} {unit} lies {number(reach)} {unit} away"
+        else:
+            beyond = f"the scenario has no fixed stop ahead in the {direction_word(s)} direction"
+        limit_words = (
+            f"torq_max_distance ({number(max_distance)} {unit})"
+            if max_distance > 0
+            else f"torq_max_distance (0: bounded by {sim.bound(x, s, 0.0)[1]})"
+        )
+        trace.outcome, trace.failure = (
+            "failed",
+            f"no fixed stop within {limit_words}: {beyond}; homing aborted",
+        )
         return trace
     t_contact = ramp.time_to(reach)
     # At the stop the axis is blocked: the motion ends abruptly at the stop position.
