@@ -188,7 +188,8 @@ SCHEMA = {
                 "severity": {"enum": ["error", "warning", "info"]},
                 "message": {"type": "string", "minLength": 1},
                 "parameter": _TEXT_OR_NULL,
-                "p_axis": {"type": ["string", "null"], "pattern": "^P-AXIS-[0-9]{5}$"},
+                # the parameter's id in its list kind's catalogue: P-AXIS, P-CHAN, P-COMP, P-STUP ...
+                "p_axis": {"type": ["string", "null"], "pattern": "^P-[A-Z]{4}-[0-9]{5}$"},
                 "related": {
                     "type": "array",
                     "items": {
