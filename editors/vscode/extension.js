@@ -41,7 +41,7 @@ function documentSelector() {
   return selector;
 }
 
-// Files matching `achslint.filePatterns` become axis lists too.
+// Files matching `achslint.filePatterns` become CNC parameter lists too (every *.lis already is).
 function adopt(document) {
   if (document.languageId === "achsmds") {
     return;

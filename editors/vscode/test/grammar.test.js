@@ -72,12 +72,41 @@ test("End and ENDE are not the end marker", async () => {
   assert.ok(lines[2].some((t) => t.text === "Ende" && t.scopes.includes("keyword.control.end.achsmds")));
 });
 
-test("the repository's example lists tokenize without any invalid token", async () => {
-  const folder = path.join(REPOSITORY_FIXTURES, "lists");
-  const files = fs.readdirSync(folder).filter((name) => name.endsWith(".lis"));
-  assert.ok(files.length >= 3);
+test("OR-combined flags of start-up and channel lists are symbols, not text after a value", async () => {
+  const lines = await tokenize(
+    "error_protocol_mode   REPORT | REPORT_EXTENDED |PRINT   ( P-STUP-00167\n" +
+      "configuration.channel[0].path_preparation.function  FCT_DEFAULT | FCT_M_PRE_OUTPUT\n" +
+      "error_protocol_mode  REPORT |\n",
+  );
+  for (const tokens of lines.slice(0, 2)) {
+    assert.ok(!tokens.some((t) => t.scopes.some((s) => s.startsWith("invalid"))),
+      JSON.stringify(tokens.map((t) => [t.text, t.scopes.slice(1)])));
+    assert.ok(tokens.some((t) => t.text === "|" && t.scopes.includes("keyword.operator.bitwise.or.achsmds")));
+  }
+  const flags = lines[0].filter((t) => t.scopes.includes("constant.language.symbol.achsmds") && /\w/.test(t.text));
+  assert.deepEqual(flags.map((t) => t.text.trim()), ["REPORT", "REPORT_EXTENDED", "PRINT"]);
+  assert.ok(lines[0].some((t) => t.text.startsWith("( P-STUP") && t.scopes.includes("comment.line.parenthesis.achsmds")));
+  // a bar with no flag after it names no symbol (LIS203): painted as stray text
+  assert.ok(lines[2].some((t) => t.text.trim() === "|" && t.scopes.some((s) => s.startsWith("invalid"))));
+});
+
+// Lists of every kind the repository keeps as clean examples (axis, channel, start-up, tool data ... lists;
+// the SDK's start-up list with its OR-combined flags).
+const CLEAN = [
+  ["lists", () => true],
+  ["kinds", () => true],
+  ["vendor", (name) => name === "isg_sdk_hochlauf.lis"],
+  [path.join("machines", "sdk4", "listen"), () => true],
+];
+
+test("the repository's example lists of every kind tokenize without any invalid token", async () => {
+  const files = CLEAN.flatMap(([folder, wanted]) =>
+    fs.readdirSync(path.join(REPOSITORY_FIXTURES, folder))
+      .filter((name) => name.endsWith(".lis") && wanted(name))
+      .map((name) => path.join(folder, name)));
+  assert.ok(files.length >= 20);
   for (const name of files) {
-    const lines = await tokenize(fs.readFileSync(path.join(folder, name), "latin1"));
+    const lines = await tokenize(fs.readFileSync(path.join(REPOSITORY_FIXTURES, name), "latin1"));
     lines.forEach((tokens, index) => {
       for (const token of tokens) {
         assert.ok(!token.scopes.some((s) => s.startsWith("invalid")),
