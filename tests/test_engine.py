@@ -604,7 +604,10 @@ def test_nc_reference_modes_that_cannot_be_simulated_or_find_nothing():
     )
     # A mode the simulator does not cover is "not simulated", not a failure (issue 26 item 11): exit 0, a note.
     assert back.outcome == "not_simulated" and back.failure is None
-    assert "the sync search back towards the cam (invert_sync_search) is not simulated" in back.warnings[0]["message"]
+    assert (
+        "the sync search back towards the cam (invert_sync_search) is not simulated"
+        in back.warnings[0]["message"]
+    )
     no_latch = drive_run(80.0, {**NC, "reference_mode": "hardware-latch-pos"}, fixed_stop=30.0)
     assert no_latch.outcome == "failed"
     assert no_latch.failure == "no latch signal after the cam edge (scenario latch_position)"

@@ -203,15 +203,15 @@ def build_figure(trace: Trace) -> Figure:
             Line2D([], [], color=colour, linestyle=style, label=f"{name}: {', '.join(values)} {unit}")
         )
     if trace.searched is not None:
-        target, where = trace.searched
-        top.axhline(where, color="#cc3311", linestyle=":", linewidth=1.2, gid="searched")
+        target, searched_at = trace.searched
+        top.axhline(searched_at, color="#cc3311", linestyle=":", linewidth=1.2, gid="searched")
         handles.append(
             Line2D(
                 [],
                 [],
                 color="#cc3311",
                 linestyle=":",
-                label=_wrap(f"searched for: {target} at {_fmt(where)} {unit}", 48),
+                label=_wrap(f"searched for: {target} at {_fmt(searched_at)} {unit}", 48),
             )
         )
     top.set_ylim(y_low - 0.02 * span, y_high + 0.02 * span)
