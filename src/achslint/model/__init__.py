@@ -183,7 +183,7 @@ def _materialise(model: type[BaseModel], data: _Nested) -> dict[str, Any]:
 
 def _of_arrays(annotation: Any) -> bool:
     """Whether a field's annotation is a list of lists (`List[List[Optional[float]]]`)."""
-    args = getattr(annotation, "__args__", ())
+    args: tuple[Any, ...] = getattr(annotation, "__args__", ())
     return bool(args) and getattr(args[0], "__origin__", None) is list
 
 
