@@ -395,6 +395,10 @@ class Finder:
         if all(s is not startup for s in found.startups):
             found.startups.append(startup)
         found.reported.add(str(startup.path))
+        # It is a list of its own kind too: its lines are checked against the start-up catalogue, and fmt and
+        # --fix may rewrite it (named, or found in a linted folder).
+        name = str(startup.path)
+        found.add(Target(name, startup.path, self.config_for(startup.path), (name,), kind=STARTUP.id))
         found_inside = []
         for member in self.member_targets([Machine.of(startup)]):
             assert member.path is not None  # members are files
@@ -427,6 +431,7 @@ class Finder:
             (startup.default, "default_axis"),
             (startup.default_channel, "default_channel"),
             *((entry, "channel") for entry in startup.channels),
+            *((entry, "compensation") for entry in startup.compensations),  # achs_kw[i], P-STUP-00017
             *((entry, other.id if (other := entry_kind(entry.key)) else None) for entry in startup.others),
         ]
         lists = []
