@@ -39,8 +39,9 @@ def test_a_start_up_list_named_otherwise_is_a_start_up_list(tmp_path: Path) -> N
     (folder / "hochlauf.lis").rename(folder / "basis.lis")
     result = run_cli("lint", str(folder / "basis.lis"), "--format", "json", "--select", "LIS101,LIS5")
     assert result.returncode == 0, result.stderr
-    # its entries were followed (the axis lists were linted), its own lines were not read as axis parameters
-    assert json.loads(result.stdout)["summary"]["files"] == 4  # three axis lists and the default list
+    # its entries were followed (the axis lists were linted), its own lines were read as start-up parameters
+    # (no LIS101), not as axis parameters
+    assert json.loads(result.stdout)["summary"]["files"] == 5  # itself, three axis lists and the default list
     assert diagnostics(result) == []
 
 

@@ -37,7 +37,9 @@ def test_explain_shows_the_values_of_the_default_list_the_start_up_list_loads(tm
     # and the value is the one lint judges: the resolved axis over the same default list
     [machine] = Finder().machines_of(listen / "achsmds5.lis")
     assert machine.defaults is not None
-    values = resolve_bytes((listen / "achsmds5.lis").read_bytes(), "achsmds5.lis", machine.defaults.read_bytes())
+    values = resolve_bytes(
+        (listen / "achsmds5.lis").read_bytes(), "achsmds5.lis", machine.defaults.read_bytes()
+    )
     assert values.get("getriebe[0].vb_refmax") == row["value"]
     text = run_cli("explain", str(listen / "achsmds5.lis")).stdout.decode()
     assert "Read as the CNC loads it: default axis list" in text and "default list line 2" in text
@@ -113,7 +115,9 @@ def test_a_start_up_list_named_otherwise_is_explained_and_compared_as_a_machine(
     assert {"X", "Y", "Z"} <= {axis["name"] for axis in report["axes"]}
     backup = tmp_path / "backup"
     shutil.copytree(tmp_path / "portal", backup)
-    same = run_cli("diff", str(listen / "basis.lis"), str(backup / "listen" / "basis.lis"), "--format", "json")
+    same = run_cli(
+        "diff", str(listen / "basis.lis"), str(backup / "listen" / "basis.lis"), "--format", "json"
+    )
     assert same.returncode == 0 and json.loads(same.stdout)["kind"] == "machines", same.stderr
     # a folder holding it is a machine too
     folders = run_cli("diff", str(listen), str(backup / "listen"), "--format", "json")
@@ -157,3 +161,23 @@ def test_gantry_rules_do_not_pair_axes_by_the_template_number_of_an_export(tmp_p
     assert [(Path(d["path"]).name, d["code"]) for d in found if d["code"].startswith("LIS5")] == [
         ("Axis_Y.xti", "LIS503")
     ]
+
+
+def test_a_start_up_list_is_linted_as_a_list_and_so_are_the_compensation_lists_it_names(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nkopf.log_achs_name  X\nEnde\n")
+    # a compensation table of five points of which only two are written (LIS704: the others default to 0)
+    (tmp_path / "achskw1.lis").write_text(
+        "kopf.achs_nr  1\nkw.ssfk.kw_nr_max  5\nkw.ssfk.table[0].pos  0\nkw.ssfk.table[1].pos  12\nEnde\n"
+    )
+    (tmp_path / "hochlauf.lis").write_text(
+        "zahl_mds  1\nachs_mds[0]  ./achsmds1.lis\nzahl_kw  1\nachs_kw[0]  ./achskw1.lis\n"
+        "achs_kw_log_ax_nr[0]  1\nEnde\nzahl_mdz  2\n"
+    )
+    done = run_cli("lint", str(tmp_path / "hochlauf.lis"), "--format", "json")
+    found = {(Path(d["path"]).name, d["line"], d["code"]) for d in json.loads(done.stdout)["diagnostics"]}
+    # its own line after `Ende` (the CNC ignores it), and the compensation list against its own catalogue
+    assert ("hochlauf.lis", 7, "LIS003") in found
+    assert any(name == "achskw1.lis" and code == "LIS704" for name, _, code in found), found
+    assert json.loads(done.stdout)["summary"]["files"] == 3

@@ -141,6 +141,8 @@ def test_a_start_up_entry_too_long_for_the_file_system_is_a_missing_list(cli, tm
     startup.write_text("achs_mds[0] ./" + "x" * 5000 + ".lis\nEnde\n")
     result = cli("lint", str(startup), "--format", "json")
     assert b"Traceback" not in result.stderr and b"internal error" not in result.stderr
-    (finding,) = json.loads(result.stdout)["diagnostics"]
-    assert finding["code"] == "LIS504"
+    found = {d["code"]: d for d in json.loads(result.stdout)["diagnostics"]}
+    assert sorted(found) == ["LIS206", "LIS504"]  # the CNC stores 256 characters of an entry (P-STUP-00015)
+    finding = found["LIS504"]
     assert len(finding["message"]) < MESSAGE_LIMIT and "5,006 characters" in finding["message"]
+    assert len(found["LIS206"]["message"]) < MESSAGE_LIMIT

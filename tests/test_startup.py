@@ -122,8 +122,9 @@ def test_the_ext_schedule_variant_reads_the_lists_one_folder_up(tmp_path, where,
     assert result.returncode == 0, result.stderr.decode()
     document = json.loads(result.stdout)
     assert [d["message"] for d in document["diagnostics"] if d["code"] == "LIS504"] == []
-    # achsmds1.lis and achsmds2.lis, and the default list default_mds.lis, read through the entries
-    assert document["summary"]["files"] == 3
+    # the start-up list itself (a list of its own kind), and achsmds1.lis, achsmds2.lis and the default list
+    # default_mds.lis read through its entries
+    assert document["summary"]["files"] == 4
     if where != "listen/ExtSchedule":
         return
     # Read and compared as one machine: a second axis 1 is found across the two lists.

@@ -53,7 +53,7 @@ from typing import BinaryIO, Literal
 from .core.decode import UnreadableInput, decode
 from .core.files import is_xml, read_list, reason, write_atomically
 from .linting.config import KEEP, LEFT, RIGHT, FmtOptions
-from .linting.discovery import Finder, Target
+from .linting.discovery import Finder
 from .linting.run import not_rewritten, write_error
 from .syntax import parser as syntax
 from .syntax.diff import unified_diff
@@ -459,13 +459,7 @@ def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatO
     )
     found = finder.find(request.paths)
     kept = [t for t in found.targets if not t.writable] if request.mode == "write" else []
-    # The start-up lists named or found in a named folder are lists too (of the start-up kind): formatted.
-    startups = [
-        Target(str(startup.path), startup.path, finder.config_for(startup.path))
-        for startup in found.startups
-        if str(startup.path) in found.reported
-    ]
-    targets = [*found.targets, *startups]
+    targets = found.targets  # the start-up lists named or found in a named folder among them (their own kind)
     outcome = FormatOutcome([], list(found.errors), [*found.notes, *not_rewritten(kept)], len(targets))
     for target in targets:
         if target in kept:
