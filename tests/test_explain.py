@@ -88,7 +88,7 @@ def test_parameter_card_as_text_names_the_rules_that_check_it(cli: Cli) -> None:
     assert result.returncode == 0
     lines = result.stdout.decode().splitlines()
     assert lines[0] == "P-AXIS-00015  kenngr.achs_mode"
-    assert "  checked by       LIS201, LIS202, LIS204, LIS314, LIS320, LIS327" in lines
+    assert "  checked by       LIS201, LIS202, LIS204, LIS309, LIS314, LIS320, LIS327" in lines
     assert "  manual title     Axis mode" in lines
     assert not any(line.startswith("  matters for") for line in lines)  # not a homing parameter
     text = cli("explain", "kopf.log_achs_name").stdout.decode().splitlines()
