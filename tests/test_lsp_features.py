@@ -490,14 +490,14 @@ def test_machine_findings_follow_the_buffers_and_the_files_on_disk(session: Sess
     assert "LIS501" not in codes(session.diagnostics(second.uri)[1])
 
 
-def test_a_start_up_list_shows_only_its_entries(session: Session, tmp_path: Path) -> None:
+def test_a_start_up_list_shows_its_entries_and_its_own_lines(session: Session, tmp_path: Path) -> None:
     sdk_machine(tmp_path)
     (tmp_path / "listen" / "achsmds2.lis").unlink()
     startup = opened(session, tmp_path / "hochlauf.lis")
     snapshot, found, _ = session.diagnostics(startup.uri)
-    assert snapshot is not None and snapshot.startup and snapshot.file is None
+    # its lines are clean start-up parameters; the missing axis list is its entry's finding
+    assert snapshot is not None and snapshot.startup and snapshot.file is not None
     assert [(d.code, d.line) for d in found] == [("LIS504", 4)]
-    snapshot.file = startup.parse()  # as the server's definition request does
     entries = [StartupEntry("achs_mds[0]", "./gone.lis", 3, 20, None)]  # an entry whose file was not found
     assert features.definition(startup, snapshot, 3, 20, lambda: entries) == []
     assert features.definition(startup, snapshot, 4, 20, lambda: entries) == []
@@ -590,3 +590,15 @@ def test_a_document_whose_uri_holds_a_nul_is_checked_as_a_buffer():
 
     assert _path("file:///a%00b/achsmds1.lis") is None
     assert _path("file:///tmp/achsmds1.lis") == Path("/tmp/achsmds1.lis")
+
+
+def test_an_open_start_up_list_gets_its_own_lines_checked_as_lint_checks_them(
+    session: Session, tmp_path: Path
+) -> None:
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr  1\nEnde\n")
+    startup = tmp_path / "basis.lis"  # a start-up list by its content
+    startup.write_text("zahl_mds  1\nachs_mds[0]  ./achsmds1.lis\nachs_mds[1]  ./missing.lis\nEnde\n")
+    # in the buffer: a line after `Ende` (LIS003), and the missing entry beyond zahl_mds (LIS516)
+    document = opened(session, startup, startup.read_text() + "zahl_mdz  2\n")
+    _, found, _ = session.diagnostics(document.uri)
+    assert [(d.line, d.code) for d in found] == [(3, "LIS516"), (5, "LIS003")]

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from ..catalogue.kinds import STARTUP
 from ..core.decode import UnreadableInput, text_bytes
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml, read_list, starts_with_bom
@@ -29,11 +30,10 @@ from ..linting.config import (
     discover,
     parse_codes,
 )
-from ..linting.discovery import Discovery, Finder, Target, is_list_update, updated_list
+from ..linting.discovery import Discovery, Finder, Target, is_list_update, is_startup, updated_list
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
 from ..machine.resolved import Machine
-from ..machine.startup import is_startup_list
 from ..syntax.parser import ListFile, parse_bytes
 from ..syntax.xmlinput import single_list
 from .documents import Document
@@ -101,7 +101,7 @@ class Snapshot:
     file: ListFile | None = None  # lists only
     context: Context | None = None  # lists only
     config_error: str | None = None
-    startup: bool = False  # a start-up list: only its entries are checked (LIS504), as in `achslint lint`
+    startup: bool = False  # a start-up list: its lines and, by the machine step, its entries (LIS504 ...)
 
 
 _ENCODING = re.compile(r'<\?xml[^>]*encoding=["\']([A-Za-z0-9_.-]+)["\']')
@@ -228,9 +228,14 @@ class Session:
         if document.path is not None:  # the kind a start-up list names it as, as `achslint lint` reads it
             settings.kind = self.finder.entry_kind(document.path)
         name = document.name
-        if document.path is not None and is_startup_list(document.path):
+        if document.path is not None and is_startup(document.path):  # by its name or its content
+            # its own lines against the start-up catalogue, as `achslint lint` checks them; its entries are
+            # the machine step's (LIS504 ...)
+            settings.kind = STARTUP.id
+            file = document.parse()
+            result = lint_parsed(file, name, settings)
             return Snapshot(
-                document.version, document.text, FileResult(name, []), config_error=config_error, startup=True
+                document.version, document.text, result, file, result.context, config_error, startup=True
             )
         below, underneath = self._underneath(document)
         if is_xml(name):
@@ -328,7 +333,7 @@ class Session:
         """A member's result (its summary is what the machine rules compare): open buffer or file."""
         path = target.path or Path(target.name)  # the lists of a machine are files
         document = self.by_path(path)
-        if document is not None and not is_startup_list(path):
+        if document is not None and not is_startup(path):
             snapshot = self.snapshot(document.uri)
             if snapshot is not None:  # an open document always has one
                 return _for_machine(snapshot.result, target.name)
