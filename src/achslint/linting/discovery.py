@@ -23,9 +23,11 @@ machine, and it is linted with the list it updates underneath (found by name bes
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections.abc import Callable, Sequence
+from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -128,6 +130,34 @@ def _identity(path: Path) -> object:
         return os.path.abspath(path)
 
 
+class _LookedAt:
+    """What `Finder.find` looks up once per run: the (device, inode) of each path it compares (None: it
+    cannot be looked at), and the files each start-up list names. A folder lint compares every list with
+    every entry of every start-up list of the run (half a million comparisons for the fixtures), and the
+    files of one run do not move under it. Outside a run (the editor asks for one list's machines) each
+    question looks again."""
+
+    def __init__(self) -> None:
+        self.files: dict[Path, tuple[int, int] | None] = {}
+        # by the id of the start-up list: the list (kept, so that its id stays its own) and `_kinds_named`
+        self.named: dict[int, tuple[Startup, dict[tuple[int, int], list[str]]]] = {}
+
+
+_LOOKED_AT: ContextVar[_LookedAt | None] = ContextVar("looked_at", default=None)
+
+
+def _looking_once(find: Callable[[Finder, list[str]], Discovery]) -> Callable[[Finder, list[str]], Discovery]:
+    @functools.wraps(find)
+    def run(finder: Finder, paths: list[str]) -> Discovery:
+        token = _LOOKED_AT.set(_LookedAt())
+        try:
+            return find(finder, paths)
+        finally:
+            _LOOKED_AT.reset(token)
+
+    return run
+
+
 def shown(path: Path) -> str:
     """A path as reports show it: relative to the working directory when it lies below it."""
     try:
@@ -223,7 +253,8 @@ class Finder:
         if is_list_update(path):
             return []  # it changes one list; it is no axis of its own
         startups = _unique([*known, *self.startups_around(path.parent)])
-        naming = [s for s in startups if any(_names(e.path, path) for e in _entries(s))]
+        identity = _file_id(path)
+        naming = [s for s in startups if identity is not None and _loads(_kinds_named(s).get(identity, ()))]
         declared = [m for m in self._declared(path) if any(_names(f, path) for f in m.files)]
         if naming or declared:
             return [*(Machine.of(startup) for startup in naming), *declared]
@@ -290,6 +321,7 @@ class Finder:
         return None
 
     # -- a run's paths -------------------------------------------------------------------------------------
+    @_looking_once
     def find(self, paths: list[str]) -> Discovery:
         """Expand folders by the include/exclude globs and start-up lists by their entries; named files are
         always linted. Each file is taken once, however often it is reached; each list is put in the
@@ -351,20 +383,10 @@ class Finder:
         channel list, `rtconf_lis` the real-time configuration and so on (`catalogue.kinds.ENTRY_KINDS`);
         None when no start-up list names it (its content tells)."""
         kinds: list[str] = []
-        for startup in _unique([*known, *self.startups_around(path.parent)]):
-            named: list[tuple[str, Sequence[StartupEntry | None]]] = [
-                ("default_axis", [startup.default]),
-                ("axis", startup.loaded_axes()),
-                ("default_channel", [startup.default_channel]),
-                ("channel", startup.channels),
-            ]
-            for kind, entries in named:
-                if any(e is not None and _names(e.path, path) for e in entries):
-                    kinds.append(kind)
-            for entry in startup.others:  # tool data, zero offsets, the real-time configuration ...
-                other = entry_kind(entry.key)
-                if other is not None and _names(entry.path, path):
-                    kinds.append(other.id)
+        identity = _file_id(path)
+        if identity is not None:
+            for startup in _unique([*known, *self.startups_around(path.parent)]):
+                kinds += _kinds_named(startup).get(identity, ())
         # Start-up lists that disagree (an old variant naming an axis list as a channel list): an axis list
         # of a machine stays one, so no axis rule is switched off by another file's entry.
         for preferred in ("axis", "default_axis"):
@@ -569,13 +591,63 @@ def updated_list(path: Path) -> Path | None:
 
 
 def _names(entry: Path | None, path: Path) -> bool:
-    return entry is not None and same_file(entry, path)
+    if entry is None:
+        return False
+    one = _file_id(entry)
+    return one is not None and one == _file_id(path)
 
 
-def _entries(startup: Startup) -> list[StartupEntry]:
-    """Every list a start-up list loads: its default list, axis lists (up to `zahl_mds`) and channel lists."""
-    named = (startup.default, *startup.loaded_axes(), startup.default_channel, *startup.channels)
-    return [e for e in named if e]
+def _file_id(path: Path) -> tuple[int, int] | None:
+    """The (device, inode) of a file, links followed (as `same_file` compares them); None when it cannot be
+    looked at."""
+    looked = _LOOKED_AT.get()
+    if looked is not None and path in looked.files:
+        return looked.files[path]
+    try:
+        info = os.stat(path)
+        identity: tuple[int, int] | None = (info.st_dev, info.st_ino)
+    except (OSError, ValueError):
+        identity = None
+    if looked is not None:
+        looked.files[path] = identity
+    return identity
+
+
+# The kinds of the lists a start-up list loads as the machine's: its default list, axis lists (up to `zahl_mds`)
+# and channel lists; the others are tool data, zero offsets and so on.
+_LOADED = ("default_axis", "axis", "default_channel", "channel")
+
+
+def _loads(kinds: Sequence[str]) -> bool:
+    return any(kind in _LOADED for kind in kinds)
+
+
+def _kinds_named(startup: Startup) -> dict[tuple[int, int], list[str]]:
+    """The files a start-up list names, by (device, inode), each with the kinds its entries name it as, in
+    the order `Finder.entry_kind` weighs them: the default axis list, axis lists (up to `zahl_mds`), the
+    default channel list, channel lists (each kind once), then tool data, zero offsets ... (per entry)."""
+    looked = _LOOKED_AT.get()
+    if looked is not None and id(startup) in looked.named:
+        return looked.named[id(startup)][1]
+    kinds: dict[tuple[int, int], list[str]] = {}
+    groups: list[tuple[str, Sequence[StartupEntry | None]]] = [
+        ("default_axis", [startup.default]),
+        ("axis", startup.loaded_axes()),
+        ("default_channel", [startup.default_channel]),
+        ("channel", startup.channels),
+    ]
+    for kind, entries in groups:
+        for identity in {_file_id(e.path) for e in entries if e is not None and e.path is not None}:
+            if identity is not None:
+                kinds.setdefault(identity, []).append(kind)
+    for entry in startup.others:  # tool data, zero offsets, the real-time configuration ...
+        other = entry_kind(entry.key)
+        identity = _file_id(entry.path) if other is not None and entry.path is not None else None
+        if other is not None and identity is not None:
+            kinds.setdefault(identity, []).append(other.id)
+    if looked is not None:
+        looked.named[id(startup)] = (startup, kinds)
+    return kinds
 
 
 def _named_by(startups: list[Startup], path: Path) -> bool:
