@@ -277,3 +277,27 @@ def test_an_assignment_out_of_range_is_not_called_missing(tmp_path: Path) -> Non
     )
     [(_, line, code, message)] = lint_machine(path, "LIS519,LIS520")
     assert (line, code) == (5, "LIS519") and "`achs_kw_log_ax_nr[0]` is not written" in message
+
+
+PAIR = "synchro_data.koppel_gruppe[0].paar[{i}].log_achs_nr_{role}  {number}\n"
+
+
+def _pairs(*couples: tuple[int, int]) -> str:
+    return "".join(
+        PAIR.format(i=i, role="master", number=m) + PAIR.format(i=i, role="slave", number=s)
+        for i, (m, s) in enumerate(couples)
+    )
+
+
+def test_coupled_pairs_in_a_circle_of_three_are_one_finding_on_the_pair_that_closes_it() -> None:
+    # 1 leads 2, 2 leads 3, 3 leads 1 (P-CHAN-00037/38): the third pair (lines 5-6) closes the circle
+    text = _pairs((1, 2), (2, 3), (3, 1)) + "Ende\n"
+    [(code, line, message)] = found(text, "channel", ("LIS706",))
+    assert (code, line) == ("LIS706", 6) and "logical axes 3 → 1 → 2 → 3" in message  # 3 leads 1 (the new pair), 1 leads 2, 2 leads 3
+
+
+def test_a_chain_and_one_master_with_two_slaves_are_no_conflict() -> None:
+    # 1 leads 2 and 3 (two slaves of one master); 3 leads 4 (a chain: not a circle, nothing documented
+    # forbids it); the same pair written twice is no second master
+    text = _pairs((1, 2), (1, 3), (3, 4), (1, 2)) + "Ende\n"
+    assert found(text, "channel", ("LIS706",)) == []

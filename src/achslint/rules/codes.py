@@ -131,6 +131,7 @@ RULE_MODULES: dict[str, Severity] = {
     "lis703_channel_count_vs_entries": WARNING,
     "lis704_compensation_table_vs_count": WARNING,
     "lis705_compensation_table_above_max_points": ERROR,
+    "lis706_coupled_pair_conflict": WARNING,
 }
 _SEVERITY = {name[:6].upper(): severity for name, severity in RULE_MODULES.items()}
 
