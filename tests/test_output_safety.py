@@ -57,7 +57,7 @@ def render(fmt: str, results, sources=None) -> str:
 
 def assert_valid(fmt: str, out: str) -> None:
     out.encode("utf-8")  # a strict UTF-8 stdout can take it
-    if fmt in ("json", "sarif", "gitlab"):
+    if fmt in ("json", "sarif", "gitlab", "rdjson"):
         json.loads(out)
     elif fmt == "junit":
         assert jenkins_junit_errors(out) == []

@@ -46,6 +46,8 @@ REPORTERS = {
     "github": Reporter("github"),
     "gitlab": Reporter("gitlab", needs_source=True),
     "junit": Reporter("junit"),
+    "rdjson": Reporter("rdjson", needs_source=True),  # columns in UTF-8 bytes: counted on the lines
+    "azure": Reporter("azure"),
 }
 
 
