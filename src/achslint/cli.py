@@ -478,9 +478,24 @@ def fmt(
     raise typer.Exit(EXIT_FINDINGS if outcome.changed and mode != "write" else EXIT_OK)
 
 
+class ExplainFormat(str, Enum):
+    text = "text"
+    json = "json"
+
+
 @app.command()
-def rules() -> None:
+def rules(
+    output_format: ExplainFormat = typer.Option(
+        ExplainFormat.text, "--format", "--output-format", help="text (a table) or json (every rule with its documentation)."
+    ),
+) -> None:
     """List every rule with its code, name, default severity and fix."""
+    if output_format == ExplainFormat.json:
+        from .docs import rules_document
+        from .output import write_json
+
+        write_json(rules_document(), _screen(Color.never))
+        return
     from .docs import rules_table
 
     typer.echo(rules_table())
@@ -496,11 +511,6 @@ def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> Non
     if found is None:
         _fail(f"unknown rule code {code!r}; `achslint rules` lists them")
     typer.echo(rule_text(found))
-
-
-class ExplainFormat(str, Enum):
-    text = "text"
-    json = "json"
 
 
 @app.command()

@@ -18,6 +18,25 @@ def rules_table() -> str:
     return "\n".join(lines)
 
 
+def rules_document(docs_url: str | None = None) -> list[dict[str, object]]:
+    """`achslint rules --format json`: every rule as an object, in code order (add keys, never rename)."""
+    return [
+        {
+            "code": rule.code,
+            "name": rule.name,
+            "severity": rule.severity.value,
+            "fix": rule.fix,
+            "summary": rule.summary,
+            "scopes": [scope.name.lower() for scope in rule.scopes],
+            "lists": rule.lists or None,
+            "produced_by": rule.produced_by,  # "dry-run": found by the homing simulation, not by lint
+            "url": rule_url(rule.code, docs_url),
+            "explanation": rule_text(rule),
+        }
+        for rule in registry().values()
+    ]
+
+
 def rule_text(rule: Rule) -> str:
     when = "; info when it cannot check" if rule.info_when_unchecked else ""
     lists = f"; checks {rule.lists}" if rule.lists else ""
