@@ -22,8 +22,10 @@ second reading of the same file. `view(channel)` gives the axes by the names one
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TypeVar
 
 from ..axis.resolved import ResolvedAxis, resolve_bytes
 from ..axis.source import read_one_list
@@ -32,6 +34,8 @@ from ..core.files import reason, same_file
 from .channel import ChannelList, read_channel_list
 from .identity import numbered
 from .startup import Member, Startup, StartupEntry, entry_index
+
+T = TypeVar("T")
 
 
 class MachineError(Exception):
@@ -82,6 +86,14 @@ class Machine:
     _loaded: dict[tuple[str, int], LoadedList] = field(default_factory=dict, repr=False)
     _channels: dict[tuple[str, int], ChannelList | MachineError] = field(default_factory=dict, repr=False)
     _axes: list[tuple[LoadedList, ResolvedAxis | None]] | None = field(default=None, repr=False)
+    _memo: dict[str, object] = field(default_factory=dict, repr=False)
+
+    def memo(self, key: str, compute: Callable[[], T]) -> T:
+        """What the rules read of the machine beyond its lists (the start-up list's own assignments ...),
+        computed once for all of them."""
+        if key not in self._memo:
+            self._memo[key] = compute()
+        return self._memo[key]  # type: ignore[return-value]
 
     @classmethod
     def of(cls, startup: Startup) -> Machine:

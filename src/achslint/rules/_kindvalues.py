@@ -14,6 +14,7 @@ from ..axis.analysis import analyse
 from ..catalogue.kinds import STARTUP
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import entry_index
 from ..syntax.parser import parse_bytes, path_pattern
 from ._common import known_settings
 
@@ -22,7 +23,7 @@ if TYPE_CHECKING:
     from ..catalogue import Catalogue
     from ..catalogue.kinds import Kind
     from ..machine.resolved import Machine
-    from ..machine.startup import Startup, StartupEntry
+    from ..machine.startup import StartupEntry
 
 Values = dict[str, "Setting"]  # canonical concrete path -> the assignment the CNC takes
 
@@ -184,12 +185,50 @@ def loaded_settings(machine: Machine, entry: StartupEntry, what: str, kind: Kind
         return None
 
 
-def startup_settings(startup: Startup) -> list[Setting] | None:
-    """The assignments of a start-up list (its entries beyond the lists the machine keeps:
-    `achs_kw_log_ax_nr[i]`, `kanal_anzahl` ...), read through its reader; None when it cannot be read."""
-    cat = STARTUP.catalogue()
-    assert cat is not None
-    try:
-        return read_settings(startup.reader(startup.path), str(startup.path), cat)
-    except (OSError, UnreadableInput):
+def startup_settings(machine: Machine) -> list[Setting] | None:
+    """The assignments of the machine's start-up list (its entries beyond the lists the machine keeps:
+    `achs_kw_log_ax_nr[i]`, `kanal_anzahl` ...), read once per machine through its reader; None when it has
+    none or it cannot be read."""
+    startup = machine.startup
+    if startup is None:
         return None
+
+    def read() -> list[Setting] | None:
+        cat = STARTUP.catalogue()
+        assert cat is not None
+        try:
+            return read_settings(startup.reader(startup.path), str(startup.path), cat)
+        except (OSError, UnreadableInput):
+            return None
+
+    return machine.memo("startup settings", read)
+
+
+@dataclass(frozen=True)
+class Assignment:
+    """A compensation list the CNC loads (`achs_kw[i]` below `zahl_kw`, P-STUP-00016/17) and its axis
+    assignment (`achs_kw_log_ax_nr[i]`, P-STUP-00036)."""
+
+    entry: StartupEntry
+    key: str  # achs_kw_log_ax_nr[i]
+    setting: Setting | None  # its usable assignment; None when not written (or not usable)
+    unusable: bool  # written, but with a value the start-up list's own finding reports
+
+
+def compensation_assignments(machine: Machine) -> list[Assignment]:
+    """The compensation lists of the machine's start-up list the CNC loads, with their assignments (none when
+    the start-up list names none or cannot be read)."""
+    startup = machine.startup
+    settings = startup_settings(machine) if startup is not None and startup.compensations else None
+    if startup is None or settings is None:
+        return []
+    values, unread = written(settings), unusable(settings)
+    count = whole(values.get("zahl_kw"))
+    found = []
+    for entry in startup.compensations:
+        index = entry_index(entry)
+        if count is not None and index >= count:
+            continue  # never loaded: LIS516
+        key = f"achs_kw_log_ax_nr[{index}]"
+        found.append(Assignment(entry, key, values.get(key), key in unread))
+    return found

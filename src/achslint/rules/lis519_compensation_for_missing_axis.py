@@ -86,8 +86,8 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ._crosslist import by_number, every_axis_list_read, index
-from ._kindvalues import at_setting, startup_settings, unusable, whole, written
+from ._crosslist import by_number, every_axis_list_read
+from ._kindvalues import at_setting, compensation_assignments, whole
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -99,22 +99,15 @@ SUMMARY = "Axis compensation list assigned to no axis of the machine (achs_kw_lo
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
+    assignments = compensation_assignments(machine)
     startup = machine.startup
-    if startup is None or not startup.compensations:
+    if startup is None or not assignments:
         return
-    settings = startup_settings(startup)
-    if settings is None:
-        return
-    values, unread = written(settings), unusable(settings)
-    count = whole(values.get("zahl_kw"))
     numbers = by_number(machine.members) if every_axis_list_read(startup, machine.members) else None
     name = str(startup.path)
-    for entry in startup.compensations:
-        if count is not None and index(entry) >= count:
-            continue  # never loaded: LIS516
-        key = f"achs_kw_log_ax_nr[{index(entry)}]"
-        assignment = values.get(key)
-        if key in unread:
+    for found in assignments:
+        entry, key, assignment = found.entry, found.key, found.setting
+        if found.unusable:
             continue  # written, but not a usable number: the start-up list's own finding (LIS202)
         if assignment is None:
             yield Diagnostic(

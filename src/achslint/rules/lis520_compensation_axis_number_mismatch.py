@@ -78,13 +78,12 @@ from typing import TYPE_CHECKING
 
 from ..catalogue.kinds import COMPENSATION
 from ..core.diagnostics import Diagnostic, Severity
-from ._crosslist import index
 from ._kindvalues import (
     at_setting,
+    compensation_assignments,
     loaded_settings,
     related_at,
     shown_path,
-    startup_settings,
     unusable,
     whole,
     written,
@@ -101,20 +100,11 @@ SUMMARY = "Compensation list's kopf.achs_nr differs from its achs_kw_log_ax_nr (
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
-    if startup is None or not startup.compensations:
-        return
-    listed = startup_settings(startup)
-    if listed is None:
-        return
-    values = written(listed)
-    count = whole(values.get("zahl_kw"))
-    for entry in startup.compensations:
-        if entry.path is None or (count is not None and index(entry) >= count):
-            continue  # missing (LIS504) or never loaded (LIS516)
-        assignment = values.get(f"achs_kw_log_ax_nr[{index(entry)}]")
+    for found in compensation_assignments(machine):
+        entry, assignment = found.entry, found.setting
         expected = whole(assignment)
-        if assignment is None or not expected:
-            continue  # no assignment (or 0, no axis): LIS519
+        if entry.path is None or assignment is None or not expected:
+            continue  # missing (LIS504), or no assignment (or 0, no axis): LIS519
         settings = loaded_settings(machine, entry, "axis compensation list", COMPENSATION)
         if settings is None:
             continue
@@ -130,6 +120,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             f"{expected} loads it (error 110229), so the axis runs without this compensation; set "
             f"kopf.achs_nr {expected}, or assign the list to the axis it was made for"
         )
+        assert startup is not None  # it named the list
         related = [related_at(str(startup.path), assignment, "the assignment")]
         if header is not None:
             yield at_setting(

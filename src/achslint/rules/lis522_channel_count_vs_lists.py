@@ -116,7 +116,7 @@ def _channels(count: int) -> str:
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
-    settings = startup_settings(startup) if startup is not None else None
+    settings = startup_settings(machine)
     values = written(settings) if settings is not None else None
     setting = values.get("kanal_anzahl") if values is not None else None
     count = whole(setting)
