@@ -359,7 +359,8 @@ def test_completion_of_boolean_values_unknown_paths_and_codes(session: Session, 
     assert features.complete(document, snapshot, 3, after_comment).items == []
     codes_here = features.complete(document, None, 3, len("kenngr.achs_typ  1  ( noqa: LIS2") + 1)
     first = codes_here.items[0]
-    assert first.label == "LIS001" and first.sort_text == "1LIS001"
+    assert first.label == "LIS201" and first.sort_text == "1LIS201" and first.filter_text == "LIS201"
+    assert all(i.label.startswith("LIS2") for i in codes_here.items)  # filtered by the typed prefix
     assert first.text_edit.range.start.character == len("kenngr.achs_typ  1  ( noqa: ")
 
 
@@ -373,8 +374,50 @@ def test_path_completion_with_an_edit_range_default_and_without_snippets(
     assert found.item_defaults.edit_range == lsp.Range(lsp.Position(0, 0), lsp.Position(0, 17))
     reflow = next(i for i in found.items if i.label == "getriebe[1].vb_reflow")
     assert reflow.text_edit is None and reflow.insert_text_format == lsp.InsertTextFormat.PlainText
-    nested = next(i for i in found.items if i.label == "getriebe[1].lslope_profil.a_grenz_stufe_1")
-    assert nested.text_edit_text is None  # the label is what is inserted
+    assert reflow.text_edit_text is None  # the label is what is inserted
+    assert reflow.filter_text == "getriebe[1].vb_reflow"
+
+
+def test_path_completion_is_filtered_by_the_typed_prefix_for_every_client(
+    session: Session, tmp_path: Path
+) -> None:
+    """Issue 28 item 2: Neovim takes the list as filtered when the items have a textEdit; an item the typed
+    prefix does not lead to would replace the line with an unrelated path."""
+    document = opened(session, tmp_path / "achsmds1.lis", "getriebe[0].vb_re\nEnde\n")
+    snapshot = snapshot_of(session, document)
+    found = features.complete(document, snapshot, 1, 18)
+    labels = [i.label for i in found.items]
+    assert found.is_incomplete and labels
+    assert {"getriebe[0].vb_reflow", "getriebe[0].vb_refmax"} <= set(labels)
+    assert all(label.startswith("getriebe[0].vb_re") for label in labels)
+    for item in found.items:  # the edit replaces exactly the typed prefix; the client filters by filterText
+        assert item.text_edit.range == lsp.Range(lsp.Position(0, 0), lsp.Position(0, 17))
+        assert item.filter_text is not None and item.filter_text.startswith("getriebe[0].vb_re")
+    # typed otherwise: case aside, and inside an index
+    upper = opened(session, tmp_path / "achsmds2.lis", "Getriebe[\nEnde\n")
+    found = features.complete(upper, snapshot_of(session, upper), 1, 10)
+    assert found.items and all(i.filter_text.startswith("Getriebe[") for i in found.items)
+    assert "getriebe[i].vb_reflow" in {i.label for i in found.items}
+    index = opened(session, tmp_path / "achsmds3.lis", "getriebe[3\nEnde\n")
+    found = features.complete(index, snapshot_of(session, index), 1, 11)
+    assert "getriebe[3].vb_reflow" in {i.label for i in found.items}
+    assert all(i.label.startswith("getriebe[3]") for i in found.items)
+
+
+def test_path_completion_ranks_unset_paths_of_the_group_and_unit_near_the_cursor_first(
+    session: Session, tmp_path: Path
+) -> None:
+    text = "kenngr.achs_typ  1\ngetriebe[0].vb_refmax  100000\ngetriebe[0].\nEnde\n"
+    document = opened(session, tmp_path / "achsmds1.lis", text)
+    snapshot = snapshot_of(session, document)
+    items = features.complete(document, snapshot, 3, len("getriebe[0].") + 1).items
+    ranked = [i.label for i in sorted(items, key=lambda i: i.sort_text or i.label)]
+    # vb_reflow: not set yet, same group, same unit as vb_refmax on the line above
+    assert ranked.index("getriebe[0].vb_reflow") < ranked.index("getriebe[0].a_ref")  # unit
+    assert ranked.index("getriebe[0].a_ref") < ranked.index("getriebe[0].vb_refmax")  # set already
+    top = features.complete(document, snapshot, 3, 1).items
+    first = min(top, key=lambda i: i.sort_text or i.label)
+    assert first.label.startswith("getriebe[")  # the group of the line above comes first
 
 
 def test_resolve_keeps_given_documentation_and_ignores_other_items() -> None:

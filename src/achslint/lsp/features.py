@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -467,16 +468,23 @@ def complete(
 ) -> lsp.CompletionList:
     """Completion at a 1-based position: rule codes after `noqa:`, parameter paths at the start of a
     line, symbols and references in the value (and a flag after `|`), all from the catalogue of the
-    document's kind. With `edit_range_default` (the client supports `itemDefaults.editRange`) the range
-    the items replace is sent once instead of with every item."""
+    document's kind.
+
+    Every client can use the answer as it is: the items are those the typed prefix leads to (matched
+    here, case aside: a client that takes the list as filtered, as Neovim does, offers nothing else),
+    each carries the text a client filters by (`filterText`: the prefix as typed, then the rest) and
+    replaces the typed prefix (its `textEdit`; with `edit_range_default`, when the client supports
+    `itemDefaults.editRange`, the range is sent once for the list), and `sortText` ranks them by relevance
+    (`_path_rank`). The list is marked incomplete: a client asks again as the user types on."""
     text = document.line(line_number)
     before = text[: column - 1]
     context = snapshot.context if snapshot is not None else None
     kind = document_kind(snapshot)
     noqa = _NOQA_PREFIX.search(before)
     if noqa and "noqa" in before.lower():
-        start = column - len(noqa.group(1))
-        return lsp.CompletionList(False, _code_items(document, snapshot, line_number, start, column))
+        typed = noqa.group(1)
+        start = column - len(typed)
+        return lsp.CompletionList(True, _code_items(document, snapshot, line_number, start, column, typed))
     if kind is None:
         return lsp.CompletionList(False, [])
     match = _PATH_PREFIX.match(before)
@@ -484,16 +492,17 @@ def complete(
         typed = match.group(1) or ""
         start = column - len(typed)
         where = lsp_range(document, line_number, start, line_number, column)
-        items = _path_items(context, kind, typed, snippets, None if edit_range_default else where)
+        around = _Around.of(snapshot, kind, line_number)
+        items = _path_items(context, kind, typed, snippets, None if edit_range_default else where, around)
         defaults = lsp.CompletionItemDefaults(edit_range=where) if edit_range_default else None
-        return lsp.CompletionList(False, items, item_defaults=defaults)
+        return lsp.CompletionList(True, items, item_defaults=defaults)
     match = _VALUE_PREFIX.match(before) or (
         _FLAG_PREFIX.match(before) if kind.prefix != AXIS_PREFIX else None
     )
     if match:
         start = column - len(match.group(2))
         return lsp.CompletionList(
-            False,
+            True,
             _value_items(document, context, kind, line_number, start, column, match.group(1), match.group(2)),
         )
     return lsp.CompletionList(False, [])
@@ -503,33 +512,107 @@ def _edit(document: Document, line: int, start: int, end: int, text: str) -> lsp
     return lsp.TextEdit(lsp_range(document, line, start, line, end), text)
 
 
+def _filter_text(typed: str, label: str) -> str | None:
+    """What a client compares with the typed text: the label with its first characters as they were typed
+    (matched case aside); None when the label does not begin with the typed text."""
+    if not label.lower().startswith(typed.lower()):
+        return None
+    return typed + label[len(typed) :]
+
+
+_OPEN_INDEX = re.compile(r"\[([0-9]*)$")  # an index being typed: `getriebe[`, `getriebe[1`
+
+
+@dataclass(frozen=True)
+class _Around:
+    """What ranks a path at the cursor: the paths the list sets already (as written and as patterns), the
+    group and the unit of the nearest assignment above the line (below it when none is above)."""
+
+    written: frozenset[str] = frozenset()
+    patterns: frozenset[str] = frozenset()
+    group: str | None = None
+    unit: str | None = None
+    axis_type: str = "T"
+
+    @classmethod
+    def of(cls, snapshot: Snapshot | None, kind: Kind, line_number: int) -> _Around:
+        file = snapshot.file if snapshot is not None else None
+        if file is None:
+            return cls()
+        context = snapshot.context if snapshot is not None else None
+        axis_type = context.values.axis_type if context is not None and context.axis_list else "T"
+        paths = [
+            (line.number, line.path.lower())
+            for line in file.lines
+            if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path and line.number != line_number
+        ]
+        written = frozenset(path for _, path in paths)
+        above = [path for number, path in paths if number < line_number]
+        below = [path for number, path in paths if number > line_number]
+        near = above[-1] if above else (below[0] if below else None)
+        group = unit = None
+        if near is not None:
+            group = syntax.path_pattern(near.rsplit(".", 1)[0])[0] if "." in near else None
+            cat = kind.catalogue()
+            resolution = cat.resolve(near) if cat is not None else None
+            unit = resolution.parameter.unit(axis_type) if resolution is not None else None
+        patterns = frozenset(syntax.path_pattern(path)[0] for path in written)
+        return cls(written, patterns, group, unit, axis_type)
+
+    def rank(self, parameter: Parameter, label: str) -> str:
+        """`sortText` of a path: not yet set in this list first, then the group of the line near the cursor,
+        then its unit; alphabetical within each."""
+        lowered = label.lower()
+        set_here = lowered in self.written if "[i]" not in lowered else parameter.path in self.patterns
+        group = parameter.path.rsplit(".", 1)[0] if "." in parameter.path else None
+        same_group = group is not None and group == self.group
+        unit = parameter.unit(self.axis_type)
+        same_unit = unit is not None and unit == self.unit
+        return f"{int(set_here)}{int(not same_group)}{int(not same_unit)} {label}"
+
+
 def _path_items(
-    context: Context | None, kind: Kind, typed: str, snippets: bool, where: lsp.Range | None
+    context: Context | None,
+    kind: Kind,
+    typed: str,
+    snippets: bool,
+    where: lsp.Range | None,
+    around: _Around | None = None,
 ) -> list[lsp.CompletionItem]:
-    """The paths of the kind's catalogue (of an axis list: those that take effect for its drive and axis
-    type); old names marked deprecated. Items carry no documentation: `completionItem/resolve` adds the card
-    of the one the user looks at (an item of another kind than axis lists names its kind in `data`)."""
+    """The paths of the kind's catalogue the typed prefix leads to (of an axis list: those that take effect
+    for its drive and axis type); old names marked deprecated, ranked last. Items carry no documentation:
+    `completionItem/resolve` adds the card of the one the user looks at (an item of another kind than axis
+    lists names its kind in `data`)."""
     cat = kind.catalogue()
     if cat is None:
         return []
+    around = around or _Around()
     data = {"kind": kind.id} if kind.prefix != AXIS_PREFIX else None
     pattern, indices = syntax.path_pattern(typed)
-    # Segments the user finished (up to the last dot) must match; the client filters the rest.
-    done = pattern.rsplit(".", 1)[0] + "." if "." in pattern else ""
-    done_indices = indices[: done.count("[i]")]
+    opened = _OPEN_INDEX.search(pattern)
+    if opened is not None:  # `getriebe[1`: matches `getriebe[i]`, and the index typed so far fills it
+        pattern = pattern[: opened.start()] + "["
+        if opened.group(1):
+            indices = (*indices, int(opened.group(1)))
+    key = pattern.lower()
     items = []
     plain, snippet = lsp.InsertTextFormat.PlainText, lsp.InsertTextFormat.Snippet
     for parameter in cat.parameters:
-        if not parameter.path.startswith(done) or not _applies(parameter, context):
+        if not parameter.path.startswith(key) or not _applies(parameter, context):
             continue
-        insert = _snippet_path(parameter.path, done_indices, parameter.index_bounds, snippets)
-        label = fill_indices(parameter.path, done_indices)
+        label = fill_indices(parameter.path, indices)
+        filter_text = _filter_text(typed, label)
+        if filter_text is None:  # an index typed that is no index (`[01`)
+            continue
+        insert = _snippet_path(parameter.path, indices, parameter.index_bounds, snippets)
         is_snippet = snippets and "$" in insert
         items.append(
             lsp.CompletionItem(
                 label=label,
                 kind=lsp.CompletionItemKind.Field,
                 detail=f"{parameter.id} {parameter.type}",
+                sort_text=around.rank(parameter, label),
+                filter_text=filter_text,
                 text_edit=lsp.TextEdit(where, insert) if where is not None else None,
                 text_edit_text=insert if where is None and insert != label else None,
                 insert_text_format=snippet if is_snippet else plain,
@@ -537,16 +620,21 @@ def _path_items(
             )
         )
         for alias in parameter.aliases:
-            if alias.kind != "old" or not alias.path.startswith(done):
+            if alias.kind != "old" or not alias.path.lower().startswith(key):
+                continue
+            old = fill_indices(alias.path, indices)
+            old_filter = _filter_text(typed, old)
+            if old_filter is None:
                 continue
             items.append(
                 lsp.CompletionItem(
-                    label=alias.path,
+                    label=old,
                     kind=lsp.CompletionItemKind.Field,
                     detail=f"old name of {parameter.path}",
                     tags=[lsp.CompletionItemTag.Deprecated],
-                    sort_text="~" + alias.path,
-                    text_edit=lsp.TextEdit(where, alias.path) if where is not None else None,
+                    sort_text="~" + old,
+                    filter_text=old_filter,
+                    text_edit=lsp.TextEdit(where, old) if where is not None else None,
                 )
             )
     return items
@@ -562,34 +650,44 @@ def _value_items(
     path: str,
     typed: str,
 ) -> list[lsp.CompletionItem]:
-    """The symbols of the parameter on the line, 0 and 1 for a switch, and (in axis lists) references to
-    parameters of the same unit."""
+    """The symbols of the parameter on the line (in the catalogue's order), 0 and 1 for a switch, and (in
+    axis lists) references to parameters of the same unit, ranked after them; those the typed prefix leads
+    to."""
     cat = kind.catalogue()
     resolution = cat.resolve(path) if cat is not None else None
     if cat is None or resolution is None:
         return []
     parameter = resolution.parameter
     items = []
-    for symbol in parameter.symbols:
-        items.append(
-            lsp.CompletionItem(
-                label=symbol,
-                kind=lsp.CompletionItemKind.EnumMember,
-                detail=f"{parameter.path} ({parameter.id})",
-                documentation=f"a value of {parameter.path}: {parameter.summary}",
-                text_edit=_edit(document, line, start, end, symbol),
+
+    def item(
+        label: str, sort: str, what: lsp.CompletionItemKind, detail: str, documentation: str | None = None
+    ) -> None:
+        filter_text = _filter_text(typed, label)
+        if filter_text is not None:
+            items.append(
+                lsp.CompletionItem(
+                    label=label,
+                    kind=what,
+                    detail=detail,
+                    documentation=documentation,
+                    sort_text=sort,
+                    filter_text=filter_text,
+                    text_edit=_edit(document, line, start, end, label),
+                )
             )
+
+    for number, symbol in enumerate(parameter.symbols):
+        item(
+            symbol,
+            f"0{number:04}",
+            lsp.CompletionItemKind.EnumMember,
+            f"{parameter.path} ({parameter.id})",
+            f"a value of {parameter.path}: {parameter.summary}",
         )
     if parameter.kind == BOOL and not parameter.symbols:
         for value, words in (("0", "off"), ("1", "on")):
-            items.append(
-                lsp.CompletionItem(
-                    label=value,
-                    kind=lsp.CompletionItemKind.Value,
-                    detail=words,
-                    text_edit=_edit(document, line, start, end, value),
-                )
-            )
+            item(value, f"0{value}", lsp.CompletionItemKind.Value, words)
     if kind.prefix != AXIS_PREFIX:  # a reference names an axis parameter: none of this kind's
         return items
     if parameter.kind in (INTEGER, REAL) and (typed.upper().startswith("P") or not typed):
@@ -599,27 +697,28 @@ def _value_items(
             if other is parameter or other.kind not in (INTEGER, REAL) or other.unit(axis_type) != unit:
                 continue
             label = other.id + (".0" if "[i]" in other.path else "")
-            items.append(
-                lsp.CompletionItem(
-                    label=label,
-                    kind=lsp.CompletionItemKind.Reference,
-                    detail=other.path,
-                    documentation=f"take the value of {other.path} ({unit_label(unit) or 'no unit'}): {other.summary}",
-                    sort_text="~" + label,
-                    text_edit=_edit(document, line, start, end, label),
-                )
+            item(
+                label,
+                "~" + label,
+                lsp.CompletionItemKind.Reference,
+                other.path,
+                f"take the value of {other.path} ({unit_label(unit) or 'no unit'}): {other.summary}",
             )
     return items
 
 
 def _code_items(
-    document: Document, snapshot: Snapshot | None, line: int, start: int, end: int
+    document: Document, snapshot: Snapshot | None, line: int, start: int, end: int, typed: str = ""
 ) -> list[lsp.CompletionItem]:
+    """The rule codes the typed prefix leads to; those found on this line first."""
     here = set()
     if snapshot is not None:
         here = {d.code for d in snapshot.result.diagnostics if d.line == line}
     items = []
     for code, rule in registry().items():
+        filter_text = _filter_text(typed, code)
+        if filter_text is None:
+            continue
         items.append(
             lsp.CompletionItem(
                 label=code,
@@ -627,6 +726,7 @@ def _code_items(
                 detail=rule.summary,
                 documentation=f"{rule.name} ({rule.severity.value})",
                 sort_text=("0" if code in here else "1") + code,
+                filter_text=filter_text,
                 text_edit=_edit(document, line, start, end, code),
             )
         )
