@@ -128,9 +128,13 @@ class Settings:
     """Every achslint setting, once: the configuration file's schema (keys spelled with dashes), its
     defaults, what rules read (`ctx.options`) and what the command line may override (`Overrides`)."""
 
+    # another configuration file this one builds on (relative to this file, inside its repository)
+    extend: str | None = _key(None, min_length=1)
     select: list[str] | None = _key(None, codes="list")
     extend_select: list[str] = _key(factory=list, cli=EXTEND, codes="list")
     ignore: list[str] = _key(factory=list, cli=EXTEND, codes="list")
+    fixable: list[str] | None = _key(None, codes="list")  # the codes --fix may fix (default: every code)
+    unfixable: list[str] = _key(factory=list, cli=EXTEND, codes="list")  # and those it must leave alone
     per_file_ignores: dict[str, list[str]] = _key(factory=dict, codes="values")
     severity: dict[str, SeverityName] = _key(factory=dict, codes="keys")
     fail_on: SeverityName = _key("error")
@@ -250,10 +254,12 @@ def _definitions(settings: type) -> dict[str, Any]:
 
 @dataclass(frozen=True)
 class ResolvedConfig:
-    """Settings plus the file they came from (None: built-in defaults)."""
+    """Settings plus the file they came from (None: built-in defaults), and the files it extends (`extend`,
+    nearest first)."""
 
     settings: Settings
     path: Path | None = None
+    extends: tuple[Path, ...] = ()
 
     @property
     def root(self) -> Path:
@@ -338,9 +344,13 @@ def _format_error(path: Path, error: ValidationError, model: Any) -> str:
 
 
 def load_file(path: Path) -> ResolvedConfig:
-    """Read one configuration file (pyproject.toml: its [tool.achslint] table)."""
-    from pydantic import ValidationError
+    """Read one configuration file (pyproject.toml: its [tool.achslint] table), and the files it extends."""
+    data, extends = _extended(path, ())
+    return ResolvedConfig(_validated(path, data), path, extends)
 
+
+def _table(path: Path) -> dict[str, Any]:
+    """The achslint keys of one configuration file, spelled with dashes."""
     from ..core.tomlfile import read_toml
 
     data = read_toml(path, "configuration", ConfigError)
@@ -352,6 +362,14 @@ def load_file(path: Path) -> ResolvedConfig:
                 f"configuration error in {path}: `tool.achslint` must be a table ([tool.achslint]), "
                 f"not {type(data).__name__}"
             )
+    known = {item.name for item in fields(Settings)}
+    return {file_key(key) if key in known else key: value for key, value in data.items()}
+
+
+def _validated(path: Path, data: dict[str, Any]) -> Settings:
+    """The settings of a configuration's keys; a configuration error names `path` and the key."""
+    from pydantic import ValidationError
+
     model = _file_model()
     try:
         validated = model.model_validate(data)
@@ -359,7 +377,62 @@ def load_file(path: Path) -> ResolvedConfig:
         raise ConfigError(_format_error(path, exc, model)) from None
     settings = Settings(**{item.name: getattr(validated, item.name) for item in fields(Settings)})
     _check_contained(path, settings)
-    return ResolvedConfig(settings, path)
+    return settings
+
+
+# Keys whose paths are relative to the file that names them: taken from a file `extend` names, they are
+# moved to stay relative to the file that extends it. Patterns (include, exclude, per-file-ignores,
+# [[machine]] lists) are matched below the folder of the configuration that applies, wherever written.
+_PATH_KEYS = ("cnc-root", "homing-programs")
+
+
+def _extended(path: Path, chain: tuple[Path, ...]) -> tuple[dict[str, Any], tuple[Path, ...]]:
+    """A configuration's keys over those of the files it extends (`extend`, followed as far as it goes),
+    and those files, nearest first. The file's own keys win; a list the command line extends (`ignore`,
+    `extend-select`, `exclude`, `unfixable`) adds to the base's, and a table (`severity`,
+    `per-file-ignores`, `[fmt]` ...) is merged key by key. Each file is checked on its own first, so an
+    error names the file it is in."""
+    data = _table(path)
+    _validated(path, data)
+    base_name = data.get("extend")
+    if base_name is None:
+        return data, ()
+    base = named_path(path, base_name)
+    if any(os.path.realpath(base) == os.path.realpath(seen) for seen in (*chain, path)):
+        cycle = " -> ".join(str(p) for p in (*chain, path, base))
+        raise ConfigError(
+            f"configuration error in {path}: key `extend`: {base_name!r} extends in a circle ({cycle})"
+        )
+    from ..core.files import MISSING, not_a_list_file
+
+    problem = not_a_list_file(base, what="a configuration")
+    if problem is not None:
+        said = "does not exist" if problem in MISSING else f"is {problem}"
+        raise ConfigError(f"configuration error in {path}: key `extend`: {base_name!r} ({base}) {said}")
+    below, extends = _extended(base, (*chain, path))
+    for key in _PATH_KEYS:
+        if key in below:
+            below[key] = _moved(below[key], base, path)
+    merged = dict(below)
+    modes = {file_key(item.name): item.metadata["cli"] for item in fields(Settings)}
+    for key, value in data.items():
+        if modes.get(key) == EXTEND and isinstance(value, list) and isinstance(below.get(key), list):
+            merged[key] = [*below[key], *value]
+        elif isinstance(value, dict) and isinstance(below.get(key), dict):
+            merged[key] = {**below[key], **value}
+        else:
+            merged[key] = value
+    return merged, (base, *extends)
+
+
+def _moved(value: Any, source: Path, target: Path) -> Any:
+    """A path (or list of paths) relative to configuration `source`, made relative to `target`'s folder."""
+    if isinstance(value, list):
+        return [_moved(item, source, target) for item in value]
+    if not isinstance(value, str):
+        return value  # a wrong type: the check of the merged keys names it
+    where = named_path(source, value)
+    return os.path.relpath(where, Path(os.path.abspath(target)).parent)
 
 
 def named_path(config: Path, value: str) -> Path:
@@ -385,6 +458,7 @@ def _check_contained(path: Path, settings: Settings) -> None:
 
     repository = repository_of(path)
     named = [("cnc-root", settings.cnc_root)] if settings.cnc_root is not None else []
+    named += [("extend", settings.extend)] if settings.extend is not None else []
     named += [("homing-programs", program) for program in settings.homing_programs]
     for key, value in named:
         if "\x00" in value:

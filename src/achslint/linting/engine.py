@@ -3,7 +3,8 @@
 A rule takes part in one or more scopes (`rules.Scope`); `run` takes the subject of one scope through
 the whole pipeline:
 
-    the scope's enabled rules -> `noqa` suppressions -> AFTER rules (LIS009) -> severity overrides -> sorted
+    the scope's enabled rules -> `noqa` suppressions -> AFTER rules (LIS009) -> severity overrides
+        -> fixes of codes that are not fixable dropped -> sorted
 
     scope     subject                                      caller
     LIST      (Context,)                                   linter: one list (its kind's rules)
@@ -38,6 +39,8 @@ class Policy:
     extend_select: tuple[str, ...] = ()
     ignore: tuple[str, ...] = ()
     severity: tuple[tuple[str, Severity], ...] = ()
+    fixable: tuple[str, ...] | None = None  # the codes whose findings keep their fix (None: every code)
+    unfixable: tuple[str, ...] = ()
 
     @classmethod
     def of(
@@ -46,13 +49,21 @@ class Policy:
         extend_select: Iterable[str] = (),
         ignore: Iterable[str] = (),
         severity: Mapping[str, str] | None = None,
+        fixable: Iterable[str] | None = None,
+        unfixable: Iterable[str] = (),
     ) -> Policy:
         return cls(
             tuple(select) if select is not None else None,
             tuple(extend_select),
             tuple(ignore),
             tuple((code, Severity(name)) for code, name in sorted((severity or {}).items())),
+            tuple(fixable) if fixable is not None else None,
+            tuple(unfixable),
         )
+
+    def may_fix(self, code: str) -> bool:
+        """Whether findings of `code` keep their fix (`fixable` / `unfixable`, by code or prefix)."""
+        return matches(code, self.fixable or ALL) and not matches(code, self.unfixable)
 
     def enabled(self, code: str) -> bool:
         chosen = self.select or ALL
@@ -100,9 +111,12 @@ def run(
         for _, check in enabled_checks(Scope.AFTER, own, whole_axis, kind):
             found.extend(check(suppressions.path, suppressions.directives, enabled))
     for diagnostic in found:
-        override = (fixed or policy_of(diagnostic.path)).overrides.get(diagnostic.code)
+        chosen = fixed or policy_of(diagnostic.path)
+        override = chosen.overrides.get(diagnostic.code)
         if override is not None:
             diagnostic.severity = override
+        if diagnostic.fix is not None and not chosen.may_fix(diagnostic.code):
+            diagnostic.fix = None  # `unfixable`: --fix, the editor and the counts leave it alone
     found.sort(key=Diagnostic.sort_key)
     return found
 

@@ -63,7 +63,9 @@ class FileSettings:
     def policy(self) -> Policy:
         """Which rules run for this file, and the severities its configuration sets."""
         s = self.settings
-        return Policy.of(s.select, s.extend_select, [*s.ignore, *self.ignored_here], s.severity)
+        return Policy.of(
+            s.select, s.extend_select, [*s.ignore, *self.ignored_here], s.severity, s.fixable, s.unfixable
+        )
 
     @property
     def fail_on(self) -> str:
