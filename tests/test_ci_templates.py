@@ -1,5 +1,6 @@
-"""The CI wiring shipped in the repository runs for real: the GitHub Action (action.yml) step by step as the
-runner runs a composite action, on a fixture machine.
+"""The CI wiring shipped in the repository runs for real, on a fixture machine: the GitHub Action
+(action.yml) step by step as the runner runs a composite action, and the GitLab CI template (ci/gitlab.yml)
+as a GitLab runner runs its job.
 
 The runner is imitated closely enough for these steps: `${{ ... }}` expressions in `env:`, `with:` and `if:`
 are evaluated (inputs with their defaults, `github.action_path`, the outputs of earlier steps, `always()`),
@@ -7,7 +8,9 @@ each `run:` goes to `bash --noprofile --norc -eo pipefail` in the workspace with
 files of its own, a failed step skips the later ones unless their condition says `always()`, and `uses:`
 steps are recorded (with their evaluated `with:`) instead of run. The install step needs a fresh virtual
 environment and pip, so the default tests run the steps after it with this checkout's achslint on PATH, and
-one `slow` test runs them all.
+one `slow` test runs them all. The GitLab job's `script` runs the same way (one shell, `-eo pipefail`, in
+`$CI_PROJECT_DIR`, its variables in the environment, later ones overriding the template's); its
+`before_script` installs, so only the slow test runs it.
 """
 
 from __future__ import annotations
@@ -18,16 +21,18 @@ import re
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
 
-from .conftest import FIXTURES, ROOT
+from .conftest import FIXTURES, ROOT, jenkins_junit_errors
 
 yaml = pytest.importorskip("yaml")
 
 ACTION = ROOT / "action.yml"
+GITLAB = ROOT / "ci" / "gitlab.yml"
 
 
 def workspace(tmp_path: Path, broken: bool = False) -> Path:
@@ -266,3 +271,124 @@ def test_the_whole_action_installs_achslint_from_its_checkout(tmp_path):
     assert run.returncode == 1 and "LIS203" in run.stdout
     assert (repo / "achslint.sarif").is_file()
     assert (tmp_path / "runner-temp" / "achslint-venv").is_dir()
+
+
+# --- the GitLab CI template -----------------------------------------------------------------------------
+
+
+@dataclass
+class JobRun:
+    returncode: int
+    stdout: str
+    stderr: str
+
+
+def run_gitlab_job(
+    project: Path, tmp_path: Path, variables: dict[str, str] | None = None, *, install: bool = False
+) -> JobRun:
+    """Run the template's `achslint` job in `project` ($CI_PROJECT_DIR) as a shell runner would: the job's
+    variables (the template's, then the including project's) in the environment, `before_script` (only
+    with `install`: it builds a venv) and `script` in one shell that stops at the first failing command."""
+    job = yaml.safe_load(GITLAB.read_text(encoding="utf-8"))["achslint"]
+    declared = job["variables"]
+    unknown = set(variables or {}) - set(declared)
+    assert not unknown, f"the template has no variable {unknown}"
+    temp = tmp_path / "job-temp"
+    temp.mkdir(exist_ok=True)
+    env = {**os.environ, **{k: str(v) for k, v in declared.items()}, **(variables or {})}
+    env.update({"CI": "true", "GITLAB_CI": "true", "CI_PROJECT_DIR": str(project), "TMPDIR": str(temp)})
+    env["NO_COLOR"] = "1"
+    env.pop("PYTHONPATH", None)
+    env.pop("GITHUB_ACTIONS", None)
+    ours = str(Path(sys.executable).parent)
+    others = [p for p in env["PATH"].split(os.pathsep) if Path(p) != Path(ours)]
+    env["PATH"] = os.pathsep.join(others if install else [ours, *others])
+    lines = [*(job["before_script"] if install else []), *job["script"]]
+    script = temp / "job.sh"
+    script.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    done = subprocess.run(
+        ["bash", "--noprofile", "--norc", "-eo", "pipefail", str(script)],
+        cwd=project,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    return JobRun(done.returncode, done.stdout, done.stderr)
+
+
+def reports(project: Path) -> tuple[list[dict], ET.Element]:
+    """The job's artifacts, read from the names the template declares."""
+    declared = yaml.safe_load(GITLAB.read_text(encoding="utf-8"))["achslint"]["artifacts"]
+    assert declared["when"] == "always"  # reports of a failing job are kept: that is when they matter
+    quality = json.loads((project / declared["reports"]["codequality"]).read_text(encoding="utf-8"))
+    junit = ET.parse(project / declared["reports"]["junit"]).getroot()
+    return quality, junit
+
+
+def test_the_gitlab_job_fails_on_an_error_and_keeps_both_reports(tmp_path):
+    project = workspace(tmp_path, broken=True)
+    job = run_gitlab_job(project, tmp_path)
+    assert job.returncode == 1, job.stderr
+    assert "listen/achsmds3.lis:8:34: LIS203 [error]" in job.stdout and job.stderr == ""
+    quality, junit = reports(project)
+    majors = [issue for issue in quality if issue["severity"] == "major"]
+    assert [(i["check_name"], i["location"]["path"]) for i in majors] == [("LIS203", "listen/achsmds3.lis")]
+    assert junit.get("failures") == "1" and jenkins_junit_errors(junit) == []
+
+
+def test_an_absolute_path_gives_paths_relative_to_the_project(tmp_path):
+    project = workspace(tmp_path, broken=True)
+    relative = run_gitlab_job(project, tmp_path)
+    first, _ = reports(project)
+    absolute = run_gitlab_job(project, tmp_path, {"ACHSLINT_PATHS": f"{project}/listen"})
+    assert absolute.returncode == relative.returncode == 1 and absolute.stderr == ""
+    second, _ = reports(project)
+    assert {issue["location"]["path"] for issue in second} == {"listen/achsmds2.lis", "listen/achsmds3.lis"}
+    # the same findings under the same fingerprints, however the path was given
+    assert sorted(i["fingerprint"] for i in second) == sorted(i["fingerprint"] for i in first)
+
+
+def test_the_gitlab_job_passes_a_clean_machine_and_takes_arguments(tmp_path):
+    project = workspace(tmp_path)  # infos only
+    assert run_gitlab_job(project, tmp_path).returncode == 0
+    strict = run_gitlab_job(project, tmp_path, {"ACHSLINT_ARGS": "--fail-on info --select LIS102"})
+    assert strict.returncode == 1
+    quality, junit = reports(project)
+    assert {issue["check_name"] for issue in quality} == {"LIS102"}
+    assert int(junit.get("failures")) == len(quality) == 2
+
+
+def test_the_gitlab_job_says_what_to_install(tmp_path):
+    project = workspace(tmp_path)
+    job = run_gitlab_job(project, tmp_path, install=True)  # ACHSLINT_REQUIREMENT not set: stops at once
+    assert job.returncode == 2 and "set ACHSLINT_REQUIREMENT" in job.stderr
+    assert not (tmp_path / "job-temp" / "achslint-venv").exists()
+
+
+@pytest.mark.slow  # a fresh virtual environment and pip install of this checkout
+def test_the_whole_gitlab_job_installs_what_it_is_told(tmp_path):
+    project = workspace(tmp_path, broken=True)
+    job = run_gitlab_job(project, tmp_path, {"ACHSLINT_REQUIREMENT": str(ROOT)}, install=True)
+    assert job.returncode == 1 and "LIS203" in job.stdout, job.stderr
+    assert (tmp_path / "job-temp" / "achslint-venv" / "bin" / "achslint").is_file()
+    quality, _ = reports(project)
+    assert any(issue["check_name"] == "LIS203" for issue in quality)
+
+
+def test_code_quality_paths_outside_a_gitlab_job(tmp_path, monkeypatch):
+    from .conftest import run_cli
+
+    project = workspace(tmp_path, broken=True)
+    monkeypatch.chdir(project / "listen")  # no $CI_PROJECT_DIR: relative to the working directory, as ruff
+    monkeypatch.delenv("CI_PROJECT_DIR", raising=False)
+    here = run_cli("lint", str(project / "listen" / "achsmds3.lis"), "--format", "gitlab")
+    assert {issue["location"]["path"] for issue in json.loads(here.stdout)} == {"achsmds3.lis"}
+    elsewhere = project.parent / "elsewhere"  # a file outside the project keeps the path it was given
+    shutil.copytree(project / "listen", elsewhere)
+    outside = run_cli(
+        "lint", str(elsewhere / "achsmds3.lis"), "--format", "gitlab", env={"CI_PROJECT_DIR": str(project)}
+    )
+    assert {issue["location"]["path"] for issue in json.loads(outside.stdout)} == {
+        str(elsewhere / "achsmds3.lis")
+    }
