@@ -15,6 +15,8 @@ pytest.importorskip("lsprotocol", reason="the lsp extra is not installed")
 
 from lsprotocol import types as lsp
 
+from achslint.api import lint
+from achslint.core.decode import UnreadableInput
 from achslint.core.diagnostics import Diagnostic, Severity
 from achslint.docs import rules_markdown
 from achslint.lsp import features
@@ -214,6 +216,39 @@ def test_unknown_documents_have_no_snapshot_or_machine(session: Session, tmp_pat
     assert session.snapshot(untitled.uri) is None
 
 
+# -- what lint refuses to read ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("codec", ["utf-16", "utf-32"])
+def test_a_wide_file_the_editor_decoded_is_refused_as_lint_refuses_it(
+    session: Session, tmp_path: Path, codec: str
+) -> None:
+    """Issue 28 item 4: the editor shows the decoded text, the CNC gets the wide bytes it saves."""
+    text = "kopf.achs_nr  1\nEnde\n"
+    path = tmp_path / "achsmds1.lis"
+    path.write_bytes(text.encode(codec))  # with its byte-order mark
+    with pytest.raises(UnreadableInput) as refused:
+        lint(path)
+    document = opened(session, path, text)
+    snapshot = snapshot_of(session, document)
+    assert snapshot.result.error is not None and codec.upper() in snapshot.result.error
+    assert snapshot.result.error in str(refused.value)  # the command line's words
+    shown = features.publishable(document, snapshot, [])
+    assert shown[0].severity == lsp.DiagnosticSeverity.Error and codec.upper() in shown[0].message
+    path.write_bytes(text.encode("latin-1"))  # saved as the CNC reads it: checked again
+    session.forget_disk()
+    assert snapshot_of(session, document).result.error is None
+
+
+def test_nul_characters_in_the_buffer_are_refused_as_a_binary_file(session: Session, tmp_path: Path) -> None:
+    document = opened(session, tmp_path / "achsmds1.lis", "kopf.achs_nr  1\0\0\nEnde\n")
+    error = snapshot_of(session, document).result.error
+    assert error is not None and "binary" in error
+    buffer = Document("untitled:1", None, "\0Ende\n", 1)  # not a file: the buffer alone decides
+    session.open(buffer)
+    assert "binary" in (snapshot_of(session, buffer).result.error or "")
+
+
 # -- editor settings ---------------------------------------------------------------------------------------
 
 
@@ -223,8 +258,9 @@ def test_editor_settings_are_read_leniently() -> None:
         {"achslint": {"select": "LIS202,LIS203", "extend_select": ["LIS301"], "debounceMs": 99999}}
     )
     assert nested.select == ["LIS202", "LIS203"] and nested.extend_select == ["LIS301"]
-    assert nested.debounce_ms == 200  # out of range: the default
-    assert ClientSettings.from_dict({"debounce_ms": "fast", "inlay_hints": 1}).debounce_ms == 200
+    assert nested.debounce_ms == 0  # out of range: the default (no delay: lint as soon as the last lint ends)
+    assert ClientSettings.from_dict({"debounce_ms": "fast", "inlay_hints": 1}).debounce_ms == 0
+    assert ClientSettings.from_dict({"debounceMs": 150}).debounce_ms == 150
     assert ClientSettings.from_dict({"inlay_hints": 1}).inlay_hints is True
     assert ClientSettings.from_dict({"select": 5}).select is None
 

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..catalogue.kinds import STARTUP
-from ..core.decode import UnreadableInput, text_bytes
+from ..core.decode import UnreadableInput, decode, text_bytes
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml, read_list, starts_with_bom
 from ..linting.config import (
@@ -52,7 +52,7 @@ class ClientSettings:
     extend_select: list[str] = field(default_factory=list)
     ignore: list[str] = field(default_factory=list)
     inlay_hints: bool = False
-    debounce_ms: int = 200
+    debounce_ms: int = 0  # 0: each edit is linted as soon as the lint before it is done
     problems: list[str] = field(default_factory=list)  # codes that pick no rule (shown to the user, not used)
 
     @classmethod
@@ -76,13 +76,13 @@ class ClientSettings:
                     problems.append(f"achslint.{key}: {exc}")
             return chosen
 
-        debounce = raw.get("debounceMs", raw.get("debounce_ms", 200))
+        debounce = raw.get("debounceMs", raw.get("debounce_ms", 0))
         return cls(
             select=codes("select") or None,
             extend_select=codes("extendSelect") or codes("extend_select") or [],
             ignore=codes("ignore") or [],
             inlay_hints=bool(raw.get("inlayHints", raw.get("inlay_hints", False))),
-            debounce_ms=debounce if isinstance(debounce, int) and 0 <= debounce <= 5000 else 200,
+            debounce_ms=debounce if isinstance(debounce, int) and 0 <= debounce <= 5000 else 0,
             problems=problems,
         )
 
@@ -147,6 +147,9 @@ class Session:
         ] = {}  # real path of a list -> its machines (until forget_disk)
         self._finder: Finder | None = None  # with the editor's settings (until they or the disk change)
         self._machine_found: dict[str, list[_Found]] = {}  # uri -> the machine findings last reported for it
+        self._refused: dict[
+            tuple[str, int, int], str | None
+        ] = {}  # (real path, stamp) -> why lint refuses it
 
     # -- documents ---------------------------------------------------------------------------
     def open(self, document: Document) -> None:
@@ -177,6 +180,7 @@ class Session:
 
         self._disk.clear()
         self._machines.clear()
+        self._refused.clear()
         self._finder = None
         _REAL.clear()
         self._by_real = {_real(d.path): d for d in self.documents.values() if d.path is not None}
@@ -224,6 +228,9 @@ class Session:
 
     def _lint(self, document: Document) -> Snapshot:
         config, config_error = self.config_for(document)
+        refused = None if is_xml(document.name) else self._refusal(document)
+        if refused is not None:  # what `achslint lint` refuses to read: its message, nothing else
+            return Snapshot(document.version, document.text, FileResult(document.name, [], refused))
         settings = self.file_settings(config, document.path, document.name)
         if document.path is not None:  # the kind a start-up list names it as, as `achslint lint` reads it
             settings.kind = self.finder.entry_kind(document.path)
@@ -254,6 +261,31 @@ class Session:
             file = replace(file, bom=True)
         result = lint_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
+
+    def _refusal(self, document: Document) -> str | None:
+        """Why `achslint lint` refuses the list as the editor will save it: NUL characters in the buffer, or a
+        file that is UTF-16/32 or binary on disk (the editor decoded it; it writes it back so)."""
+        if "\0" in document.text:
+            try:
+                decode(text_bytes(document.body))
+            except UnreadableInput as exc:
+                return str(exc)
+        if document.path is None:
+            return None
+        try:
+            info = os.stat(document.path)
+        except (OSError, ValueError):
+            return None
+        key = (_real(document.path), info.st_mtime_ns, info.st_size)
+        if key not in self._refused:
+            try:
+                decode(read_list(document.path))
+                self._refused[key] = None
+            except UnreadableInput as exc:
+                self._refused[key] = str(exc)
+            except (OSError, ValueError):
+                self._refused[key] = None
+        return self._refused[key]
 
     def _underneath(self, document: Document) -> tuple[Path | None, bytes | None]:
         """The list the CNC loads under the document, as the editor has it: the default list of its start-up
