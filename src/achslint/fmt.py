@@ -103,6 +103,8 @@ class Style:
 
 def _advance(column: int, text: str) -> int:
     """The column after `text` written from `column` (tabs to the next tab stop)."""
+    if "\t" not in text:
+        return column + len(text)
     for char in text:
         column = _next_stop(column) if char == "\t" else column + 1
     return column
@@ -175,7 +177,8 @@ class _Row:
         return _advance(self.value_end, self.sep2)
 
     def alignments(self) -> tuple[Alignment, Alignment]:
-        return Alignment(LEFT, self.value_start), Alignment(RIGHT, self.extent_end)
+        start = self.value_start
+        return Alignment(LEFT, start), Alignment(RIGHT, _advance(start, self.tail))
 
     def fits(self, kept: set[Alignment]) -> bool:
         """Whether the value stands in one of the `kept` alignments (an indented line never does)."""
