@@ -163,6 +163,32 @@ def test_gantry_rules_do_not_pair_axes_by_the_template_number_of_an_export(tmp_p
     ]
 
 
+def test_a_gantry_master_numbered_by_the_repeated_template_header_is_not_missing(tmp_path: Path) -> None:
+    # X and Y keep the template header (kopf.achs_nr 1), Z was given its own number 3 and names 1 as its
+    # gantry master (P-AXIS-00070): two lists have kopf.achs_nr 1, so "no axis list has it" (LIS503) is false.
+    folder = tmp_path / "export"
+    folder.mkdir()
+    for item, (name, number, extra) in enumerate(
+        [("X", 1, ""), ("Y", 1, ""), ("Z", 3, "kenngr.gantry_ax_nr              1\n")], start=1
+    ):
+        (folder / f"Axis_{name}.xti").write_text(
+            _TREE_ITEM.format(name=name, item=item, number=number, header=name, extra=extra)
+        )
+    found = json.loads(run_cli("lint", str(folder), "--format", "json").stdout)["diagnostics"]
+    assert [d["code"] for d in found if d["code"] == "LIS503"] == []
+    # a master number no list carries is still missing
+    text = (
+        (folder / "Axis_Z.xti")
+        .read_text()
+        .replace("gantry_ax_nr              1", "gantry_ax_nr              7")
+    )
+    (folder / "Axis_Z.xti").write_text(text)
+    found = json.loads(run_cli("lint", str(folder), "--format", "json").stdout)["diagnostics"]
+    assert [(Path(d["path"]).name, d["code"]) for d in found if d["code"] == "LIS503"] == [
+        ("Axis_Z.xti", "LIS503")
+    ]
+
+
 def test_a_start_up_list_is_linted_as_a_list_and_so_are_the_compensation_lists_it_names(
     tmp_path: Path,
 ) -> None:

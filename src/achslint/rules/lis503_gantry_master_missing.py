@@ -60,7 +60,9 @@ SUMMARY = "Gantry slave whose master axis is not in the machine"
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     members = machine.numbered()  # not by a template number TwinCAT repeats in every export
-    numbers = {info["achs_nr"] for _, info in members}
+    # A master number that lists carry, even as a template number repeated in several tree items, is not
+    # missing: which of those axes leads cannot be told, but the message would say no list has it.
+    numbers = {info.get("achs_nr") for _, info in machine.members}
     for member in members:
         master = member[1]["gantry_ax_nr"]
         if master and master not in numbers:
