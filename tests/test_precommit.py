@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from .conftest import FIXTURES, ROOT
+from .test_editor_associations import names as list_names
 from .test_strictness import run_in
 
 HOOKS = ROOT / ".pre-commit-hooks.yaml"
@@ -38,9 +39,12 @@ def lis501(result) -> list[str]:
 
 def test_hook_definition_fits_whole_machines():
     text = HOOKS.read_text()
-    assert text.count("require_serial: true") == 2
+    hooks = {hook["id"]: hook for hook in pytest.importorskip("yaml").safe_load(text)}
+    assert hooks["achslint"]["require_serial"] is True  # one process sees every list of a machine
+    assert not hooks["achslint-fmt"].get("require_serial")  # fmt reads no neighbours: files may be shared out
     assert "--fail-on" not in text  # the repository's configuration decides
     patterns = re.findall(r"files: '(.*)'", text)
+    assert patterns == [hooks["achslint"]["files"], hooks["achslint-fmt"]["files"]]
     lint_pattern = re.compile(patterns[0])
     for name in (
         "listen/achsmds1.lis",
@@ -58,6 +62,11 @@ def test_hook_definition_fits_whole_machines():
     assert not lint_pattern.search("README.md")
     fmt_pattern = re.compile(patterns[1])
     assert fmt_pattern.search("listen/sda_mds1.lis") and not fmt_pattern.search("Axes/Axis_X.xti")
+    # every list of the repository's fixtures, of every kind, and every name the code knows a list by
+    lists = [p.relative_to(FIXTURES).as_posix() for p in FIXTURES.rglob("*") if p.suffix.lower() == ".lis"]
+    assert len(lists) > 100 and "kinds/werkz_d1.lis" in lists
+    for name in [*lists, *list_names()]:
+        assert lint_pattern.search(name) and fmt_pattern.search(name), name
 
 
 def test_a_list_passed_alone_is_checked_against_its_neighbours(tmp_path):
