@@ -207,6 +207,17 @@ def test_an_axis_list_that_cannot_be_read_leaves_the_axis_numbers_unknown(tmp_pa
     assert [row[2] for row in lint_machine(path, "LIS504,LIS519")] == ["LIS504"]
 
 
+def test_a_list_assigned_to_an_axis_the_machine_lacks_is_lis519s_alone(tmp_path: Path) -> None:
+    # achs_kw_log_ax_nr 7 (P-STUP-00036) names no axis of the machine: no axis loads the list, so the CNC never
+    # compares its kopf.achs_nr (error 110229) and LIS520's "axis 7 runs without it" cannot happen
+    startup = "zahl_kw 1\nachs_kw[0] ./achskw1.lis\nachs_kw_log_ax_nr[0] 7\n"
+    path = machine(tmp_path, startup, achskw1=COMPENSATION.format(head="kopf.achs_nr 1\n"))
+    assert [row[2] for row in lint_machine(path, "LIS519,LIS520")] == ["LIS519"]
+    # assigned to axis 2, which the machine has, the header 1 is LIS520's
+    (tmp_path / "hochlauf.lis").write_text((tmp_path / "hochlauf.lis").read_text().replace("] 7", "] 2"))
+    assert [row[2] for row in lint_machine(path, "LIS519,LIS520")] == ["LIS520"]
+
+
 def test_a_compensation_list_without_kopf_achs_nr_is_axis_0(tmp_path: Path) -> None:
     startup = "zahl_kw 1\nachs_kw[0] ./achskw1.lis\nachs_kw_log_ax_nr[0] 1\n"
     path = machine(tmp_path, startup, achskw1=COMPENSATION.format(head=""))
@@ -293,7 +304,10 @@ def test_coupled_pairs_in_a_circle_of_three_are_one_finding_on_the_pair_that_clo
     # 1 leads 2, 2 leads 3, 3 leads 1 (P-CHAN-00037/38): the third pair (lines 5-6) closes the circle
     text = _pairs((1, 2), (2, 3), (3, 1)) + "Ende\n"
     [(code, line, message)] = found(text, "channel", ("LIS706",))
-    assert (code, line) == ("LIS706", 6) and "logical axes 3 → 1 → 2 → 3" in message  # 3 leads 1 (the new pair), 1 leads 2, 2 leads 3
+    assert (code, line) == (
+        "LIS706",
+        6,
+    ) and "logical axes 3 → 1 → 2 → 3" in message  # 3 leads 1 (the new pair), 1 leads 2, 2 leads 3
 
 
 def test_a_chain_and_one_master_with_two_slaves_are_no_conflict() -> None:

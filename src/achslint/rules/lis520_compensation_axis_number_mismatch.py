@@ -78,6 +78,7 @@ from typing import TYPE_CHECKING
 
 from ..catalogue.kinds import COMPENSATION
 from ..core.diagnostics import Diagnostic, Severity
+from ._crosslist import by_number, every_axis_list_read
 from ._kindvalues import (
     at_setting,
     compensation_assignments,
@@ -100,11 +101,15 @@ SUMMARY = "Compensation list's kopf.achs_nr differs from its achs_kw_log_ax_nr (
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
+    read = startup is not None and every_axis_list_read(startup, machine.members)
+    numbers = by_number(machine.members) if read else None
     for found in compensation_assignments(machine):
         entry, assignment = found.entry, found.setting
         expected = whole(assignment)
         if entry.path is None or assignment is None or not expected:
-            continue  # missing (LIS504), or no assignment (or 0, no axis): LIS519
+            continue  # missing, or no assignment (or 0, no axis): LIS519
+        if numbers is not None and expected not in numbers:
+            continue  # assigned to an axis the machine does not have: no axis loads it (LIS519)
         settings = loaded_settings(machine, entry, "axis compensation list", COMPENSATION)
         if settings is None:
             continue
