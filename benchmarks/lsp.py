@@ -17,7 +17,12 @@
 - LIS101 on a list of 1,000 distinct unknown names (the closest-name search), in-process;
 - a hover sent while that list is linted again, over stdio: answered from the last analysis;
 - a 50,000-line list in a fresh server process: a hover while it is linted again, the server's
-  resident memory, and the size of its diagnostics message (capped at 1,000 findings).
+  resident memory, and the size of its diagnostics message (capped at 1,000 findings);
+- as a client sees them (issue 28): a server process with the editor's default settings and a
+  client's capabilities, a 2,000-line list typed into (bursts of keystrokes 40 ms apart): from the
+  last keystroke to its diagnostics, and hover, completion, formatting and outline asked right after
+  a keystroke (worst case, not median); then a 50,000-line list: how long each of those requests
+  waits while the list is linted again.
 """
 
 from __future__ import annotations
@@ -46,6 +51,23 @@ BUDGET_UNKNOWN_S = 0.5  # LIS101 on 1,000 distinct unknown names
 BUDGET_HOVER_WHILE_LINT_MS = 50
 BUDGET_LARGE_MEMORY_MB = 300  # a server with a 50,000-line list open
 BUDGET_DIAGNOSTICS_BYTES = 1_000_000  # one publishDiagnostics message
+# As a client sees them (issue 28), a 2,000-line list: worst case of each, milliseconds
+BUDGET_CLIENT_MS = {"diagnostics": 50, "hover": 5, "completion": 20, "formatting": 50, "outline": 20}
+BUDGET_LARGE_WAIT_MS = 50  # a 50,000-line list: no request waits longer
+KEYSTROKE_GAP = 0.04  # seconds between two keystrokes of a burst (a fast typist)
+CLIENT_CAPABILITIES = {  # what an editor announces (Neovim 0.11's, abridged)
+    "general": {"positionEncodings": ["utf-16"]},
+    "textDocument": {
+        "synchronization": {"didSave": True, "dynamicRegistration": False},
+        "hover": {"contentFormat": ["markdown", "plaintext"]},
+        "completion": {
+            "completionItem": {"snippetSupport": True, "documentationFormat": ["markdown", "plaintext"]},
+            "completionList": {"itemDefaults": ["editRange", "insertTextFormat", "insertTextMode", "data"]},
+        },
+        "documentSymbol": {"hierarchicalDocumentSymbolSupport": True},
+        "publishDiagnostics": {"relatedInformation": True, "versionSupport": True},
+    },
+}
 
 
 def verdict(ok: bool) -> str:
@@ -546,9 +568,144 @@ def busy_server(runs: int) -> bool:
     return ok
 
 
+def _typed(uri: str, version: int, line: int, character: int, text: str, length: int = 0) -> dict:
+    end = {"line": line, "character": character + length}
+    change = {"range": {"start": {"line": line, "character": character}, "end": end}, "text": text}
+    return {
+        "method": "textDocument/didChange",
+        "params": {"textDocument": {"uri": uri, "version": version}, "contentChanges": [change]},
+    }
+
+
+def _client_requests(uri: str, path_line: int, value_line: int) -> dict[str, tuple[str, dict]]:
+    document = {"uri": uri}
+    return {
+        "hover": (
+            "textDocument/hover",
+            {"textDocument": document, "position": {"line": path_line, "character": 3}},
+        ),
+        "completion": (
+            "textDocument/completion",
+            {
+                "textDocument": document,
+                "position": {"line": value_line, "character": len("getriebe[0].vb_re")},
+            },
+        ),
+        "formatting": (
+            "textDocument/formatting",
+            {"textDocument": document, "options": {"tabSize": 4, "insertSpaces": True}},
+        ),
+        "outline": ("textDocument/documentSymbol", {"textDocument": document}),
+    }
+
+
+def as_a_client_sees_it(bursts: int) -> bool:
+    """The budgets of issue 28, timed at the client's end of a server process started as an editor starts
+    it (no settings: the defaults), with a client's capabilities."""
+    folder = Path(tempfile.mkdtemp(prefix="achslint-lsp-client-"))
+    client = Client([sys.executable, "-m", "achslint", "server"])
+    client.request(
+        "initialize",
+        {"processId": os.getpid(), "rootUri": folder.as_uri(), "capabilities": CLIENT_CAPABILITIES},
+    )
+    client.send({"method": "initialized", "params": {}})
+    path = folder / "achsmds1.lis"
+    text = axis_list(2000)
+    lines = text.splitlines()
+    value_line = len(lines)  # a line typed at the end, before Ende: `getriebe[0].vb_re`
+    lines.insert(len(lines) - 1, "getriebe[0].vb_re")
+    text = "\n".join(lines) + "\n"
+    path.write_text(text, encoding="utf-8")
+    uri = path.as_uri()
+    _open(client, uri, text)
+    value_line = lines.index("getriebe[0].vb_re")
+    path_line = next(i for i, line in enumerate(lines) if line.split()[1:2] and line.split()[1].isdigit())
+    column = len(lines[path_line]) - 1
+    requests = _client_requests(uri, path_line, value_line)
+    taken: dict[str, list[float]] = {name: [] for name in ["diagnostics", *requests]}
+    version = 1
+    for burst in range(bursts):
+        for key in range(6):  # a burst of keystrokes on a value: one digit typed over
+            version += 1
+            client.send(_typed(uri, version, path_line, column, str((burst + key) % 10), 1))
+            last = time.perf_counter()
+            time.sleep(KEYSTROKE_GAP)
+        client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
+        taken["diagnostics"].append(client.published[uri][0] - last)
+        for name, (method, params) in requests.items():  # each asked right after a keystroke
+            version += 1
+            client.send(_typed(uri, version, path_line, column, str(burst % 10), 1))
+            asked = time.perf_counter()
+            answer = client.request(method, params)
+            taken[name].append(time.perf_counter() - asked)
+            assert "error" not in answer, answer
+            if name == "completion":
+                items = answer["result"]["items"] if isinstance(answer["result"], dict) else answer["result"]
+                assert any(item["label"] == "getriebe[0].vb_reflow" for item in items), items[:3]
+            client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
+    client.close()
+    ok = True
+    print("as a client sees them: a server process with the default settings, a 2,000-line list")
+    for name, samples in taken.items():
+        worst = max(samples) * 1000
+        budget = BUDGET_CLIENT_MS[name]
+        good = worst <= budget
+        ok = ok and good
+        label = (
+            "last keystroke -> diagnostics" if name == "diagnostics" else f"{name} right after a keystroke"
+        )
+        print(
+            f"  {label:<40} {worst:6.1f} ms worst, {median_ms(samples):6.1f} ms median "
+            f"(budget <= {budget} ms)  -> {verdict(good)}"
+        )
+
+    client = Client([sys.executable, "-m", "achslint", "server"])
+    client.request(
+        "initialize",
+        {"processId": os.getpid(), "rootUri": folder.as_uri(), "capabilities": CLIENT_CAPABILITIES},
+    )
+    client.send({"method": "initialized", "params": {}})
+    large = folder / "large" / "achsmds1.lis"
+    large.parent.mkdir()
+    lines = axis_list(50_000).splitlines()
+    lines.insert(len(lines) - 1, "getriebe[0].vb_re")
+    text = "\n".join(lines) + "\n"
+    large.write_text(text, encoding="utf-8")
+    uri = large.as_uri()
+    _open(client, uri, text)
+    value_line = lines.index("getriebe[0].vb_re")
+    column = lines[1].index("1 ")
+    waits: dict[str, list[float]] = {name: [] for name in requests}
+    version = 1
+    for run in range(max(2, bursts // 2)):
+        for name, (method, params) in _client_requests(uri, 1, value_line).items():
+            version += 1
+            client.send(_typed(uri, version, 1, column, str(run % 9 + 1), 1))
+            time.sleep(0.05)  # the lint of the edit has begun
+            asked = time.perf_counter()
+            answer = client.request(method, params)
+            waits[name].append(time.perf_counter() - asked)
+            assert "error" not in answer, answer
+        client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
+    client.close()
+    worst_name, worst = max(
+        ((name, max(samples)) for name, samples in waits.items()), key=lambda pair: pair[1]
+    )
+    good = worst * 1000 <= BUDGET_LARGE_WAIT_MS
+    ok = ok and good
+    print("  a 50,000-line list, each request while it is linted again:")
+    for name, samples in waits.items():
+        print(f"    {name:<12} {max(samples) * 1000:7.1f} ms worst, {median_ms(samples):7.1f} ms median")
+    print(
+        f"  longest wait {worst * 1000:.1f} ms ({worst_name}; budget <= {BUDGET_LARGE_WAIT_MS} ms)  -> {verdict(good)}"
+    )
+    return ok
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description="Measure the language server against its budgets.")
     parser.add_argument("--quick", action="store_true", help="fewer repetitions")
+    parser.add_argument("--client", action="store_true", help="only the budgets as a client sees them")
     args = parser.parse_args()
     try:
         import pygls.lsp.server  # noqa: F401
@@ -556,6 +713,8 @@ def main() -> int:
         print("language server: SKIPPED (pip install 'achslint[lsp]' to measure it)")
         return 0
     runs = 15 if args.quick else 41
+    if args.client:
+        return 0 if as_a_client_sees_it(4 if args.quick else 10) else 1
     ok = in_process(runs)
     print()
     ok = server_process(100, runs) and ok
@@ -565,6 +724,8 @@ def main() -> int:
     ok = unknown_names() and ok
     print()
     ok = busy_server(5 if args.quick else 15) and ok
+    print()
+    ok = as_a_client_sees_it(4 if args.quick else 10) and ok
     return 0 if ok else 1
 
 

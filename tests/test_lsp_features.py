@@ -681,3 +681,24 @@ def test_an_open_start_up_list_gets_its_own_lines_checked_as_lint_checks_them(
     document = opened(session, startup, startup.read_text() + "zahl_mdz  2\n")
     _, found, _ = session.diagnostics(document.uri)
     assert [(d.line, d.code) for d in found] == [(3, "LIS516"), (5, "LIS003")]
+
+
+# -- outline -------------------------------------------------------------------------------------------------
+
+
+def test_outline_positions_are_the_clients_units_in_ascii_and_wide_texts(
+    session: Session, tmp_path: Path
+) -> None:
+    """An ASCII text's outline is built without measuring lines; a text with a character outside the BMP
+    (two UTF-16 units) is measured: both give the positions `lsp_range` gives."""
+    for name, comment in (("achsmds1.lis", "plain"), ("achsmds2.lis", "\U0001d707 wide")):
+        text = f"kopf.achs_nr  1  # {comment}\ngetriebe[0].vb_reflow  100\nEnde\n"
+        document = opened(session, tmp_path / name, text)
+        file = snapshot_of(session, document).file
+        assert file is not None
+        symbols = features.document_symbols(document, file)
+        kopf = next(s for s in symbols if s.name == "kopf")
+        line = file.lines[0]
+        assert kopf.children[0].range == features.lsp_range(document, 1, 1, 1, line.end_column)
+        assert kopf.children[0].range.end.character == len(text.splitlines()[0].encode("utf-16-le")) // 2
+        assert [s.name for s in symbols] == ["kopf", "getriebe[0]", "Ende"]

@@ -915,23 +915,31 @@ def format_range(
 
 
 def document_symbols(document: Document, file: syntax.ListFile) -> list[lsp.DocumentSymbol]:
+    """The outline: `Ende`, and each parameter under its group (`kopf`, `getriebe[0]` ...)."""
+    plain = document.encoding == "utf-32" or (not document.bom and document.text.isascii())
+
+    def span(number: int, start: int, end: int) -> lsp.Range:
+        if plain:  # code points are the client's units: no line needs to be measured
+            return lsp.Range(
+                lsp.Position(number - 1, start - 1), lsp.Position(number - 1, max(end, start) - 1)
+            )
+        return lsp_range(document, number, start, number, end)
+
     groups: dict[str, list[lsp.DocumentSymbol]] = {}
     out: list[lsp.DocumentSymbol] = []
+    field, event = lsp.SymbolKind.Field, lsp.SymbolKind.Event
     for line in file.lines:
         if line.kind == syntax.END:
-            where = lsp_range(document, line.number, line.path_column, line.number, line.end_column)
-            out.append(lsp.DocumentSymbol("Ende", lsp.SymbolKind.Event, where, where, detail="end marker"))
+            where = span(line.number, line.path_column, line.end_column)
+            out.append(lsp.DocumentSymbol("Ende", event, where, where, detail="end marker"))
             continue
-        if line.kind != syntax.ASSIGNMENT or not line.path_ok or not line.path:
+        path = line.path
+        if line.kind != syntax.ASSIGNMENT or not line.path_ok or not path:
             continue
-        head, _, tail = line.path.partition(".")
-        where = lsp_range(document, line.number, 1, line.number, line.end_column)
-        name_range = lsp_range(
-            document, line.number, line.path_column, line.number, line.path_column + len(line.path)
-        )
-        symbol = lsp.DocumentSymbol(
-            tail or head, lsp.SymbolKind.Field, where, name_range, detail=line.value or ""
-        )
+        head, _, tail = path.partition(".")
+        where = span(line.number, 1, line.end_column)
+        name_range = span(line.number, line.path_column, line.path_column + len(path))
+        symbol = lsp.DocumentSymbol(tail or head, field, where, name_range, detail=line.value or "")
         if not tail:
             out.append(symbol)
             continue

@@ -108,6 +108,8 @@ class AchslintServer(LanguageServer):
         self._waiting: dict[str, list[tuple[int, asyncio.Future[Analysis | None]]]] = {}
         self._to_lint: Latest[tuple[Document, int]] = Latest()
         self._fixes: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # fix-all edits by generation
+        self.formats: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # formatting edits by generation
+        self.outlines: dict[str, tuple[Analysis, list[lsp.DocumentSymbol]]] = {}  # the outline of an analysis
         self._converter = default_converter()  # type: ignore[no-untyped-call]  # the one pygls uses
         self._loop: asyncio.AbstractEventLoop | None = None
         self._worker: Worker | None = None
@@ -379,7 +381,9 @@ class AchslintServer(LanguageServer):
         self.generations[uri] = next(self._edits)
 
     def schedule(self, uri: str, delay_ms: int | None = None) -> None:
-        """Lint the document after the debounce delay (restarted by every edit)."""
+        """Lint the document's newest text: at once by default (the worker takes it as soon as the lint before
+        it is done; a text edited again meanwhile is replaced, not linted), after the editor's `debounceMs`
+        when it set one (restarted by every edit)."""
         delay = self.session.settings.debounce_ms if delay_ms is None else delay_ms
         timer = self._timers.pop(uri, None)
         if timer is not None:
@@ -404,6 +408,7 @@ class AchslintServer(LanguageServer):
         """Lint every open document again (settings or files changed): fix-all edits computed under the
         old ones no longer hold."""
         self._fixes.clear()
+        self.formats.clear()  # a configuration's [fmt] may have changed
         for uri in list(self.documents):
             self.lint(uri)
 
@@ -526,6 +531,8 @@ class AchslintServer(LanguageServer):
         self.generations.pop(uri, None)
         self.analyses.pop(uri, None)
         self._fixes.pop(uri, None)
+        self.formats.pop(uri, None)
+        self.outlines.pop(uri, None)
         self._wake(uri, None)
         session = self.session
         self.on_worker(lambda: session.close(uri))
@@ -820,25 +827,41 @@ async def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[
 
 
 async def _formatted(
-    ls: AchslintServer, uri: str, edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]]
+    ls: AchslintServer,
+    uri: str,
+    edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]],
+    whole: bool = False,
 ) -> list[lsp.TextEdit]:
-    """Formatting edits for the document's current text (a list of any kind, not XML), on the worker."""
+    """Formatting edits for the document's current text (a list of any kind, not XML), on the worker, from
+    the analysis of that text (its parse; it is linted at once after an edit); a `whole` document's edits
+    are kept for the analysis they were made for."""
     document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
         return []
-    copy, session = document.copy(), ls.session
+    analysis = await ls.analysis(uri, current=True)
+    current = analysis is not None and analysis.generation == ls.generations.get(uri)
+    if analysis is not None and current and whole:
+        cached = ls.formats.get(uri)
+        if cached is not None and cached[0] == analysis.generation:
+            return cached[1]
+    copy = analysis.document if analysis is not None and current else document.copy()
+    parsed = analysis.snapshot.file if analysis is not None and current else None
+    session = ls.session
 
     def job() -> list[lsp.TextEdit]:
         options = session.config_for(copy)[0].settings.fmt  # `[fmt]`: the editor formats as `achslint fmt`
-        return edits(copy, copy.parse(), options)
+        return edits(copy, parsed if parsed is not None else copy.parse(), options)
 
-    return await ls.run_on_worker(job)
+    found = await ls.run_on_worker(job)
+    if analysis is not None and current and whole and uri in ls.documents:
+        ls.formats[uri] = (analysis.generation, found)
+    return found
 
 
 @feature(lsp.TEXT_DOCUMENT_FORMATTING)
 @guarded(default=list)
 async def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
-    return await _formatted(ls, params.text_document.uri, features.format_document)
+    return await _formatted(ls, params.text_document.uri, features.format_document, whole=True)
 
 
 @feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
@@ -863,10 +886,16 @@ async def _list_analysis(ls: AchslintServer, uri: str) -> Analysis | None:
 @feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
 @guarded(default=list)
 async def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams) -> list[lsp.DocumentSymbol]:
-    analysis = await _list_analysis(ls, params.text_document.uri)
+    uri = params.text_document.uri
+    analysis = await _list_analysis(ls, uri)
     if analysis is None or analysis.snapshot.file is None:
         return []
-    return features.document_symbols(analysis.document, analysis.snapshot.file)
+    cached = ls.outlines.get(uri)
+    if cached is not None and cached[0] is analysis:
+        return cached[1]
+    symbols = features.document_symbols(analysis.document, analysis.snapshot.file)
+    ls.outlines[uri] = (analysis, symbols)
+    return symbols
 
 
 @feature(lsp.TEXT_DOCUMENT_DEFINITION)
