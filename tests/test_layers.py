@@ -88,6 +88,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "machinediff",
             "fmt",
             "docs",
+            "report",
         ),
     ),
     # every format of every command: the screen they write to, the formats, lint's registry of them
@@ -104,6 +105,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "output.diff",
             "output.fmt",
             "output.config",
+            "output.markdown",
+            "output.report",
         ),
     ),
     ("output: registry", ("output.reporters",)),

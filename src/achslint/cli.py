@@ -483,6 +483,12 @@ class ExplainFormat(str, Enum):
     json = "json"
 
 
+class ExplainOutput(str, Enum):  # explain also writes the Markdown summary of CI job pages
+    text = "text"
+    json = "json"
+    markdown = "markdown"
+
+
 @app.command()
 def rules(
     output_format: ExplainFormat = typer.Option(
@@ -526,8 +532,8 @@ def explain(
         help="With a parameter: look it up in this kind of list (channel, startup, tools ...); "
         "without it an axis parameter wins, then the one kind that knows the name.",
     ),
-    output_format: ExplainFormat = typer.Option(
-        ExplainFormat.text, "--format", "--output-format", help="text or json."
+    output_format: ExplainOutput = typer.Option(
+        ExplainOutput.text, "--format", "--output-format", help="text, json or markdown."
     ),
     gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing speeds are shown."),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
@@ -642,29 +648,10 @@ def _one_list(path: Path, name: str) -> bytes:
 
 
 def _loaded_under(path: Path) -> tuple[bytes | None, str | None]:
-    """The default axis list the CNC loads under an axis list (its machine's `default_achs_mds`, found as
-    lint finds it), and where it comes from in words; (None, None) for a list no start-up list names. One
-    that cannot be read is left out, and the words say so (lint reports it as LIS504)."""
-    from .axis.source import read_one_list
-    from .core.decode import UnreadableInput
-    from .linting.config import ConfigError
-    from .linting.discovery import Finder, shown
+    """The default axis list the CNC loads under an axis list, and where it comes from in words."""
+    from .explanation import default_underneath
 
-    try:
-        found = Finder(lenient=True).loaded_under(path)
-    except (OSError, ValueError, ConfigError):
-        return None, None
-    if found is None:
-        return None, None
-    default, startup = found
-    try:
-        data = read_one_list(default, shown(default))
-    except (OSError, UnreadableInput) as exc:
-        return None, (
-            f"the default axis list {shown(default)} that {shown(startup)} loads underneath cannot be read "
-            f"({exc}); catalogue defaults are used instead"
-        )
-    return data, f"default axis list {shown(default)} underneath, as {shown(startup)} loads it"
+    return default_underneath(path)
 
 
 def _pair(text: str | None, name: str) -> tuple[float, float] | None:
@@ -885,6 +872,86 @@ def diff_command(
     report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
     RENDERERS[output_format.value](report, _screen(color))
     raise typer.Exit(EXIT_FINDINGS if differ(report) else EXIT_OK)
+
+
+class ReportFormat(str, Enum):
+    html = "html"
+    markdown = "markdown"
+
+
+@app.command()
+def report(
+    target: str = typer.Argument(
+        ..., metavar="MACHINE", help="Start-up list (hochlauf.lis), a folder holding one, or one axis list."
+    ),
+    program: str | None = typer.Option(
+        None, "--program", metavar="NC", help="Homing program (rfp.nc) run over the machine: the timeline."
+    ),
+    scenario: str | None = typer.Option(
+        None, "--scenario", help="Scenario TOML: per axis ([axes.NAME]) for a machine, as dry-run reads it."
+    ),
+    against: str | None = typer.Option(
+        None,
+        "--against",
+        metavar="BACKUP",
+        help="A backup of the machine (start-up list or folder) or of the list: what changed since.",
+    ),
+    output_file: str | None = typer.Option(
+        None, "--output-file", "-o", metavar="FILE", help="Write the report to FILE (needed for html)."
+    ),
+    output_format: ReportFormat = typer.Option(
+        ReportFormat.html,
+        "--format",
+        "--output-format",
+        help="html: the page to review, print and sign; markdown: a summary for CI job pages.",
+    ),
+    config: str | None = typer.Option(
+        None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."
+    ),
+    channel: int = typer.Option(1, "--channel", min=1, max=12, help="The channel whose axis names are shown."),
+    gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing parameters are shown."),
+    docs_url: str | None = typer.Option(
+        None, "--docs-url", metavar="URL", help="Address of the rule documentation the findings link to."
+    ),
+) -> None:
+    """Write a commissioning report of a machine: axes, homing, corrections, findings, timeline, changes."""
+    from .linting.config import ConfigError
+    from .output import OutputFailed
+    from .output.lint import destination
+    from .output.report import RENDERERS
+    from .report import ReportFailed, ReportRequest, build_report, report_inputs
+
+    request = ReportRequest(
+        Path(target),
+        program=Path(program) if program else None,
+        scenario=Path(scenario) if scenario else None,
+        against=Path(against) if against else None,
+        config=Path(config) if config else None,
+        channel=channel,
+        gear=gear,
+    )
+    if output_file is not None:
+        try:
+            inputs = [str(path) for path in report_inputs(request)]
+        except ConfigError as exc:
+            _fail(str(exc))
+        _not_over_inputs(output_file, "--output-file", inputs)
+    elif output_format == ReportFormat.html and sys.stdout.isatty():
+        _fail("the html report goes to a file: add -o report.html")
+    try:
+        found = build_report(request)
+    except ReportFailed as exc:
+        _fail(str(exc))
+    text = RENDERERS[output_format.value](found, _docs_url(docs_url, config))
+    try:
+        with destination(output_file, sys.stdout) as stream:
+            stream.write(text)
+    except OutputFailed as exc:
+        _fail(str(exc))
+    if output_file is not None:
+        _say(f"wrote {output_file}")
+    failed = found.lint.failing or (found.run is not None and found.run.failure is not None)
+    raise typer.Exit(EXIT_FINDINGS if failed else EXIT_OK)
 
 
 @app.command("config")

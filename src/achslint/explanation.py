@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, TypedDict
 
 from .axis.resolved import CorrectionData, plain, resolve_bytes
@@ -240,6 +241,32 @@ def explain_list(
         "parameters": parameters,
         "loaded_under": under,
     }
+
+
+def default_underneath(path: Path) -> tuple[bytes | None, str | None]:
+    """The default axis list the CNC loads under an axis list (its machine's `default_achs_mds`, found as
+    lint finds it), and where it comes from in words; (None, None) for a list no start-up list names. One
+    that cannot be read is left out, and the words say so (lint reports it as LIS504)."""
+    from .axis.source import read_one_list
+    from .core.decode import UnreadableInput
+    from .linting.config import ConfigError
+    from .linting.discovery import Finder, shown
+
+    try:
+        found = Finder(lenient=True).loaded_under(path)
+    except (OSError, ValueError, ConfigError):
+        return None, None
+    if found is None:
+        return None, None
+    default, startup = found
+    try:
+        data = read_one_list(default, shown(default))
+    except (OSError, UnreadableInput) as exc:
+        return None, (
+            f"the default axis list {shown(default)} that {shown(startup)} loads underneath cannot be read "
+            f"({exc}); catalogue defaults are used instead"
+        )
+    return data, f"default axis list {shown(default)} underneath, as {shown(startup)} loads it"
 
 
 def parameter_row(values: ResolvedAxis, strategy: HomingStrategy, path: str) -> ParameterRow:

@@ -218,6 +218,83 @@ def _gantry_words(gantry: dict[str, Any] | None) -> str:
     return f"slave of {gantry['master']}" + (" (homed with it)" if gantry["homes_with_master"] else "")
 
 
-LIST: Registry[ListReport] = {"text": list_text, "json": write_json}
-PARAMETER: Registry[ParameterCard] = {"text": card_text, "json": write_json}
-MACHINE: Registry[dict[str, Any]] = {"text": machine_text, "json": write_json}
+# --- Markdown (CI job pages) -----------------------------------------------------------------------
+
+
+def list_markdown(report: ListReport, screen: Screen) -> None:
+    """`explain LIST --format markdown`: the strategy and its phases, the corrections, the parameters the list
+    sets without effect."""
+    from . import markdown as md
+
+    axis, strategy = report["axis"], report["strategy"]
+    lines = [
+        f"## {md.text(report['file'])}: axis {md.text(axis['name'])} (logical axis {md.text(axis['number'])})",
+        "",
+        f"**Homing:** {md.text(strategy['title'])} (homing\\_type {md.text(axis['homing_type'])}), "
+        f"{md.text(axis['axis_type'])} axis, drive {md.text(axis['drive_type'])} {md.text(axis['drive'])}",
+        "",
+    ]
+    lines += [f"{phase['number']}. {md.text(phase['text'].split('. ', 1)[-1])}" for phase in report["phases"]]
+    corrections = [
+        f"- CNC correction {md.text(c['error'])}: {md.text(c['parameter'])} {md.text(c['written'])} is used as "
+        f"{md.text(c['used'])}"
+        for c in report["corrections"]
+    ]
+    unused = [
+        row for row in report["parameters"] if not row["effective"] and row["source"]["kind"] != "default"
+    ]
+    lines += ["", *corrections] if corrections else []
+    if unused:
+        lines += ["", "Set without effect under this strategy:", ""]
+        lines += md.table(
+            ("parameter", "value", "why"), [(r["parameter"], r["value"], r["reason"]) for r in unused]
+        )
+    screen.echo("\n".join(lines))
+
+
+def card_markdown(card: ParameterCard, screen: Screen) -> None:
+    """`explain PARAM --format markdown`: the parameter's id, path, description, type, range and default."""
+    from . import markdown as md
+
+    facts = [
+        ("list", card["list"]),
+        ("type", card["type"]),
+        ("range", card["range"]),
+        ("default", card["default"]),
+    ]
+    lines = [f"## {md.text(card['p_axis'])} {md.text(card['path'])}", "", md.text(card["description"]), ""]
+    lines += [f"- {key}: {md.text(value)}" for key, value in facts if value not in (None, "")]
+    screen.echo("\n".join(lines))
+
+
+def machine_markdown(report: dict[str, Any], screen: Screen) -> None:
+    """`explain hochlauf.lis --format markdown`: the axes with their strategies, and the program's findings."""
+    from . import markdown as md
+
+    lines = [f"## {md.text(report['startup'])}", ""]
+    program = report["program"]
+    rows = [
+        (
+            row["name"],
+            row["logical_number"],
+            row["axis_type"],
+            f"{row['drive_type']} {row['drive']}",
+            row["strategy"]["title"],
+            row.get("homed", ""),
+        )
+        for row in report["axes"]
+    ]
+    header = ("axis", "no.", "type", "drive", "homing", *(["homed"] if program else []))
+    lines += md.table(header, [r if program else r[:-1] for r in rows])
+    if program is not None and program["findings"]:
+        lines += ["", f"### {md.text(program['name'])}", ""]
+        lines += [
+            f"- {md.text(f['severity'])} {md.text(f['code'])} line {f['line']}: {md.text(f['message'])}"
+            for f in program["findings"]
+        ]
+    screen.echo("\n".join(lines))
+
+
+LIST: Registry[ListReport] = {"text": list_text, "json": write_json, "markdown": list_markdown}
+PARAMETER: Registry[ParameterCard] = {"text": card_text, "json": write_json, "markdown": card_markdown}
+MACHINE: Registry[dict[str, Any]] = {"text": machine_text, "json": write_json, "markdown": machine_markdown}

@@ -11,6 +11,7 @@ found. `build_figure` returns the figure (tests read its data series); `plot_tra
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -328,6 +329,7 @@ def build_figure(trace: Trace) -> Figure:
     if trace.phases:
         title += f" in {_fmt(trace.total_time)} s"
     figure.suptitle(title, fontsize=11, x=0.37)
+    _assumed_note(figure, ", ".join(trace.scenario.assumed))
     if reference_event is not None and trace.phases:
         _inset(figure, top, trace, reference_event)
     if not trace.phases:
@@ -396,6 +398,22 @@ def _wrap(text: str, width: int) -> str:
     return "\n".join(lines)
 
 
+def _assumed_note(figure: Figure, assumed: str) -> None:
+    """A line under the figure naming the geometry the run assumed: what the plot shows there is the default
+    scenario's, not the machine's."""
+    if assumed:
+        figure.text(
+            0.01,
+            0.005,
+            _wrap(f"ASSUMED, not given: {assumed}", 150),
+            fontsize=8,
+            color="#aa3377",
+            ha="left",
+            va="bottom",
+            gid="assumed",
+        )
+
+
 def plot_trace(trace: Trace, target: str) -> None:
     """Write the dry-run's position and velocity plot to a PNG or SVG file."""
     _save(lambda: build_figure(trace), target)
@@ -416,9 +434,43 @@ def _save(build: Callable[[], Figure], target: str) -> None:
         plt.close(figure)
 
 
+def svg_element(build: Callable[[], Figure], prefix: str) -> str:
+    """A figure as an `<svg>` element to put inside an HTML page (`achslint report`), drawn by the same
+    `build_figure` / `build_machine_figure` as `--plot`: text kept as text, no XML declaration, DOCTYPE or
+    metadata (no date: the same run gives the same bytes), no namespace addresses (an HTML parser knows
+    SVG), every id prefixed with `prefix` so that several figures share a page, and a width that follows
+    the page."""
+    _use_matplotlib()
+    import io
+
+    import matplotlib
+    import matplotlib.pyplot as plt
+
+    with matplotlib.rc_context({"svg.hashsalt": "achslint", "svg.fonttype": "none"}):
+        figure = build()
+        try:
+            buffer = io.StringIO()
+            figure.savefig(buffer, format="svg", metadata={"Date": None})
+        finally:
+            plt.close(figure)
+    text = buffer.getvalue()
+    text = text[text.index("<svg") :]
+    text = re.sub(r"<metadata>.*?</metadata>\s*", "", text, flags=re.DOTALL)
+    root = re.match(r"<svg[^>]*>", text)
+    view = re.search(r'viewBox="([^"]*)"', root[0]) if root else None
+    if root is None or view is None:
+        raise PlotUnavailable("matplotlib wrote an SVG without a viewBox")
+    text = f'<svg class="figure" role="img" viewBox="{view[1]}">' + text[root.end() :]
+    text = re.sub(r'\bid="([^"]*)"', lambda m: f'id="{prefix}-{re.sub(r"[^A-Za-z0-9_-]", "_", m[1])}"', text)
+    text = re.sub(r'href="#([^"]*)"', rf'href="#{prefix}-\1"', text)
+    return re.sub(r"url\(#([^)]*)\)", rf"url(#{prefix}-\1)", text).strip()
+
+
 # --- the machine dry-run ------------------------------------------------------------------------
 
 MOVE_COLOUR = "#999999"
+# The assumed values the machine figure names per axis: where the axis starts and what it searches for.
+ASSUMED_GEOMETRY = ("start_position", "cam", "zero_pulse_period", "zero_pulse_phase", "limit_switches")
 FAILURE_COLOUR = "#cc3311"
 _BarStyle = tuple[str, str, str | None, float, float]  # a lane bar's face, edge, hatch, alpha, line width
 # Labels at the top of the timeline closer than this share of the time axis would overlap (`N1015` at
@@ -643,6 +695,16 @@ def build_machine_figure(run: MachineRun) -> Any:
         else f"FAILED at {_fmt(run.failure.time)} s"
     )
     figure.suptitle(title, fontsize=11, x=0.4, y=0.995, va="top")
+    _assumed_note(
+        figure,
+        "; ".join(
+            f"{axis.name}: {', '.join(names)}"
+            for axis in axes_runs
+            if any(p.kind == "homing" for p in axis.phases)
+            for names in [[n for n in axis.scenario.assumed if n in ASSUMED_GEOMETRY]]
+            if names
+        ),
+    )
     return figure
 
 

@@ -48,6 +48,7 @@ REPORTERS = {
     "junit": Reporter("junit"),
     "rdjson": Reporter("rdjson", needs_source=True),  # columns in UTF-8 bytes: counted on the lines
     "azure": Reporter("azure"),
+    "markdown": Reporter("markdown"),
 }
 
 
