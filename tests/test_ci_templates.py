@@ -392,3 +392,90 @@ def test_code_quality_paths_outside_a_gitlab_job(tmp_path, monkeypatch):
     assert {issue["location"]["path"] for issue in json.loads(outside.stdout)} == {
         str(elsewhere / "achsmds3.lis")
     }
+
+
+# --- the README's blocks ---------------------------------------------------------------------------------
+
+README = ROOT / "README.md"
+
+
+def readme_yaml() -> list:
+    """The YAML blocks of the README's CI section."""
+    text = README.read_text(encoding="utf-8")
+    section = text[text.index("### In CI") : text.index("### In the editor")]
+    return [yaml.safe_load(block) for block in re.findall(r"```yaml\n(.*?)```", section, flags=re.DOTALL)]
+
+
+def readme_block(key: str):
+    return next(block for block in readme_yaml() if key in block)
+
+
+def git(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, check=False)
+
+
+def test_the_readme_pins_a_revision_that_exists_and_carries_the_wiring():
+    workflow = readme_block("jobs")
+    action_step = next(step for step in workflow["jobs"]["achslint"]["steps"] if "achslint@" in step["uses"])
+    gitlab = readme_block("include")
+    precommit = next(repo for repo in readme_block("repos")["repos"] if repo["repo"] != "local")
+    revisions = {
+        action_step["uses"].split("@")[1],
+        gitlab["include"][0]["ref"],
+        gitlab["achslint"]["variables"]["ACHSLINT_REQUIREMENT"].rsplit("@", 1)[1],
+        str(precommit["rev"]),
+    }
+    assert len(revisions) == 1, revisions  # one revision everywhere
+    revision = revisions.pop()
+    assert re.fullmatch(r"[0-9a-f]{40}", revision)  # a commit id: it cannot move as a branch or tag can
+    if shutil.which("git") is None or git("rev-parse", "--git-dir").returncode != 0:
+        pytest.skip("not a git checkout of achslint (an sdist): the revision cannot be looked up")
+    history = git("rev-list", "HEAD")
+    if revision not in history.stdout.split():
+        if git("rev-parse", "--is-shallow-repository").stdout.strip() == "true":
+            pytest.skip("a shallow clone: the pinned revision may lie beyond its history")
+        raise AssertionError(f"{revision} is not in this repository's history")
+    for name in ("action.yml", "ci/gitlab.yml", ".pre-commit-hooks.yaml"):
+        assert git("cat-file", "-e", f"{revision}:{name}").returncode == 0, name
+    hooks = yaml.safe_load(git("show", f"{revision}:.pre-commit-hooks.yaml").stdout)
+    assert [hook["id"] for hook in precommit["hooks"]] == [hook["id"] for hook in hooks]
+    pinned_action = yaml.safe_load(git("show", f"{revision}:action.yml").stdout)
+    assert set(action_step.get("with", {})) <= set(pinned_action["inputs"])
+    pinned_job = yaml.safe_load(git("show", f"{revision}:ci/gitlab.yml").stdout)["achslint"]
+    assert set(gitlab["achslint"]["variables"]) <= set(pinned_job["variables"])
+
+
+def test_the_readme_workflow_runs(tmp_path):
+    """The README's workflow, copied as it is: its action step with its inputs, on a machine with an error."""
+    workflow = readme_block("jobs")
+    permissions = workflow["permissions"]
+    assert permissions.get("security-events") == "write"  # upload-sarif needs it
+    steps = workflow["jobs"]["achslint"]["steps"]
+    assert steps[0]["uses"].startswith("actions/checkout@")
+    inputs = {name: str(value).lower() for name, value in steps[1].get("with", {}).items()}
+    repo = workspace(tmp_path, broken=True)
+    run = run_action(repo, tmp_path, inputs)
+    assert run.returncode == 1 and "::error file=listen/achsmds3.lis" in run.stdout
+    assert [uses for uses, _ in run.used] == ["github/codeql-action/upload-sarif@v3"]
+    assert (repo / run.outputs["sarif-file"]).is_file()
+
+
+def test_the_readme_gitlab_job_runs(tmp_path):
+    """The README's GitLab block: its variables on the template's job (all but the install)."""
+    gitlab = readme_block("include")
+    assert gitlab["include"][0]["file"] == GITLAB.relative_to(ROOT).as_posix()
+    variables = {k: str(v) for k, v in gitlab["achslint"]["variables"].items() if k != "ACHSLINT_REQUIREMENT"}
+    project = workspace(tmp_path, broken=True)
+    job = run_gitlab_job(project, tmp_path, variables)
+    assert job.returncode == 1 and "LIS203" in job.stdout
+    quality, _ = reports(project)
+    assert {"listen/achsmds3.lis"} <= {issue["location"]["path"] for issue in quality}
+
+
+def test_the_readme_local_hook_is_the_published_one():
+    repos = [repo for block in readme_yaml() if "repos" in block for repo in block["repos"]]
+    local = next(repo for repo in repos if repo["repo"] == "local")
+    (hook,) = local["hooks"]
+    published = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text(encoding="utf-8"))[0]
+    for key in ("id", "entry", "files", "require_serial"):
+        assert hook[key] == published[key], key
