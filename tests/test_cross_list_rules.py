@@ -137,6 +137,20 @@ def test_lis514_and_lis515_leave_a_pure_channel_coupling_alone(tmp_path):
     assert lint(machine(tmp_path, TWO_AXES, channel, {1: "X", 2: "X2"})) == []
 
 
+def test_lis515_leaves_a_circle_of_static_couplings_to_lis507(tmp_path):
+    # X and Y name each other as gantry master (P-AXIS-00070): LIS507 says no axis leads; "Y is already a
+    # static gantry of X, remove the pair" (LIS515) would contradict it, as LIS514 would with "its master".
+    channel = "gruppe[0].achse[0].bezeichnung X\ngruppe[0].achse[0].log_achs_nr 1\n"
+    channel += "synchro_data.koppel_gruppe[0].paar[0].log_achs_nr_master 1\n"
+    channel += "synchro_data.koppel_gruppe[0].paar[0].log_achs_nr_slave 2\nEnde\n"
+    startup = machine(tmp_path, TWO_AXES, channel, {1: "X", 2: "Y"})
+    couple = "kenngr.gantry_ax_nr  {}\nEnde\n"
+    (tmp_path / "achsmds2.lis").write_text(AXIS.format(n=2, name="Y").replace("Ende\n", couple.format(1)))
+    assert where(lint(startup, "LIS507,LIS515")) == [("sda_mds1.lis", 3, "LIS515")]
+    (tmp_path / "achsmds1.lis").write_text(AXIS.format(n=1, name="X").replace("Ende\n", couple.format(2)))
+    assert [d["code"] for d in lint(startup, "LIS507,LIS515")] == ["LIS507", "LIS507"]
+
+
 def test_lis516_and_lis518_without_a_written_zahl_mds(tmp_path):
     # No count to compare with: LIS516 says nothing, and LIS518 compares every entry (as explain reads them).
     text = "achs_mds[0] ./achsmds1.lis\nachs_mds[1] ./achsmds2.lis\nachs_mds[2] ./achsmds1.lis\nEnde\n"

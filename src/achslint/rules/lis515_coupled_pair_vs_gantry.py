@@ -94,6 +94,7 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ._crosslist import at_member, by_number, channel_lists
+from .lis507_gantry_master_chain import coupling_faults
 
 if TYPE_CHECKING:
     from ..machine.channel import CoupledPair
@@ -156,11 +157,16 @@ def _contradiction(
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     members = machine.members
     numbers = by_number(members)
+    # An axis whose static coupling is in a circle or a chain is LIS507's (as in LIS514): that finding says no
+    # axis leads it, so "already a static gantry" or "its own master" would contradict it.
+    tangled = set(
+        coupling_faults({number: master for number in numbers if (master := _master_of(numbers[number]))})
+    )
     for _, channel in channel_lists(machine):
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes)}
         for pair in channel.pairs:
-            if pair.master == pair.slave:
-                continue  # a pair of one axis: not about the axis lists
+            if pair.master == pair.slave or tangled & {pair.master, pair.slave}:
+                continue  # a pair of one axis (not about the axis lists), or a coupling LIS507 reports
             found = _contradiction(pair, numbers, names)
             if found is None:
                 continue
