@@ -310,6 +310,19 @@ def test_coupled_pairs_in_a_circle_of_three_are_one_finding_on_the_pair_that_clo
     ) and "logical axes 3 → 1 → 2 → 3" in message  # 3 leads 1 (the new pair), 1 leads 2, 2 leads 3
 
 
+def test_a_pair_of_a_spindle_and_a_path_axis_is_not_told_to_change_its_mode() -> None:
+    # master 2 is a spindle, slave 1 a path axis (P-CHAN-00061: mode 0 path axes, 1 spindles): no mode fits
+    # both, so "set mode to 1" would only move the finding to the slave
+    slots = "gruppe[0].achse[0].log_achs_nr 1\nspindel[0].log_achs_nr 2\n"
+    [(_, _, message)] = found(slots + _pairs((2, 1)), "channel", ("LIS706",))
+    assert "its master, logical axis 2, is a spindle" in message and "couple axes of one kind" in message
+    assert ".mode to" not in message
+    # both spindles under mode 0: changing the mode is the remedy
+    slots += "spindel[1].log_achs_nr 3\n"
+    [(_, _, message)] = found(slots + _pairs((2, 3)), "channel", ("LIS706",))
+    assert "synchro_data.koppel_gruppe[0].paar[0].mode to 1" in message
+
+
 def test_a_chain_and_one_master_with_two_slaves_are_no_conflict() -> None:
     # 1 leads 2 and 3 (two slaves of one master); 3 leads 4 (a chain: not a circle, nothing documented
     # forbids it); the same pair written twice is no second master

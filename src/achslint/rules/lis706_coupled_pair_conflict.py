@@ -180,16 +180,19 @@ def _modes(ctx: Context, pairs: list[_Pair]) -> Iterator[Diagnostic]:
         if not wrong:
             continue
         what = "path axes" if spindles else "spindles"
+        remedy = f"set {pair.slot}.mode to {0 if spindles else 1}, or couple axes of the kind the mode names"
         if len(wrong) == 2:
             whose = f"its master and slave, logical axes {pair.master} and {pair.slave}, are {what}"
         else:
             role, number, _ = wrong[0]
             whose = f"its {role}, logical axis {number}, is {'a path axis' if spindles else 'a spindle'}"
+            other = pair.slave if role == "master" else pair.master
+            if kinds.get(other) == spindles:  # the other axis is of the mode's kind: no mode fits both
+                remedy = "a pair joins two path axes or two spindles, so couple axes of one kind"
         yield _report(
             ctx,
             wrong[0][2],
-            f"{pair.slot} is a pair of {said}, but {whose} of this channel list: set {pair.slot}.mode to "
-            f"{0 if spindles else 1}, or couple axes of the kind the mode names",
+            f"{pair.slot} is a pair of {said}, but {whose} of this channel list: {remedy}",
             pair.mode,
             "the mode",
         )
