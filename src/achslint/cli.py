@@ -14,7 +14,7 @@ import functools
 import gc
 import os
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from enum import Enum
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn, TextIO, get_args
@@ -55,6 +55,7 @@ def _choices(name: str, values: Iterable[str]) -> type[Enum]:
 
 if TYPE_CHECKING:
     from .explanation import Found
+    from .linting.run import LintRequest
     from .output import Screen
 
 if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
@@ -286,6 +287,20 @@ def lint(
         "--follow-startup",
         help="With --fix: also rewrite the lists a named start-up list reaches outside the paths given.",
     ),
+    add_noqa: bool = typer.Option(
+        False,
+        "--add-noqa",
+        help="Write a `noqa` comment for every finding into the lists (to adopt achslint on a machine as it is).",
+    ),
+    show_files: bool = typer.Option(
+        False, "--show-files", help="Print the files that would be linted (kind, machine) and exit."
+    ),
+    show_settings: bool = typer.Option(
+        False,
+        "--show-settings",
+        help="Print the settings for the first PATH (TOML; JSON with --format json) and exit.",
+    ),
+    watch: bool = typer.Option(False, "--watch", "-w", help="Lint again whenever a file changes."),
 ) -> None:
     """Lint axis parameter lists, and homing programs (rfp.nc) against a machine (--machine)."""
     from .linting.config import ConfigError, Overrides
@@ -311,6 +326,9 @@ def lint(
     fix = fix or show_diff  # as in ruff: --diff shows what --fix would do
     if unsafe_fixes and not fix:
         _fail("--unsafe-fixes goes with --fix or --diff")
+    _one_mode(fix=fix, add_noqa=add_noqa, show_files=show_files, show_settings=show_settings, watch=watch)
+    if (add_noqa or watch) and "-" in paths:
+        _fail(f"{'--add-noqa' if add_noqa else '--watch'} reads files: it cannot take standard input (-)")
     fmt = output_format.value if output_format else _default_format(sys.stdout)
     request = LintRequest(
         paths=paths,
@@ -328,8 +346,13 @@ def lint(
         channel=channel,
         output=output_file if not silent else None,
         follow_startup=follow_startup,
+        add_noqa=add_noqa,
     )
     quiet = quiet or silent
+    if show_files or show_settings:
+        _show(request, show_files, fmt)
+    if watch:
+        _watch(request, lambda: _lint_once(request, fmt, color, docs_url, config, quiet, silent, statistics))
     try:
         with shown.progress(quiet) as progress:
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
@@ -338,6 +361,10 @@ def lint(
     _tell(outcome.errors, outcome.notes, quiet)
     if not outcome.results and not outcome.skipped and not outcome.errors and not allow_empty:
         _fail(_nothing_found(paths))
+    if add_noqa:  # as in ruff: what was added, on stderr; exit 0 unless a list could not be read or written
+        if not quiet:
+            typer.echo(shown.noqa_count(outcome.results), err=True)
+        raise typer.Exit(EXIT_ERROR if outcome.errors else EXIT_OK)
     report_stream = sys.stdout
     if fix:
         report_stream = shown.write_fixes(outcome.results, show_diff)
@@ -363,6 +390,88 @@ def lint(
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
     raise typer.Exit(EXIT_FINDINGS if outcome.failing and not exit_zero else EXIT_OK)
+
+
+def _one_mode(**modes: bool) -> None:
+    """--fix, --add-noqa, --show-files, --show-settings and --watch each make a run of its own kind."""
+    chosen = [f"--{name.replace('_', '-')}" for name, given in modes.items() if given]
+    if len(chosen) > 1:
+        _fail(f"{' and '.join(chosen)} do not go together; give one of them")
+
+
+def _show(request: "LintRequest", files: bool, fmt: str) -> NoReturn:
+    """--show-files: what the run would lint, one file a line; --show-settings: the settings of the first
+    path (with the command line applied), as TOML, or JSON with --format json."""
+    from .linting.config import ConfigError
+    from .linting.run import files_to_lint, settings_for
+    from .output import config as shown
+
+    screen = _screen(Color.never)
+    try:
+        if files:
+            shown.files(files_to_lint(request), screen)
+        else:
+            resolved, settings = settings_for(request)
+            shown.settings(resolved, settings, "json" if fmt == "json" else "toml", screen)
+    except ConfigError as exc:
+        _fail(str(exc))
+    raise typer.Exit(EXIT_OK)
+
+
+def _lint_once(
+    request: "LintRequest",
+    fmt: str,
+    color: Color,
+    docs_url: str | None,
+    config: str | None,
+    quiet: bool,
+    silent: bool,
+    statistics: bool,
+) -> None:
+    """One run of --watch: the report as `lint` writes it, or the one-line errors (the watch goes on)."""
+    from .linting.config import ConfigError, forget_cached
+    from .linting.run import OutputIsInput, run_lint
+    from .output import OutputFailed
+    from .output import lint as shown
+
+    forget_cached()  # a configuration may have changed since the last run
+    try:
+        outcome = run_lint(request)
+    except (ConfigError, OutputIsInput) as exc:
+        _say(str(exc))
+        return
+    _tell(outcome.errors, outcome.notes, quiet)
+    if silent:
+        return
+    try:
+        with shown.destination(request.output, sys.stdout) as stream:
+            shown.write_report(
+                outcome.results,
+                fmt,
+                stream,
+                color=_use_color(color, stream),
+                sources=outcome.sources,
+                docs_url=lambda: _docs_url(docs_url, config),
+                statistics=statistics,
+                quiet=quiet,
+                fixing=False,
+                failed=bool(outcome.errors),
+            )
+    except OutputFailed as exc:
+        _say(str(exc))
+    sys.stdout.flush()
+
+
+def _watch(request: "LintRequest", lint_once: "Callable[[], None]") -> NoReturn:
+    """--watch: lint, then again whenever a file of the run (a list, a configuration, a start-up list, a
+    folder named) changes, until interrupted (Ctrl-C: exit 130)."""
+    from .linting.watch import Watcher
+
+    watcher = Watcher(request.paths, request.config_file)
+    while True:
+        lint_once()
+        _say("watching for changes (Ctrl-C to stop)")
+        watcher.wait()
 
 
 def _patterns(values: list[str] | None) -> list[str] | None:

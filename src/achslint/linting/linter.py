@@ -91,6 +91,7 @@ class FileResult:
     error: str | None = None  # the file could not be read or decoded at all
     source_lines: list[str] = field(default_factory=list)  # kept for code frames when there are findings
     fixed: int = 0  # diagnostics fixed by --fix
+    noqa_added: int = 0  # lines --add-noqa gave a new or longer `noqa`
     diff: str = ""  # what --fix --diff would change
     fixed_data: bytes | None = None  # the fixed content (standard input only)
     summary: Summary | None = None  # what the machine-level rules need (machine.summary)

@@ -18,6 +18,7 @@ from ..core.files import (
     ChangedOnDisk,
     Refused,
     WriteFailed,
+    is_xml,
     not_a_list_file,
     read_list,
     reason,
@@ -29,6 +30,7 @@ from .config import (
     PROGRAM_SUFFIXES,
     Overrides,
     ResolvedConfig,
+    Settings,
     discover,
     named_path,
 )
@@ -48,8 +50,8 @@ if TYPE_CHECKING:
 # A list given to the library functions: a path (str or PathLike) or the list's bytes.
 
 
-# What --fix asks for: (fix, unsafe fixes too, show the diff instead of writing).
-FixMode = tuple[bool, bool, bool]
+# What --fix asks for: (fix, unsafe fixes too, show the diff instead of writing, add noqa instead of fixing).
+FixMode = tuple[bool, bool, bool, bool]
 # One list for a worker process: (name, path, settings, fix mode, default list path).
 WorkItem = tuple[str, str, FileSettings, FixMode, "str | None"]
 # Called with the total number of lists after each list is done.
@@ -79,6 +81,7 @@ class LintRequest:
     channel: int = 1  # the channel whose axis names the programs use
     output: str | None = None  # the report file (-o): a run that would read it as an input stops first
     follow_startup: bool = False  # --fix may rewrite the lists a named start-up list reaches in other folders
+    add_noqa: bool = False  # write a `noqa` for every finding instead of reporting it (`linting.noqa`)
 
 
 class OutputIsInput(ValueError):
@@ -145,8 +148,8 @@ class LintRun:
             refuse_output_over_input(self.request.output, read)
         targets, errors = found.targets, found.errors
         jobs = self.request.jobs or os.cpu_count() or 1
-        mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff)
-        kept = (False, False, False)  # lists the user did not name: checked, never rewritten
+        mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff, self.request.add_noqa)
+        kept = (False, False, False, False)  # lists the user did not name: checked, never rewritten
         work = [
             (
                 t.name,
@@ -158,7 +161,7 @@ class LintRun:
             for t in targets
             if t.path
         ]
-        if self.request.fix and not self.request.show_diff:
+        if (self.request.fix and not self.request.show_diff) or self.request.add_noqa:
             found.notes += not_rewritten([t for t in targets if not t.writable])
         if jobs > 1 and len(work) >= PARALLEL_THRESHOLD and (self.request.jobs or _enough_text(work)):
             from concurrent.futures import ProcessPoolExecutor  # only paid for when parallel
@@ -220,7 +223,9 @@ class LintRun:
             only_machine = replace(chosen.settings, select=["LIS5"], extend_select=[])
             settings = replace(chosen, settings=only_machine, keep_source=False)
             defaults = str(target.defaults) if target.defaults else None
-            result = _lint_one((target.name, str(target.path), settings, (False, False, False), defaults))
+            result = _lint_one(
+                (target.name, str(target.path), settings, (False, False, False, False), defaults)
+            )
             if not result.error and not result.note:
                 pairs.append((target, result))
         return pairs
@@ -251,8 +256,11 @@ def _process(
     path: Path | None,
     defaults: bytes | None,
 ) -> FileResult:
-    """Lint one list; with --fix, fix it first (writing the file, or describing the change with --diff)."""
-    fix, unsafe, show_diff = mode
+    """Lint one list; with --fix, fix it first (writing the file, or describing the change with --diff); with
+    --add-noqa, suppress its findings in the file."""
+    fix, unsafe, show_diff, noqa = mode
+    if noqa:
+        return _add_noqa(data, name, settings, path, defaults)
     if not fix:
         return lint_file(data, name, settings, defaults)
     from ..syntax.diff import unified_diff
@@ -275,6 +283,75 @@ def _process(
     elif path is None and not show_diff:
         result.fixed_data = data
     return result
+
+
+def _add_noqa(
+    data: bytes, name: str, settings: FileSettings, path: Path | None, defaults: bytes | None
+) -> FileResult:
+    """`--add-noqa` on one list on disk: a `noqa` for each finding, written atomically; the result holds
+    what is left (findings no `noqa` in the list can suppress). XML files are never rewritten."""
+    from .noqa import add_noqa
+
+    result = lint_file(data, name, settings, defaults)
+    if result.error or result.note or path is None or is_xml(name):
+        return result
+    new_data, added = add_noqa(data, result.diagnostics, name)
+    if not added:
+        return result
+    try:
+        write_atomically(path, new_data, expected=data)
+    except OSError as exc:
+        result.error = write_error(exc, name)
+        return result
+    result = lint_file(new_data, name, settings, defaults)
+    result.noqa_added = added
+    return result
+
+
+@dataclass(frozen=True)
+class ListedFile:
+    """A file a run would lint (`lint --show-files`): its name, its kind and the machines it belongs to."""
+
+    name: str
+    kind: str  # a catalogue kind id (axis, channel, startup ...), "xml", or why it cannot be told
+    machines: tuple[str, ...]
+
+
+def files_to_lint(request: LintRequest) -> list[ListedFile]:
+    """What `request` would lint, in the order it would: the lists its paths come to (named, found in
+    folders, named by start-up lists) and the NC programs among them; the lists read only for the machine
+    rules are not linted, so not listed."""
+    from ..syntax.parser import parse_bytes
+    from .linter import list_kind
+
+    rest = [path for path in request.paths if not is_program(path)]
+    found = LintRun(replace(request, paths=rest)).finder.find(rest) if rest else Discovery()
+    listed: list[ListedFile] = []
+    for target in found.targets:
+        if target.path is None:
+            listed.append(ListedFile(target.name, "standard input", ()))
+            continue
+        if is_xml(target.name):
+            kind = "xml"
+        else:
+            try:
+                file = parse_bytes(read_list(target.path), target.name)
+                kind = list_kind(file, target.name, target.kind).id
+            except (OSError, UnreadableInput) as exc:
+                kind = f"unreadable ({reason(exc) if isinstance(exc, OSError) else exc})"
+        listed.append(ListedFile(target.name, kind, target.machines))
+    listed += [ListedFile(path, "program", ()) for path in request.paths if is_program(path)]
+    return listed
+
+
+def settings_for(request: LintRequest) -> tuple[ResolvedConfig, Settings]:
+    """The configuration for the first path of `request` (`--config`, or the nearest one) and the settings
+    a run uses for it: the file's, with the command line's overrides applied (`lint --show-settings`)."""
+    first = request.paths[0] if request.paths else "."
+    if first == "-":
+        first = request.stdin_filename or str(Path.cwd())
+    config = LintRun(request).config_for(Path(first))
+    return config, request.overrides.apply(config.settings)
 
 
 def write_error(exc: OSError, name: str) -> str:

@@ -20,7 +20,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from ..core.diagnostics import Diagnostic, Directive
+from ..core.diagnostics import Diagnostic, Directive, Edit
 from ..syntax import parser as syntax
 
 # A code is letters and a digit, then letters or digits: `LIS3O2` (a letter O) is read whole and reported
@@ -110,3 +110,83 @@ def _program_directives(lines: Iterable[str]) -> Iterable[Directive]:
         found = LINE_NOQA.search(text, min(starts)) if starts else None
         if found:
             yield Directive(number, found.start() + 1, found.end() + 1, _codes(found))
+
+
+def comment_marker(file: syntax.ListFile) -> str:
+    """The comment a list writes after its values: `(` or `#`, whichever most of its trailing comments use
+    (`#` for a list without any)."""
+    counts = {"(": 0, "#": 0}
+    for line in file.lines:
+        if line.kind == syntax.ASSIGNMENT and line.rest and line.rest[0] in counts:
+            counts[line.rest[0]] += 1
+    return "(" if counts["("] > counts["#"] else "#"
+
+
+NUMBERS = (syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE)  # after these `#` starts a comment too
+
+
+def noqa_edits(file: syntax.ListFile, wanted: dict[int, list[str]]) -> list[Edit]:
+    """The edits that suppress `wanted` (line number -> codes) where they are reported: on an assignment the
+    codes join the line's `noqa` (or its comment, or a new comment in the list's style: `#` only after a
+    number or a reference, where the CNC reads it as one; `(` after text); a finding on any other line
+    (a syntax error, `End`, a missing `Ende`, the BOM) joins the file-level `# achslint: noqa` line, added
+    at the top when there is none. Codes a directive already names are left out, and a bare `noqa` covers
+    everything: applying the edits a second time changes nothing."""
+    marker = comment_marker(file)
+    edits: list[Edit] = []
+    whole: list[str] = []
+    for number, codes in sorted(wanted.items()):
+        line = file.lines[number - 1] if 1 <= number <= len(file.lines) else None
+        if line is None or line.kind != syntax.ASSIGNMENT or not line.path_ok or line.value is None:
+            whole += codes
+            continue
+        edit = _line_edit(line, codes, marker)
+        if edit is not None:
+            edits.append(edit)
+    if whole:
+        edit = _file_edit(file, whole)
+        if edit is not None:
+            edits.append(edit)
+    return edits
+
+
+def _missing(codes: list[str], named: str | None) -> str:
+    """`codes` not among those a directive names (`named`: its codes as written), unique, in code order."""
+    have = {code.strip().upper() for code in (named or "").split(",")}
+    return ", ".join(sorted({code for code in codes if code not in have}))
+
+
+def _line_edit(line: syntax.Line, codes: list[str], marker: str) -> Edit | None:
+    value = line.value or ""
+    in_value = line.rest is None and value.startswith(("#", "("))  # a comment where the value would be
+    trailing = (value + line.sep2) if in_value else (line.rest or "")
+    start = line.value_column if in_value else line.rest_column
+    existing = LINE_NOQA.search(trailing)
+    if existing and existing.group("codes") is None:
+        return None  # a bare noqa suppresses everything already
+    if existing:
+        added = _missing(codes, existing.group("codes"))
+        at = start + existing.end()
+        return Edit(line.number, at, line.number, at, f", {added}") if added else None
+    end = line.end_column
+    if line.rest is not None or in_value:
+        return Edit(line.number, end, line.number, end, f"  noqa: {_missing(codes, None)}")
+    here = marker if marker == "(" or line.value_kind in NUMBERS else "("
+    return Edit(line.number, end, line.number, end, f"  {here} noqa: {_missing(codes, None)}")
+
+
+def _file_edit(file: syntax.ListFile, codes: list[str]) -> Edit | None:
+    for line in file.lines:
+        if line.kind != syntax.COMMENT:
+            continue
+        text = (line.comment or "").rstrip()
+        match = FILE_NOQA.match(text.strip())
+        if match is None:
+            continue
+        if match.group("codes") is None:
+            return None
+        added = _missing(codes, match.group("codes"))
+        at = len(line.indent) + len(text) + 1
+        return Edit(line.number, at, line.number, at, f", {added}") if added else None
+    newline = file.lines[0].newline if file.lines and file.lines[0].newline else "\n"
+    return Edit(1, 1, 1, 1, f"# achslint: noqa: {_missing(codes, None)}{newline}")

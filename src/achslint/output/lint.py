@@ -126,6 +126,19 @@ def fix_count(results: list[FileResult], show_diff: bool) -> str:
     return f"{verb} {fixed} diagnostic{'s' if fixed != 1 else ''}"
 
 
+def noqa_count(results: list[FileResult]) -> str:
+    """What `--add-noqa` did, and what it left: findings a `noqa` in a list cannot suppress."""
+    added = sum(r.noqa_added for r in results)
+    said = f"added {added} noqa directive{'s' if added != 1 else ''}"
+    left = sum(len(r.diagnostics) for r in results)
+    if left:
+        said += (
+            f"; {left} finding{'s' if left != 1 else ''} left that a noqa in the list cannot suppress "
+            "(machine rules, unused noqa LIS009): `achslint lint` shows them"
+        )
+    return said
+
+
 class progress:
     """A rich progress bar on standard error for long runs on a terminal; otherwise nothing."""
 
