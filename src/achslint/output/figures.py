@@ -461,7 +461,16 @@ def svg_element(build: Callable[[], Figure], prefix: str) -> str:
     if root is None or view is None:
         raise PlotUnavailable("matplotlib wrote an SVG without a viewBox")
     text = f'<svg class="figure" role="img" viewBox="{view[1]}">' + text[root.end() :]
-    text = re.sub(r'\bid="([^"]*)"', lambda m: f'id="{prefix}-{re.sub(r"[^A-Za-z0-9_-]", "_", m[1])}"', text)
+    seen: dict[str, int] = {}
+
+    def unique(match: re.Match[str]) -> str:
+        # A gid drawn several times (a limit line per limit) repeats its id; matplotlib's own ids, which the
+        # references below point at, are unique already and keep their names.
+        name = f"{prefix}-{re.sub(r'[^A-Za-z0-9_-]', '_', match[1])}"
+        seen[name] = seen.get(name, 0) + 1
+        return f'id="{name}"' if seen[name] == 1 else f'id="{name}-{seen[name]}"'
+
+    text = re.sub(r'\bid="([^"]*)"', unique, text)
     text = re.sub(r'href="#([^"]*)"', rf'href="#{prefix}-\1"', text)
     return re.sub(r"url\(#([^)]*)\)", rf"url(#{prefix}-\1)", text).strip()
 
