@@ -2,7 +2,7 @@
 
 Each function composes the stages below it (parse, resolve, lint, model, explain, dry-run, fmt); nothing
 here decides anything of its own. The package re-exports the functions of `__all__`'s first group
-(`achslint.lint`, `achslint.load`, ...).
+(`achslint.lint`, `achslint.load`, ...) and the exceptions they raise.
 """
 
 from __future__ import annotations
@@ -12,18 +12,33 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .core.decode import text_bytes
+from .core.decode import UnreadableInput, text_bytes
 from .core.diagnostics import Diagnostic, Severity
 from .core.files import read_list
 from .fmt import FormatOutcome, FormatRequest, run_format
-from .linting.config import ConfigError
+from .homing.scenario import ScenarioError
+from .linting.config import ConfigError, Overrides, forget_cached
+from .linting.discovery import is_startup
 from .linting.linter import FileSettings, findings, lint_file
 from .linting.run import LintOutcome, LintRequest, LintRun, OutputIsInput, run_lint
+from .machine.resolved import MachineError
 
 if TYPE_CHECKING:
-    from .dryrun import DryRun
+    from .dryrun import DryRun, DryRunRefused
     from .explanation import ListReport
-    from .model.base import AxisBase
+    from .model.base import ListBase
+    from .model.generated import AxisParameters
+
+
+def __getattr__(name: str) -> type[Exception]:
+    """`DryRunRefused`, loaded with the dry-run on first use (it would cost every lint and fmt run the
+    simulator's import)."""
+    if name == "DryRunRefused":
+        from .dryrun import DryRunRefused
+
+        return DryRunRefused
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 # A list given to the library functions: a path (str or PathLike) or the list's bytes.
 Source = str | os.PathLike[str] | bytes
@@ -46,6 +61,22 @@ def _as_bytes(source: Source) -> tuple[bytes, str]:
     return read_list(path), str(path)
 
 
+class LintFailed(Exception):
+    """`lint_paths` could not lint some of the lists it found (unreadable, refused): `errors` says which and
+    why, one message each, as `achslint lint` prints them."""
+
+    def __init__(self, errors: list[str]) -> None:
+        super().__init__("; ".join(errors))
+        self.errors = errors
+
+
+def _text(value: object, function: str, instead: str) -> str:
+    """The text a text function was given, or a TypeError naming the function that takes what it got."""
+    if isinstance(value, str):
+        return value
+    raise TypeError(f"{function}() takes the text of a list (str), not {type(value).__name__}{instead}")
+
+
 def lint(
     source: Source,
     *,
@@ -53,10 +84,49 @@ def lint(
     ignore: Iterable[str] | None = None,
     name: str | None = None,
 ) -> list[Diagnostic]:
-    """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files."""
+    """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files.
+
+    A folder or a start-up list (told by its name or content) is a machine: linted as `lint_paths` does,
+    which is what `achslint lint PATH` reports."""
+    if not isinstance(source, (bytes, bytearray)) and not (isinstance(source, str) and "\n" in source):
+        path = Path(source)
+        if path.is_dir() or (path.is_file() and is_startup(path)):
+            return lint_paths([path], select=select, ignore=ignore)
     data, default_name = _as_bytes(source)
     settings = FileSettings.of(list(select) if select else None, list(ignore or []))
     return findings(data, name or default_name, settings)
+
+
+def lint_paths(
+    paths: Iterable[str | os.PathLike[str]],
+    *,
+    select: Iterable[str] | None = None,
+    ignore: Iterable[str] | None = None,
+    config: str | os.PathLike[str] | None = None,
+) -> list[Diagnostic]:
+    """What `achslint lint PATH...` reports: files, folders (searched) and start-up lists (their machines),
+    with the configuration files found beside them (or `config` instead), in the command line's order.
+
+    Raises `FileNotFoundError` for a path that does not exist, `ConfigError` for a bad configuration and
+    `LintFailed` when a list that was found cannot be read."""
+    names = [os.fspath(path) for path in paths]
+    for name in names:
+        if not os.path.lexists(name):
+            raise FileNotFoundError(2, "no such file or folder", name)
+    forget_cached()  # configuration files read as they are now, not as an earlier call found them
+    overrides = Overrides(select=list(select) if select else None, ignore=list(ignore or []))
+    request = LintRequest(
+        paths=names,
+        overrides=overrides,
+        config_file=os.fspath(config) if config is not None else None,
+        jobs=1,  # no worker processes from a library call
+        keep_source=False,
+    )
+    outcome = run_lint(request)
+    errors = list(dict.fromkeys([*outcome.errors, *(r.error for r in outcome.results if r.error)]))
+    if errors:
+        raise LintFailed(errors)
+    return [d for result in outcome.results for d in result.diagnostics]
 
 
 def lint_text(
@@ -67,11 +137,12 @@ def lint_text(
     ignore: Iterable[str] | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
+    text = _text(text, "lint_text", "; lint() takes a path or bytes")
     settings = FileSettings.of(list(select) if select else None, list(ignore or []))
     return findings(text_bytes(text), filename, settings)
 
 
-def load(source: Source, *, defaults: Source | None = None, strict: bool = False) -> AxisBase:
+def load(source: Source, *, defaults: Source | None = None, strict: bool = False) -> AxisParameters:
     """The typed model of a list (a path or bytes) on top of an optional default list.
 
     Lenient by default: the findings of `lint` are kept on the model (`model.findings`). With
@@ -86,13 +157,13 @@ def load(source: Source, *, defaults: Source | None = None, strict: bool = False
 
 
 def _finish(
-    model: AxisBase,
+    model: AxisParameters,
     data: bytes,
     name: str,
     default_data: tuple[bytes, str] | None,
     strict: bool,
     rule_errors: Callable[[list[Diagnostic]], Exception],
-) -> AxisBase:
+) -> AxisParameters:
     settings = FileSettings(keep_source=False)
     found = lint_file(data, name, settings, default_data[0] if default_data else None).diagnostics
     model._findings = found
@@ -104,20 +175,22 @@ def _finish(
 
 def loads(
     text: str, *, defaults: str | None = None, strict: bool = False, filename: str = "<string>"
-) -> AxisBase:
-    """The typed model of a list's text (see `load`)."""
+) -> AxisParameters:
+    """The typed model of a list's text (see `load`). Bytes raise TypeError: `load` takes them."""
     from .model import build_model, rule_errors
 
-    data = text_bytes(text)
+    data = text_bytes(_text(text, "loads", "; load() takes a path or bytes"))
+    if defaults is not None:
+        defaults = _text(defaults, "loads", " as defaults; load() takes a path or bytes")
     default_data = (text_bytes(defaults), "<defaults>") if defaults is not None else None
     return _finish(
         build_model(data, filename, default_data), data, filename, default_data, strict, rule_errors
     )
 
 
-def dumps(model: AxisBase) -> str:
-    """A list in the canonical layout from a model (for lists generated by configuration tools):
-    `loads(dumps(model))` gives an equal model."""
+def dumps(model: ListBase) -> str:
+    """A list in the canonical layout from a model of any kind (for lists generated by configuration tools):
+    `loads(dumps(model)) == model` for an axis model."""
     from .fmt import canonical_text
     from .model import dumps as model_dumps
 
@@ -146,7 +219,7 @@ def format_text(text: str) -> str:
     """The text of a list as `achslint fmt` writes it (whitespace only)."""
     from .fmt import format_text as formatted
 
-    return formatted(text)
+    return formatted(_text(text, "format_text", "; decode the bytes first"))
 
 
 __all__ = [  # noqa: RUF022 (grouped: one list, then whole runs)
@@ -156,17 +229,26 @@ __all__ = [  # noqa: RUF022 (grouped: one list, then whole runs)
     "explain",
     "format_text",
     "lint",
+    "lint_paths",
     "lint_text",
     "load",
     "loads",
-    # whole runs, as the command line does them
+    # what they return and raise
+    "Diagnostic",
+    "Severity",
     "ConfigError",
+    "DryRunRefused",
+    "LintFailed",
+    "MachineError",
+    "OutputIsInput",
+    "ScenarioError",
+    "UnreadableInput",
+    # whole runs, as the command line does them
     "FormatOutcome",
     "FormatRequest",
     "LintOutcome",
     "LintRequest",
     "LintRun",
-    "OutputIsInput",
     "run_format",
     "run_lint",
 ]

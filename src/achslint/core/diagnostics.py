@@ -12,9 +12,17 @@ DOCS_URL = "https://achslint.readthedocs.io/en/latest/rules.html"
 
 
 class Severity(str, Enum):
+    """A finding's severity; a string (`severity == "warning"`), printed as its value (`str`, f-strings)."""
+
     ERROR = "error"
     WARNING = "warning"
     INFO = "info"
+
+    def __str__(self) -> str:
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
 
     @property
     def rank(self) -> int:

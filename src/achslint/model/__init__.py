@@ -46,6 +46,7 @@ from .base import DEFAULT, AxisBase, ListBase, Source, dumps, field_name, inner_
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
+    from .generated import AxisParameters
 
 __all__ = [
     "DEFAULT",
@@ -104,7 +105,7 @@ def list_model(kind: str = "axis") -> type[ListBase]:
     return model
 
 
-def axis_model() -> type[AxisBase]:
+def axis_model() -> type[AxisParameters]:
     """The `AxisParameters` class of `model/generated.py` (imported on first use: building it takes a while)."""
     from .generated import AxisParameters
 
@@ -195,7 +196,7 @@ def _open_list(values: dict[int, Any]) -> list[Any]:
     ]
 
 
-def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None = None) -> AxisBase:
+def build_model(data: bytes, name: str, default_list: tuple[bytes, str] | None = None) -> AxisParameters:
     """The typed model of an axis list (on top of an optional default list), built from its resolved axis."""
     axis = resolve_bytes(data, name, default_list[0] if default_list else None)
     values: dict[str, Any] = {}

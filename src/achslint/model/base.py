@@ -74,6 +74,17 @@ class ListBase(BaseModel):
             raise TypeError(f"{cls.__name__}: no catalogue of {cls.KIND} lists")
         return cat
 
+    def __eq__(self, other: object) -> bool:
+        """Models are equal when they hold the same values (`loads(dumps(m)) == m`): where the values came
+        from (`source_of`), the corrections and the findings describe the file read, not the list."""
+        if not isinstance(other, BaseModel):
+            return NotImplemented
+        return (
+            type(self) is type(other)
+            and self.__dict__ == other.__dict__
+            and self.__pydantic_extra__ == other.__pydantic_extra__
+        )
+
     def source_of(self, path: str) -> Source:
         """Where the value of a canonical path (`getriebe[0].vb_reflow`, `gruppe[0].achs_anzahl`) came from."""
         return self._sources.get(path, DEFAULT)
