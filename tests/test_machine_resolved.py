@@ -207,3 +207,110 @@ def test_a_start_up_list_is_linted_as_a_list_and_so_are_the_compensation_lists_i
     assert ("hochlauf.lis", 7, "LIS003") in found
     assert any(name == "achskw1.lis" and code == "LIS704" for name, _, code in found), found
     assert json.loads(done.stdout)["summary"]["files"] == 3
+
+
+def _codes(target: Path) -> list[tuple[str, int, str]]:
+    done = run_cli("lint", str(target), "--format", "json", "--exit-zero")
+    assert done.returncode == 0, done.stderr
+    return sorted(
+        (Path(d["path"]).name, d["line"], d["code"]) for d in json.loads(done.stdout)["diagnostics"]
+    )
+
+
+def _axes(folder: Path, *numbers: int, spindle: int | None = None) -> None:
+    for number in numbers:
+        kind = "kenngr.achs_typ  4\nkenngr.achs_mode  0x4\n" if number == spindle else ""
+        (folder / f"achsmds{number}.lis").write_text(
+            f"kopf.achs_nr  {number}\nkopf.log_achs_name  A{number}\nkenngr.antr_typ  4\n{kind}Ende\n"
+        )
+
+
+def test_a_channel_list_beyond_kanal_anzahl_is_no_configured_channel(tmp_path: Path) -> None:
+    # kanal_anzahl 1 (P-STUP-00001): sda_mds[1] belongs to no configured channel — LIS522 says so, and neither
+    # LIS504 (missing) nor the channel rules (LIS512 on its axis 9) judge a channel the CNC does not set up
+    _axes(tmp_path, 1)
+    (tmp_path / "sda_mds1.lis").write_text(
+        "gruppe[0].achse[0].bezeichnung  X\ngruppe[0].achse[0].log_achs_nr  1\nEnde\n"
+    )
+    (tmp_path / "sda_mds2.lis").write_text(
+        "gruppe[0].achse[0].bezeichnung  Q\ngruppe[0].achse[0].log_achs_nr  9\nEnde\n"
+    )
+    startup = (
+        "kanal_anzahl  1\nsda_mds[0]  ./sda_mds1.lis\nsda_mds[1]  ./sda_mds2.lis\nsda_mds[2]  ./gone.lis\n"
+    )
+    (tmp_path / "hochlauf.lis").write_text(startup + "zahl_mds  1\nachs_mds[0]  ./achsmds1.lis\nEnde\n")
+    found = [c for c in _codes(tmp_path / "hochlauf.lis") if c[2] in ("LIS504", "LIS512", "LIS522")]
+    assert {code for *_, code in found} == {"LIS522"}, found
+
+
+def test_an_entry_written_twice_names_the_later_list_as_the_cnc_reads_it(tmp_path: Path) -> None:
+    # achs_mds[1] twice (LIS005: the CNC takes the later value): the machine loads achsmds3.lis, not achsmds2
+    _axes(tmp_path, 1, 2, 3)
+    (tmp_path / "hochlauf.lis").write_text(
+        "achs_mds[0]  ./achsmds1.lis\nachs_mds[1]  ./achsmds2.lis\nachs_mds[1]  ./achsmds3.lis\nEnde\n"
+    )
+    startup = read_startup(tmp_path / "hochlauf.lis")
+    assert [(e.key, e.raw) for e in startup.axes] == [
+        ("achs_mds[0]", "./achsmds1.lis"),
+        ("achs_mds[1]", "./achsmds3.lis"),
+    ]
+    report = json.loads(run_cli("explain", str(tmp_path / "hochlauf.lis"), "--format", "json").stdout)
+    assert sorted(axis["name"] for axis in report["axes"]) == ["A1", "A3"]
+    assert ("hochlauf.lis", 3, "LIS005") in _codes(tmp_path / "hochlauf.lis")
+
+
+def test_one_number_for_a_path_axis_and_a_spindle_is_lis701s_not_lis513s(tmp_path: Path) -> None:
+    # spindel[0] takes logical axis 2, which gruppe[0].achse[1] has: LIS701; LIS513's advice (change the axis
+    # list's type) would only move the fault to the other slot
+    _axes(tmp_path, 1, 2)
+    (tmp_path / "sda_mds1.lis").write_text(
+        "gruppe[0].achse[0].bezeichnung  X\ngruppe[0].achse[0].log_achs_nr  1\n"
+        "gruppe[0].achse[1].bezeichnung  Y\ngruppe[0].achse[1].log_achs_nr  2\n"
+        "spindel[0].bezeichnung  S\nspindel[0].log_achs_nr  2\nEnde\n"
+    )
+    (tmp_path / "hochlauf.lis").write_text(
+        "sda_mds[0]  ./sda_mds1.lis\nachs_mds[0]  ./achsmds1.lis\nachs_mds[1]  ./achsmds2.lis\nEnde\n"
+    )
+    codes = {code for *_, code in _codes(tmp_path / "hochlauf.lis")}
+    assert "LIS701" in codes and "LIS513" not in codes
+
+
+def test_a_second_master_in_the_channel_is_said_once(tmp_path: Path) -> None:
+    # axis 2 is the static gantry slave of 1 (P-AXIS-00070), and the channel couples it to 1 and then to 3:
+    # LIS706 says the channel gives it two masters; LIS515 speaks of the first pair only
+    _axes(tmp_path, 1, 3)
+    (tmp_path / "achsmds2.lis").write_text(
+        "kopf.achs_nr  2\nkenngr.gantry_ax_nr  1\nkenngr.antr_typ  4\nEnde\n"
+    )
+    pair = "synchro_data.koppel_gruppe[0].paar[{i}].log_achs_nr_{r}  {n}\n"
+    (tmp_path / "sda_mds1.lis").write_text(
+        "gruppe[0].achse[0].bezeichnung  X\ngruppe[0].achse[0].log_achs_nr  1\n"
+        "gruppe[0].achse[1].bezeichnung  Z\ngruppe[0].achse[1].log_achs_nr  3\n"
+        + pair.format(i=0, r="master", n=1)
+        + pair.format(i=0, r="slave", n=2)
+        + pair.format(i=1, r="master", n=3)
+        + pair.format(i=1, r="slave", n=2)
+        + "Ende\n"
+    )
+    (tmp_path / "hochlauf.lis").write_text(
+        "sda_mds[0]  ./sda_mds1.lis\n"
+        + "".join(f"achs_mds[{n - 1}]  ./achsmds{n}.lis\n" for n in (1, 2, 3))
+        + "Ende\n"
+    )
+    found = [(line, code) for name, line, code in _codes(tmp_path / "hochlauf.lis") if name == "sda_mds1.lis"]
+    assert found == [(5, "LIS515"), (8, "LIS706")]
+
+
+def test_one_axis_in_two_slots_is_told_as_such() -> None:
+    text = (
+        "gruppe[0].achse[0].bezeichnung  Y\ngruppe[0].achse[0].log_achs_nr  2\n"
+        "gruppe[0].achse[1].bezeichnung  Y\ngruppe[0].achse[1].log_achs_nr  2\nEnde\n"
+    )
+    from achslint.linting.linter import FileSettings, lint_file
+
+    [finding] = [
+        d
+        for d in lint_file(text.encode(), "sda.lis", FileSettings(kind="channel")).diagnostics
+        if d.code == "LIS702"
+    ]
+    assert "repeats gruppe[0].achse[0]" in finding.message and "remove one of the slots" in finding.message

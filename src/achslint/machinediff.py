@@ -233,7 +233,7 @@ def read_machine(startup: Path, cnc_root: Path | None) -> _Machine:
         shown = _shown_entry(entry.path) or entry.raw
         axes.append(_Axis(entry.key, shown, values, number if isinstance(number, int) else 0, name))
     channels: dict[int, tuple[str, ChannelList]] = {}
-    for entry in entries.channels:  # the later entry of a channel wins, as in the build
+    for entry in entries.loaded_channels():  # the channels of kanal_anzahl; a later entry wins
         channel = machine.channel(entry, strict=True)
         assert channel is not None
         channels[_channel_number(entry.key)] = (_shown_entry(entry.path) or entry.raw, channel)

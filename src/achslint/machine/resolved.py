@@ -238,7 +238,7 @@ class Machine:
         is LIS518's), in the order of the entries."""
         found: list[tuple[StartupEntry, ChannelList]] = []
         seen: set[str] = set()
-        for entry in self.startup.channels if self.startup is not None else []:
+        for entry in self.startup.loaded_channels() if self.startup is not None else []:
             if entry.path is None or str(entry.path) in seen:
                 continue
             seen.add(str(entry.path))
@@ -250,7 +250,7 @@ class Machine:
     def channel_entry(self, number: int) -> StartupEntry | None:
         """The entry naming channel `number`'s list (1-based; the later one when two name it); None when the
         start-up list names no channel list at all. `MachineError` when it names others only."""
-        channels = self._startup().channels
+        channels = self._startup().loaded_channels()
         if not channels:
             return None
         chosen = [entry for entry in channels if entry_index(entry) == number - 1]
@@ -265,7 +265,7 @@ class Machine:
 
     def channel_numbers(self) -> list[int]:
         """The channels the start-up list names a list for (1-based)."""
-        return sorted({entry_index(entry) + 1 for entry in self._startup().channels})
+        return sorted({entry_index(entry) + 1 for entry in self._startup().loaded_channels()})
 
 
 def _shown(entry: StartupEntry) -> str:

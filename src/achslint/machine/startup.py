@@ -33,7 +33,8 @@ Member = tuple[str, Summary]
 _ENTRY = re.compile(
     r"achs_mds\[[0-9]+\]|default_achs_mds|sda_mds\[[0-9]+\]|default_sda_mds|achs_kw\[[0-9]+\]"
 )
-COUNTS = ("zahl_mds", "zahl_kw")  # how many achs_mds[i] / achs_kw[i] entries the CNC reads (P-STUP-00014/16)
+# how many achs_mds[i] / achs_kw[i] entries and channels the CNC reads (P-STUP-00014/16, P-STUP-00001)
+COUNTS = ("zahl_mds", "zahl_kw", "kanal_anzahl")
 
 
 @dataclass
@@ -81,6 +82,15 @@ class Startup:
         if count is None or count.value is None:
             return list(self.axes)
         return [entry for entry in self.axes if entry_index(entry) < count.value]
+
+    def loaded_channels(self) -> list[StartupEntry]:
+        """The channel lists the CNC loads: with `kanal_anzahl` written (P-STUP-00001: the number of configured
+        channels), those of the channels below that count — a list named for a channel beyond it belongs to
+        no configured channel (LIS522 says so) —, else every `sda_mds[i]`."""
+        count = self.counts.get("kanal_anzahl")
+        if count is None or count.value is None:
+            return list(self.channels)
+        return [entry for entry in self.channels if entry_index(entry) < count.value]
 
 
 def entry_index(entry: StartupEntry) -> int:
@@ -170,6 +180,9 @@ def read_startup(
             number = parse_integer(line.value)
             count = number if isinstance(number, int) else None
             counts[line.path] = StartupCount(line.path, count, line.value, line.number, line.value_column)
+    # A key written twice: the CNC takes the later value (LIS005 says so), so the later entry is the list.
+    last = {key: index for index, (key, _, _) in enumerate(entries)}
+    entries = [item for index, item in enumerate(entries) if last[item[0]] == index]
     if cnc_root is None:
         cnc_root = default_cnc_root(path)
         above = cnc_root != Path(os.path.abspath(path)).parent

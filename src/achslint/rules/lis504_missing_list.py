@@ -91,8 +91,9 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startups = machine.startups
     for startup in startups:
         defaults = [entry for entry in (startup.default, startup.default_channel) if entry is not None]
-        not_linted = {id(entry) for entry in [*defaults, *startup.channels]}  # no finding of their own
-        for entry in [*defaults, *startup.loaded_axes(), *startup.channels]:  # beyond zahl_mds: never read
+        channels = startup.loaded_channels()  # beyond kanal_anzahl: no configured channel (LIS522)
+        not_linted = {id(entry) for entry in [*defaults, *channels]}  # no finding of their own
+        for entry in [*defaults, *startup.loaded_axes(), *channels]:  # beyond zahl_mds: never read
             if entry.path is not None and same_file(entry.path, startup.path):
                 severity, message = (
                     Severity.ERROR,

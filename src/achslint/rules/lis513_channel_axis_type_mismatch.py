@@ -107,10 +107,15 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     members = machine.members
     numbers = by_number(members)
     for _, channel in channel_lists(machine):
+        # a number the channel gives to a path axis and to a spindle is LIS701's: one of the two slots is
+        # wrong, and changing the axis list's type (this rule's advice) would only move the fault
+        both = {a.logical_number for a in channel.axes if a.spindle} & {
+            a.logical_number for a in channel.axes if not a.spindle
+        }
         for axis in channel.axes:
             member = numbers.get(axis.logical_number)
-            if member is None:
-                continue  # LIS512
+            if member is None or axis.logical_number in both:
+                continue  # LIS512, LIS701
             is_spindle = member[1].get("axis_type") == "S"
             if axis.spindle == is_spindle:
                 continue

@@ -164,9 +164,12 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     )
     for _, channel in channel_lists(machine):
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes)}
+        master_of: dict[int, int] = {}  # by the channel's pairs so far
         for pair in channel.pairs:
             if pair.master == pair.slave or tangled & {pair.master, pair.slave}:
                 continue  # a pair of one axis (not about the axis lists), or a coupling LIS507 reports
+            if master_of.setdefault(pair.slave, pair.master) != pair.master:
+                continue  # the channel gives the slave a second master itself: LIS706's finding
             found = _contradiction(pair, numbers, names)
             if found is None:
                 continue

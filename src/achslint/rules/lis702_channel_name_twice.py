@@ -84,12 +84,22 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         what, error = _ERROR[slot.spindle]
         line = slot.name.line
         start, end = ctx.value_span(line)
+        number = slot.logical_number
+        if number is not None and number == earlier.logical_number:  # the same axis in two slots
+            says = (
+                f"{slot.path} repeats {earlier.label}: one axis in two slots is two {what} with one name to "
+                f"the CNC (it reports error {error} at start-up); remove one of the slots"
+            )
+        else:
+            says = (
+                f"{slot.path} is named `{slot.name.value}`, the name {earlier.label} already has: two {what} "
+                f"of a channel cannot share a name (the CNC reports error {error} at start-up) and a program "
+                "naming it cannot say which is meant; give this slot a name of its own"
+            )
         yield ctx.report(
             CODE,
             line,
-            f"{slot.path} is named `{slot.name.value}`, the name {earlier.label} already has: two {what} of "
-            f"a channel cannot share a name (the CNC reports error {error} at start-up) and a program "
-            "naming it cannot say which is meant; give this slot a name of its own",
+            says,
             column=start,
             end_column=end,
             setting=slot.name,
