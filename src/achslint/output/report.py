@@ -247,7 +247,9 @@ def _outcome(section: AxisSection) -> str:
         return OUTCOME_WORDS.get(section.program_run.outcome, section.program_run.outcome)
     if section.dry_run is not None:
         trace = section.dry_run.trace
-        return trace.outcome + (f" in {_number(trace.total_time, 3)} s" if trace.phases else "")
+        return trace.outcome.replace("_", " ") + (
+            f" in {_number(trace.total_time, 3)} s" if trace.phases else ""
+        )
     return "not simulated"
 
 
