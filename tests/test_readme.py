@@ -213,3 +213,10 @@ def test_the_sdist_holds_what_the_tests_read():
     top = {entry.split("/")[0] for entry in include}
     assert read - top == set()
     assert all((ROOT / entry).exists() for entry in include)
+
+
+def test_help_shows_the_extras_the_readme_names(cli):
+    """rich reads `[lsp]` as markup and dropped it: `pip install 'achslint'` in the help was no advice."""
+    for args in (["--help"], ["server", "--help"]):
+        shown = " ".join(cli(*args, env={"COLUMNS": "200"}).stdout.decode().split())
+        assert "pip install 'achslint[lsp]'" in shown, args

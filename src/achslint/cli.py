@@ -1097,7 +1097,7 @@ class SchemaKind(str, Enum):  # the kinds of list with a typed model (achslint.m
 
 @app.command()
 def server() -> None:
-    """Run the language server for editors on standard input/output (needs `pip install 'achslint[lsp]'`)."""
+    """Run the language server for editors on standard input/output (needs `pip install 'achslint\\[lsp]'`)."""
     from .lsp import MISSING, available
 
     if not available():
