@@ -601,7 +601,10 @@ class ExplainOutput(str, Enum):  # explain also writes the Markdown summary of C
 @app.command()
 def rules(
     output_format: ExplainFormat = typer.Option(
-        ExplainFormat.text, "--format", "--output-format", help="text (a table) or json (every rule with its documentation)."
+        ExplainFormat.text,
+        "--format",
+        "--output-format",
+        help="text (a table) or json (every rule with its documentation).",
     ),
 ) -> None:
     """List every rule with its code, name, default severity and fix."""
@@ -624,7 +627,9 @@ def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> Non
 
     found = registry().get(code.strip().upper())
     if found is None:
-        _fail(f"unknown rule code {code!r}; `achslint rules` lists them")
+        from .rules.codes import code_hint
+
+        _fail(f"unknown rule code {code!r}; {code_hint(code)}")
     typer.echo(rule_text(found))
 
 
@@ -843,6 +848,13 @@ def dry_run_command(
             file, program, scenario, config, channel, output_format, plot, color, sweep_runs, allow_failures
         )
         return
+    from .linting.discovery import is_startup
+
+    if is_startup(Path(file)):  # by its name or content; simulating it as an axis would invent one
+        _fail(
+            f"{file} is a start-up list (a whole machine): give its homing program with --program rfp.nc, "
+            "or dry-run one of its axis lists"
+        )
 
     from .core.decode import UnreadableInput
     from .core.files import reason
