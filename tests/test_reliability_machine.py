@@ -393,12 +393,15 @@ def test_a_logical_axis_with_two_names_in_the_channel_list_is_a_finding(run, tmp
         "gruppe[0].achse[0].bezeichnung X\ngruppe[0].achse[0].log_achs_nr 1\n"
         "gruppe[0].achse[1].bezeichnung Y\ngruppe[0].achse[1].log_achs_nr 1\n"  # meant 2
         "gruppe[0].achse[2].bezeichnung C\ngruppe[0].achse[2].log_achs_nr 2\n"
-        "spindel[0].bezeichnung S\nspindel[0].log_achs_nr 2\n"  # axis 2 as spindle S and axis C: LIS513's
+        "spindel[0].bezeichnung S\nspindel[0].log_achs_nr 2\n"  # axis 2 as spindle S and axis C: LIS701's
         "Ende\n"
     )
     code, out, _ = run("lint", startup)
-    assert code == 1  # LIS508 warns; LIS513: the spindle's axis list is no spindle (an error)
-    assert [line.split(" ")[1] for line in out.splitlines() if "LIS5" in line] == ["LIS508", "LIS513"]
+    assert code == 1  # LIS508 warns; LIS701: one number for a path axis and a spindle (an error, 20426)
+    assert [line.split(" ")[1] for line in out.splitlines() if " LIS5" in line or " LIS7" in line] == [
+        "LIS508",
+        "LIS701",
+    ]
     [line] = [line for line in out.splitlines() if "LIS508" in line]
     assert line == (
         f"{channel}:3:32: LIS508 [warning] gruppe[0].achse[1] names logical axis 1 `Y`, but gruppe[0].achse[0] "

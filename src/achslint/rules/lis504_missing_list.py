@@ -12,12 +12,16 @@ file looked for and the root. An entry whose file, links followed, lies outside
 the CNC root is not read: a warning says why. An entry that names the start-up
 list itself is an error too: it gives no list. So is a default list or a
 channel list that exists but cannot be read as a list (UTF-16, binary, not
-readable); an axis list like that is reported on the axis list itself.
+readable); an axis list like that is reported on the axis list itself. A list
+of another kind the start-up list names (a compensation list `achs_kw[i]` up
+to `zahl_kw`, tool data `werkz_data[i]`, zero offsets `nullp_data[i]`, the
+real-time configuration `rtconf_lis` ...) that does not exist is a warning.
 
 Why
 ---
-The CNC aborts the start-up when a list named in the start-up list is
-missing or unreadable.
+The CNC aborts the start-up when an axis or channel list named in the
+start-up list is missing or unreadable. A missing list of another kind cannot
+be loaded either; what the CNC does then is not documented, hence a warning.
 
 Example
 -------
@@ -54,14 +58,17 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
+from ..catalogue.kinds import entry_kind
 from ..core.decode import UnreadableInput, decode
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import read_list, reason, same_file
+from ..machine.startup import entry_index
 
 if TYPE_CHECKING:
     from pathlib import Path
 
     from ..machine.resolved import Machine
+    from ..machine.startup import Startup
 
 CODE = "LIS504"
 NAME = "missing-list"
@@ -129,3 +136,34 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             yield Diagnostic(
                 str(startup.path), entry.line, entry.column, entry.line, end, CODE, severity, message
             )
+        yield from _other_kinds(startup)
+
+
+def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
+    """The lists of other kinds a start-up list names (compensation lists up to `zahl_kw`, tool data, zero
+    offsets ...) that do not exist: the CNC cannot load them; what it does then is documented for axis and
+    channel lists only, hence a warning."""
+    count = startup.counts.get("zahl_kw")
+    compensations = [
+        entry
+        for entry in startup.compensations
+        if count is None or count.value is None or entry_index(entry) < count.value  # beyond: LIS516
+    ]
+    for entry in [*compensations, *startup.others]:
+        if entry.path is not None or entry.refused:
+            continue  # there (its own lint checks it), or refused (the warning above says why)
+        kind = entry_kind(entry.key)
+        what = kind.name if kind is not None else "list"
+        end = entry.column + len(entry.raw)
+        yield Diagnostic(
+            str(startup.path),
+            entry.line,
+            entry.column,
+            entry.line,
+            end,
+            CODE,
+            Severity.WARNING,
+            f"`{entry.key}` names the {what} `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
+            f"(the CNC root is {startup.root_origin}); the CNC cannot load it — correct the entry, add the "
+            "list, or remove the entry",
+        )
