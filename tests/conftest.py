@@ -40,15 +40,20 @@ def pytest_collection_finish(session: pytest.Session) -> None:
 
 @pytest.hookimpl(tryfirst=True)
 def pytest_cmdline_main(config: pytest.Config) -> None:
-    """Run on every core, each test file in one worker, unless told otherwise: `-n N` / `-n 0` choose the
-    workers, `-p no:xdist` runs in this process. (In addopts, `-n` would be an unknown option to a pytest
-    without xdist.) Called before xdist's own hook, which turns `auto` into the number of cores."""
+    """Run on every core unless told otherwise: `-n N` / `-n 0` choose the workers, `-p no:xdist` runs in
+    this process. (In addopts, `-n` would be an unknown option to a pytest without xdist.) Called before
+    xdist's own hook, which turns `auto` into the number of cores.
+
+    Work stealing: each worker starts with one half of the tests, in file order, and a worker that runs out
+    takes tests from the end of the other's queue, so both finish together; a file stays in one worker
+    unless its tests are taken at the end (its module-scoped fixtures, such as test_lsp's language servers,
+    are then made once more). One file per worker (loadfile) left a worker idle for seconds at the end."""
     if not config.pluginmanager.hasplugin("xdist") or hasattr(config, "workerinput"):
         return  # xdist not loaded, or this is one of its workers
     if config.option.numprocesses is None and not config.option.collectonly:
         config.option.numprocesses = "auto"
         if config.option.dist == "no":
-            config.option.dist = "loadfile"
+            config.option.dist = "worksteal"
 
 
 def examples(full: int, quick: int = 20) -> int:

@@ -37,10 +37,10 @@ def _config(*, xdist: bool = True, numprocesses=None, dist: str = "no", worker: 
 @pytest.mark.parametrize(
     ("given", "expected"),
     [
-        ({}, ("auto", "loadfile")),  # plain `pytest`: every core, each file in one worker
+        ({}, ("auto", "worksteal")),  # plain `pytest`: every core, an idle worker takes the other's tests
         ({"numprocesses": 0}, (0, "no")),  # `pytest -n 0`
         ({"numprocesses": 3}, (3, "no")),  # `-n 3`: xdist picks its default distribution
-        ({"dist": "worksteal"}, ("auto", "worksteal")),  # a distribution asked for is kept
+        ({"dist": "loadfile"}, ("auto", "loadfile")),  # a distribution asked for is kept
         ({"xdist": False}, (None, "no")),  # `-p no:xdist`
         ({"worker": True}, (None, "no")),  # a worker must not start workers of its own
         ({"collect": True}, (None, "no")),  # --collect-only: xdist stays out of it
