@@ -54,6 +54,7 @@ def _choices(name: str, values: Iterable[str]) -> type[Enum]:
 
 
 if TYPE_CHECKING:
+    from .catalogue import Catalogue
     from .explanation import Found
     from .linting.run import LintRequest
     from .output import Screen
@@ -704,10 +705,26 @@ def _parameter(target: str, kind_id: str | None) -> "Found":
     if not found:
         cat = (kind or AXIS).catalogue()
         suggestions = cat.suggest(target) if cat is not None else []
+        if cat is not None and not suggestions and not any(mark in target for mark in ".[]"):
+            suggestions = _members_like(target, cat)
         hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?" if suggestions else ""
         where = f"of a {kind.name}" if kind is not None else "(--kind looks in another kind of list)"
         _fail(f"{target!r} is neither a file nor a known parameter {where}{hint}")
     return found[0]
+
+
+def _members_like(name: str, cat: "Catalogue") -> list[str]:
+    """For a mistyped bare name (`vb_reflw`): the closest member names, each as `explain` takes it (the name
+    alone when one parameter has it, else the parameters' paths)."""
+    from .core.closest import close_matches
+
+    owners: dict[str, list[str]] = {}
+    for parameter in cat.parameters:
+        owners.setdefault(parameter.member, []).append(parameter.path)
+    found: list[str] = []
+    for member in close_matches(name, list(owners), n=3):
+        found += [member] if len(owners[member]) == 1 else owners[member][:2]
+    return found[:3]
 
 
 def _screen(color: Color) -> "Screen":

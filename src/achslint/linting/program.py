@@ -16,6 +16,7 @@ from ..core.diagnostics import Diagnostic
 from ..machine.model import ChannelView, Program
 from ..rules import Scope
 from ..syntax.parser import split_lines
+from .discovery import is_startup
 from .engine import run
 from .linter import FileResult, FileSettings
 from .suppression import Suppressions
@@ -98,6 +99,12 @@ def lint_programs(
         return _not_checked(
             paths,
             "an NC program is checked against a machine: give its start-up list with --machine hochlauf.lis",
+        )
+    if startup.is_file() and not is_startup(startup):  # an axis list would be a machine of no axes
+        return _not_checked(
+            paths,
+            f"not checked: --machine {startup}: this is not a start-up list (it names no axis lists, "
+            "achs_mds[i]); give the machine's start-up list (hochlauf.lis)",
         )
     try:
         machine = build_machine(startup, cnc_root=cnc_root, channel=channel)

@@ -154,6 +154,17 @@ def selector_problem(selector: str) -> str | None:
     return f"{selector.strip()!r} is not a rule code or a prefix of one; {_closest(code)}"
 
 
+def code_hint(code: str) -> str:
+    """A did-you-mean for a code that names no rule (`achslint rule LIS3011`): the codes a family prefix
+    stands for (`LIS20`), a letter typed for a digit (`LIS3O2`), or the closest codes."""
+    wanted = code.strip().upper()
+    family = [c for c in known_codes() if c.startswith(wanted)] if re.fullmatch(r"LIS[0-9]+", wanted) else []
+    if family:
+        shown = ", ".join(family[:8]) + (", ..." if len(family) > 8 else "")
+        return f"did you mean one of {shown}? ({wanted} is a prefix; name one rule)"
+    return _closest(wanted)
+
+
 def _picks_some(code: str) -> bool:
     return code == "ALL" or (
         bool(re.fullmatch(r"LIS[0-9]*", code)) and any(c.startswith(code) for c in known_codes())
