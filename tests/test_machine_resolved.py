@@ -314,3 +314,16 @@ def test_one_axis_in_two_slots_is_told_as_such() -> None:
         if d.code == "LIS702"
     ]
     assert "repeats gruppe[0].achse[0]" in finding.message and "remove one of the slots" in finding.message
+
+
+def test_a_missing_list_of_another_kind_is_a_warning_and_one_beyond_zahl_kw_none(tmp_path: Path) -> None:
+    _axes(tmp_path, 1)
+    (tmp_path / "hochlauf.lis").write_text(
+        "zahl_mds  1\nachs_mds[0]  ./achsmds1.lis\nzahl_kw  1\nachs_kw[0]  ./achskw1.lis\n"
+        "achs_kw_log_ax_nr[0]  1\nachs_kw[1]  ./achskw2.lis\nwerkz_data[0]  ./werkz.lis\nEnde\n"
+    )
+    done = run_cli("lint", str(tmp_path / "hochlauf.lis"), "--format", "json", "--select", "LIS504")
+    found = [(d["line"], d["severity"]) for d in json.loads(done.stdout)["diagnostics"]]
+    # achs_kw[1] lies beyond zahl_kw 1 (LIS516's): never loaded, so not missing to the CNC
+    assert found == [(4, "warning"), (7, "warning")]
+    assert done.returncode == 0  # warnings only
