@@ -19,6 +19,7 @@ from achslint.fmt import format_bytes
 from .editors import environment, installed, lint_codes, machine, snippet
 
 pytestmark = pytest.mark.slow
+LOAD_PACKAGES = ["--eval", "(progn (require (quote package)) (package-initialize))"]  # eglot from ELPA too
 
 DRIVER = r"""
 (require 'cl-lib)
@@ -158,8 +159,7 @@ def test_emacs_eglot_with_the_readme_configuration(tmp_path: Path) -> None:
         AXIS=str(files["axis"]), XML=str(files["xml"]), EXPECTED=",".join(sorted(lint_codes(files["axis"])))
     )
     run = subprocess.run(
-        [program, "--batch", "-q", "--eval", "(progn (require 'package) (package-initialize))"]
-        + ["-l", str(config), "-l", str(driver)],
+        [program, "--batch", "-q", *LOAD_PACKAGES, "-l", str(config), "-l", str(driver)],
         capture_output=True,
         text=True,
         env=env,
