@@ -327,3 +327,28 @@ def test_a_missing_list_of_another_kind_is_a_warning_and_one_beyond_zahl_kw_none
     # achs_kw[1] lies beyond zahl_kw 1 (LIS516's): never loaded, so not missing to the CNC
     assert found == [(4, "warning"), (7, "warning")]
     assert done.returncode == 0  # warnings only
+
+
+def test_the_channel_count_counts_the_slots_of_the_default_channel_list_too(tmp_path: Path) -> None:
+    # default_sda.lis defines Z (gruppe[0].achse[2]); sda_mds1.lis X and Y and achs_anzahl 3: the CNC loads
+    # three axes (P-CHAN-00003), as LIS512/LIS521 and explain count them, so LIS703 has nothing to say
+    _axes(tmp_path, 1, 2, 3)
+    (tmp_path / "default_sda.lis").write_text(
+        "gruppe[0].achse[2].bezeichnung  Z\ngruppe[0].achse[2].log_achs_nr  3\nEnde\n"
+    )
+    (tmp_path / "sda_mds1.lis").write_text(
+        "gruppe[0].achs_anzahl  3\ngruppe[0].achse[0].bezeichnung  X\ngruppe[0].achse[0].log_achs_nr  1\n"
+        "gruppe[0].achse[1].bezeichnung  Y\ngruppe[0].achse[1].log_achs_nr  2\nEnde\n"
+    )
+    (tmp_path / "hochlauf.lis").write_text(
+        "default_sda_mds  ./default_sda.lis\nsda_mds[0]  ./sda_mds1.lis\n"
+        + "".join(f"achs_mds[{n - 1}]  ./achsmds{n}.lis\n" for n in (1, 2, 3))
+        + "Ende\n"
+    )
+    assert [c for c in _codes(tmp_path / "hochlauf.lis") if c[2] == "LIS703"] == []
+    assert [c for c in _codes(tmp_path) if c[2] == "LIS703"] == []  # the folder: the same machine
+    # alone (no start-up list names it) the channel list defines two: LIS703
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    (alone / "sda_mds1.lis").write_bytes((tmp_path / "sda_mds1.lis").read_bytes())
+    assert [c[2] for c in _codes(alone / "sda_mds1.lis")] == ["LIS703"]

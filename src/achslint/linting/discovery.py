@@ -369,7 +369,7 @@ class Finder:
             # every kind belongs to the machines that name it (a channel list's cross-list findings are its own)
             machines = self.machines_of(path, known)
             keys = tuple(m.key for m in machines)  # none: compared with no other list
-            defaults = next((m.defaults for m in machines if m.defaults is not None), None)
+            defaults = loaded_under(kind, machines)
             found.add(Target(name, path, self.config_for(path), keys, defaults, kind=kind))
             self._remember(machines, found)
         for path in named:  # the other members of its machines, for the machine-level rules
@@ -443,7 +443,8 @@ class Finder:
                 continue
             mine = inside(entry.path, folder) or scope.contains(entry.path)
             target = Target(shown(entry.path), entry.path, self.config_for(entry.path), (str(startup.path),))
-            found.add(replace(target, writable=self.follow_startup or mine, kind=kind))
+            under = loaded_under(kind, [Machine.of(startup)])
+            found.add(replace(target, writable=self.follow_startup or mine, kind=kind, defaults=under))
         return found_inside
 
     def _other_lists(self, startup: Startup) -> list[tuple[StartupEntry, str]]:
@@ -587,6 +588,22 @@ def updated_list(path: Path) -> Path | None:
             candidate = folder / f"{stem}{suffix}"
             if candidate != path and not is_list_update(candidate) and not_a_list_file(candidate) is None:
                 return candidate
+    return None
+
+
+def loaded_under(kind: str | None, machines: Sequence[Machine]) -> Path | None:
+    """The default list the CNC loads under a list of `kind` (None: told by its content, an axis list unless
+    it says otherwise) of these machines: their default axis list under an axis list, their default channel
+    list (`default_sda_mds`) under a channel list; none under the other kinds."""
+    if kind in (None, "axis"):
+        return next((m.defaults for m in machines if m.defaults is not None), None)
+    if kind == "channel":
+        for machine in machines:
+            startup = machine.startup
+            entry = startup.default_channel if startup is not None else None
+            path = entry.path if entry is not None else None
+            if startup is not None and path is not None and not same_file(path, startup.path):
+                return path
     return None
 
 

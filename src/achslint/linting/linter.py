@@ -202,7 +202,7 @@ def _check_file(
     kind: Kind = AXIS,
 ) -> FileResult:
     if kind.prefix != AXIS_PREFIX:
-        return _check_other_kind(file, name, settings, kind)
+        return _check_other_kind(file, name, settings, kind, default_file)
     # A default list (default_mds.lis) only supplies values underneath every axis: alone it is no axis,
     # so the rules that judge a whole axis do not run on it (they run on the axis lists that load it).
     partial = embedded is None and kind.id == DEFAULT_AXIS.id
@@ -234,13 +234,16 @@ def _check_file(
     )
 
 
-def _check_other_kind(file: ListFile, name: str, settings: FileSettings, kind: Kind) -> FileResult:
+def _check_other_kind(
+    file: ListFile, name: str, settings: FileSettings, kind: Kind, default_file: ListFile | None = None
+) -> FileResult:
     """A list of another kind (channel, tool data ...) against its kind's catalogue, by the rules that apply
     to it. It is no axis: no resolved axis and no machine summary (the machine step reads channel and start-up
     lists itself); the editor keeps its Context for the kind and its catalogue (hover, completion)."""
     cat = kind.catalogue()
     assert cat is not None  # has_catalogue
-    ctx = Context(name, file, settings.settings, catalogue=cat, kind=kind)
+    # default_file: the default channel list under a channel list (what LIS703 counts), as the CNC loads it
+    ctx = Context(name, file, settings.settings, catalogue=cat, kind=kind, default_file=default_file)
     diagnostics = run(
         Scope.LIST,
         (ctx,),

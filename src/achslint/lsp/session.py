@@ -30,7 +30,15 @@ from ..linting.config import (
     discover,
     parse_codes,
 )
-from ..linting.discovery import Discovery, Finder, Target, is_list_update, is_startup, updated_list
+from ..linting.discovery import (
+    Discovery,
+    Finder,
+    Target,
+    is_list_update,
+    is_startup,
+    loaded_under,
+    updated_list,
+)
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
 from ..machine.resolved import Machine
@@ -244,7 +252,7 @@ class Session:
             return Snapshot(
                 document.version, document.text, result, file, result.context, config_error, startup=True
             )
-        below, underneath = self._underneath(document)
+        below, underneath = self._underneath(document, settings.kind)
         if is_xml(name):
             result = lint_file(xml_bytes(document.text), name, settings, underneath)
             return Snapshot(document.version, document.text, result, config_error=config_error)
@@ -287,18 +295,14 @@ class Session:
                 self._refused[key] = None
         return self._refused[key]
 
-    def _underneath(self, document: Document) -> tuple[Path | None, bytes | None]:
+    def _underneath(self, document: Document, kind: str | None = None) -> tuple[Path | None, bytes | None]:
         """The list the CNC loads under the document, as the editor has it: the default list of its start-up
         list, or for a list update the list it changes (`discovery.updated_list`). None when there is none or
         it cannot be read (the start-up list's LIS504 says why)."""
         path = document.path
         if path is None:
             return None, None
-        below = (
-            updated_list(path)
-            if is_list_update(path)
-            else next((m.defaults for m in self.machines(document) if m.defaults is not None), None)
-        )
+        below = updated_list(path) if is_list_update(path) else loaded_under(kind, self.machines(document))
         if below is None:
             return None, None
         try:

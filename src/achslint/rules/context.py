@@ -36,7 +36,9 @@ class Context:
     )
     catalogue: Catalogue = field(default_factory=catalogue)
     embedded: EmbeddedList | None = None  # when the list came from an XML file
-    default_file: syntax.ListFile | None = None  # the default axis list loaded underneath (start-up list)
+    # the default list loaded underneath (start-up list): the default axis list under an axis list, the
+    # default channel list under a channel list
+    default_file: syntax.ListFile | None = None
     default_list: bool = False  # the list is itself a default axis list: no axis of its own
     kind: Kind = AXIS  # the list's kind; `catalogue` is that kind's catalogue
 
@@ -85,6 +87,13 @@ class Context:
     @property
     def settings(self) -> list[Setting]:
         return self.analysis.settings
+
+    @cached_property
+    def default_settings(self) -> list[Setting]:
+        """The assignments of the default list underneath (none without one), against the list's catalogue."""
+        if self.default_file is None:
+            return []
+        return analyse(self.default_file, self.catalogue).settings
 
     @cached_property
     def newline(self) -> str:

@@ -6,8 +6,10 @@ number of axes of the axis group `gruppe[0].achs_anzahl` (P-CHAN-00003)
 against the path axes the list defines (slots `gruppe[0].achse[j]` with a
 logical axis number other than 0, P-CHAN-00035), or the number of spindles
 `spdl_anzahl` (P-CHAN-00082) against the spindles it enters (`spindel[i]`
-with a logical axis number, P-CHAN-00036). A count the channel list does not
-write is not judged: the default channel list may set it.
+with a logical axis number, P-CHAN-00036). The slots are counted as the CNC
+loads them: with the default channel list (`default_sda_mds`) underneath when
+a start-up list names one. A count the channel list does not write is not
+judged: the default channel list may set it.
 
 Why
 ---
@@ -88,7 +90,9 @@ def _counted(every: list[Slot]) -> dict[str, tuple[str, list[Slot]]]:
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     values = written(ctx.settings)
-    groups = _counted(slots(values))
+    # the slots as the CNC loads them: the default channel list's underneath, this list's on top
+    groups = _counted(slots({**written(ctx.default_settings), **values}))
+    own = {id(setting) for setting in ctx.settings}
     counts = [path for path in values if path == "spdl_anzahl" or path.endswith("].achs_anzahl")]
     for path in counts:
         count = whole(values[path])
@@ -108,6 +112,8 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
             end_column=end,
             setting=values[path],
             related=[
-                ctx.related(slot.number, f"a defined {what[:-1]}") for slot in defined[:6] if slot.number
+                ctx.related(slot.number, f"a defined {what[:-1]}")
+                for slot in defined[:6]
+                if slot.number and id(slot.number) in own  # a slot of the default list: not in this file
             ],
         )
