@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
+
+import pytest
 
 from achslint.linting.config import ConfigError, Settings, discover, load_file
 
@@ -175,3 +178,21 @@ def test_overrides_name_only_settings_and_survive_a_trip_to_a_worker_process():
     applied = copy.apply(Settings(ignore=["LIS9"], exclude=["tmp/*"]))
     assert applied.ignore == ["LIS9", "LIS101"] and applied.exclude == ["tmp/*", "old/*"]
     assert applied.fail_on == "warning"
+
+
+def test_the_cycle_time_is_written_in_ms_as_everywhere_else(tmp_path: Path) -> None:
+    # --cycle-time-ms, the scenario's cycle_time_ms and the configuration's cycle-time-ms: one unit
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    config = tmp_path / ".achslint.toml"
+    config.write_text("cycle-time-ms = 0.25\n")
+    assert load_file(config).settings.cycle_time_us == 250
+    config.write_text("cycle-time-us = 2000\n")  # the older spelling still reads
+    assert load_file(config).settings.cycle_time_us == 2000
+    for text, said in (
+        ("cycle-time-ms = 500\n", "key `cycle-time-ms`: 500 is not a cycle time in ms from 0.05 to 100"),
+        ('cycle-time-ms = "1"\n', "key `cycle-time-ms`: '1' is not a cycle time in ms"),
+        ("cycle-time-ms = 1\ncycle-time-us = 1000\n", "keys `cycle-time-ms` and `cycle-time-us` both"),
+    ):
+        config.write_text(text)
+        with pytest.raises(ConfigError, match=re.escape(said)):
+            load_file(config)

@@ -16,7 +16,7 @@ from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Literal
 
-from ..homing.bounds import CYCLE_TIME_US
+from ..homing.bounds import CYCLE_MS, CYCLE_TIME_US
 from ..rules.codes import known_codes, selector_problem
 from ..rules.options import DEFAULT_OPTIONS
 from ..rules.options import UnknownParameters as UnknownParameters  # the command line's choices too
@@ -52,7 +52,8 @@ def parse_codes(values: list[str]) -> list[str]:
 # Bounds of the numbers a configuration file may set: the same as the command-line options' (an absurd
 # value is a configuration error, never gigabytes of padding or a MemoryError).
 MAX_COLUMN = 400  # [fmt] value-column / comment-column: wider than any real list, small enough to pad
-# cycle-time-us: bounds.CYCLE_TIME_US, the CNC's cycle (the dry run's scenario has the same bounds)
+# cycle-time-us: bounds.CYCLE_TIME_US, the CNC's cycle (the dry run's scenario has the same bounds); the file
+# may write it in ms as `cycle-time-ms` (the unit of --cycle-time-ms), read into it by `_cycle_time_in_ms`
 MAX_TOLERANCE_UM = 1_000_000.0  # repeatability tolerance on linear axes: up to 1 m
 MAX_TOLERANCE_DEG = 360.0  # and on rotary axes: up to one turn
 
@@ -363,7 +364,29 @@ def _table(path: Path) -> dict[str, Any]:
                 f"not {type(data).__name__}"
             )
     known = {item.name for item in fields(Settings)}
-    return {file_key(key) if key in known else key: value for key, value in data.items()}
+    keys = {file_key(key) if key in known else key: value for key, value in data.items()}
+    return _cycle_time_in_ms(path, keys)
+
+
+def _cycle_time_in_ms(path: Path, keys: dict[str, Any]) -> dict[str, Any]:
+    """`cycle-time-ms` (ms, as `--cycle-time-ms` and the scenario's `cycle_time_ms` take it) read as the
+    setting it is, `cycle-time-us`; both in one file is an error naming the file."""
+    if "cycle-time-ms" not in keys:
+        return keys
+    if "cycle-time-us" in keys:
+        raise ConfigError(
+            f"configuration error in {path}: keys `cycle-time-ms` and `cycle-time-us` both set the cycle time; "
+            "keep one (cycle-time-ms)"
+        )
+    value = keys.pop("cycle-time-ms")
+    low, high = CYCLE_MS
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not low <= value <= high:
+        raise ConfigError(
+            f"configuration error in {path}: key `cycle-time-ms`: {value!r} is not a cycle time in ms from "
+            f"{low:g} to {high:g}"
+        )
+    keys["cycle-time-us"] = round(value * 1000)
+    return keys
 
 
 def _validated(path: Path, data: dict[str, Any]) -> Settings:

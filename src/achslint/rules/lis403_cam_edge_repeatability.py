@@ -6,7 +6,7 @@ Referencing on the cam edge without zero pulse (type I,
 taken times the CNC cycle time exceeds the required repeatability: `vb_reflow`
 in three-phase homing, the approach speed `vb_refmax` in one-phase homing. The
 cycle time (default 1000 µs) and the tolerance (default 20 µm on linear axes,
-0.01° on rotary axes) are settings (`cycle-time-us`,
+0.01° on rotary axes) are settings (`cycle-time-ms`,
 `repeatability-tolerance-um`; the rotary tolerance is an option of the library).
 
 Why
