@@ -124,5 +124,5 @@ def test_server_without_the_extra_names_it_and_exits_2():
     assert done.returncode == 2
     assert (
         done.stderr.strip()
-        == "achslint: the language server needs the `lsp` extra: pip install 'achslint[lsp]'"
+        == "achslint: the language server needs the `lsp` extra: in the achslint checkout, pip install '.[lsp]'"
     )

@@ -219,4 +219,4 @@ def test_help_shows_the_extras_the_readme_names(cli):
     """rich reads `[lsp]` as markup and dropped it: `pip install 'achslint'` in the help was no advice."""
     for args in (["--help"], ["server", "--help"]):
         shown = " ".join(cli(*args, env={"COLUMNS": "200"}).stdout.decode().split())
-        assert "pip install 'achslint[lsp]'" in shown, args
+        assert "pip install '.[lsp]'" in shown, args

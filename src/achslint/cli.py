@@ -1126,7 +1126,8 @@ class SchemaKind(str, Enum):  # the kinds of list with a typed model (achslint.m
 
 @app.command()
 def server() -> None:
-    """Run the language server for editors on standard input/output (needs `pip install 'achslint\\[lsp]'`)."""
+    """Run the language server for editors on standard input/output (needs the lsp extra: in the achslint
+    checkout, `pip install '.\\[lsp]'`)."""
     from .lsp import MISSING, available
 
     if not available():

@@ -1,12 +1,12 @@
 """The language server (`achslint server`): diagnostics, hover, completion, code actions,
 formatting, outline and definitions for axis lists in any LSP editor.
 
-Needs the `lsp` extra (`pip install 'achslint[lsp]'`: pygls 2 and lsprotocol).
+Needs the `lsp` extra (pygls 2 and lsprotocol; in the achslint checkout `pip install '.[lsp]'`).
 """
 
 from __future__ import annotations
 
-MISSING = "the language server needs the `lsp` extra: pip install 'achslint[lsp]'"
+MISSING = "the language server needs the `lsp` extra: in the achslint checkout, pip install '.[lsp]'"
 
 
 def available() -> bool:

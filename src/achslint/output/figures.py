@@ -1,4 +1,5 @@
-"""`dry-run --plot`: position and velocity over time (matplotlib, `pip install 'achslint[plot]'`).
+"""`dry-run --plot`: position and velocity over time (matplotlib: the `plot` extra, `pip install '.[plot]'`
+in the achslint checkout).
 
 What the figure shows: each phase in its own shade with its number and name in a legend beside the plot
 (labels never overlap the curves); the cam zone (every revolution of it on a modulo axis); zero-pulse marks;
@@ -59,7 +60,9 @@ def _use_matplotlib() -> None:
         matplotlib.use("Agg")
         import matplotlib.pyplot  # imported here so that a broken installation is reported
     except ImportError:
-        raise PlotUnavailable("--plot needs matplotlib: pip install 'achslint[plot]'") from None
+        raise PlotUnavailable(
+            "--plot needs matplotlib, the plot extra: in the achslint checkout, pip install '.[plot]'"
+        ) from None
 
 
 def _legend(panel: Axes, handles: list[Artist], fontsize: int) -> None:
