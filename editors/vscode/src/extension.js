@@ -1,5 +1,7 @@
 // The achslint extension: starts `achslint server` and connects VS Code's language client to it.
 // Highlighting comes from the TextMate grammar in syntaxes/ and works without the server.
+// `npm run build` bundles this file and the language client into dist/extension.js (esbuild), the one
+// script the .vsix holds.
 "use strict";
 
 const vscode = require("vscode");
@@ -33,12 +35,26 @@ function initializationOptions() {
   };
 }
 
+// The file name endings of TwinCAT exports and ISG XML lists (achslint's XML_SUFFIXES): the server finds the
+// lists inside by content and says nothing about an XML file without one.
+const XML_SUFFIXES = ["xml", "xti", "tsproj"];
+const XML_FILES = `**/*.{${XML_SUFFIXES.join(",")}}`;
+
 function documentSelector() {
   const selector = [{ language: "achsmds" }];
   if (settings().get("xml")) {
-    selector.push({ scheme: "file", pattern: "**/*.{xti,tsproj}" });
+    selector.push({ scheme: "file", pattern: XML_FILES });
   }
   return selector;
+}
+
+// The files whose changes the server hears of: the lists and exports of a machine, the configuration files.
+function watchedFiles() {
+  const names = ["*.lis", "*.LIS", ".achslint.toml", "achslint.toml", "pyproject.toml"];
+  if (settings().get("xml")) {
+    names.push(...XML_SUFFIXES.map((suffix) => `*.${suffix}`));
+  }
+  return `**/{${names.join(",")}}`;
 }
 
 // Files matching `achslint.filePatterns` become CNC parameter lists too (every *.lis already is).
@@ -53,7 +69,7 @@ function adopt(document) {
 }
 
 async function start(context) {
-  const watcher = vscode.workspace.createFileSystemWatcher("**/{*.lis,.achslint.toml,achslint.toml,pyproject.toml}");
+  const watcher = vscode.workspace.createFileSystemWatcher(watchedFiles());
   context.subscriptions.push(watcher);
   client = new LanguageClient(
     "achslint",
@@ -105,4 +121,4 @@ function deactivate() {
   return stop();
 }
 
-module.exports = { activate, deactivate, serverOptions };
+module.exports = { activate, deactivate, serverOptions, documentSelector, watchedFiles, initializationOptions };
