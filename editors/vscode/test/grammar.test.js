@@ -10,7 +10,9 @@ const textmate = require("vscode-textmate");
 
 const HERE = __dirname;
 const GRAMMAR = path.join(HERE, "..", "syntaxes", "achsmds.tmLanguage.json");
-const REPOSITORY_FIXTURES = path.join(HERE, "..", "..", "..", "fixtures");
+// Copies of the repository's example lists (fixtures/<same path>; tests/test_vscode_extension.py keeps them
+// equal), so that this folder tests on its own.
+const EXAMPLES = path.join(HERE, "fixtures", "examples");
 
 async function loadGrammar() {
   const wasm = fs.readFileSync(require.resolve("vscode-oniguruma/release/onig.wasm"));
@@ -92,21 +94,21 @@ test("OR-combined flags of start-up and channel lists are symbols, not text afte
 
 // Lists of every kind the repository keeps as clean examples (axis, channel, start-up, tool data ... lists;
 // the SDK's start-up list with its OR-combined flags).
-const CLEAN = [
-  ["lists", () => true],
-  ["kinds", () => true],
-  ["vendor", (name) => name === "isg_sdk_hochlauf.lis"],
-  [path.join("machines", "sdk4", "listen"), () => true],
-];
+function exampleLists(folder = EXAMPLES) {
+  return fs.readdirSync(folder, { withFileTypes: true }).flatMap((entry) => {
+    const full = path.join(folder, entry.name);
+    if (entry.isDirectory()) {
+      return exampleLists(full);
+    }
+    return entry.name.endsWith(".lis") ? [path.relative(EXAMPLES, full)] : [];
+  });
+}
 
 test("the repository's example lists of every kind tokenize without any invalid token", async () => {
-  const files = CLEAN.flatMap(([folder, wanted]) =>
-    fs.readdirSync(path.join(REPOSITORY_FIXTURES, folder))
-      .filter((name) => name.endsWith(".lis") && wanted(name))
-      .map((name) => path.join(folder, name)));
+  const files = exampleLists();
   assert.ok(files.length >= 20);
   for (const name of files) {
-    const lines = await tokenize(fs.readFileSync(path.join(REPOSITORY_FIXTURES, name), "latin1"));
+    const lines = await tokenize(fs.readFileSync(path.join(EXAMPLES, name), "latin1"));
     lines.forEach((tokens, index) => {
       for (const token of tokens) {
         assert.ok(!token.scopes.some((s) => s.startsWith("invalid")),
