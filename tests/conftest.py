@@ -12,6 +12,15 @@ from typing import Any
 
 import pytest
 
+from achslint.core import codecache
+
+# The test processes keep the dataclass code they compile to themselves: importing the CLI (as the in-process
+# CLI tests do) installs the per-user cache of core/codecache.py, and a test process makes thousands of
+# classes a command-line run never makes; saved there, they grew the file every `achslint` run reads at its
+# start to its 2 MB limit (2,200 texts, where a lint uses 450: +6 M instructions, about 1 %, on every cold
+# lint). The child processes the tests start (the real CLI, the language server) still use the cache.
+codecache._installed = True
+
 # Keep compiled bytecode even where PYTHONDONTWRITEBYTECODE=1 is set (as in many containers): without it
 # every run compiles the test modules (with pytest's assertion rewriting) and achslint again in each xdist
 # worker, and every child `python -m achslint` the tests start compiles achslint once more: about 5 s per
