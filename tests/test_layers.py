@@ -97,7 +97,9 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         "output: formats",
         (
             "output.reporters.*",
+            "output.figuredata",
             "output.figures",
+            "output.svgplot",
             "output.plot",
             "output.explain",
             "output.dryrun",

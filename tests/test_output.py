@@ -118,7 +118,7 @@ def test_a_plot_that_cannot_be_written_is_one_line(error: OSError, shown: str) -
 
 
 def test_a_plot_file_name_that_is_no_image_is_refused_before_drawing(tmp_path: Path) -> None:
-    from achslint.output.figures import plot_trace
+    from achslint.output.plot import plot_trace
 
     drawn: list[str] = []
 

@@ -203,7 +203,8 @@ def test_the_timeline_draws_each_kind_of_mark_once_however_many_blocks():
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    from achslint.output.figures import LABEL_GAP, build_machine_figure
+    from achslint.output.figuredata import LABEL_GAP
+    from achslint.output.figures import build_machine_figure
 
     short, long = _example_run(6), _example_run(30)
     figures = [build_machine_figure(short), build_machine_figure(long)]

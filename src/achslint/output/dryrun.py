@@ -68,7 +68,7 @@ def as_json(report: AxisDryRun, screen: Screen) -> None:
 
 def plot(report: AxisDryRun, target: str) -> None:
     """The run's position and velocity over time, written to `target` (PNG or SVG)."""
-    from .figures import plot_trace
+    from .plot import plot_trace
 
     write_plot(lambda file: plot_trace(report.run.trace, file), target)
 

@@ -163,7 +163,7 @@ def as_json(report: MachineDryRun, screen: Screen) -> None:
 
 def plot(report: MachineDryRun, target: str) -> None:
     """The run's timeline (a lane per axis) and positions, written to `target` (PNG or SVG)."""
-    from .figures import plot_machine
+    from .plot import plot_machine
 
     write_plot(lambda file: plot_machine(report.run, file), target)
 

@@ -11,7 +11,7 @@ Every number and word on the page comes from the data objects of the other comma
 them): `explain` (per axis: effective parameters with units and sources, corrections with their P-ERR id,
 parameters without effect grouped by why), `lint` (findings by severity and rule, with the lines they point
 at), the dry-run (`output.dryrun.trace_json` and `output.machine.machine_json`, the documents of
-`dry-run --format json`) and `diff`. The figures are drawn by `output.figures`, as `--plot` draws them.
+`dry-run --format json`) and `diff`. The figures are drawn by `output.svgplot`, as `--plot FILE.svg` draws them.
 """
 
 from __future__ import annotations
@@ -26,8 +26,9 @@ from ..core.display import printable
 from ..core.version import __version__
 from . import markdown as md
 from .diff import _mapped
-from .figures import ASSUMED_GEOMETRY, PlotUnavailable, build_figure, build_machine_figure, svg_element
+from .figuredata import ASSUMED_GEOMETRY
 from .machine import OUTCOME_WORDS, machine_json
+from .svgplot import machine_svg, trace_svg
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -128,11 +129,7 @@ def _section(anchor: str, title: str, body: Iterable[str], page: bool = True) ->
     return f'<section id="{anchor}"{css}><h2>{h(title)}</h2>{"".join(body)}</section>'
 
 
-def _figure(build: Callable[[], Any], prefix: str, caption: str) -> str:
-    try:
-        svg = svg_element(build, prefix)
-    except PlotUnavailable as exc:
-        return f'<p class="muted">No figure: {h(exc)}</p>'
+def _figure(svg: str, caption: str) -> str:
     return f"<figure>{svg}<figcaption>{h(caption)}</figcaption></figure>"
 
 
@@ -389,9 +386,7 @@ def _dry_run(section: AxisSection, number: int, in_program: dict[str, Any] | Non
     body.append(_warnings(document["warnings"]))
     if trace.phases or trace.failure:
         body.append(
-            _figure(
-                lambda: build_figure(trace), f"a{number}", f"{section.name}: position and velocity over time"
-            )
+            _figure(trace_svg(trace, f"a{number}"), f"{section.name}: position and velocity over time")
         )
     return "".join(body)
 
@@ -407,8 +402,7 @@ def _program_axis(section: AxisSection, number: int, document: dict[str, Any]) -
     for index, (start, trace) in enumerate(run.traces, 1):
         body.append(
             _figure(
-                lambda trace=trace: build_figure(trace),  # type: ignore[misc]
-                f"a{number}t{index}",
+                trace_svg(trace, f"a{number}t{index}"),
                 f"{section.name}: its homing from {_number(start, 3)} s of the program, position and velocity "
                 "(time from the start of the homing)",
             )
@@ -563,8 +557,7 @@ def _timeline(report: CommissioningReport, document: dict[str, Any]) -> str:
     body.append(_warnings(document["warnings"]))
     body.append(
         _figure(
-            lambda: build_machine_figure(run),
-            "timeline",
+            machine_svg(run, "timeline"),
             "One lane per axis (phases coloured, moves grey, the reference starred, a failure crossed), then "
             "each moving axis's position over the program's time.",
         )
