@@ -23,7 +23,6 @@ from achslint.report import ReportRequest, build_report
 from .conftest import FIXTURES, ROOT
 from .conftest import run_cli as run_bytes
 
-pytest.importorskip("matplotlib")
 html5lib = pytest.importorskip("html5lib")
 
 EXAMPLE = ROOT / "docs" / "dry-run" / "machine"  # the README's example machine (six axes, rfp.nc)
