@@ -181,7 +181,7 @@ class _Svg:
 
 
 def _path(xs: Sequence[float], ys: Sequence[float], sx: _Scale, sy: _Scale, columns: float) -> str:
-    """The `d` of a polyline through (x, y) in data units, broken where y is NaN. More points than two per
+    """The `d` of a polyline through (x, y) in data units, broken where a value is NaN (or infinite). More points than two per
     pixel column are thinned to the first, lowest, highest and last of each column (in their order);
     runs of points on one pixel row or column keep only their ends."""
     parts: list[str] = []
@@ -194,7 +194,7 @@ def _path(xs: Sequence[float], ys: Sequence[float], sx: _Scale, sy: _Scale, colu
             run.clear()
 
     for x, y in zip(xs, ys, strict=True):
-        if math.isnan(y):
+        if not (math.isfinite(x) and math.isfinite(y)):
             flush()
         else:
             run.append((sx(x), sy(y)))
@@ -512,7 +512,7 @@ def machine_svg(run: MachineRun, prefix: str, *, standalone: bool = False) -> st
     panels: list[tuple[_Scale, Panel]] = []
     y = bottom
     for curve in shown.panels:
-        finite = [p for p in curve.positions if not math.isnan(p)]
+        finite = [p for p in curve.positions if math.isfinite(p)] or [0.0]
         low, high = min(finite), max(finite)
         pad = 0.05 * max(high - low, 1e-9)
         panels.append((_Scale(low - pad, high + pad, y + 102, y + 16), curve))
