@@ -1046,7 +1046,9 @@ def report(
     config: str | None = typer.Option(
         None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."
     ),
-    channel: int = typer.Option(1, "--channel", min=1, max=12, help="The channel whose axis names are shown."),
+    channel: int = typer.Option(
+        1, "--channel", min=1, max=12, help="The channel whose axis names are shown."
+    ),
     gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing parameters are shown."),
     docs_url: str | None = typer.Option(
         None, "--docs-url", metavar="URL", help="Address of the rule documentation the findings link to."
