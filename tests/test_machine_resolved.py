@@ -352,3 +352,15 @@ def test_the_channel_count_counts_the_slots_of_the_default_channel_list_too(tmp_
     alone.mkdir()
     (alone / "sda_mds1.lis").write_bytes((tmp_path / "sda_mds1.lis").read_bytes())
     assert [c[2] for c in _codes(alone / "sda_mds1.lis")] == ["LIS703"]
+
+
+def test_a_block_with_extended_axis_names_reads_back_as_written() -> None:
+    # `A1=1 A2=2`: an axis name with digits takes `=` (ISG extended addresses); `A11 A22` would be other words
+    from achslint.machine.model import AxisWord, HomingBlock, Location, MoveBlock
+    from achslint.machine.run import block_text
+
+    at = Location("rfp.nc", 1)
+    homing = HomingBlock(at, 10, (AxisWord("A1", 1, at), AxisWord("X", 2, at)))
+    assert block_text(homing) == "N10 G74 A1=1 X2"
+    move = MoveBlock(at, 20, rapid=True, absolute=True, feed_mm_min=None, targets=(AxisWord("Z2", 5.5, at),))
+    assert block_text(move) == "N20 G00 G90 Z2=5.5"
