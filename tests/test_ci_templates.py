@@ -160,6 +160,7 @@ def run_action(
             "GITHUB_OUTPUT": str(output_file),
             "GITHUB_PATH": str(path_file),
             "RUNNER_TEMP": str(temp),
+            "GITHUB_STEP_SUMMARY": str(temp / "step-summary.md"),
             **{k: context.substitute(v) for k, v in step.get("env", {}).items()},
         }
         env.pop("PYTHONPATH", None)
@@ -479,3 +480,15 @@ def test_the_readme_local_hook_is_the_published_one():
     published = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text(encoding="utf-8"))[0]
     for key in ("id", "entry", "files", "require_serial"):
         assert hook[key] == published[key], key
+
+
+def test_a_markdown_summary_goes_to_the_job_page_unless_told_otherwise(tmp_path):
+    repo = workspace(tmp_path, broken=True)
+    summary = tmp_path / "runner-temp" / "step-summary.md"
+    run = run_action(repo, tmp_path)
+    assert run.returncode == 1  # the summary is written whatever the findings; the lint decides
+    text = summary.read_text(encoding="utf-8")
+    assert "LIS203" in text and "listen/achsmds3.lis" in text and "|" in text  # a Markdown table
+    summary.unlink()
+    run_action(repo, tmp_path, {"summary": "false"})
+    assert not summary.exists()
