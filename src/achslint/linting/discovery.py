@@ -132,7 +132,7 @@ def _identity(path: Path) -> object:
 
 class _LookedAt:
     """What `Finder.find` looks up once per run: the (device, inode) of each path it compares (None: it
-    cannot be looked at), and the files each start-up list names. A folder lint compares every list with
+    cannot be looked at), the files each start-up list names, and each path's configuration. A folder lint compares every list with
     every entry of every start-up list of the run (half a million comparisons for the fixtures), and the
     files of one run do not move under it. Outside a run (the editor asks for one list's machines) each
     question looks again."""
@@ -141,6 +141,7 @@ class _LookedAt:
         self.files: dict[Path, tuple[int, int] | None] = {}
         # by the id of the start-up list: the list (kept, so that its id stays its own) and `_kinds_named`
         self.named: dict[int, tuple[Startup, dict[tuple[int, int], list[str]]]] = {}
+        self.configs: dict[Path, ResolvedConfig] = {}  # the configuration of each path (`Finder.config_for`)
 
 
 _LOOKED_AT: ContextVar[_LookedAt | None] = ContextVar("looked_at", default=None)
@@ -192,12 +193,18 @@ class Finder:
         a broken configuration once and goes on with the defaults."""
         if self._fixed is not None:
             return self._fixed
+        looked = _LOOKED_AT.get()
+        if looked is not None and path in looked.configs:
+            return looked.configs[path]
         try:
-            return discover(path)
+            config = discover(path)
         except ConfigError:
             if self.lenient:
                 return ResolvedConfig(Settings())
             raise
+        if looked is not None:
+            looked.configs[path] = config
+        return config
 
     # -- start-up lists ----------------------------------------------------------------------------------
     def startup(self, path: Path, scope: Scope | None = None) -> Startup:
