@@ -48,7 +48,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import BinaryIO, Literal
+from typing import BinaryIO, Literal, NamedTuple
 
 from .core.decode import UnreadableInput, decode
 from .core.files import is_xml, read_list, reason, write_atomically
@@ -64,11 +64,11 @@ TAB_WIDTH = 8
 MIN_BLOCK = 3  # consecutive value lines that make a block alignment of their own
 
 
-@dataclass(frozen=True, order=True)
-class Alignment:
+class Alignment(NamedTuple):
     """Values starting (left) or ending (right) in one column, counted from 0 with tabs expanded.
 
-    For right alignment `column` is the column just after the last character.
+    For right alignment `column` is the column just after the last character. (A named tuple: every row
+    makes two and the layout is found by counting them, which a dataclass makes several times slower.)
     """
 
     kind: Literal["left", "right"]
@@ -133,13 +133,36 @@ class _Row:
     """A line with a value, and the whitespace fmt may change in it."""
 
     line: syntax.Line
-    indent: str
-    sep: str
+    _indent: str
+    _sep: str
     sep2: str
     free: bool = field(init=False)
+    # worked out once, forgotten when the indent or the separator changes: `alignments()`, where the value
+    # starts and ends (-1: not yet)
+    aligned: tuple[Alignment, Alignment] | None = field(default=None, init=False)
+    _start: int = field(default=-1, init=False)
+    _end: int = field(default=-1, init=False)
 
     def __post_init__(self) -> None:
         self.free = self.line.rest is not None and _comment_is_free(self.line)
+
+    @property
+    def indent(self) -> str:
+        return self._indent
+
+    @indent.setter
+    def indent(self, indent: str) -> None:
+        self._indent = indent
+        self.aligned, self._start, self._end = None, -1, -1
+
+    @property
+    def sep(self) -> str:
+        return self._sep
+
+    @sep.setter
+    def sep(self, sep: str) -> None:
+        self._sep = sep
+        self.aligned, self._start, self._end = None, -1, -1
 
     @property
     def path(self) -> str:
@@ -155,11 +178,15 @@ class _Row:
 
     @property
     def value_start(self) -> int:
-        return _advance(self.path_end, self.sep)
+        if self._start < 0:
+            self._start = _advance(self.path_end, self._sep)
+        return self._start
 
     @property
     def value_end(self) -> int:
-        return _advance(self.value_start, self.value)
+        if self._end < 0:
+            self._end = _advance(self.value_start, self.value)
+        return self._end
 
     @property
     def tail(self) -> str:
@@ -177,8 +204,11 @@ class _Row:
         return _advance(self.value_end, self.sep2)
 
     def alignments(self) -> tuple[Alignment, Alignment]:
-        start = self.value_start
-        return Alignment(LEFT, start), Alignment(RIGHT, _advance(start, self.tail))
+        """Where the value stands, both ways."""
+        if self.aligned is None:
+            start = self.value_start
+            self.aligned = Alignment(LEFT, start), Alignment(RIGHT, _advance(start, self.tail))
+        return self.aligned
 
     def fits(self, kept: set[Alignment]) -> bool:
         """Whether the value stands in one of the `kept` alignments (an indented line never does)."""
