@@ -19,6 +19,7 @@ have their own configuration; there a function gives the policy of the file a fi
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
@@ -79,6 +80,22 @@ class Policy:
 # The policy of the file a finding is in (the machine step: each list has its own configuration).
 PolicyOf = Callable[[str], Policy]
 
+_here = threading.local()
+
+
+def pause_between_rules(pause: Callable[[], None] | None) -> None:
+    """Call `pause` before each rule `run` runs on this thread (None: never). The language server's worker
+    gives way to the editor's requests there and stops a lint whose text changed meanwhile (by raising);
+    the command line sets none."""
+    _here.pause = pause
+
+
+def pause() -> None:
+    """The pause of this thread, if it has one (long loops outside the rules call it too)."""
+    hook = getattr(_here, "pause", None)
+    if hook is not None:
+        hook()
+
 
 def run(
     scope: Scope,
@@ -99,7 +116,10 @@ def run(
     fixed = policy if isinstance(policy, Policy) else None
     policy_of = _always(policy) if isinstance(policy, Policy) else policy
     found: list[Diagnostic] = []
+    hook: Callable[[], None] | None = getattr(_here, "pause", None)
     for code, check in enabled_checks(scope, fixed, whole_axis, kind):
+        if hook is not None:
+            hook()
         if fixed is not None:
             found.extend(check(*subject))
         else:  # every rule of the scope ran: a finding stays when the policy of its file enables the rule

@@ -15,6 +15,7 @@ import copy
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from ..linting.engine import pause
 from ..syntax.parser import BLANK, END, Line, ListFile, parse_text, split_lines
 
 BOM = "\ufeff"
@@ -50,9 +51,12 @@ class LineCache:
     """
 
     LIMIT = 1 << 16  # distinct line texts kept; a pathological document cannot grow it without bound
+    PAUSE_EVERY = 4096  # lines between two pause points of the language server's worker (a few ms)
 
-    def __init__(self) -> None:
-        self._parsed: dict[str, Line] = {}  # line body -> its parse (number 0, no line break)
+    def __init__(self, templates: LineCache | None = None) -> None:
+        # line body -> its parse (number 0, no line break); shared with `templates` (read-only lines, each
+        # thread parsing with its own cache keeps its own `_previous`)
+        self._parsed: dict[str, Line] = templates._parsed if templates is not None else {}
         self._previous: dict[
             tuple[int, str], Line
         ] = {}  # (number, text with break) -> Line of the last parse
@@ -73,6 +77,8 @@ class LineCache:
         lines: list[Line] = []
         end_index = None
         for number, raw in enumerate(raw_lines, 1):
+            if not number % self.PAUSE_EVERY:
+                pause()
             key = (number, raw)
             line = previous.get(key)
             if line is None:
@@ -198,10 +204,12 @@ class Document:
         thread parses)."""
         return Document(self.uri, self.path, self.text, self.version, self.encoding, self._raw, self.cache)
 
-    def parse(self) -> ListFile:
+    def parse(self, cache: LineCache | None = None) -> ListFile:
+        """The parse of the text, with the document's cache (the worker's) or `cache` (another thread's)."""
+        cache = cache or self.cache
         if self.bom:  # read without the mark, and known to have one (LIS006)
-            return replace(self.cache.parse(self.body, self.name), bom=True)
-        return self.cache.parse(self.text, self.name, self.raw_lines)
+            return replace(cache.parse(self.body, self.name), bom=True)
+        return cache.parse(self.text, self.name, self.raw_lines)
 
 
 def blank_file(name: str) -> ListFile:

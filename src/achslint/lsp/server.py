@@ -10,7 +10,10 @@ card or fix is computed here. Three promises shape this module:
 - The message loop never waits for a lint. Lints, fix-all and formatting run on one worker
   thread (`worker.Worker`), which alone touches the `Session`; hover, completion, definition,
   outline and inlay hints answer from the last analysis of the document. A lint whose text
-  was edited again before it finished is not published (the newer one follows).
+  was edited again before it finished is not published (the newer one follows): it stops at
+  its next pause point. The loop goes first: while it has a message to handle, the worker
+  waits at its pause points (`worker.Gate`). Formatting a list of ordinary length does not
+  wait for the lint: it is parsed and formatted on the loop.
 - Nothing hostile fills the log: problems are one line each, without tracebacks.
 """
 
@@ -34,17 +37,19 @@ from typing import TYPE_CHECKING, Any, BinaryIO, TypeVar
 from lsprotocol import types as lsp
 from pygls.io_ import StdoutWriter
 from pygls.lsp.server import LanguageServer
-from pygls.protocol import default_converter
+from pygls.protocol import LanguageServerProtocol, default_converter
 from pygls.protocol.json_rpc import JsonRPCNotification, JsonRPCRequestMessage
 from pygls.uris import to_fs_path
 
 from .. import __version__
 from ..core.files import is_xml
+from ..linting.engine import pause
 from . import features
-from .documents import Document
+from .documents import Document, LineCache
+from .outline import Outline
 from .protocol import FrameReader, Skipped
 from .session import ClientSettings, Session, Snapshot
-from .worker import Latest, Worker
+from .worker import Gate, Latest, Superseded, WatchedSelector, Worker
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -56,6 +61,7 @@ if TYPE_CHECKING:
 log = logging.getLogger("achslint.lsp")
 _T = TypeVar("_T")
 
+LOOP_FORMAT_LINES = 10_000  # lists up to this long are formatted on the loop (ms), longer ones on the worker
 FIRST_ANALYSIS_WAIT = 30.0  # seconds a request waits for a document's first lint before answering without it
 DRAIN_WAIT = 5.0  # seconds the server waits for running requests when the client's input ends
 IDLE_COLLECTION = 2.0  # seconds without a message before the server collects garbage (see run())
@@ -90,10 +96,33 @@ class _Unreadable:
     reason: str
 
 
+@dataclass(frozen=True)
+class RawResult:
+    """A request's result written as JSON already (a large outline): sent as it is, not serialised again."""
+
+    json: str
+
+
+class _Protocol(LanguageServerProtocol):
+    def _send_response(
+        self, msg_id: Any, result: Any | None = None, error: lsp.ResponseError | None = None
+    ) -> None:
+        if error is None and isinstance(result, RawResult):
+            self._result_types.pop(msg_id, None)
+            body = f'{{"jsonrpc": "2.0", "id": {json.dumps(msg_id)}, "result": {result.json}}}'
+            assert isinstance(self._server, AchslintServer)
+            self._server._send(body.encode("utf-8"))
+            return
+        super()._send_response(msg_id, result, error)
+
+
 class AchslintServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__(
-            "achslint", __version__, text_document_sync_kind=lsp.TextDocumentSyncKind.Incremental
+            "achslint",
+            __version__,
+            text_document_sync_kind=lsp.TextDocumentSyncKind.Incremental,
+            protocol_cls=_Protocol,
         )
         # pygls keeps its own copy of every document for features we do not use: the editor's text
         # lives once, in `documents`.
@@ -109,10 +138,13 @@ class AchslintServer(LanguageServer):
         self._to_lint: Latest[tuple[Document, int]] = Latest()
         self._fixes: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # fix-all edits by generation
         self.formats: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # formatting edits by generation
-        self.outlines: dict[str, tuple[Analysis, list[lsp.DocumentSymbol]]] = {}  # the outline of an analysis
+        self.outlines: dict[str, tuple[Analysis, RawResult]] = {}  # the outline of an analysis
+        self._outline: dict[str, Outline] = {}  # each document's outline, line by line
+        self._loop_parses: dict[str, LineCache] = {}  # the loop's own parse of each document (formatting)
         self._converter = default_converter()  # type: ignore[no-untyped-call]  # the one pygls uses
         self._loop: asyncio.AbstractEventLoop | None = None
         self._worker: Worker | None = None
+        self._gate = Gate()  # whether the loop has work: the worker gives way meanwhile
         self._slots = threading.Semaphore(IN_FLIGHT)
         self._done: asyncio.Future[int] | None = None
         self._drain = False  # at the end of the input, answer the requests still running before stopping
@@ -178,12 +210,24 @@ class AchslintServer(LanguageServer):
         """Answer the messages of `stdin` on `stdout` until `exit` or the end of the input; the exit code
         (0 after shutdown and exit or at the end of the input, 1 for an exit without shutdown)."""
         self.protocol.set_writer(StdoutWriter(stdout))
-        return asyncio.run(self._serve(stdin))
+        # asyncio.run with a selector that tells the gate when the loop waits (Python 3.10 has no Runner)
+        loop = asyncio.SelectorEventLoop(WatchedSelector(self._gate))
+        asyncio.set_event_loop(loop)
+        try:
+            return loop.run_until_complete(self._serve(stdin))
+        finally:
+            pending = asyncio.all_tasks(loop)
+            for task in pending:
+                task.cancel()
+            loop.run_until_complete(asyncio.gather(*pending, return_exceptions=True))
+            loop.run_until_complete(loop.shutdown_asyncgens())
+            asyncio.set_event_loop(None)
+            loop.close()
 
     async def _serve(self, stdin: BinaryIO) -> int:
         self._loop = asyncio.get_running_loop()
         self._done = self._loop.create_future()
-        self._worker = Worker()
+        self._worker = Worker(gate=self._gate)
         threading.Thread(target=self._read, args=(stdin,), name="achslint-reader", daemon=True).start()
         try:
             code = await self._done
@@ -216,6 +260,7 @@ class AchslintServer(LanguageServer):
                 frame = reader.next()
                 if frame is None:
                     break
+                self._gate.read()
                 item: object
                 if isinstance(frame, Skipped):
                     item = frame
@@ -251,6 +296,7 @@ class AchslintServer(LanguageServer):
 
     def _receive(self, item: object) -> None:
         self._slots.release()
+        self._gate.taken()
         self._idle_later()
         try:
             if isinstance(item, Skipped):
@@ -420,15 +466,23 @@ class AchslintServer(LanguageServer):
         document, generation = taken
         analysis: Analysis | None = None
         peers: list[str] = []
+        worker = self._worker
+        assert worker is not None
         try:  # whatever fails, the loop hears back: requests waiting for this analysis must not hang
             self.session.open(document)
-            snapshot, found, peers = self.session.diagnostics(uri)
+            # Edited again (and linted before): the newer text is linted next, this lint stops where it is.
+            with worker.superseded_when(lambda: uri in self.analyses and self._to_lint.waiting(uri)):
+                snapshot, found, peers = self.session.diagnostics(uri)
             if snapshot is not None:
                 analysis = Analysis(generation, document, snapshot, found)
             if self._to_lint.waiting(uri):  # a newer text is queued: its lint publishes, not this one
                 self._hand_over(uri, generation, analysis, None, [])
                 return
+            pause()  # (the loop first, again: the findings are converted and written out next)
             diagnostics = features.publishable(document, snapshot, found)
+        except Superseded:
+            self._hand_over(uri, generation, None, None, [])
+            return
         except Exception as exc:
             log.error("achslint: cannot lint %s: %s", uri, describe(exc))
             diagnostics = [
@@ -443,7 +497,29 @@ class AchslintServer(LanguageServer):
         published = lsp.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=document.version)
         message = {"jsonrpc": "2.0", "method": lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": published}
         body = json.dumps(self._converter.unstructure(message)).encode("utf-8")
+        first = uri not in self.analyses
         self._hand_over(uri, generation, analysis, body, peers)
+        if first and analysis is not None and self._loop is not None:
+            self._first_outline(uri, analysis)
+
+    def _first_outline(self, uri: str, analysis: Analysis) -> None:
+        """On the worker, after a document's first diagnostics are out: its outline, which the editor asks for
+        next (its first costs a 50,000-line list a fifth of a second; later ones rewrite the edited lines
+        only). The loop takes it over with the lines it keeps (`_outlined`) unless it made one itself."""
+        file = analysis.snapshot.file
+        if file is None or is_xml(analysis.document.name) or self._to_lint.waiting(uri):
+            return
+        outline = Outline()
+        symbols = RawResult(outline.json(analysis.document, file))
+        assert self._loop is not None
+        self._loop.call_soon_threadsafe(self._outlined, uri, analysis, outline, symbols)
+
+    def _outlined(self, uri: str, analysis: Analysis, outline: Outline, symbols: RawResult) -> None:
+        if uri not in self.documents or uri in self._outline:
+            return
+        self._outline[uri] = outline  # the loop's from now on
+        if self.analyses.get(uri) is analysis:
+            self.outlines.setdefault(uri, (analysis, symbols))
 
     def _hand_over(
         self, uri: str, generation: int, analysis: Analysis | None, published: bytes | None, peers: list[str]
@@ -533,6 +609,8 @@ class AchslintServer(LanguageServer):
         self._fixes.pop(uri, None)
         self.formats.pop(uri, None)
         self.outlines.pop(uri, None)
+        self._outline.pop(uri, None)
+        self._loop_parses.pop(uri, None)
         self._wake(uri, None)
         session = self.session
         self.on_worker(lambda: session.close(uri))
@@ -832,12 +910,31 @@ async def _formatted(
     edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]],
     whole: bool = False,
 ) -> list[lsp.TextEdit]:
-    """Formatting edits for the document's current text (a list of any kind, not XML), on the worker, from
-    the analysis of that text (its parse; it is linted at once after an edit); a `whole` document's edits
-    are kept for the analysis they were made for."""
+    """Formatting edits for the document's current text (a list of any kind, not XML); a `whole` document's
+    edits are kept for the analysis they were made for.
+
+    A list of up to `LOOP_FORMAT_LINES` lines is parsed and formatted here, on the loop, at once: the
+    parse re-reads only the lines edited since the last request (the loop's own `LineCache`), the worker
+    gives way meanwhile, and the lint of the last keystroke is not waited for. A longer list is formatted
+    on the worker from the analysis of its current text (its parse; it is linted at once after an edit).
+    """
     document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
         return []
+    if document.line_count <= LOOP_FORMAT_LINES:
+        generation = ls.generations.get(uri)
+        cached = ls.formats.get(uri)
+        if whole and cached is not None and cached[0] == generation:
+            return cached[1]
+        cache = ls._loop_parses.get(uri)
+        if cache is None:
+            cache = ls._loop_parses[uri] = LineCache(templates=document.cache)
+        # The configuration is read through caches that are safe to share with the worker (lru_cache).
+        options = ls.session.config_for(document)[0].settings.fmt  # `[fmt]`: as `achslint fmt` formats
+        found = edits(document, document.parse(cache), options)
+        if whole and generation is not None:
+            ls.formats[uri] = (generation, found)
+        return found
     analysis = await ls.analysis(uri, current=True)
     current = analysis is not None and analysis.generation == ls.generations.get(uri)
     if analysis is not None and current and whole:
@@ -885,15 +982,20 @@ async def _list_analysis(ls: AchslintServer, uri: str) -> Analysis | None:
 
 @feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
 @guarded(default=list)
-async def document_symbol(ls: AchslintServer, params: lsp.DocumentSymbolParams) -> list[lsp.DocumentSymbol]:
+async def document_symbol(
+    ls: AchslintServer, params: lsp.DocumentSymbolParams
+) -> list[lsp.DocumentSymbol] | RawResult:
+    """`features.document_symbols`, written as JSON by `outline.Outline` (the lines an edit did not touch
+    are not written again)."""
     uri = params.text_document.uri
     analysis = await _list_analysis(ls, uri)
-    if analysis is None or analysis.snapshot.file is None:
+    if analysis is None or analysis.snapshot.file is None or uri not in ls.documents:
         return []
     cached = ls.outlines.get(uri)
     if cached is not None and cached[0] is analysis:
         return cached[1]
-    symbols = features.document_symbols(analysis.document, analysis.snapshot.file)
+    outline = ls._outline.setdefault(uri, Outline())
+    symbols = RawResult(outline.json(analysis.document, analysis.snapshot.file))
     ls.outlines[uri] = (analysis, symbols)
     return symbols
 

@@ -39,6 +39,7 @@ from ..linting.discovery import (
     loaded_under,
     updated_list,
 )
+from ..linting.engine import pause
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
 from ..machine.resolved import Machine
@@ -267,6 +268,7 @@ class Session:
             # The editor keeps the mark out of the text (VS Code: "UTF-8 with BOM") and writes it back on
             # save, so the file the CNC reads has it: LIS006 as on the command line.
             file = replace(file, bom=True)
+        pause()  # the language server's worker gives way to the editor's requests here (and between rules)
         result = lint_parsed(file, name, settings, default_file)
         return Snapshot(document.version, document.text, result, file, result.context, config_error)
 

@@ -1,0 +1,126 @@
+"""The language server's worker gives way to the message loop and drops a lint whose text changed: at its
+pause points (before each rule, `engine.pause_between_rules`; at the start of each job) it waits while the
+loop has work (`worker.Gate`), and inside `superseded_when` a pause point ends the job (`Superseded`)."""
+
+from __future__ import annotations
+
+import asyncio
+import threading
+import time
+
+import pytest
+
+from achslint.api import lint_text
+from achslint.linting import engine
+from achslint.lsp import worker as worker_module
+from achslint.lsp.worker import Gate, Superseded, WatchedSelector, Worker
+
+LIST = "kopf.achs_nr 1\nkenngr.antr_typ 1\nEnde\n"
+
+
+@pytest.fixture
+def gate(monkeypatch) -> Gate:
+    monkeypatch.setattr(worker_module, "PAUSE_LIMIT", 5.0)  # long enough to see a pause, short enough to end
+    return Gate()
+
+
+def test_rules_pause_only_on_a_thread_that_asked_for_it():
+    calls = []
+    engine.pause_between_rules(lambda: calls.append(1))
+    try:
+        first = lint_text(LIST, filename="achsmds1.lis")
+    finally:
+        engine.pause_between_rules(None)
+    assert len(calls) >= 10  # once per rule
+    calls.clear()
+    assert lint_text(LIST, filename="achsmds1.lis") == first  # the same findings, and no pause without a hook
+    assert calls == []
+    elsewhere: list[int] = []
+    thread = threading.Thread(target=lambda: (engine.pause(), elsewhere.append(1)))
+    thread.start()
+    thread.join()
+    assert elsewhere == [1]
+
+
+def test_a_job_waits_while_the_loop_is_busy(gate: Gate):
+    work = Worker(gate=gate)
+    try:
+        gate.loop(True)
+        started = time.perf_counter()
+        future = work.submit(lambda: (engine.pause(), time.perf_counter())[1])
+        time.sleep(0.1)
+        assert not future.done()  # held at the start of the job
+        gate.loop(False)
+        assert future.result(timeout=5) - started >= 0.1
+        gate.read()  # a message read and not yet taken: the loop has work too
+        ran = []
+        future = work.submit(lambda: ran.append(1))
+        time.sleep(0.1)
+        assert ran == []
+        gate.taken()
+        gate.loop(False)
+        future.result(timeout=5)
+        assert ran == [1]
+    finally:
+        work.stop()
+
+
+def test_a_paused_rule_loop_goes_on_when_the_loop_is_quiet(gate: Gate):
+    work = Worker(gate=gate)
+    try:
+        reached = threading.Event()
+
+        def job() -> list:
+            reached.set()
+            return lint_text(LIST, filename="achsmds1.lis")
+
+        future = work.submit(job)
+        assert reached.wait(5)
+        gate.loop(True)  # between rules now (or done already)
+        time.sleep(0.1)
+        gate.loop(False)
+        assert future.result(timeout=5) == lint_text(LIST, filename="achsmds1.lis")
+    finally:
+        work.stop()
+
+
+def test_a_superseded_job_ends_at_its_next_pause_point():
+    work = Worker(gate=Gate())
+    stale = threading.Event()
+    rounds = []
+    try:
+
+        def job() -> None:
+            with work.superseded_when(stale.is_set):
+                while True:
+                    engine.pause()
+                    rounds.append(1)
+                    if len(rounds) == 3:
+                        stale.set()
+
+        with pytest.raises(Superseded):
+            work.submit(job).result(timeout=5)
+        assert len(rounds) == 3
+        assert work.submit(lambda: (engine.pause(), "no longer superseded")[1]).result(timeout=5)
+    finally:
+        work.stop()
+
+
+def test_the_watched_selector_tells_when_the_loop_waits():
+    gate = Gate()
+    seen = {}
+
+    async def main() -> None:
+        seen["running"] = gate.busy
+        thread = threading.Thread(target=lambda: (time.sleep(0.05), seen.setdefault("waiting", gate.busy)))
+        thread.start()
+        await asyncio.sleep(0.2)
+        seen["after"] = gate.busy
+        thread.join()
+
+    loop = asyncio.SelectorEventLoop(WatchedSelector(gate))
+    try:
+        loop.run_until_complete(main())
+    finally:
+        loop.close()
+    assert seen == {"running": True, "waiting": False, "after": True}
