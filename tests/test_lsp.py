@@ -431,6 +431,34 @@ async def test_document_symbols_are_grouped(client: LanguageClient, folder: Path
     close_doc(client, uri)
 
 
+async def test_the_outline_follows_each_edit(client: LanguageClient, folder: Path):
+    """Once asked for, the outline is made with each analysis (on the worker): after an edit it is the
+    outline of the new text."""
+    path = folder / "outline-edits" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = "kopf.achs_nr 1\ngetriebe[0].vb_reflow 100\nEnde\n"
+    uri = open_doc(client, path, text)
+    await diagnostics_when(client, uri)
+
+    async def outline() -> list[str]:
+        symbols = await client.text_document_document_symbol_async(
+            lsp.DocumentSymbolParams(lsp.TextDocumentIdentifier(uri))
+        )
+        return [f"{s.name}.{c.name}" for s in symbols for c in s.children or []]
+
+    assert await outline() == ["kopf.achs_nr", "getriebe[0].vb_reflow"]
+    for version, edited in enumerate(
+        [text.replace("getriebe[0]", "getriebe[1]"), "kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n"], 2
+    ):
+        change(client, uri, version, edited)
+        await diagnostics_when(client, uri)
+        expected = [
+            f"{line.split('.', 1)[0]}.{line.split('.', 1)[1].split()[0]}" for line in edited.splitlines()[:2]
+        ]
+        assert await outline() == expected
+    close_doc(client, uri)
+
+
 async def test_definition_from_a_startup_list_opens_the_named_list(client: LanguageClient, folder: Path):
     machine = folder / "startup"
     machine.mkdir()
