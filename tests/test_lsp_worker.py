@@ -124,3 +124,27 @@ def test_the_watched_selector_tells_when_the_loop_waits():
     finally:
         loop.close()
     assert seen == {"running": True, "waiting": False, "after": True}
+
+
+def test_the_warm_up_after_the_first_lint_reads_and_writes_every_sample(monkeypatch):
+    """The warm-up lets the converters make their code for the requests and answers the editor sends most:
+    a sample they cannot read would warm nothing (the warm-up itself never fails the server)."""
+    from achslint.lsp import server
+
+    failed: list[BaseException] = []
+
+    class Loud:
+        def __init__(self, *kinds: type[BaseException]) -> None:
+            pass
+
+        def __enter__(self) -> None:
+            return None
+
+        def __exit__(self, kind, error, trace) -> bool:
+            if error is not None:
+                failed.append(error)
+            return True
+
+    monkeypatch.setattr(server.contextlib, "suppress", Loud)
+    server.create()._warm_up()
+    assert failed == []

@@ -20,7 +20,7 @@ have their own configuration; there a function gives the policy of the file a fi
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
@@ -118,12 +118,14 @@ def run(
     found: list[Diagnostic] = []
     hook: Callable[[], None] | None = getattr(_here, "pause", None)
     for code, check in enabled_checks(scope, fixed, whole_axis, kind):
+        findings = check(*subject)
         if hook is not None:
             hook()
+            findings = _pausing(findings, hook)
         if fixed is not None:
-            found.extend(check(*subject))
+            found.extend(findings)
         else:  # every rule of the scope ran: a finding stays when the policy of its file enables the rule
-            found.extend(d for d in check(*subject) if policy_of(d.path).enabled(code))
+            found.extend(d for d in findings if policy_of(d.path).enabled(code))
     if suppressions is not None:
         found = suppressions.apply(found)
         own = policy_of(suppressions.path)
@@ -139,6 +141,13 @@ def run(
             diagnostic.fix = None  # `unfixable`: --fix, the editor and the counts leave it alone
     found.sort(key=Diagnostic.sort_key)
     return found
+
+
+def _pausing(findings: Iterable[Diagnostic], hook: Callable[[], None]) -> Iterator[Diagnostic]:
+    """The findings of a rule, with a pause after each (a rule yields them as it goes)."""
+    for finding in findings:
+        yield finding
+        hook()
 
 
 def _always(policy: Policy) -> PolicyOf:

@@ -30,6 +30,7 @@ from ..catalogue import (
 from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, STARTUP, Kind
 from ..catalogue.units import describe, unit_label
 from ..core.diagnostics import Diagnostic, Fix, Severity
+from ..linting.engine import pause
 from ..rules import registry
 from ..syntax import parser as syntax
 from ..syntax.numbers import Reference
@@ -152,7 +153,11 @@ def publishable(
     document: Document, snapshot: Snapshot | None, found: list[Diagnostic]
 ) -> list[lsp.Diagnostic]:
     shown, left_out = capped(found)
-    out = [to_lsp_diagnostic(document, d) for d in shown]
+    out = []
+    for number, d in enumerate(shown):
+        if not number % 64:
+            pause()  # the language server's worker gives way to the editor's requests
+        out.append(to_lsp_diagnostic(document, d))
     start = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1))
     if left_out:
         out.insert(
