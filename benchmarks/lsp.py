@@ -645,7 +645,8 @@ def as_a_client_sees_it(bursts: int) -> bool:
             client.wait(lambda version=version: client.published.get(uri, (0, None))[1] == version)
     client.close()
     ok = True
-    print("as a client sees them: a server process with the default settings, a 2,000-line list")
+    load = ", ".join(f"{value:.2f}" for value in os.getloadavg())
+    print(f"as a client sees them: a server process with the default settings, a 2,000-line list (load {load})")
     for name, samples in taken.items():
         worst = max(samples) * 1000
         budget = BUDGET_CLIENT_MS[name]

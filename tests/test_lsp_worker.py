@@ -5,8 +5,10 @@ loop has work (`worker.Gate`), and inside `superseded_when` a pause point ends t
 from __future__ import annotations
 
 import asyncio
+import os
 import threading
 import time
+from pathlib import Path
 
 import pytest
 
@@ -148,3 +150,23 @@ def test_the_warm_up_after_the_first_lint_reads_and_writes_every_sample(monkeypa
     monkeypatch.setattr(server.contextlib, "suppress", Loud)
     server.create()._warm_up()
     assert failed == []
+
+
+def test_the_pipe_to_the_client_is_widened_where_the_system_allows(tmp_path):
+    fcntl = pytest.importorskip("fcntl")
+    if not hasattr(fcntl, "F_GETPIPE_SZ"):
+        pytest.skip("the system cannot size a pipe")
+    from achslint.lsp.server import PIPE_SIZE, wide_pipe
+
+    read, write = os.pipe()
+    try:
+        before = fcntl.fcntl(write, fcntl.F_GETPIPE_SZ)
+        wide_pipe(write)
+        after = fcntl.fcntl(write, fcntl.F_GETPIPE_SZ)
+        allowed = int(Path("/proc/sys/fs/pipe-max-size").read_text())
+        assert after == max(before, min(PIPE_SIZE, allowed)) and after > before
+    finally:
+        os.close(read)
+        os.close(write)
+    with open(tmp_path / "out", "wb") as file:  # not a pipe: left alone, no error
+        wide_pipe(file.fileno())

@@ -26,6 +26,8 @@ import gc
 import itertools
 import json
 import logging
+import os
+import stat
 import sys
 import threading
 import traceback
@@ -66,6 +68,7 @@ FIRST_ANALYSIS_WAIT = 30.0  # seconds a request waits for a document's first lin
 DRAIN_WAIT = 5.0  # seconds the server waits for running requests when the client's input ends
 IDLE_COLLECTION = 2.0  # seconds without a message before the server collects garbage (see run())
 COLLECT_AFTER_LINTS = 200  # ... or after this many lints without such a pause
+PIPE_SIZE = 1 << 20  # bytes the pipe to the client holds, where the system allows it (`wide_pipe`)
 IN_FLIGHT = 64  # messages read but not yet handled; the reader waits beyond that (a flood cannot fill memory)
 _DOCUMENT_SYNC = (lsp.TEXT_DOCUMENT_DID_OPEN, lsp.TEXT_DOCUMENT_DID_CHANGE, lsp.TEXT_DOCUMENT_DID_CLOSE)
 
@@ -505,16 +508,13 @@ class AchslintServer(LanguageServer):
                 pause()
             params["diagnostics"].append(self._converter.unstructure(diagnostic))
         message = {"jsonrpc": "2.0", "method": lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": params}
-        first = uri not in self.analyses
-        if analysis is not None and not first and uri in self._outline_asked:
-            analysis.outline = self._outline(
-                uri, analysis
-            )  # before the loop has the analysis: it answers at once
+        if analysis is not None and uri in self._outline_asked:  # before the loop has the analysis: at once
+            analysis.outline = self._outline(uri, analysis)
         body = json.dumps(self._converter.unstructure(message)).encode("utf-8")
         self._hand_over(uri, generation, analysis, body, peers)
-        if first and analysis is not None and self._loop is not None and not self._to_lint.waiting(uri):
-            # The first outline after the first diagnostics: the editor asks for it next.
-            outline = self._outline(uri, analysis)
+        if analysis is not None and analysis.outline is None and self._loop is not None:
+            # After the diagnostics: the editor may ask for the outline next (and from then on after each edit).
+            outline = None if self._to_lint.waiting(uri) else self._outline(uri, analysis)
             if outline is not None:
                 self._loop.call_soon_threadsafe(self._outlined, analysis, outline)
         if not self._warm:
@@ -1125,6 +1125,23 @@ def quiet_collector() -> None:
     gc.set_threshold(700, 10, 1 << 30)
 
 
+def wide_pipe(fd: int, size: int = PIPE_SIZE) -> None:
+    """Let a pipe to the client hold `size` bytes (Linux; elsewhere, or when the system allows less, it stays
+    as it is). An outline or the diagnostics of a long list are hundreds of kilobytes: through the usual
+    64 KB the loop writes them in pieces, waiting for the client to read each one and then for the worker to
+    hand the interpreter back."""
+    try:
+        import fcntl  # not on Windows
+    except ImportError:
+        return
+    set_size = getattr(fcntl, "F_SETPIPE_SZ", None)
+    if set_size is None:
+        return
+    with contextlib.suppress(OSError):
+        if stat.S_ISFIFO(os.fstat(fd).st_mode):
+            fcntl.fcntl(fd, set_size, size)
+
+
 server = create()
 
 
@@ -1136,6 +1153,7 @@ def run() -> None:
     logging.basicConfig(level=logging.WARNING, handlers=[handler])
     sys.setswitchinterval(0.001)  # the loop gets the interpreter back quickly while the worker lints
     quiet_collector()
+    wide_pipe(sys.stdout.fileno())
     server.collect_when_idle = IDLE_COLLECTION
     # The reader thread reads the descriptor itself: blocked in sys.stdin's buffer, it would hold that buffer's
     # lock when the interpreter exits, which aborts the process.
