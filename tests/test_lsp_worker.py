@@ -170,3 +170,24 @@ def test_the_pipe_to_the_client_is_widened_where_the_system_allows(tmp_path):
         os.close(write)
     with open(tmp_path / "out", "wb") as file:  # not a pipe: left alone, no error
         wide_pipe(file.fileno())
+
+
+def test_a_loop_kept_busy_never_starves_a_job(monkeypatch):
+    monkeypatch.setattr(worker_module, "PAUSE_LIMIT", 0.02)
+    monkeypatch.setattr(worker_module, "JOB_PAUSES", 0.2)
+    gate = Gate()
+    work = Worker(gate=gate)
+    try:
+        gate.loop(True)  # and it stays busy
+        started = time.perf_counter()
+
+        def job() -> float:
+            for _ in range(100):  # a hundred pause points: 2 s if each waited its limit
+                engine.pause()
+            return time.perf_counter() - started
+
+        took = work.submit(job).result(timeout=10)
+        assert 0.2 <= took < 1.0
+    finally:
+        gate.loop(False)
+        work.stop()

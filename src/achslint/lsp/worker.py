@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import selectors
 import threading
+import time
 from collections import deque
 from collections.abc import Callable, Iterator
 from concurrent.futures import Future
@@ -32,7 +33,8 @@ _T = TypeVar("_T")
 _Item = TypeVar("_Item")
 
 
-PAUSE_LIMIT = 0.05  # seconds one pause waits at most (a flood of messages never stops the worker)
+PAUSE_LIMIT = 0.05  # seconds one pause waits at most
+JOB_PAUSES = 1.0  # seconds one job gives way at most: a loop kept busy (a flood of messages) never starves it
 
 
 class Superseded(BaseException):
@@ -70,11 +72,14 @@ class Gate:
             if not self.busy:
                 self._changed.notify_all()
 
-    def wait(self) -> None:
-        """Wait (at most `PAUSE_LIMIT` seconds) until the loop has nothing to do."""
-        if self.busy:
-            with self._changed:
-                self._changed.wait_for(lambda: not self.busy, PAUSE_LIMIT)
+    def wait(self) -> float:
+        """Wait (at most `PAUSE_LIMIT` seconds) until the loop has nothing to do; the seconds waited."""
+        if not self.busy:
+            return 0.0
+        started = time.monotonic()
+        with self._changed:
+            self._changed.wait_for(lambda: not self.busy, PAUSE_LIMIT)
+        return time.monotonic() - started
 
 
 class WatchedSelector(selectors.DefaultSelector):
@@ -102,6 +107,7 @@ class Worker:
         self._running = False
         self._gate = gate
         self._stale: Callable[[], bool] | None = None
+        self._paused = 0.0  # seconds the running job gave way so far
         self._thread = threading.Thread(target=self._run, name=name, daemon=True)
         self._thread.start()
 
@@ -115,8 +121,8 @@ class Worker:
             self._stale = None
 
     def _pause(self) -> None:
-        if self._gate is not None:
-            self._gate.wait()
+        if self._gate is not None and self._paused < JOB_PAUSES:
+            self._paused += self._gate.wait()
         stale = self._stale
         if stale is not None and stale():
             raise Superseded
@@ -157,6 +163,7 @@ class Worker:
                     return
                 future, job = self._jobs.popleft()
                 self._running = True
+            self._paused = 0.0
             try:
                 self._pause()  # the message loop first: a request read with the edit is answered before its lint
                 if not future.set_running_or_notify_cancel():
