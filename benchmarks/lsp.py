@@ -171,8 +171,10 @@ def in_process(runs: int) -> bool:
     def complete_top():
         return completed(path_line, 1, "kenngr.homing.homing_type")
 
+    value_start = lines[symbol_line].index(lines[symbol_line].split()[1]) + 1  # nothing typed: every symbol
+
     def complete_symbol():
-        return completed(symbol_line, len("kenngr.homing.homing_type") + 26, "CNC_CONTROLLED")
+        return completed(symbol_line, value_start, "CNC_CONTROLLED")
 
     ok = ok_edit
     for label, call in (
