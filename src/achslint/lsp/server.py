@@ -513,6 +513,8 @@ class AchslintServer(LanguageServer):
         first = uri not in self._outlines
         if analysis is not None and not first:
             analysis.outline = self._outline(uri, analysis)
+        if analysis is not None and analysis.snapshot.file is not None:
+            features.paths_for_completion(analysis.snapshot.file)  # what completion ranks by, likewise
         body = json.dumps(self._converter.unstructure(message)).encode("utf-8")
         self._hand_over(uri, generation, analysis, body, peers)
         if analysis is not None and first and self._loop is not None and not self._to_lint.waiting(uri):
