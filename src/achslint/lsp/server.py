@@ -1152,7 +1152,9 @@ def run() -> None:
     handler.setFormatter(logging.Formatter("%(message)s"))
     handler.addFilter(_OneLine())
     logging.basicConfig(level=logging.WARNING, handlers=[handler])
-    sys.setswitchinterval(0.001)  # the loop gets the interpreter back quickly while the worker lints
+    sys.setswitchinterval(
+        0.0002
+    )  # the loop gets the interpreter back quickly while the worker lints (below 1 ms: hover mid-lint 3 -> 1.5 ms median)
     quiet_collector()
     wide_pipe(sys.stdout.fileno())
     server.collect_when_idle = IDLE_COLLECTION
