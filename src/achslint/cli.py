@@ -56,7 +56,7 @@ def _choices(name: str, values: Iterable[str]) -> type[Enum]:
 if TYPE_CHECKING:
     from .catalogue import Catalogue
     from .explanation import Found
-    from .linting.run import LintRequest
+    from .linting.run import LintOutcome, LintRequest
     from .output import Screen
 
 if TYPE_CHECKING:  # for the type checker these are plain enums; typer needs the real classes below
@@ -373,19 +373,9 @@ def lint(
             typer.echo(shown.fix_count(outcome.results, show_diff), err=True)
     if not silent:
         try:
-            with shown.destination(output_file, report_stream) as stream:
-                shown.write_report(
-                    outcome.results,
-                    fmt,
-                    stream,
-                    color=_use_color(color, stream),
-                    sources=outcome.sources,
-                    docs_url=lambda: _docs_url(docs_url, config),
-                    statistics=statistics,
-                    quiet=quiet,
-                    fixing=fix,
-                    failed=bool(outcome.errors),
-                )
+            _lint_report(
+                outcome, fmt, output_file, report_stream, color, docs_url, config, statistics, quiet, fix
+            )
         except OutputFailed as exc:
             _fail(str(exc))
     if outcome.errors:
@@ -419,6 +409,36 @@ def _show(request: "LintRequest", files: bool, fmt: str) -> NoReturn:
     raise typer.Exit(EXIT_OK)
 
 
+def _lint_report(
+    outcome: "LintOutcome",
+    fmt: str,
+    output: str | None,
+    fallback: TextIO,
+    color: Color,
+    docs_url: str | None,
+    config: str | None,
+    statistics: bool,
+    quiet: bool,
+    fixing: bool,
+) -> None:
+    """The lint report in `fmt`, to `output` (a file) or else `fallback`; raises `OutputFailed`."""
+    from .output import lint as shown
+
+    with shown.destination(output, fallback) as stream:
+        shown.write_report(
+            outcome.results,
+            fmt,
+            stream,
+            color=_use_color(color, stream),
+            sources=outcome.sources,
+            docs_url=lambda: _docs_url(docs_url, config),
+            statistics=statistics,
+            quiet=quiet,
+            fixing=fixing,
+            failed=bool(outcome.errors),
+        )
+
+
 def _lint_once(
     request: "LintRequest",
     fmt: str,
@@ -433,7 +453,6 @@ def _lint_once(
     from .linting.config import ConfigError, forget_cached
     from .linting.run import OutputIsInput, run_lint
     from .output import OutputFailed
-    from .output import lint as shown
 
     forget_cached()  # a configuration may have changed since the last run
     try:
@@ -445,19 +464,9 @@ def _lint_once(
     if silent:
         return
     try:
-        with shown.destination(request.output, sys.stdout) as stream:
-            shown.write_report(
-                outcome.results,
-                fmt,
-                stream,
-                color=_use_color(color, stream),
-                sources=outcome.sources,
-                docs_url=lambda: _docs_url(docs_url, config),
-                statistics=statistics,
-                quiet=quiet,
-                fixing=False,
-                failed=bool(outcome.errors),
-            )
+        _lint_report(
+            outcome, fmt, request.output, sys.stdout, color, docs_url, config, statistics, quiet, False
+        )
     except OutputFailed as exc:
         _say(str(exc))
     sys.stdout.flush()
