@@ -122,6 +122,10 @@ def test_unfixable_and_fixable_decide_what_fix_may_fix(cli, tmp_path: Path):
     result = cli("lint", str(target), "--fix")
     assert target.read_bytes() == listed and "fixed 0 diagnostics" in result.stderr.decode()
     assert "fixable with --fix" not in cli("lint", str(target)).stdout.decode()
+    config.write_text("fixable = []\n")  # as in ruff: an empty list fixes nothing
+    target.write_bytes(listed)
+    cli("lint", str(target), "--fix")
+    assert target.read_bytes() == listed
     config.write_text("")
     assert "2 fixable with --fix" in cli("lint", str(target)).stdout.decode()
 

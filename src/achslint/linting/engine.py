@@ -64,7 +64,8 @@ class Policy:
 
     def may_fix(self, code: str) -> bool:
         """Whether findings of `code` keep their fix (`fixable` / `unfixable`, by code or prefix)."""
-        return matches(code, self.fixable or ALL) and not matches(code, self.unfixable)
+        chosen = ALL if self.fixable is None else self.fixable  # `fixable = []`: nothing is fixed
+        return matches(code, chosen) and not matches(code, self.unfixable)
 
     def enabled(self, code: str) -> bool:
         chosen = self.select or ALL
