@@ -191,3 +191,21 @@ def test_a_loop_kept_busy_never_starves_a_job(monkeypatch):
     finally:
         gate.loop(False)
         work.stop()
+
+
+def test_the_axis_analysis_gives_way_every_few_hundred_settings():
+    # the one stretch of a lint without a rule boundary: on the worker it pauses every PAUSE_EVERY settings
+    from achslint.axis.analysis import PAUSE_EVERY, analyse
+    from achslint.syntax.parser import parse_text
+
+    text = "".join(f"getriebe[0].vb_reflow  {n}\n" for n in range(4 * PAUSE_EVERY)) + "Ende\n"
+    file = parse_text(text, "achsmds1.lis")
+    calls: list[int] = []
+    engine.pause_between_rules(lambda: calls.append(1))
+    try:
+        analyse(file)
+    finally:
+        engine.pause_between_rules(None)
+    assert len(calls) == 8  # 4 in resolving the paths, 4 in checking the values
+    analyse(file)
+    assert len(calls) == 8  # no hook, no pause

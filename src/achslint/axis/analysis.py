@@ -31,6 +31,7 @@ from ..catalogue import (
     Value,
     catalogue,
 )
+from ..core.pause import pause
 from ..syntax import parser as syntax
 from ..syntax.numbers import NumberProblem, Reference, parse_hex, parse_int, parse_real, parse_reference
 from .facts import (
@@ -126,17 +127,23 @@ _ARRAY_NAME = re.compile(r"(\w+)\[i\]")
 _WRITTEN_INDEX = re.compile(r"\[[0-9]+\]")
 
 
+PAUSE_EVERY = 512  # settings between two pause points (well under a millisecond of work)
+
+
 def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
     cat = cat or catalogue()
-    settings = [
-        Setting(line, cat.resolve(line.path))
-        for line in file.assignments()
-        if line.path_ok and line.path is not None  # an assignment always has a path
-    ]
+    settings = []
+    for count, line in enumerate(file.assignments(), 1):
+        if line.path_ok and line.path is not None:  # an assignment always has a path
+            settings.append(Setting(line, cat.resolve(line.path)))
+        if not count % PAUSE_EVERY:
+            pause()  # the language server's worker gives way to the editor here (core.pause)
     analysis = Analysis(file, settings)
     if _describes_axes(cat):
         _axis_and_drive(analysis, cat)
-    for setting in settings:
+    for count, setting in enumerate(settings, 1):
+        if not count % PAUSE_EVERY:
+            pause()
         resolution = setting.resolution
         if setting.known and resolution is not None:  # known: resolved, and not by a misspelling
             _check_indices(setting, resolution)

@@ -19,12 +19,14 @@ have their own configuration; there a function gives the policy of the file a fi
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
 from ..core.diagnostics import Diagnostic, Severity
+from ..core.pause import hook as pause_hook
+from ..core.pause import pause as pause  # re-exported: the pause points of a thread (engine.pause)
+from ..core.pause import set_hook
 from ..rules import Check, Scope, matches, registry
 from .suppression import Suppressions
 
@@ -81,21 +83,13 @@ class Policy:
 # The policy of the file a finding is in (the machine step: each list has its own configuration).
 PolicyOf = Callable[[str], Policy]
 
-_here = threading.local()
-
 
 def pause_between_rules(pause: Callable[[], None] | None) -> None:
-    """Call `pause` before each rule `run` runs on this thread (None: never). The language server's worker
-    gives way to the editor's requests there and stops a lint whose text changed meanwhile (by raising);
-    the command line sets none."""
-    _here.pause = pause
-
-
-def pause() -> None:
-    """The pause of this thread, if it has one (long loops outside the rules call it too)."""
-    hook = getattr(_here, "pause", None)
-    if hook is not None:
-        hook()
+    """Call `pause` before each rule `run` runs on this thread, and at the other pause points
+    (`core.pause`: the parse, the axis analysis) (None: never). The language server's worker gives way to
+    the editor's requests there and stops a lint whose text changed meanwhile (by raising); the command
+    line sets none."""
+    set_hook(pause)
 
 
 def run(
@@ -117,7 +111,7 @@ def run(
     fixed = policy if isinstance(policy, Policy) else None
     policy_of = _always(policy) if isinstance(policy, Policy) else policy
     found: list[Diagnostic] = []
-    hook: Callable[[], None] | None = getattr(_here, "pause", None)
+    hook: Callable[[], None] | None = pause_hook()
     for code, check in enabled_checks(scope, fixed, whole_axis, kind):
         findings = check(*subject)
         if hook is not None:

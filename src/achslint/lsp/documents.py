@@ -15,7 +15,7 @@ import copy
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..linting.engine import pause
+from ..core.pause import pause
 from ..syntax.parser import BLANK, END, Line, ListFile, parse_text, split_lines
 
 BOM = "\ufeff"

@@ -30,7 +30,7 @@ from ..catalogue import (
 from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, STARTUP, Kind
 from ..catalogue.units import describe, unit_label
 from ..core.diagnostics import Diagnostic, Fix, Severity
-from ..linting.engine import pause
+from ..core.pause import pause
 from ..rules import registry
 from ..syntax import parser as syntax
 from ..syntax.numbers import Reference

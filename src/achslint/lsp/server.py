@@ -45,7 +45,7 @@ from pygls.uris import to_fs_path
 
 from .. import __version__
 from ..core.files import is_xml
-from ..linting.engine import pause
+from ..core.pause import pause
 from . import features
 from .documents import Document, LineCache
 from .outline import Outline

@@ -22,6 +22,7 @@ from ..catalogue.kinds import STARTUP
 from ..core.decode import UnreadableInput, decode, text_bytes
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml, read_list, starts_with_bom
+from ..core.pause import pause
 from ..linting.config import (
     ConfigError,
     Overrides,
@@ -39,7 +40,6 @@ from ..linting.discovery import (
     loaded_under,
     updated_list,
 )
-from ..linting.engine import pause
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
 from ..machine.resolved import Machine
