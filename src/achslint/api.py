@@ -87,7 +87,7 @@ def lint(
     """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files.
 
     A folder or a start-up list (told by its name or content) is a machine: linted as `lint_paths` does,
-    which is what `achslint lint PATH` reports."""
+    with the configuration files found beside it, which is what `achslint lint PATH` reports."""
     if not isinstance(source, (bytes, bytearray)) and not (isinstance(source, str) and "\n" in source):
         path = Path(source)
         if path.is_dir() or (path.is_file() and is_startup(path)):
