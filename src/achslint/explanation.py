@@ -249,8 +249,9 @@ def default_underneath(path: Path) -> tuple[bytes | None, str | None]:
     that cannot be read is left out, and the words say so (lint reports it as LIS504)."""
     from .axis.source import read_one_list
     from .core.decode import UnreadableInput
+    from .core.files import shown_path
     from .linting.config import ConfigError
-    from .linting.discovery import Finder, shown
+    from .linting.discovery import Finder
 
     try:
         found = Finder(lenient=True).loaded_under(path)
@@ -260,13 +261,13 @@ def default_underneath(path: Path) -> tuple[bytes | None, str | None]:
         return None, None
     default, startup = found
     try:
-        data = read_one_list(default, shown(default))
+        data = read_one_list(default, shown_path(default))
     except (OSError, UnreadableInput) as exc:
         return None, (
-            f"the default axis list {shown(default)} that {shown(startup)} loads underneath cannot be read "
+            f"the default axis list {shown_path(default)} that {shown_path(startup)} loads underneath cannot be read "
             f"({exc}); catalogue defaults are used instead"
         )
-    return data, f"default axis list {shown(default)} underneath, as {shown(startup)} loads it"
+    return data, f"default axis list {shown_path(default)} underneath, as {shown_path(startup)} loads it"
 
 
 def parameter_row(values: ResolvedAxis, strategy: HomingStrategy, path: str) -> ParameterRow:

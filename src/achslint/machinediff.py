@@ -27,7 +27,7 @@ from typing import Literal, TypedDict
 
 from .axis.resolved import ResolvedAxis
 from .core.decode import UnreadableInput
-from .core.files import MISSING, is_folder, not_a_list_file, reason
+from .core.files import MISSING, is_folder, not_a_list_file, reason, shown_path
 from .homing import classify
 from .linting.discovery import is_startup
 from .listdiff import Comparison, Difference, UnknownDifference, WrittenDifference, compare_axes, differ
@@ -202,12 +202,7 @@ class _Machine:
 
 
 def _shown_entry(path: Path | None) -> str | None:
-    if path is None:
-        return None
-    try:
-        return str(path.relative_to(Path.cwd()))
-    except ValueError:
-        return str(path)
+    return shown_path(path) if path is not None else None
 
 
 def _channel_number(key: str) -> int:

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .core.decode import UnreadableInput
-from .core.files import Refused, reason
+from .core.files import Refused, reason, shown_path
 from .dryrun import DryRun, DryRunRefused
 from .explanation import ListReport, default_underneath, explain_list
 from .homing.scenario import ScenarioError
@@ -228,7 +228,7 @@ def _lists(startup: Path, cnc_root: Path | None) -> list[ListFile]:
     entries += read.others
     for entry in sorted((e for e in entries if e is not None), key=lambda e: e.line):
         kind = entry_kind(entry.key)
-        shown = _relative(entry.path) if entry.path is not None else f"{entry.raw} (not found)"
+        shown = shown_path(entry.path) if entry.path is not None else f"{entry.raw} (not found)"
         found.append(ListFile(kind.name if kind is not None else "list", entry.key, shown))
     return found
 
@@ -288,11 +288,3 @@ def _compare(report: CommissioningReport, request: ReportRequest, startup: Path 
     ours = read_one_list(request.target, str(request.target))
     theirs = read_one_list(request.against, str(request.against))
     report.list_diff = diff_lists(theirs, str(request.against), ours, str(request.target))
-
-
-def _relative(path: Path) -> str:
-    """A file as reports name it: relative to the working directory when below it."""
-    try:
-        return str(path.relative_to(Path.cwd()))
-    except ValueError:
-        return str(path)

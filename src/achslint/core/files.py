@@ -64,6 +64,14 @@ def reason(exc: OSError) -> str:
     return found or exc.strerror or str(exc)
 
 
+def shown_path(path: Path) -> str:
+    """A path as reports show it: relative to the working directory when it lies below it."""
+    try:
+        return str(path.relative_to(Path.cwd()))
+    except ValueError:
+        return str(path)
+
+
 def real_path(path: Path) -> Path:
     """`path` with every symbolic link resolved; as far as possible when a link loops or is broken."""
     try:

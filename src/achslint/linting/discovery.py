@@ -43,6 +43,7 @@ from ..core.files import (
     real_path,
     reason,
     same_file,
+    shown_path,
 )
 from ..machine.resolved import Machine
 from ..machine.startup import Startup, StartupEntry, is_startup_list, read_startup
@@ -156,14 +157,6 @@ def _looking_once(find: Callable[[Finder, list[str]], Discovery]) -> Callable[[F
             _LOOKED_AT.reset(token)
 
     return run
-
-
-def shown(path: Path) -> str:
-    """A path as reports show it: relative to the working directory when it lies below it."""
-    try:
-        return str(path.relative_to(Path.cwd()))
-    except ValueError:
-        return str(path)
 
 
 @dataclass
@@ -306,7 +299,7 @@ class Finder:
         a start-up list's with the default list it loads underneath."""
         return [
             Target(
-                shown(f),
+                shown_path(f),
                 f,
                 self.config_for(f),
                 (machine.key,),
@@ -448,7 +441,9 @@ class Finder:
             ):
                 continue
             mine = inside(entry.path, folder) or scope.contains(entry.path)
-            target = Target(shown(entry.path), entry.path, self.config_for(entry.path), (str(startup.path),))
+            target = Target(
+                shown_path(entry.path), entry.path, self.config_for(entry.path), (str(startup.path),)
+            )
             under = loaded_under(kind, [Machine.of(startup)])
             found.add(replace(target, writable=self.follow_startup or mine, kind=kind, defaults=under))
         return found_inside

@@ -23,6 +23,7 @@ from ..core.files import (
     read_list,
     reason,
     same_file,
+    shown_path,
     write_atomically,
 )
 from ..rules import Scope as RuleScope
@@ -34,7 +35,7 @@ from .config import (
     discover,
     named_path,
 )
-from .discovery import Discovery, Finder, Target, machine_files, shown, startup_files
+from .discovery import Discovery, Finder, Target, machine_files, startup_files
 from .engine import enabled_checks
 from .linter import (
     FileResult,
@@ -475,7 +476,7 @@ def _configured_programs(run: LintRun, done: set[str], outcome: LintOutcome) -> 
                 )
                 continue
             settings = run.settings_for(Target(str(path), path, run.config_for(path)))
-            result = lint_program_bytes(data, machine, shown(path), settings)
+            result = lint_program_bytes(data, machine, shown_path(path), settings)
             outcome.results.append(result)
 
 
@@ -490,9 +491,12 @@ def _configured_program(path: Path) -> tuple[bytes | None, str]:
     except Refused as exc:
         return None, str(exc)
     except OSError as exc:
-        return None, f"cannot read {shown(path)}: {reason(exc)}"
+        return None, f"cannot read {shown_path(path)}: {reason(exc)}"
     if program_text(data) is None:
-        return None, f"{shown(path)} is not an NC program (it is not text: binary, or UTF-16); not checked"
+        return (
+            None,
+            f"{shown_path(path)} is not an NC program (it is not text: binary, or UTF-16); not checked",
+        )
     return data, ""
 
 

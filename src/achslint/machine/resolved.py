@@ -30,7 +30,7 @@ from typing import TypeVar
 from ..axis.resolved import ResolvedAxis, resolve_bytes
 from ..axis.source import read_one_list
 from ..core.decode import UnreadableInput
-from ..core.files import reason, same_file
+from ..core.files import reason, same_file, shown_path
 from .channel import ChannelList, read_channel_list
 from .identity import numbered
 from .startup import Member, Startup, StartupEntry, entry_index
@@ -269,10 +269,5 @@ class Machine:
 
 
 def _shown(entry: StartupEntry) -> str:
-    """How a listed file is named in reports: relative to the working directory when below it."""
-    if entry.path is None:
-        return entry.raw
-    try:
-        return str(entry.path.relative_to(Path.cwd()))
-    except ValueError:
-        return str(entry.path)
+    """How a listed file is named in reports (`files.shown_path`), or the entry as written without one."""
+    return shown_path(entry.path) if entry.path is not None else entry.raw

@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..axis.analysis import analyse
 from ..catalogue.kinds import STARTUP
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..core.files import shown_path
 from ..machine.startup import entry_index
 from ..syntax.parser import parse_bytes, path_pattern
 from ._common import known_settings
@@ -161,15 +161,6 @@ def shown(numbers: list[str], limit: int = 6) -> str:
     """`a, b, c and 4 more`: a list of names shortened for a message."""
     more = f" and {len(numbers) - limit} more" if len(numbers) > limit else ""
     return ", ".join(numbers[:limit]) + more
-
-
-def shown_path(path: Path) -> str:
-    """How a list a start-up list names is called in findings: relative to the working directory when below
-    it, as the machine names the channel lists it reads."""
-    try:
-        return str(path.relative_to(Path.cwd()))
-    except ValueError:
-        return str(path)
 
 
 def loaded_settings(machine: Machine, entry: StartupEntry, what: str, kind: Kind) -> list[Setting] | None:

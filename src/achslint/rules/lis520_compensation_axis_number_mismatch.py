@@ -78,13 +78,13 @@ from typing import TYPE_CHECKING
 
 from ..catalogue.kinds import COMPENSATION
 from ..core.diagnostics import Diagnostic, Severity
+from ..core.files import shown_path
 from ._crosslist import by_number, every_axis_list_read
 from ._kindvalues import (
     at_setting,
     compensation_assignments,
     loaded_settings,
     related_at,
-    shown_path,
     unusable,
     whole,
     written,

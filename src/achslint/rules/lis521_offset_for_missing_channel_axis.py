@@ -85,9 +85,10 @@ from typing import TYPE_CHECKING
 
 from ..catalogue.kinds import CLAMP_OFFSETS, ZERO_OFFSETS, Kind
 from ..core.diagnostics import Diagnostic, Severity
+from ..core.files import shown_path
 from ..syntax.parser import path_pattern
 from ._crosslist import index
-from ._kindvalues import at_setting, loaded_settings, shown, shown_path
+from ._kindvalues import at_setting, loaded_settings, shown
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
