@@ -78,19 +78,25 @@ class Startup:
     def loaded_axes(self) -> list[StartupEntry]:
         """The axis lists the CNC loads: with `zahl_mds` written (P-STUP-00014), the entries below that count
         — it ignores the others (LIS516 says so) —, else every `achs_mds[i]`."""
-        count = self.counts.get("zahl_mds")
-        if count is None or count.value is None:
-            return list(self.axes)
-        return [entry for entry in self.axes if entry_index(entry) < count.value]
+        return self._below("zahl_mds", self.axes)
 
     def loaded_channels(self) -> list[StartupEntry]:
         """The channel lists the CNC loads: with `kanal_anzahl` written (P-STUP-00001: the number of configured
         channels), those of the channels below that count — a list named for a channel beyond it belongs to
         no configured channel (LIS522 says so) —, else every `sda_mds[i]`."""
-        count = self.counts.get("kanal_anzahl")
+        return self._below("kanal_anzahl", self.channels)
+
+    def loaded_compensations(self) -> list[StartupEntry]:
+        """The axis compensation lists the CNC loads: with `zahl_kw` written (P-STUP-00016), the entries below
+        that count (LIS516 says so of the others), else every `achs_kw[i]`."""
+        return self._below("zahl_kw", self.compensations)
+
+    def _below(self, key: str, entries: list[StartupEntry]) -> list[StartupEntry]:
+        """The entries whose index is below the count `key` when it is written as a whole number, else all."""
+        count = self.counts.get(key)
         if count is None or count.value is None:
-            return list(self.channels)
-        return [entry for entry in self.channels if entry_index(entry) < count.value]
+            return list(entries)
+        return [entry for entry in entries if entry_index(entry) < count.value]
 
 
 def entry_index(entry: StartupEntry) -> int:

@@ -62,7 +62,6 @@ from ..catalogue.kinds import entry_kind
 from ..core.decode import UnreadableInput, decode
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import read_list, reason, same_file
-from ..machine.startup import entry_index
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -143,13 +142,7 @@ def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
     """The lists of other kinds a start-up list names (compensation lists up to `zahl_kw`, tool data, zero
     offsets ...) that do not exist: the CNC cannot load them; what it does then is documented for axis and
     channel lists only, hence a warning."""
-    count = startup.counts.get("zahl_kw")
-    compensations = [
-        entry
-        for entry in startup.compensations
-        if count is None or count.value is None or entry_index(entry) < count.value  # beyond: LIS516
-    ]
-    for entry in [*compensations, *startup.others]:
+    for entry in [*startup.loaded_compensations(), *startup.others]:  # beyond zahl_kw: LIS516
         if entry.path is not None or entry.refused:
             continue  # there (its own lint checks it), or refused (the warning above says why)
         kind = entry_kind(entry.key)

@@ -69,11 +69,10 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ..core.files import same_file
-from ._crosslist import index
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
-    from ..machine.startup import Startup, StartupEntry
+    from ..machine.startup import StartupEntry
 
 CODE = "LIS518"
 NAME = "list-named-twice"
@@ -81,21 +80,12 @@ FIX = "none"
 SUMMARY = "Start-up list names one axis list file twice (two axes, or an axis and the default list)"
 
 
-def _loaded(startup: Startup) -> list[StartupEntry]:
-    """The achs_mds entries the CNC reads: those below zahl_mds (LIS516 reports the others); every entry
-    when the start-up list writes no usable zahl_mds."""
-    count = startup.counts.get("zahl_mds")
-    if count is None or count.value is None:
-        return startup.axes
-    return [entry for entry in startup.axes if index(entry) < count.value]
-
-
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startups = machine.startups
     for startup in startups:
         first: dict[object, StartupEntry] = {}
         entries = [startup.default] if startup.default is not None else []
-        for entry in sorted([*entries, *_loaded(startup)], key=lambda entry: entry.line):
+        for entry in sorted([*entries, *startup.loaded_axes()], key=lambda entry: entry.line):
             if entry.path is None or same_file(entry.path, startup.path):
                 continue  # missing, not read, or the start-up list itself: LIS504
             earlier = first.setdefault(_file_key(entry.path), entry)
