@@ -26,14 +26,13 @@ from pathlib import Path
 from typing import Literal, TypedDict
 
 from .axis.resolved import ResolvedAxis
-from .core.decode import UnreadableInput
 from .core.files import MISSING, is_folder, not_a_list_file, reason, shown_path
 from .homing import classify
 from .linting.discovery import is_startup
 from .listdiff import Comparison, Difference, UnknownDifference, WrittenDifference, compare_axes, differ
 from .machine.channel import ChannelList
-from .machine.resolved import Machine, MachineError
-from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup, read_startup
+from .machine.resolved import Machine, open_startup
+from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup
 
 VERSION = 1
 BY_NUMBER, BY_NAME, BY_ORDER = "logical axis number", "axis name", "number and name (in start-up order)"
@@ -213,12 +212,7 @@ def read_machine(startup: Path, cnc_root: Path | None) -> _Machine:
     """Every axis list and channel list of the machine, read as the CNC loads them.
 
     Raises `MachineError` (file and line) for anything the CNC would not start with."""
-    try:
-        entries = read_startup(startup, cnc_root=cnc_root, root_origin="as given" if cnc_root else "")
-    except OSError as exc:
-        raise MachineError(f"cannot read the start-up list: {reason(exc)}", startup) from None
-    except UnreadableInput as exc:
-        raise MachineError(str(exc), startup) from None
+    entries = open_startup(startup, cnc_root)
     machine = Machine.of(entries)
     axes = []
     # Every loaded axis list (the entries beyond zahl_mds are never loaded, LIS516), a repeated number too.

@@ -222,7 +222,7 @@ def _lists(startup: Path, cnc_root: Path | None) -> list[ListFile]:
     from .catalogue.kinds import entry_kind
     from .machine.startup import read_startup
 
-    read = read_startup(startup, cnc_root=cnc_root, root_origin="as given" if cnc_root else "")
+    read = read_startup(startup, cnc_root=cnc_root)
     found = [ListFile("start-up list", None, str(startup))]
     entries = [read.default, read.default_channel, *read.axes, *read.channels, *read.compensations]
     entries += read.others

@@ -718,7 +718,7 @@ def machine_files(startup: Path, cnc_root: Path | None = None, config_file: str 
     config = load_file(Path(config_file)) if config_file else discover(startup)
     root = cnc_root or config.cnc_root()
     try:
-        files = startup_files(read_startup(startup, None, root, "as given" if root else ""))
+        files = startup_files(read_startup(startup, None, root))
     except (OSError, UnreadableInput):
         return []
     return files + ([config.path] if config.path is not None else [])

@@ -20,12 +20,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..axis.resolved import ResolvedAxis
-from ..core.decode import UnreadableInput
-from ..core.files import reason
 from .channel import ChannelList
 from .model import ChannelView, Location, MachineAxis
-from .resolved import Machine, MachineError
-from .startup import Startup, StartupEntry, read_startup
+from .resolved import Machine, MachineError, open_startup
+from .startup import Startup, StartupEntry
 
 __all__ = ["MachineError", "build_machine", "channel_view", "rename"]
 
@@ -58,12 +56,7 @@ def channel_view(machine: Machine, channel: int = 1) -> ChannelView:
 def _read_startup(startup: Path, cnc_root: Path | None) -> Startup:
     """The start-up list's entries; the files they name shown relative to the working directory, like
     every other path in reports."""
-    try:
-        entries = read_startup(startup, cnc_root=cnc_root, root_origin="as given" if cnc_root else "")
-    except OSError as exc:
-        raise MachineError(f"cannot read the start-up list: {reason(exc)}", startup) from None
-    except UnreadableInput as exc:
-        raise MachineError(str(exc), startup) from None
+    entries = open_startup(startup, cnc_root)
     for entry in [entries.default, entries.default_channel, *entries.axes, *entries.channels]:
         if entry is not None and entry.path is not None:
             entry.path = _relative(entry.path)

@@ -33,7 +33,7 @@ from ..core.decode import UnreadableInput
 from ..core.files import reason, same_file, shown_path
 from .channel import ChannelList, read_channel_list
 from .identity import numbered
-from .startup import Member, Startup, StartupEntry, entry_index
+from .startup import Member, Startup, StartupEntry, entry_index, read_startup
 
 T = TypeVar("T")
 
@@ -53,6 +53,17 @@ class MachineError(Exception):
             return self.message
         where = self.path if self.line is None else f"{self.path}:{self.line}"
         return f"{where}: {self.message}"
+
+
+def open_startup(path: Path, cnc_root: Path | None = None) -> Startup:
+    """A start-up list's entries for a command that needs the machine (`--cnc-root`: `cnc_root`); a
+    `MachineError` naming the file when it cannot be read."""
+    try:
+        return read_startup(path, cnc_root=cnc_root)
+    except OSError as exc:
+        raise MachineError(f"cannot read the start-up list: {reason(exc)}", path) from None
+    except UnreadableInput as exc:
+        raise MachineError(str(exc), path) from None
 
 
 @dataclass

@@ -193,6 +193,8 @@ def read_startup(
         cnc_root = default_cnc_root(path)
         above = cnc_root != Path(os.path.abspath(path)).parent
         root_origin = f"{'the folder above `listen/`' if above else 'the start-up list folder'}; --cnc-root sets another"
+    else:
+        root_origin = root_origin or "as given"
     root = Path(os.path.abspath(cnc_root))
     startup = Startup(path, root=root, root_origin=root_origin, counts=counts)
     for key, value, line in entries:
