@@ -8,6 +8,9 @@ remembers it, so that writing the text back reproduces the original bytes.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
+
+from .files import read_list, reason
 
 UTF8_BOM = b"\xef\xbb\xbf"
 _WIDE_BOMS = {
@@ -64,3 +67,14 @@ def decode(data: bytes) -> SourceText:
         except UnicodeDecodeError:
             continue
     raise AssertionError("latin-1 decodes every byte string")  # pragma: no cover
+
+
+def unreadable(path: Path) -> str | None:
+    """Why a file cannot be read as list text (an error reading it, UTF-16, binary), or None when it can."""
+    try:
+        decode(read_list(path))
+    except OSError as exc:
+        return str(exc) if exc.errno is None else reason(exc)
+    except UnreadableInput as exc:
+        return str(exc)
+    return None

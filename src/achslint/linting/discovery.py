@@ -32,7 +32,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..catalogue.kinds import STARTUP, entry_kind, kind_of
-from ..core.decode import UnreadableInput, decode
+from ..core.decode import UnreadableInput, unreadable
 from ..core.files import (
     Scope,
     inside,
@@ -467,11 +467,7 @@ class Finder:
             # Readable as text (what LIS504 checks), not parsed here: the lint of the list parses it, in a
             # worker process when the run has several (parsing every list twice cost a machine of 30 other
             # lists a second of the main process).
-            if not_a_list_file(entry.path) is not None:
-                continue
-            try:
-                decode(read_list(entry.path))
-            except (OSError, UnreadableInput):
+            if not_a_list_file(entry.path) is not None or unreadable(entry.path) is not None:
                 continue  # LIS504 says why (a default or channel list), the CNC too for the others
             lists.append((entry, kind))
         return lists

@@ -59,13 +59,11 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..catalogue.kinds import entry_kind
-from ..core.decode import UnreadableInput, decode
+from ..core.decode import unreadable
 from ..core.diagnostics import Diagnostic, Severity
-from ..core.files import read_list, reason, same_file
+from ..core.files import same_file
 
 if TYPE_CHECKING:
-    from pathlib import Path
-
     from ..machine.resolved import Machine
     from ..machine.startup import Startup
 
@@ -80,17 +78,6 @@ _KINDS = {
     "sda_mds": "a channel list",
     "default_sda_mds": "the default channel list",
 }
-
-
-def _unreadable(path: Path) -> str | None:
-    """Why an existing list cannot be read as a list, or None when it can."""
-    try:
-        decode(read_list(path))
-    except OSError as exc:
-        return str(exc) if exc.errno is None else reason(exc)
-    except UnreadableInput as exc:
-        return str(exc)
-    return None
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
@@ -123,7 +110,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
                     f"(the CNC root is {startup.root_origin}); the CNC aborts the start-up when a list "
                     "is missing",
                 )
-            elif id(entry) in not_linted and (why := _unreadable(entry.path)) is not None:
+            elif id(entry) in not_linted and (why := unreadable(entry.path)) is not None:
                 severity, message = (
                     Severity.ERROR,
                     f"`{entry.key}` names `{entry.raw}`, which cannot be read as a list: {why}; the CNC aborts "
