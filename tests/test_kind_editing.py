@@ -19,25 +19,9 @@ from achslint.explanation import find_parameters, parameter_card, rules_checking
 from achslint.fmt import format_bytes
 
 from .conftest import FIXTURES, run_cli
+from .test_kind_rules import GOOD_LISTS  # the good list of every kind, linted clean there
 
 KINDS = FIXTURES / "kinds"
-
-# The good list of every kind (tests/test_kind_rules.py lints them clean), by kind id.
-GOOD_LISTS = {
-    "channel": "sda_mds1.lis",
-    "startup": "hochlauf.lis",
-    "tools": "werkz_d1.lis",
-    "zero_offsets": "nullp_d1.lis",
-    "clamp_offsets": "pzv_d1.lis",
-    "compensation": "achskw1.lis",
-    "manual": "hand_mds.lis",
-    "external_variables": "ext_var1.lis",
-    "realtime": "rtconf.lis",
-    "scene": "scene.lis",
-    "volumetric_compensation": "volcomp.lis",
-    "hardware": "hw_conf.lis",
-    "cmld": "ddl.lis",
-}
 
 
 # -- explain PARAM ---------------------------------------------------------------------------------------
