@@ -1,6 +1,7 @@
-"""What the cross-list machine rules (LIS512–LIS518) share: the channel lists a start-up list names, read
-once per machine with the default channel list underneath; the machine's axis lists by logical axis number;
-the entries a count (`zahl_mds`, `zahl_kw`) lets the CNC read; and a finding at a channel list's value."""
+"""What the cross-list machine rules (LIS512–LIS518) share: the machine's axis lists by logical axis number,
+whether every axis list was read, the counts and the entries they count (`zahl_mds`, `zahl_kw`), and a
+finding at a channel list's value. (The channel lists themselves come from `Machine.channel_lists`, read
+once per machine with the default channel list underneath.)"""
 
 from __future__ import annotations
 
@@ -11,8 +12,7 @@ from ..core.diagnostics import Diagnostic, Related, Severity
 from ..machine.startup import entry_index
 
 if TYPE_CHECKING:
-    from ..machine.channel import ChannelAxis, ChannelList
-    from ..machine.resolved import Machine
+    from ..machine.channel import ChannelAxis
     from ..machine.startup import Member, Startup
 
 # A count's entries (`zahl_mds` counts `achs_mds[i]`) and the parameter id of each, for messages.
@@ -20,14 +20,6 @@ COUNTED = {
     "zahl_mds": ("achs_mds", "P-STUP-00014", "P-STUP-00015"),
     "zahl_kw": ("achs_kw", "P-STUP-00016", "P-STUP-00017"),
 }
-
-
-def channel_lists(machine: Machine) -> list[tuple[Startup, ChannelList]]:
-    """Every channel list (`sda_mds[i]`) the machine's start-up list names that can be read, each file once,
-    with its start-up list (read once per machine: `Machine.channel_lists`). A missing or unreadable one is
-    LIS504's."""
-    startup = machine.startup
-    return [] if startup is None else [(startup, channel) for _, channel in machine.channel_lists()]
 
 
 def by_number(members: list[Member]) -> dict[int, Member]:

@@ -78,7 +78,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
-from ._crosslist import at_channel_axis, axis_words, by_number, channel_lists, every_axis_list_read
+from ._crosslist import at_channel_axis, axis_words, by_number, every_axis_list_read
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -103,9 +103,10 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     members = machine.members
     numbers = by_number(members)
     known = sorted(numbers)
-    for startup, channel in channel_lists(machine):
-        if not every_axis_list_read(startup, members):
-            continue
+    startup = machine.startup
+    if startup is None or not every_axis_list_read(startup, members):
+        return  # a list not read: its logical axis number is not known
+    for _, channel in machine.channel_lists():
         for axis in channel.axes:
             if axis.logical_number in numbers:
                 continue

@@ -78,7 +78,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
-from ._crosslist import at_channel_axis, at_member, axis_words, by_number, channel_lists
+from ._crosslist import at_channel_axis, at_member, axis_words, by_number
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -106,7 +106,7 @@ def _written(member: Member) -> str:
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     members = machine.members
     numbers = by_number(members)
-    for _, channel in channel_lists(machine):
+    for _, channel in machine.channel_lists():
         # a number the channel gives to a path axis and to a spindle is LIS701's: one of the two slots is
         # wrong, and changing the axis list's type (this rule's advice) would only move the fault
         both = {a.logical_number for a in channel.axes if a.spindle} & {

@@ -73,7 +73,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
-from ._crosslist import at_channel_axis, at_member, axis_words, by_number, channel_lists
+from ._crosslist import at_channel_axis, at_member, axis_words, by_number
 from .lis507_gantry_master_chain import coupling_faults
 
 if TYPE_CHECKING:
@@ -97,7 +97,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
         if isinstance(master := summary.get("gantry_ax_nr"), int) and master > 0
     }
     tangled = set(coupling_faults(master_of))
-    for _, channel in channel_lists(machine):
+    for _, channel in machine.channel_lists():
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes) if not axis.spindle}
         for axis in channel.axes:
             member = numbers.get(axis.logical_number)

@@ -93,7 +93,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ._crosslist import at_member, by_number, channel_lists
+from ._crosslist import at_member, by_number
 from .lis507_gantry_master_chain import coupling_faults
 
 if TYPE_CHECKING:
@@ -162,7 +162,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     tangled = set(
         coupling_faults({number: master for number in numbers if (master := _master_of(numbers[number]))})
     )
-    for _, channel in channel_lists(machine):
+    for _, channel in machine.channel_lists():
         names = {axis.logical_number: axis.name for axis in reversed(channel.axes)}
         master_of: dict[int, int] = {}  # by the channel's pairs so far
         for pair in channel.pairs:
