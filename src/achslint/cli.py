@@ -677,7 +677,7 @@ def explain(
     """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
 
     from .core.files import not_a_list_file
-    from .explanation import explain_list, parameter_card
+    from .explanation import default_underneath, explain_list, parameter_card
     from .linting.discovery import is_startup
     from .output import explain as shown
 
@@ -692,7 +692,7 @@ def explain(
     elif program is not None:
         _fail("--program goes with a start-up list (hochlauf.lis)")
     elif problem is None or problem not in NOT_A_FILE:
-        defaults, under = _loaded_under(path)
+        defaults, under = default_underneath(path)
         axis_report = explain_list(_one_list(path, target), target, gear, defaults, under)
         shown.LIST[output_format.value](axis_report, screen)
     else:
@@ -787,13 +787,6 @@ def _one_list(path: Path, name: str) -> bytes:
         _fail(str(exc))
 
 
-def _loaded_under(path: Path) -> tuple[bytes | None, str | None]:
-    """The default axis list the CNC loads under an axis list, and where it comes from in words."""
-    from .explanation import default_underneath
-
-    return default_underneath(path)
-
-
 def _pair(text: str | None, name: str) -> tuple[float, float] | None:
     if text is None:
         return None
@@ -885,6 +878,7 @@ def dry_run_command(
     from .core.decode import UnreadableInput
     from .core.files import reason
     from .dryrun import DryRunRefused, dry_run, scenario_input, sweep
+    from .explanation import default_underneath
     from .homing.scenario import ScenarioError
     from .output import OutputFailed
     from .output import dryrun as shown
@@ -910,7 +904,7 @@ def dry_run_command(
         _fail(f"cannot read {scenario}: {reason(exc)}")
     try:
         data = _one_list(Path(file), file)
-        defaults, under = _loaded_under(Path(file))
+        defaults, under = default_underneath(Path(file))
         run = dry_run(data, file, given, gear=gear, cycle_time_us=cycle_time_us, defaults=defaults)
         if under is not None:
             run.trace.warn(None, f"read as the CNC loads it: {under}")

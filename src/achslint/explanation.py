@@ -254,7 +254,7 @@ def default_underneath(path: Path) -> tuple[bytes | None, str | None]:
     from .linting.discovery import Finder
 
     try:
-        found = Finder(lenient=True).loaded_under(path)
+        found = Finder(lenient=True).default_list_of(path)
     except (OSError, ValueError, ConfigError):
         return None, None
     if found is None:

@@ -310,7 +310,7 @@ class Finder:
             for f in machine.files
         ]
 
-    def loaded_under(self, path: Path) -> tuple[Path, Path] | None:
+    def default_list_of(self, path: Path) -> tuple[Path, Path] | None:
         """(default axis list, start-up list) when a start-up list that names an axis list (found as for lint:
         named by the run or beside the list) loads a default axis list under it, as the CNC does; the first
         such start-up list when several name the list. None for a list no start-up list names."""
