@@ -199,6 +199,18 @@ def test_a_compensation_list_beyond_zahl_kw_is_left_to_lis516(tmp_path: Path) ->
     assert [row[:3] for row in lint_machine(path, "LIS516,LIS519,LIS520")] == [("hochlauf.lis", 7, "LIS516")]
 
 
+def test_a_count_out_of_range_still_leaves_the_entries_above_it_to_lis516(tmp_path: Path) -> None:
+    # zahl_kw 40 is above its range (1 ... 32, P-STUP-00016: LIS202), yet LIS516 and LIS517 read it as written;
+    # LIS519 must read it so too, or it would judge the assignment of a list LIS516 calls never loaded.
+    startup = "zahl_kw -1\nachs_kw[0] ./achskw1.lis\nachs_kw_log_ax_nr[0] 7\n"
+    path = machine(tmp_path, startup, achskw1=COMPENSATION.format(head="kopf.achs_nr 7\n"))
+    assert [row[2:3] for row in lint_machine(path, "LIS516,LIS519,LIS520")] == [("LIS516",)]
+    (tmp_path / "hochlauf.lis").write_text(
+        (tmp_path / "hochlauf.lis").read_text().replace("zahl_kw -1", "zahl_kw 40")
+    )
+    assert [row[2] for row in lint_machine(path, "LIS202,LIS516,LIS519")] == ["LIS202", "LIS519"]
+
+
 def test_an_axis_list_that_cannot_be_read_leaves_the_axis_numbers_unknown(tmp_path: Path) -> None:
     startup = "zahl_kw 1\nachs_kw[0] ./achskw1.lis\nachs_kw_log_ax_nr[0] 2\n"
     path = machine(tmp_path, startup, achskw1=COMPENSATION.format(head="kopf.achs_nr 2\n"))

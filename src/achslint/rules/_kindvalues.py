@@ -214,12 +214,10 @@ def compensation_assignments(machine: Machine) -> list[Assignment]:
     if startup is None or settings is None:
         return []
     values, unread = written(settings), unusable(settings)
-    count = whole(values.get("zahl_kw"))
     found = []
-    for entry in startup.compensations:
-        index = entry_index(entry)
-        if count is not None and index >= count:
-            continue  # never loaded: LIS516
-        key = f"achs_kw_log_ax_nr[{index}]"
+    # The count as written decides, as for LIS504, LIS516 and LIS517: the entries at or above it are never
+    # loaded (LIS516 says so), even when the count itself is out of range (the start-up list's own finding).
+    for entry in startup.loaded_compensations():
+        key = f"achs_kw_log_ax_nr[{entry_index(entry)}]"
         found.append(Assignment(entry, key, values.get(key), key in unread))
     return found
