@@ -19,7 +19,7 @@ from .fmt import FormatOutcome, FormatRequest, run_format
 from .homing.scenario import ScenarioError
 from .linting.config import ConfigError, Overrides, forget_cached
 from .linting.discovery import is_startup
-from .linting.linter import FileSettings, findings, lint_file
+from .linting.linter import FileSettings, axis_list_only, findings, lint_file
 from .linting.run import LintOutcome, LintRequest, LintRun, OutputIsInput, run_lint
 from .machine.resolved import MachineError
 
@@ -198,11 +198,14 @@ def dumps(model: ListBase) -> str:
 
 
 def explain(source: Source, *, gear: int = 0, defaults: Source | None = None) -> ListReport:
-    """What `achslint explain FILE --format json` prints: strategy, phases, corrections, homing parameters."""
+    """What `achslint explain FILE --format json` prints: strategy, phases, corrections, homing parameters.
+    A list of another kind (a channel or tool list) raises `UnreadableInput`, as the command refuses it."""
     from .explanation import explain_list
 
     data, name = _as_bytes(source)
-    return explain_list(data, name, gear, _as_bytes(defaults)[0] if defaults is not None else None)
+    return explain_list(
+        axis_list_only(data, name), name, gear, _as_bytes(defaults)[0] if defaults is not None else None
+    )
 
 
 def dry_run(source: Source, scenario: dict[str, Any] | None = None, *, gear: int = 0) -> DryRun:
@@ -212,7 +215,9 @@ def dry_run(source: Source, scenario: dict[str, Any] | None = None, *, gear: int
     from .homing.scenario import parse_input
 
     data, name = _as_bytes(source)
-    return simulate(data, name, parse_input(dict(scenario or {}), "scenario"), gear=gear)
+    return simulate(
+        axis_list_only(data, name), name, parse_input(dict(scenario or {}), "scenario"), gear=gear
+    )
 
 
 def format_text(text: str) -> str:

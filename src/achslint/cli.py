@@ -776,9 +776,10 @@ def _one_list(path: Path, name: str) -> bytes:
     from .axis.source import read_one_list
     from .core.decode import UnreadableInput
     from .core.files import Refused, reason
+    from .linting.linter import axis_list_only
 
     try:
-        return read_one_list(path, name)
+        return axis_list_only(read_one_list(path, name), name)
     except Refused as exc:
         _fail(str(exc))
     except OSError as exc:

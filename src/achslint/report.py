@@ -27,6 +27,7 @@ from .dryrun import DryRun, DryRunRefused
 from .explanation import ListReport, default_underneath, explain_list
 from .homing.scenario import ScenarioError
 from .linting.config import ConfigError
+from .linting.linter import axis_list_only
 from .linting.run import LintOutcome, LintRequest, run_lint
 from .machine.resolved import MachineError
 from .machinediff import MachineDiffError, MachineDiffReport, startup_in
@@ -245,7 +246,7 @@ def _axis_report(request: ReportRequest) -> CommissioningReport:
         raise ReportFailed(
             f"--program goes with a start-up list (hochlauf.lis), not with the axis list {path}"
         )
-    data = read_one_list(path, str(path))
+    data = axis_list_only(read_one_list(path, str(path)), str(path))
     defaults, under = default_underneath(path)
     explained = explain_list(data, str(path), request.gear, defaults, under)
     axis = explained["axis"]
@@ -285,6 +286,6 @@ def _compare(report: CommissioningReport, request: ReportRequest, startup: Path 
         return
     from .axis.source import read_one_list
 
-    ours = read_one_list(request.target, str(request.target))
-    theirs = read_one_list(request.against, str(request.against))
+    ours = axis_list_only(read_one_list(request.target, str(request.target)), str(request.target))
+    theirs = axis_list_only(read_one_list(request.against, str(request.against)), str(request.against))
     report.list_diff = diff_lists(theirs, str(request.against), ours, str(request.target))

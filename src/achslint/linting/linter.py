@@ -165,6 +165,30 @@ def list_kind(file: ListFile, name: str, given: str | None = None) -> Kind:
     return AXIS
 
 
+class NotAnAxisList(UnreadableInput):
+    """A list of another kind given to a command that reads one axis list."""
+
+
+def axis_list_only(data: bytes, name: str) -> bytes:
+    """`data` when it is an axis list (or a default axis list), for the commands that read one axis list
+    (explain, dry-run, diff, report; the API's explain and dry_run). A list of another kind, told as lint
+    tells it, raises `NotAnAxisList`: read as an axis list, a channel or tool list would be an invented axis
+    of catalogue defaults, explained and homed as if it existed."""
+    kind = list_kind(parse_bytes(data, name), name)
+    if kind.id in (AXIS.id, DEFAULT_AXIS.id):
+        return data
+    hint = (
+        "; a channel's axes are shown by explaining the start-up list that loads it (with --channel)"
+        if kind.id in ("channel", "default_channel")
+        else ""
+    )
+    article = "an" if kind.name[0] in "aeiou" else "a"
+    raise NotAnAxisList(
+        f"{name} is {article} {kind.name}, not an axis list: this command reads one axis list. "
+        f"`achslint lint` checks it against the parameters of its kind{hint}"
+    )
+
+
 AXIS_PROBE = 64  # lines looked at before the other kinds' catalogues are asked
 EVIDENCE = 3  # parameter ids in comments, or paths of another kind (at least half the list), that decide
 

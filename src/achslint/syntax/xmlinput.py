@@ -445,6 +445,12 @@ def _axis_lists(collected: _Collector, name: str) -> list[EmbeddedList]:
             embedded.text = "\n".join(lines) + "\n"
             found.append(embedded)
     if not found:
+        if collected.others:  # a TwinCAT channel item: its lists are of other kinds
+            held = ", ".join(dict.fromkeys(f"<{embedded.label}>" for embedded in collected.others))
+            raise NoAxisList(
+                f"{name} is a TwinCAT channel item (<IsgChannelDef> with {held}), not an axis item: "
+                "it contains no axis list"
+            )
         raise NoAxisList(f"{name} contains no axis list (no <AchsMds> element and no <AX_MDS> list)")
     return found
 
