@@ -119,6 +119,16 @@ def test_lis512_waits_for_lis504_when_an_axis_list_of_the_machine_is_missing(tmp
     assert "(its axis lists have 1, 3)" in found[0]["message"] and "error 3210" in found[0]["message"]
 
 
+def test_lis512_is_not_silenced_by_an_entry_beyond_zahl_mds_that_names_a_missing_list(tmp_path):
+    # achs_mds[2] lies beyond zahl_mds 2 (LIS516): the CNC never reads it, so its missing file leaves no
+    # axis number unknown, and the channel's axis 3 still has no axis list.
+    channel = "gruppe[0].achse[0].bezeichnung X\ngruppe[0].achse[0].log_achs_nr 1\n"
+    channel += "gruppe[0].achse[1].bezeichnung Z\ngruppe[0].achse[1].log_achs_nr 3\nEnde\n"
+    text = TWO_AXES.replace("sda_mds", "achs_mds[2] ./achsmds3.lis\nsda_mds", 1)
+    found = lint(machine(tmp_path, text, channel, {1: "X", 2: "Y"}), "LIS512,LIS516")
+    assert where(found) == [("hochlauf.lis", 4, "LIS516"), ("sda_mds1.lis", 3, "LIS512")]
+
+
 def test_lis513_names_the_default_type_of_a_spindle_slot_s_axis_list(tmp_path):
     channel = "gruppe[0].achse[0].bezeichnung X\ngruppe[0].achse[0].log_achs_nr 1\n"
     channel += "spindel[0].bezeichnung S\nspindel[0].log_achs_nr 2\nEnde\n"

@@ -36,10 +36,13 @@ index = entry_index  # the index of an entry like `achs_mds[3]` (3)
 
 
 def every_axis_list_read(startup: Startup, members: list[Member]) -> bool:
-    """Whether each axis list the start-up list names was read as a member of the machine: when one is
-    missing or unreadable (LIS504, or that list's own error), its logical axis number is not known."""
+    """Whether each axis list the CNC loads (the entries below `zahl_mds`) was read as a member of the
+    machine: when one is missing or unreadable (LIS504, or that list's own error), its logical axis number is
+    not known. An entry beyond the count is never read (LIS516), so it leaves no number unknown."""
     read = {os.path.realpath(name) for name, _ in members}
-    return all(entry.path is not None and os.path.realpath(entry.path) in read for entry in startup.axes)
+    return all(
+        entry.path is not None and os.path.realpath(entry.path) in read for entry in startup.loaded_axes()
+    )
 
 
 def at_channel_axis(
