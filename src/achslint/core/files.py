@@ -32,7 +32,9 @@ import errno
 import functools
 import os
 import stat
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -74,16 +76,44 @@ def shown_path(path: Path) -> str:
 
 def real_path(path: Path) -> Path:
     """`path` with every symbolic link resolved; as far as possible when a link loops or is broken."""
+    resolved = _RESOLVED.get()
+    if resolved is not None and path in resolved:
+        return resolved[path]
     try:
-        return Path(os.path.realpath(path))
+        real = Path(os.path.realpath(path))
     except (OSError, RuntimeError, ValueError):
-        return Path(os.path.abspath(path))
+        real = Path(os.path.abspath(path))
+    if resolved is not None:
+        resolved[path] = real
+    return real
+
+
+# The links resolved while `links_held` is in force, by the path asked about.
+_RESOLVED: ContextVar[dict[Path, Path] | None] = ContextVar("resolved", default=None)
+
+
+@contextmanager
+def links_held() -> Iterator[None]:
+    """Resolve each path's links once while this lasts: for the discovery of one run, which asks the same
+    few hundred paths thousands of times whether they lie inside a folder (one `lstat` per part each time)
+    and for which the files do not move under it."""
+    token = _RESOLVED.set({})
+    try:
+        yield
+    finally:
+        _RESOLVED.reset(token)
 
 
 def inside(path: Path, root: Path) -> bool:
     """Whether `path`, links resolved, is `root` or lies below it."""
-    target, base = real_path(path), real_path(root)
-    return target == base or base in target.parents
+    return _at_or_below(real_path(path), real_path(root))
+
+
+def _at_or_below(target: Path, root: Path) -> bool:
+    """`target == root or root in target.parents` for two resolved paths, compared as strings (building the
+    parents as paths cost discovery a third of its time)."""
+    one, other = os.path.normcase(target), os.path.normcase(root)
+    return one == other or one.startswith(other if other.endswith(os.sep) else other + os.sep)
 
 
 def same_file(first: Path, second: Path) -> bool:
@@ -143,7 +173,7 @@ def not_a_list_file(path: Path, *, limit: int | None = None, what: str = "a list
     if info.st_size > limit:
         return f"a file larger than the {_megabytes(limit)} achslint reads for {what}"
     target = real_path(path)
-    if any(target == root or root in target.parents for root in _kernel_file_systems()):
+    if any(_at_or_below(target, root) for root in _kernel_file_systems()):
         return f"a file of the operating system (/proc, /sys, /dev), not {'an axis list' if what == 'a list' else what}"
     return None
 
@@ -223,7 +253,7 @@ class Scope:
 
     def contains(self, path: Path) -> bool:
         target = real_path(path)
-        return any(target == root or root in target.parents for root in self.roots)
+        return any(_at_or_below(target, root) for root in self.roots)
 
 
 def write_atomically(path: Path, data: bytes, expected: bytes | None = None) -> None:

@@ -571,6 +571,12 @@ def discover(start: Path) -> ResolvedConfig:
         folder, is_folder = Path(os.path.abspath(start)), False
     if not is_folder:
         folder = folder.parent
+    return _nearest(folder)
+
+
+@lru_cache(maxsize=256)
+def _nearest(folder: Path) -> ResolvedConfig:
+    """The configuration of the files of a folder (asked for each file of a folder lint)."""
     for candidate in (folder, *folder.parents):
         found = _config_in(candidate)
         if found is not None:
@@ -625,3 +631,4 @@ def forget_cached() -> None:
     deleted: the language server calls this when the editor reports such a change)."""
     _config_in.cache_clear()
     _load_cached.cache_clear()
+    _nearest.cache_clear()

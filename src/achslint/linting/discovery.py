@@ -38,6 +38,7 @@ from ..core.files import (
     inside,
     is_folder,
     is_xml,
+    links_held,
     not_a_list_file,
     read_list,
     real_path,
@@ -130,6 +131,10 @@ def _identity(path: Path) -> object:
         return os.path.abspath(path)
 
 
+# By (device, inode): the start-up lists naming a file, each with the kinds it names the file as.
+_Named = dict[tuple[int, int], list[tuple[Startup, list[str]]]]
+
+
 class _LookedAt:
     """What `Finder.find` looks up once per run: the (device, inode) of each path it compares (None: it
     cannot be looked at), the files each start-up list names, and each path's configuration. A folder lint compares every list with
@@ -142,6 +147,13 @@ class _LookedAt:
         # by the id of the start-up list: the list (kept, so that its id stays its own) and `_kinds_named`
         self.named: dict[int, tuple[Startup, dict[tuple[int, int], list[str]]]] = {}
         self.configs: dict[Path, ResolvedConfig] = {}  # the configuration of each path (`Finder.config_for`)
+        # by the id of the start-up list: the list and its absolute path (`_unique` asks it for every list)
+        self.where: dict[int, tuple[Startup, str]] = {}
+        # `Finder._naming` by folder and the sequence of start-up lists known (kept, so that its id stays its
+        # own; `find` passes one for all its lists)
+        self.naming: dict[tuple[str, int, int], tuple[Sequence[Startup], tuple[list[Startup], _Named]]] = {}
+        # the lists of a folder by its absolute path (`_folder_machine`, asked for each XML file in it)
+        self.folders: dict[str, list[Path]] = {}
 
 
 _LOOKED_AT: ContextVar[_LookedAt | None] = ContextVar("looked_at", default=None)
@@ -152,7 +164,8 @@ def _looking_once(find: Callable[[Finder, list[str]], Discovery]) -> Callable[[F
     def run(finder: Finder, paths: list[str]) -> Discovery:
         token = _LOOKED_AT.set(_LookedAt())
         try:
-            return find(finder, paths)
+            with links_held():
+                return find(finder, paths)
         finally:
             _LOOKED_AT.reset(token)
 
@@ -251,9 +264,9 @@ class Finder:
             return [Machine.of(startup)]
         if is_list_update(path):
             return []  # it changes one list; it is no axis of its own
-        startups = _unique([*known, *self.startups_around(path.parent)])
+        startups, index = self._naming(path.parent, known)
         identity = _file_id(path)
-        naming = [s for s in startups if identity is not None and _loads(_kinds_named(s).get(identity, ()))]
+        naming = [s for s, kinds in index.get(identity, ()) if _loads(kinds)] if identity is not None else []
         declared = [m for m in self._declared(path) if any(_names(f, path) for f in m.files)]
         if naming or declared:
             return [*(Machine.of(startup) for startup in naming), *declared]
@@ -262,6 +275,24 @@ class Finder:
             if any(same_file(f, path) for f in folder.files):
                 return [folder]
         return []
+
+    def _naming(self, folder: Path, known: Sequence[Startup]) -> tuple[list[Startup], _Named]:
+        """The start-up lists a list in `folder` may belong to (`known` and those around the folder, each
+        once), and by (device, inode) the files they name, each with the start-up lists naming it and the
+        kinds each names it as, in the start-up lists' order. Made once per folder in a run: a folder lint
+        asks it for every list, of every start-up list of the run."""
+        looked = _LOOKED_AT.get()
+        key = (os.path.abspath(folder), id(known), len(known))
+        if looked is not None and key in looked.naming and looked.naming[key][0] is known:
+            return looked.naming[key][1]
+        startups = _unique([*known, *self.startups_around(folder)])
+        index: _Named = {}
+        for startup in startups:
+            for identity, kinds in _kinds_named(startup).items():
+                index.setdefault(identity, []).append((startup, kinds))
+        if looked is not None:
+            looked.naming[key] = (known, (startups, index))
+        return startups, index
 
     def _declared(self, path: Path) -> list[Machine]:
         """The machines the `[[machine]]` tables of a list's configuration declare."""
@@ -286,7 +317,14 @@ class Finder:
 
     def _folder_machine(self, folder: Path, startups: list[Startup]) -> Machine:
         """The axis XML files of a folder that no start-up list names: the exports of one TwinCAT project."""
-        lists, _ = self._walk(folder, Scope.of([str(folder)]), Discovery(), recursive=False)
+        looked = _LOOKED_AT.get()
+        key = os.path.abspath(folder)
+        if looked is not None and key in looked.folders:
+            lists = looked.folders[key]
+        else:
+            lists, _ = self._walk(folder, Scope.of([str(folder)]), Discovery(), recursive=False)
+            if looked is not None:
+                looked.folders[key] = lists
         members = [
             path
             for path in lists
@@ -384,8 +422,8 @@ class Finder:
         kinds: list[str] = []
         identity = _file_id(path)
         if identity is not None:
-            for startup in _unique([*known, *self.startups_around(path.parent)]):
-                kinds += _kinds_named(startup).get(identity, ())
+            for _, named in self._naming(path.parent, known)[1].get(identity, ()):
+                kinds += named
         # Start-up lists that disagree (an old variant naming an axis list as a channel list): an axis list
         # of a machine stays one, so no axis rule is switched off by another file's entry.
         for preferred in ("axis", "default_axis"):
@@ -520,8 +558,9 @@ class Finder:
                     found.errors.append(f"cannot read {path}: {problem}")
                 else:
                     (startups if startup else lists).append(path)
-        if self.respect_gitignore:
-            lists, startups = _not_ignored_by_git(folder, lists), _not_ignored_by_git(folder, startups)
+        if self.respect_gitignore:  # one question to git for both
+            kept = set(_not_ignored_by_git(folder, [*lists, *startups]))
+            lists, startups = [p for p in lists if p in kept], [p for p in startups if p in kept]
         return lists, startups
 
     def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
@@ -677,11 +716,23 @@ def _unique(startups: list[Startup]) -> list[Startup]:
     seen: set[str] = set()
     out = []
     for startup in startups:
-        key = os.path.abspath(startup.path)
+        key = _where(startup)
         if key not in seen:
             seen.add(key)
             out.append(startup)
     return out
+
+
+def _where(startup: Startup) -> str:
+    """The absolute path of a start-up list, found once per run."""
+    looked = _LOOKED_AT.get()
+    known = looked.where.get(id(startup)) if looked is not None else None
+    if known is not None and known[0] is startup:
+        return known[1]
+    where = os.path.abspath(startup.path)
+    if looked is not None:
+        looked.where[id(startup)] = (startup, where)
+    return where
 
 
 def _axis_xml(path: Path, found: Discovery) -> bool:

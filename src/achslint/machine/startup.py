@@ -105,7 +105,11 @@ def entry_index(entry: StartupEntry) -> int:
 
 
 def is_startup_list(path: Path) -> bool:
-    return any(fnmatch.fnmatch(path.name.lower(), pattern) for pattern in STARTUP_NAMES)
+    return _STARTUP_NAME.match(path.name.lower()) is not None
+
+
+# STARTUP_NAMES as one pattern: discovery asks this of every file beside a linted list and one folder up.
+_STARTUP_NAME = re.compile("|".join(fnmatch.translate(pattern) for pattern in STARTUP_NAMES))
 
 
 def is_default_list(path: Path) -> bool:
