@@ -564,10 +564,12 @@ def discover(start: Path) -> ResolvedConfig:
     Never fails on the path itself: a link loop, a name too long for the file system or a
     folder we may not read only stop the search where they are.
     """
+    from ..core.files import real_path
+
     try:
-        folder = Path(os.path.realpath(start))
+        folder = real_path(start)  # resolved once per path while discovery holds the links
         is_folder = folder.is_dir()
-    except (OSError, RuntimeError, ValueError):
+    except (OSError, ValueError):
         folder, is_folder = Path(os.path.abspath(start)), False
     if not is_folder:
         folder = folder.parent
