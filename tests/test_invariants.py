@@ -11,7 +11,7 @@ from achslint.axis.resolved import resolve_bytes
 from achslint.dryrun import DryRunRefused, dry_run, prepare
 from achslint.explanation import explain_list
 from achslint.homing import STRATEGY_MODULES, strategies
-from achslint.linting.linter import FileSettings, lint_file
+from achslint.linting.linter import FileSettings, lint_file, list_kind
 from achslint.rules import registry
 from achslint.rules.context import Context
 from achslint.syntax.parser import parse_bytes
@@ -108,7 +108,10 @@ def assert_consistent(data: bytes) -> str:
     for d in diagnostics:
         if d.code == "LIS401" and d.parameter in rows:
             assert rows[d.parameter]["effective"] is False, d.parameter
-    # The model and the rules see the same value for every parameter the list sets.
+    # The model and the rules see the same value for every parameter the list sets (an axis list's model:
+    # `load` refuses a list of another kind, whose values its own model holds).
+    if list_kind(parse_bytes(data, "t.lis"), "t.lis").id not in ("axis", "default_axis"):
+        return ctx.strategy.id
     axis = resolve_bytes(data, "t.lis")
     model = achslint.load(data)
     for path in axis.set_paths():

@@ -68,3 +68,43 @@ def test_a_twincat_channel_item_is_named_as_one() -> None:
     result = run_cli("explain", str(FIXTURES / "machines" / "twincat_export" / "Channel_1.xti"))
     assert result.returncode == 2 and result.stdout == ""
     assert "is a TwinCAT channel item (<IsgChannelDef> with <SdaMds>" in result.stderr
+
+
+PORTAL = FIXTURES / "machines" / "portal"
+
+
+def test_an_nc_program_is_refused_by_every_command_that_reads_one_axis_list(tmp_path: Path) -> None:
+    # The homing program read as an axis list was an axis of catalogue defaults, explained and homed.
+    program = str(PORTAL / "rfp.nc")
+    for args in (["explain", program], ["dry-run", program], ["diff", program, program]):
+        result = run_cli(*args)
+        assert result.returncode == 2 and result.stdout == "", args
+        assert "rfp.nc is an NC program, not an axis list" in result.stderr
+        assert "--program rfp.nc" in result.stderr
+    report = run_cli("report", program, "-o", str(tmp_path / "report.html"))
+    assert report.returncode == 2 and not (tmp_path / "report.html").exists()
+    for function in (achslint.explain, achslint.dry_run, achslint.load):
+        with pytest.raises(UnreadableInput, match="is an NC program"):
+            function(program)
+
+
+def test_a_text_that_names_no_known_parameter_is_no_axis_list(tmp_path: Path) -> None:
+    # The same program under a list's name: none of its names is a parameter of any list kind.
+    renamed = tmp_path / "achsmds1.lis"
+    renamed.write_bytes((PORTAL / "rfp.nc").read_bytes())
+    result = run_cli("explain", str(renamed))
+    assert result.returncode == 2 and "none of its assignments names a parameter" in result.stderr
+    with pytest.raises(UnreadableInput, match="none of its assignments"):
+        achslint.dry_run(renamed.read_bytes())
+    # An empty list is still an axis of defaults, and a list with a typo beside a known name is read.
+    assert achslint.loads("Ende\n").kopf.achs_nr == 1
+    assert achslint.loads("kopf.achs_nr 4\nkenngr.made_up 1\nEnde\n").kopf.achs_nr == 4
+
+
+@pytest.mark.parametrize("name", ["sda_mds1.lis", "hochlauf.lis"])
+def test_load_and_loads_refuse_a_list_of_another_kind(name: str) -> None:
+    path = KINDS / name
+    with pytest.raises(UnreadableInput, match="not an axis list"):
+        achslint.load(path)
+    with pytest.raises(UnreadableInput, match="not an axis list"):
+        achslint.loads(path.read_text(encoding="latin-1"), filename=name)

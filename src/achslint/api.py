@@ -147,11 +147,13 @@ def load(source: Source, *, defaults: Source | None = None, strict: bool = False
 
     Lenient by default: the findings of `lint` are kept on the model (`model.findings`). With
     `strict=True` every error-level finding is raised as one pydantic `ValidationError`. A missing path
-    raises `FileNotFoundError`.
+    raises `FileNotFoundError`; a list of another kind (a channel or start-up list: `model.build_list_model`)
+    or an NC program raises `UnreadableInput`, as `explain` does.
     """
     from .model import build_model, rule_errors
 
     data, name = _as_bytes(source)
+    data = axis_list_only(data, name)
     default_data = _as_bytes(defaults) if defaults is not None else None
     return _finish(build_model(data, name, default_data), data, name, default_data, strict, rule_errors)
 
@@ -179,7 +181,7 @@ def loads(
     """The typed model of a list's text (see `load`). Bytes raise TypeError: `load` takes them."""
     from .model import build_model, rule_errors
 
-    data = text_bytes(_text(text, "loads", "; load() takes a path or bytes"))
+    data = axis_list_only(text_bytes(_text(text, "loads", "; load() takes a path or bytes")), filename)
     if defaults is not None:
         defaults = _text(defaults, "loads", " as defaults; load() takes a path or bytes")
     default_data = (text_bytes(defaults), "<defaults>") if defaults is not None else None

@@ -27,7 +27,7 @@ from ..machine.resolved import Machine
 from ..rules import Scope
 from ..rules.context import Context
 from ..syntax.parser import ASSIGNMENT, ListFile, parse_bytes
-from .config import Overrides, ResolvedConfig, Settings
+from .config import PROGRAM_SUFFIXES, Overrides, ResolvedConfig, Settings
 from .engine import Policy, run
 from .suppression import Suppressions
 
@@ -173,9 +173,22 @@ def axis_list_only(data: bytes, name: str) -> bytes:
     """`data` when it is an axis list (or a default axis list), for the commands that read one axis list
     (explain, dry-run, diff, report; the API's explain and dry_run). A list of another kind, told as lint
     tells it, raises `NotAnAxisList`: read as an axis list, a channel or tool list would be an invented axis
-    of catalogue defaults, explained and homed as if it existed."""
-    kind = list_kind(parse_bytes(data, name), name)
+    of catalogue defaults, explained and homed as if it existed. So does an NC program (by its name, as
+    `achslint lint` tells one) and a text none of whose assignments names a parameter of any list kind."""
+    if name.lower().endswith(PROGRAM_SUFFIXES):
+        raise NotAnAxisList(
+            f"{name} is an NC program, not an axis list: a homing program runs on a machine; give its "
+            f"start-up list: `achslint dry-run hochlauf.lis --program {Path(name).name}` (or `achslint lint "
+            f"{Path(name).name} --machine hochlauf.lis`)"
+        )
+    file = parse_bytes(data, name)
+    kind = list_kind(file, name)
     if kind.id in (AXIS.id, DEFAULT_AXIS.id):
+        if _names_nothing_known(file):
+            raise NotAnAxisList(
+                f"{name}: none of its assignments names a parameter of an axis list (or of any other list "
+                "kind), so it is not an axis list; `achslint lint` shows each unknown name"
+            )
         return data
     hint = (
         "; a channel's axes are shown by explaining the start-up list that loads it (with --channel)"
@@ -187,6 +200,13 @@ def axis_list_only(data: bytes, name: str) -> bytes:
         f"{name} is {article} {kind.name}, not an axis list: this command reads one axis list. "
         f"`achslint lint` checks it against the parameters of its kind{hint}"
     )
+
+
+def _names_nothing_known(file: ListFile) -> bool:
+    """Whether the list assigns something but no name of it is in any catalogue (an NC program, a note): read
+    as an axis list it would be every catalogue default under a file name."""
+    guess = kind_of(file)
+    return guess.unknown > 0 and not guess.paths and not guess.ids
 
 
 AXIS_PROBE = 64  # lines looked at before the other kinds' catalogues are asked
