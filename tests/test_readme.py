@@ -9,8 +9,9 @@ How a document's code is read:
   error). The output must match line by line; `...` in a line stands for any text, and a line that is only
   `...` for any number of lines: a sample with `...` is abridged on purpose, one without must match whole.
 
-Each runs in a fresh folder holding the files the README names (`achsmds1.lis`, `machine/`,
-`listen/hochlauf.lis` ...), copied from the fixtures (`SANDBOX`), so a `--fix` or `fmt` changes copies.
+Each runs in a fresh folder holding the files it names of those the documents use (`achsmds1.lis`,
+`machine/`, `listen/hochlauf.lis` ...), copied from the fixtures (`SANDBOX`), so a `--fix` or `fmt` changes
+copies.
 `achslint` commands run in this process (the entry point, as the console script calls it); an exit code
 of 2 (a usage error, a missing file) fails the test, 0 and 1 are what lint, diff and dry-run say about
 the example. Commands that need the network, an editor or a long run are skipped, each with its reason
@@ -111,18 +112,33 @@ def parameters() -> list[object]:
     ]
 
 
-def sandbox(folder: Path) -> Path:
-    for name, source in SANDBOX.items():
-        target = folder / name
+def needed(text: str) -> list[str]:
+    """The files and folders of SANDBOX an example names (a path starting with the name: `machine/`, not
+    `machine.toml`, nor `listen` in `machine/listen/`): only those are copied (all of them for every
+    example were 2,300 copies a run). A file an example reaches without naming it would be missing, and
+    its command exit 2, which fails the test."""
+    return [
+        name
+        for name in [*SANDBOX, "scenario.toml"]
+        if re.search(rf"(?<![\w./-]){re.escape(name)}(?![\w.-])", text)
+    ]
+
+
+def sandbox(folder: Path, names: list[str]) -> Path:
+    for name in names:
+        if name == "scenario.toml":
+            continue
+        source, target = SANDBOX[name], folder / name
         target.parent.mkdir(parents=True, exist_ok=True)
         if source.is_dir():
             shutil.copytree(source, target)
         else:
             shutil.copyfile(source, target)
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    scenario = next(b.group(2) for b in FENCE.finditer(readme) if b.group(2).startswith(SCENARIO_BLOCK))
-    scenario = scenario.split("\n[drive]")[0]  # the [drive] table is for drive-controlled homing only
-    (folder / "scenario.toml").write_text(scenario, encoding="utf-8")
+    if "scenario.toml" in names:
+        readme = (ROOT / "README.md").read_text(encoding="utf-8")
+        scenario = next(b.group(2) for b in FENCE.finditer(readme) if b.group(2).startswith(SCENARIO_BLOCK))
+        scenario = scenario.split("\n[drive]")[0]  # the [drive] table is for drive-controlled homing only
+        (folder / "scenario.toml").write_text(scenario, encoding="utf-8")
     return folder
 
 
@@ -168,7 +184,7 @@ def test_readme_example(example: Example, tmp_path: Path, monkeypatch: pytest.Mo
     )
     if why is not None:
         pytest.skip(why)
-    folder = sandbox(tmp_path)
+    folder = sandbox(tmp_path, needed(example.text))
     if example.kind == "python":
         monkeypatch.chdir(folder)
         exec(compile(example.text, example.id, "exec"), {"__name__": "readme"})
@@ -197,6 +213,21 @@ def test_the_sample_matcher_can_fail():
     assert matches("a\n...\nd\n", "a\nb\nc\nd\n") and matches("x ... z\n", "x y z\n")
     assert not matches("a\nd\n", "a\nb\nd\n")  # without `...` the whole output is compared
     assert not matches("a ... z\n", "a y q\n") and not matches("a\n", "a\nb\n")
+
+
+def test_an_example_gets_the_files_it_names():
+    assert needed("achslint lint machine/listen/hochlauf.lis --fix") == ["machine"]
+    assert needed("achslint dry-run listen/hochlauf.lis --program rfp.nc --scenario machine.toml") == [
+        "listen",
+        "rfp.nc",
+        "machine.toml",
+    ]
+    assert needed("achslint diff achsmds1.lis achsmds1_new.lis") == ["achsmds1.lis", "achsmds1_new.lis"]
+    assert needed("achslint dry-run achsmds1.lis --scenario scenario.toml") == [
+        "achsmds1.lis",
+        "scenario.toml",
+    ]
+    assert needed("achslint rules") == []
 
 
 def test_the_sdist_holds_what_the_tests_read():
