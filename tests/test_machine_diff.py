@@ -342,7 +342,7 @@ def test_unreadable_input_is_one_line_naming_the_file(tmp_path: Path) -> None:
         ),
         (
             (str(two), str(a)),
-            f"achslint: {two} holds 2 start-up lists (hochlauf_coe.lis, hochlauf_soe.lis): name the one to compare",
+            f"achslint: {two} holds 2 start-up lists (hochlauf_coe.lis, hochlauf_soe.lis): name the one meant",
         ),
         (
             (str(a), str(a / "listen" / "achsmds1.lis")),

@@ -265,6 +265,19 @@ def test_the_command_writes_the_file_and_fails_cleanly(tmp_path):
     assert missing.returncode == 2 and "Traceback" not in missing.stderr and "nope" in missing.stderr
     program = run_cli("report", str(FIXTURES / "multi_rule.lis"), "--program", "rfp.nc", "-o", str(target))
     assert program.returncode == 2 and "--program goes with a start-up list" in program.stderr
+    # A folder of two machine variants: the report asks which, in its own words (not the diff's "compare").
+    two = tmp_path / "two"
+    two.mkdir()
+    for name in ("hochlauf_coe.lis", "hochlauf_soe.lis"):
+        shutil.copy(EXAMPLE / "listen" / "hochlauf.lis", two / name)
+    variants = run_cli("report", str(two), "-o", str(target))
+    assert variants.returncode == 2 and variants.stderr.count("\n") == 1
+    assert (
+        "holds 2 start-up lists (hochlauf_coe.lis, hochlauf_soe.lis): name the one meant" in variants.stderr
+    )
+    (tmp_path / "empty").mkdir()
+    empty = run_cli("report", str(tmp_path / "empty"), "-o", str(target))
+    assert "no start-up list" in empty.stderr and "compare" not in empty.stderr
 
 
 # --- Markdown -------------------------------------------------------------------------------------

@@ -130,14 +130,14 @@ def startup_in(path: Path) -> Path | None:
         if len(found) > 1:
             names = ", ".join(p.name for p in found)
             raise MachineDiffError(
-                f"{folder} holds {len(found)} start-up lists ({names}): name the one to compare"
+                f"{folder} holds {len(found)} start-up lists ({names}): name the one meant"
             )
         if found:
             return found[0]
     patterns = ", ".join(STARTUP_NAMES)
     raise MachineDiffError(
         f"{path}: no start-up list ({patterns}) in the folder or its {LISTS_FOLDER}/ folder; name the start-up "
-        "list to compare machines, or two axis lists to compare lists"
+        "list of the machine, or an axis list"
     )
 
 
