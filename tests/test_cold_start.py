@@ -272,3 +272,33 @@ def test_the_command_line_keeps_the_cache_and_a_calmer_collector(tmp_path: Path)
     assert shown.returncode == 0, shown.stderr
     assert int(shown.stdout) >= 10_000
     assert list((tmp_path / "achslint").glob("dataclass-code-*.marshal"))
+
+
+# -- what a lint loads ---------------------------------------------------------------------------------
+
+
+def _loaded_after(code: str) -> list[str]:
+    """What `code` prints in a fresh interpreter, then the achslint modules it holds at the end."""
+    probe = code + "\nimport sys\nprint(' '.join(m for m in sys.modules if m.startswith('achslint')))\n"
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    return done.stdout.split()
+
+
+def test_classifying_an_axis_loads_the_strategies_up_to_its_own() -> None:
+    """Classification takes the first strategy that matches; the ones after it are never imported."""
+    from achslint.homing.registry import STRATEGY_MODULES
+
+    axis_list = FIXTURES / "lists" / "achsmds4.lis"
+    loaded = _loaded_after(
+        "from achslint.axis.resolved import resolve_bytes\n"
+        "from achslint.homing.registry import classify\n"
+        f"data = open({str(axis_list)!r}, 'rb').read()\n"
+        "print(classify(resolve_bytes(data, 'x')).definition.id)\n"
+    )
+    chosen, modules = loaded[0], loaded[1:]
+    prefix = "achslint.homing.strategies."
+    strategies = [m.removeprefix(prefix) for m in modules if m.startswith(prefix) and "._" not in m]
+    position = STRATEGY_MODULES.index(chosen)
+    assert position < len(STRATEGY_MODULES) - 1  # a strategy in the middle: some are left out
+    assert strategies == list(STRATEGY_MODULES[: position + 1])

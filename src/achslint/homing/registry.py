@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import importlib
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -34,15 +35,27 @@ STRATEGY_MODULES = (
 )
 
 
+_LOADED: dict[str, StrategyDef] = {}
+
+
+def _definitions() -> Iterator[StrategyDef]:
+    """The strategies in classification order, each module imported when first reached: a lint classifies
+    its axis after a few of them, and need not load the others with their sequences (cold start)."""
+    for name in STRATEGY_MODULES:
+        definition = _LOADED.get(name)
+        if definition is None:
+            module = importlib.import_module(f"{__package__}.strategies.{name}")
+            definition = _LOADED.setdefault(name, module.STRATEGY)
+        yield definition
+
+
 @lru_cache(maxsize=1)
 def strategies() -> tuple[StrategyDef, ...]:
-    return tuple(
-        importlib.import_module(f"{__package__}.strategies.{name}").STRATEGY for name in STRATEGY_MODULES
-    )
+    return tuple(_definitions())
 
 
 def by_id(strategy_id: str) -> StrategyDef:
-    for definition in strategies():
+    for definition in _definitions():
         if definition.id == strategy_id:
             return definition
     raise KeyError(strategy_id)
@@ -55,7 +68,7 @@ def classify(axis: ResolvedAxis, gear: int = 0, *, commanded: bool = False) -> H
     `commanded=True` gives what a G74 that names the axis runs. The two differ only for an axis whose strategy
     is `power_up_only` (an absolute encoder): its position is valid at power-up, yet a G74 naming it still runs
     its homing type (P-AXIS-00299 remark), i.e. the next strategy that matches."""
-    for definition in strategies():
+    for definition in _definitions():
         if commanded and definition.power_up_only:
             continue
         if definition.matches(axis):
