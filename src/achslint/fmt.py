@@ -46,12 +46,15 @@ so the formatted file shows the same layout again.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence, Set
 from dataclasses import dataclass, field
-from typing import BinaryIO, Literal, NamedTuple
+from itertools import compress
+from operator import ne
+from typing import BinaryIO, Literal, NamedTuple, TypeVar
 
 from .core.decode import UnreadableInput, decode
 from .core.files import is_xml, read_list, reason, write_atomically
+from .core.pause import pause
 from .linting.config import KEEP, LEFT, RIGHT, FmtOptions
 from .linting.discovery import Finder
 from .linting.run import not_rewritten, write_error
@@ -62,6 +65,7 @@ NUMERIC_OR_REFERENCE = {syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE}
 BLANKS = " \t"
 TAB_WIDTH = 8
 MIN_BLOCK = 3  # consecutive value lines that make a block alignment of their own
+_Key = TypeVar("_Key")
 
 
 class Alignment(NamedTuple):
@@ -210,7 +214,7 @@ class _Row:
             self.aligned = Alignment(LEFT, start), Alignment(RIGHT, _advance(start, self.tail))
         return self.aligned
 
-    def fits(self, kept: set[Alignment]) -> bool:
+    def fits(self, kept: Set[Alignment]) -> bool:
         """Whether the value stands in one of the `kept` alignments (an indented line never does)."""
         return not self.indent and any(alignment in kept for alignment in self.alignments())
 
@@ -232,24 +236,49 @@ class _Row:
         return text.rstrip(BLANKS)
 
 
-def _rows(file: syntax.ListFile) -> list[_Row]:
-    return [
-        _Row(line, line.indent, line.sep, line.sep2)
-        for line in file.lines
-        if line.kind == syntax.ASSIGNMENT
+def _aligns(line: syntax.Line) -> bool:
+    """Whether fmt aligns the line's value (an assignment it could read, with a value that is not broken)."""
+    return (
+        line.kind == syntax.ASSIGNMENT
         and line.path_ok
         and line.value is not None
         and line.value_kind != syntax.BAD_STRING
-    ]
+    )
 
 
-def _uses_tabs(rows: Iterable[_Row]) -> bool:
+def _rows(file: syntax.ListFile) -> list[_Row]:
+    return [_Row(line, line.indent, line.sep, line.sep2) for line in file.lines if _aligns(line)]
+
+
+def _row(line: syntax.Line) -> _Row:
+    return _Row(line, line.indent, line.sep, line.sep2)
+
+
+def _path_length(line: syntax.Line) -> int:
+    """The length of the line's parameter path where it counts for the canonical column, else -1."""
+    return len(line.path) if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path else -1
+
+
+def _width(row: _Row) -> int:
+    """How wide the row is with two blanks between path and value (-1: a tab in its value's extent)."""
+    return -1 if "\t" in row.tail else len(row.path) + 2 + len(row.tail)
+
+
+def _vote(row: _Row, target: Alignment, kept: Set[Alignment]) -> bool | None:
+    """The row's say in whether the file separates with tabs: whether its gap holds one, when the gap is wide
+    enough for a tab and the row keeps its value where it is (None: no say). Only rows that stay vote:
+    moving a row may narrow its gap below a tab."""
+    if not _in_place(row, target, kept):
+        return None
+    if _next_stop(row.path_end) <= row.value_start:
+        return "\t" in row.sep
+    return None
+
+
+def _uses_tabs(votes: Iterable[bool | None]) -> bool:
     """Whether the file separates with tabs: more tab-holding than blank-only gaps wide enough for a tab."""
-    votes: Counter[bool] = Counter()
-    for row in rows:
-        if _next_stop(row.path_end) <= row.value_start:
-            votes["\t" in row.sep] += 1
-    return votes[True] > votes[False]
+    counted = Counter(votes)
+    return counted[True] > counted[False]
 
 
 def _most_common(counts: Counter[Alignment], kinds: Sequence[str]) -> Alignment | None:
@@ -260,15 +289,20 @@ def _most_common(counts: Counter[Alignment], kinds: Sequence[str]) -> Alignment 
     return max(candidates, key=lambda a: (counts[a], a.kind == LEFT, -a.column))
 
 
+def _here(row: _Row, main: Alignment) -> tuple[Alignment, ...]:
+    """The alignments the row can make a block with: none when it is indented or in the main alignment."""
+    if row.indent:
+        return ()
+    aligned = row.alignments()
+    return () if main in aligned else aligned
+
+
 def _blocks(rows: Sequence[_Row], main: Alignment) -> tuple[Alignment, ...]:
     """Alignments shared by a run of `MIN_BLOCK` consecutive value lines outside the main alignment."""
     longest: Counter[Alignment] = Counter()
     run: dict[Alignment, int] = {}
     for row in rows:
-        here = () if row.indent else row.alignments()
-        if main in here:
-            here = ()
-        run = {alignment: run.get(alignment, 0) + 1 for alignment in here}
+        run = {alignment: run.get(alignment, 0) + 1 for alignment in _here(row, main)}
         for alignment, length in run.items():
             longest[alignment] = max(longest[alignment], length)
     return tuple(sorted(alignment for alignment, length in longest.items() if length >= MIN_BLOCK))
@@ -276,23 +310,31 @@ def _blocks(rows: Sequence[_Row], main: Alignment) -> tuple[Alignment, ...]:
 
 def _canonical_column(file: syntax.ListFile) -> int:
     """Two blanks after the longest parameter path (0-based column of the values)."""
-    lengths = [
-        len(line.path) for line in file.lines if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path
-    ]
-    return max(lengths, default=0) + 2
+    return max(max(map(_path_length, file.lines), default=0), 0) + 2
 
 
-def _alignments(file: syntax.ListFile, rows: Sequence[_Row], options: FmtOptions) -> Style:
+class _Evidence(NamedTuple):
+    """What the value alignment is decided from: the alignments of the value lines without indent (both
+    ways), how many value lines there are, and the rest worked out only when the decision needs it."""
+
+    counts: Counter[Alignment]
+    rows: int
+    blocks: Callable[[Alignment], tuple[Alignment, ...]]  # the block alignments beside a main one
+    fitting: Callable[[set[Alignment]], int]  # how many value lines stand in one of these alignments
+    canonical: Callable[[], int]  # the canonical value column
+    widest: Callable[[], int]  # the widest value line written with two blanks (tab-free ones)
+
+
+def _alignments(evidence: _Evidence, options: FmtOptions) -> Style:
     """Where the values go; the blank character and the comment column are found after this."""
-    evidence = [row for row in rows if not row.indent]
-    counts = Counter(alignment for row in evidence for alignment in row.alignments())
-    majority = len(rows) // 2 + 1
+    counts = evidence.counts
+    majority = evidence.rows // 2 + 1
     main = _most_common(counts, (LEFT, RIGHT))
     if options.align_values == KEEP and options.value_column is None:
         if main is None or counts[main] < 2:
             return Style(None)
-        blocks = _blocks(rows, main)
-        kept = sum(1 for row in rows if row.fits({main, *blocks}))
+        blocks = evidence.blocks(main)
+        kept = evidence.fitting({main, *blocks})
         return Style(main, blocks) if kept >= majority else Style(None)
     # A column given alone means left-aligned values, as in the canonical layout: taking the kind
     # from the file instead would not survive formatting (the forced column can change which kind
@@ -304,67 +346,96 @@ def _alignments(file: syntax.ListFile, rows: Sequence[_Row], options: FmtOptions
     if usual is not None and counts[usual] >= max(2, majority):
         return Style(usual)
     if kind == LEFT:
-        return Style(Alignment(LEFT, _canonical_column(file)))
-    widest = max((len(row.path) + 2 + len(row.tail) for row in rows if "\t" not in row.tail), default=0)
-    return Style(Alignment(RIGHT, widest))
+        return Style(Alignment(LEFT, evidence.canonical()))
+    return Style(Alignment(RIGHT, evidence.widest()))
 
 
-def _in_place(row: _Row, target: Alignment, kept: set[Alignment]) -> bool:
+def _in_place(row: _Row, target: Alignment, kept: Set[Alignment]) -> bool:
     """Whether the row's value stays where it is: in the style already, or unable to move."""
     return row.fits(kept) or row.start_for(target) is None
 
 
-def _place_values(rows: Sequence[_Row], target: Alignment, kept: set[Alignment], tabs: bool) -> None:
-    """Move values that are in none of the kept alignments; tidy the blanks of those that are."""
-    for row in rows:
-        if row.fits(kept):
-            row.sep = _pad(row.path_end, row.value_start, tabs)
-            continue
-        start = row.start_for(target)
-        if start is None:
-            continue  # a name too long for the column: the value stays where it is
-        comment = row.comment_start
-        row.indent, row.sep = "", _pad(len(row.path), start, tabs)
-        if row.free:  # the comment stays in its column when the value leaves room for it
-            end = row.value_end
-            row.sep2 = _pad(end, comment if comment > end else end + 1, tabs)
+def _place_value(row: _Row, target: Alignment, kept: Set[Alignment], tabs: bool) -> None:
+    """Move the value if it is in none of the kept alignments; tidy the blanks if it is."""
+    if row.fits(kept):
+        row.sep = _pad(row.path_end, row.value_start, tabs)
+        return
+    start = row.start_for(target)
+    if start is None:
+        return  # a name too long for the column: the value stays where it is
+    comment = row.comment_start
+    row.indent, row.sep = "", _pad(len(row.path), start, tabs)
+    if row.free:  # the comment stays in its column when the value leaves room for it
+        end = row.value_end
+        row.sep2 = _pad(end, comment if comment > end else end + 1, tabs)
 
 
-def _comment_column(rows: Sequence[_Row], style: Style, options: FmtOptions) -> int | None:
+def _mark(row: _Row) -> int | None:
+    """Where the row's comment after its value starts, once placed, if it shows a column (two or more blanks
+    before it); -1 when it shows none; None without such a comment."""
+    if not row.free:
+        return None
+    start = row.comment_start
+    return start if start - row.value_end >= 2 else -1
+
+
+def _comment_column(marks: Iterable[int | None], style: Style, options: FmtOptions) -> int | None:
+    """The comment column: the one given, else the start most comments showing a column share, if at least
+    two and more than half of all comments after values do."""
     if options.comment_column is not None:
         return options.comment_column - 1
     if style.values is None:
         return None
-    commented = [row for row in rows if row.free]
-    starts = Counter(row.comment_start for row in commented if row.comment_start - row.value_end >= 2)
+    commented = 0
+    starts: Counter[int] = Counter()
+    for mark in marks:
+        if mark is not None:
+            commented += 1
+            if mark >= 0:
+                starts[mark] += 1
+    return _chosen_column(starts, commented)
+
+
+def _chosen_column(starts: Counter[int], commented: int) -> int | None:
     if not starts:
         return None
     column = max(starts, key=lambda start: (starts[start], -start))
-    return column if starts[column] >= 2 and 2 * starts[column] > len(commented) else None
+    return column if starts[column] >= 2 and 2 * starts[column] > commented else None
 
 
-def _place_comments(rows: Sequence[_Row], column: int | None, canonical: bool, tabs: bool) -> None:
-    for row in rows:
-        if not row.free:
-            continue
-        end, start = row.value_end, row.comment_start
-        if column is not None and start != column:
-            start = column if column > end else end + 1
-        elif canonical and column is None:
-            start = end + 1
-        row.sep2 = _pad(end, start, tabs)
+def _place_comment(row: _Row, column: int | None, canonical: bool, tabs: bool) -> None:
+    if not row.free:
+        return
+    end, start = row.value_end, row.comment_start
+    if column is not None and start != column:
+        start = column if column > end else end + 1
+    elif canonical and column is None:
+        start = end + 1
+    row.sep2 = _pad(end, start, tabs)
+
+
+def _evidence(file: syntax.ListFile, rows: Sequence[_Row]) -> _Evidence:
+    return _Evidence(
+        Counter(alignment for row in rows if not row.indent for alignment in row.alignments()),
+        len(rows),
+        lambda main: _blocks(rows, main),
+        lambda kept: sum(1 for row in rows if row.fits(kept)),
+        lambda: _canonical_column(file),
+        lambda: max(max(map(_width, rows), default=0), 0),
+    )
 
 
 def _plan(file: syntax.ListFile, options: FmtOptions, canonical: bool = False) -> tuple[Style, list[_Row]]:
     rows = _rows(file)
-    style = Style(None) if canonical else _alignments(file, rows, options)
+    style = Style(None) if canonical else _alignments(_evidence(file, rows), options)
     target = style.values or Alignment(LEFT, _canonical_column(file))
     kept = {target, *style.blocks}
-    # Only rows that keep their value where it is vote: moving a row may narrow its gap below a tab.
-    tabs = style.values is not None and _uses_tabs(row for row in rows if _in_place(row, target, kept))
-    _place_values(rows, target, kept, tabs)
-    comments = None if canonical else _comment_column(rows, style, options)
-    _place_comments(rows, comments, style.values is None, tabs)
+    tabs = style.values is not None and _uses_tabs(_vote(row, target, kept) for row in rows)
+    for row in rows:
+        _place_value(row, target, kept, tabs)
+    comments = None if canonical else _comment_column(map(_mark, rows), style, options)
+    for row in rows:
+        _place_comment(row, comments, style.values is None, tabs)
     return Style(style.values, style.blocks, comments, tabs), rows
 
 
@@ -401,22 +472,378 @@ def format_file(file: syntax.ListFile, options: FmtOptions | None = None, *, can
     bodies = formatted_lines(file, options, canonical=canonical)
     lines = list(file.lines)
     end = file.end_index
-    if end is not None and all(line.kind == syntax.BLANK for line in lines[end + 1 :]):
+    if end is not None and _drops_tail([line.kind for line in lines], end):
         lines = lines[: end + 1]
-    newlines = Counter(line.newline for line in file.lines if line.newline)
-    usual = newlines.most_common(1)[0][0] if newlines else "\n"
+    usual = _usual_newline(line.newline for line in file.lines)
     out = []
     previous = ""
     for position, line in enumerate(lines):
         newline = line.newline
         if position == len(lines) - 1 and end is not None and position == end and not newline:
             newline = usual
-        body = bodies[position]
-        if not body and previous.endswith("\r") and newline.startswith("\n"):
-            body = line.body  # emptied, this line's LF would join the CR before it into one CRLF
-        out.append(body + newline)
+        out.append(_unjoined(bodies[position], line.body, previous, newline) + newline)
         previous = newline
     return "".join(out)
+
+
+def _drops_tail(kinds: Sequence[str], end: int) -> bool:
+    """Whether the lines after the end marker go: all of them blank."""
+    return kinds[end + 1 :].count(syntax.BLANK) == len(kinds) - end - 1
+
+
+def _usual_newline(newlines: Iterable[str]) -> str:
+    """The line break most lines end with (the end marker gets it when it has none)."""
+    counted = Counter(newline for newline in newlines if newline)
+    return counted.most_common(1)[0][0] if counted else "\n"
+
+
+def _unjoined(body: str, original: str, previous: str, newline: str) -> str:
+    """A formatted body, unless emptied its line's LF would join the CR before it into one CRLF."""
+    return original if not body and previous.endswith("\r") and newline.startswith("\n") else body
+
+
+Block = tuple[int, int, str]  # lines [first, stop) of the text are replaced by this text
+
+
+class _Decision(NamedTuple):
+    """What fmt decided about a whole file; every line's formatted text follows from these and the line."""
+
+    style: Style  # its values and blocks
+    target: Alignment
+    kept: frozenset[Alignment]
+    tabs: bool
+    comments: int | None
+
+
+class LiveFormat:
+    """`format_file` of a list that is edited over and over (the language server answers formatting within a
+    keystroke of an edit of a 50,000-line list): each `update` reads only the lines changed since the one
+    before, and `changes` says which lines the formatting rewrites.
+
+    fmt decides about the whole file (the alignments most value lines share, the runs of value lines that
+    make a block, tabs or blanks, the comment column) from counts to which each line adds: an edit takes out
+    what the lines it replaces added and adds what the new ones do. A run of `MIN_BLOCK` value lines in an
+    alignment is counted as the windows of `MIN_BLOCK` consecutive value lines that share it (there is such a
+    run exactly when there is such a window), so an edit recounts only the windows around it. Each line's
+    formatted text is kept while the decisions stand; when an edit changes one, every line is formatted
+    again. The result is `format_file`'s, byte for byte (tests compare them over random edits).
+    """
+
+    PAUSE_EVERY = 1024  # lines between two pause points while every line is formatted again
+
+    def __init__(
+        self, options: FmtOptions | None = None, parse_line: Callable[[str], syntax.Line] | None = None
+    ) -> None:
+        self.options = options or FmtOptions()
+        self._parse_line = parse_line or _line_parser()
+        self._raw: list[str] = []  # the lines as the parser reads them, with their breaks
+        self._extra = False  # the last of them is the empty one the parser reads after a final line break
+        self._lines: list[syntax.Line] = []
+        self._kinds: list[str] = []
+        self._rows: list[_Row | None] = []  # each line as fmt found it, if fmt aligns its value
+        self._votes: list[bool | None] = []  # each line's say in tabs or blanks (`_vote`)
+        self._marks: list[
+            int | None
+        ] = []  # where each line's comment starts once its value is placed (`_mark`)
+        self._out: list[str] = []  # each line formatted, with its break (the line itself if unchanged)
+        self._row_count = 0
+        self._counts: Counter[Alignment] = Counter()  # alignments of value lines without indent
+        self._pairs: Counter[tuple[Alignment, Alignment]] = Counter()  # ... both ways at once
+        self._paths: Counter[int] = Counter()  # lengths of parameter paths (the canonical column)
+        self._widths: Counter[int] = Counter()  # `_width` of value lines
+        self._main: Alignment | None = None  # the main alignment `_runs` are counted beside
+        self._runs: Counter[Alignment] = Counter()  # windows of MIN_BLOCK value lines sharing an alignment
+        self._tab_votes: Counter[bool] = Counter()
+        self._starts: Counter[int] = Counter()  # comment starts showing a column
+        self._commented = 0  # value lines with a comment after the value
+        self._decision: _Decision | None = None  # None: every line's formatting is to be worked out again
+
+    def update(self, raw_lines: Sequence[str], full: bool = True) -> bool:
+        """Take the list's lines as they are now (with their breaks, as `syntax.split_lines` keeps them).
+        Returns False, having formatted nothing, when the edit changes a decision about the whole file and
+        `full` is false: formatting every line again is left to a call that allows it."""
+        raw = list(raw_lines)
+        extra = not raw or raw[-1].endswith(("\n", "\r"))
+        if extra:
+            raw.append("")  # as the parser reads the text
+        old = self._raw
+        first = _common_prefix(old, raw)
+        same = _common_suffix(old, raw, first)
+        old_stop, new_stop = len(old) - same, len(raw) - same
+        self._extra = extra
+        if first == old_stop == new_stop and self._decision is not None:
+            return True
+        window = self._window(first, old_stop)
+        self._count_runs(*window, -1)
+        for index in range(first, old_stop):
+            self._tally(index, -1)
+        new = raw[first:new_stop]
+        lines = [self._parse_line(text.rstrip("\r\n")) for text in new]
+        rows = [_row(line) if _aligns(line) else None for line in lines]
+        self._raw[first:old_stop] = new
+        self._lines[first:old_stop] = lines
+        self._kinds[first:old_stop] = [line.kind for line in lines]
+        self._rows[first:old_stop] = rows
+        decision = self._decision
+        if decision is None:
+            self._votes[first:old_stop] = [None] * len(new)
+            self._marks[first:old_stop] = [None] * len(new)
+        else:
+            self._votes[first:old_stop] = [
+                None if row is None else _vote(row, decision.target, decision.kept) for row in rows
+            ]
+            self._marks[first:old_stop] = [
+                None if row is None else self._placed(row, decision) for row in rows
+            ]
+        self._out[first:old_stop] = [""] * len(new)
+        for index in range(first, new_stop):
+            self._tally(index, 1)
+        self._count_runs(window[0], window[1] + new_stop - old_stop, 1)
+        return self._decide(first, new_stop, full)
+
+    def changes(self) -> list[Block]:
+        """The stretches of lines formatting rewrites, in order (lines after the end marker dropped: replaced
+        by nothing)."""
+        raw, out = self._raw, self._out
+        end, last, usual = self._ending()
+        changed = list(compress(range(last), map(ne, out[:last], raw[:last])))
+        if usual is not None and (not changed or changed[-1] != last - 1):
+            changed.append(last - 1)
+        starts: list[int] = []  # the stretches: starts[k] up to stops[k], with texts[k]
+        stops: list[int] = []
+        texts: list[list[str]] = []
+        for index in changed:
+            text = out[index] + (usual if usual is not None and index == end else "")
+            if stops and stops[-1] == index:
+                stops[-1] = index + 1
+                texts[-1].append(text)
+            else:
+                starts.append(index)
+                stops.append(index + 1)
+                texts.append([text])
+        lines = len(raw) - self._extra
+        if last < lines:  # the blank lines after the end marker
+            if stops and stops[-1] == last:
+                stops[-1] = lines
+            else:
+                starts.append(last)
+                stops.append(lines)
+                texts.append([])
+        return [(first, stop, "".join(text)) for first, stop, text in zip(starts, stops, texts, strict=True)]
+
+    def text(self) -> str:
+        """The formatted text."""
+        _, last, usual = self._ending()
+        text = "".join(self._out[:last])
+        return text + usual if usual is not None else text
+
+    # -- the decisions -------------------------------------------------------------------------------
+    def _decide(self, first: int, stop: int, full: bool) -> bool:
+        main = _most_common(self._counts, (LEFT, RIGHT))
+        if main != self._main:
+            self._main, self._runs = main, Counter()
+            self._count_runs(0, len(self._rows), 1)
+        evidence = _Evidence(
+            self._counts, self._row_count, self._blocks, self._fitting, self._canonical, self._widest
+        )
+        style = _alignments(evidence, self.options)
+        target = style.values or Alignment(LEFT, self._canonical())
+        kept = frozenset({target, *style.blocks})
+        old = self._decision
+        again = old is None or (old.target, old.kept) != (target, kept)
+        if again and not full:
+            self._decision = None
+            return False
+        if again:
+            self._vote_all(target, kept)
+        tabs = style.values is not None and self._tab_votes[True] > self._tab_votes[False]
+        again = again or old is None or tabs != old.tabs
+        if again and not full:
+            self._decision = None
+            return False
+        decision = _Decision(style, target, kept, tabs, None)
+        if again:
+            self._mark_all(decision)
+        if self.options.comment_column is not None:
+            comments: int | None = self.options.comment_column - 1
+        else:
+            comments = None if style.values is None else _chosen_column(self._starts, self._commented)
+        decision = decision._replace(comments=comments)
+        again = (
+            again
+            or old is None
+            or comments != old.comments
+            or (style.values is None) != (old.style.values is None)
+        )
+        if again and not full:
+            self._decision = None
+            return False
+        self._decision = decision
+        lines = range(len(self._raw)) if again else range(first, min(stop + 1, len(self._raw)))
+        for index in lines:
+            if again and not index % self.PAUSE_EVERY:
+                pause()
+            self._out[index] = self._formatted(index, decision)
+        return True
+
+    def _blocks(self, main: Alignment) -> tuple[Alignment, ...]:
+        assert main == self._main  # the runs are counted beside it
+        return tuple(sorted(self._runs))
+
+    def _fitting(self, kept: set[Alignment]) -> int:
+        return sum(count for (left, right), count in self._pairs.items() if left in kept or right in kept)
+
+    def _canonical(self) -> int:
+        return max(self._paths, default=0) + 2
+
+    def _widest(self) -> int:
+        return max(self._widths, default=0)
+
+    # -- each line's part ----------------------------------------------------------------------------
+    def _tally(self, index: int, sign: int) -> None:
+        """Add (sign 1) or take out (-1) what line `index` counts for."""
+        path = _path_length(self._lines[index])
+        if path >= 0:
+            _bump(self._paths, path, sign)
+        row = self._rows[index]
+        if row is None:
+            return
+        self._row_count += sign
+        if not row.indent:
+            aligned = row.alignments()
+            _bump(self._counts, aligned[0], sign)
+            _bump(self._counts, aligned[1], sign)
+            _bump(self._pairs, aligned, sign)
+        width = _width(row)
+        if width >= 0:
+            _bump(self._widths, width, sign)
+        if self._decision is None:
+            return
+        vote, mark = self._votes[index], self._marks[index]
+        if vote is not None:
+            _bump(self._tab_votes, vote, sign)
+        if mark is not None:
+            self._commented += sign
+            if mark >= 0:
+                _bump(self._starts, mark, sign)
+
+    def _window(self, first: int, stop: int) -> tuple[int, int]:
+        """The lines that hold every window of MIN_BLOCK value lines with a value line of [first, stop): from
+        the MIN_BLOCK - 1st value line before `first` to the MIN_BLOCK - 1st from `stop` on."""
+        rows = self._rows
+        start, found = first, 0
+        while start > 0 and found < MIN_BLOCK - 1:
+            start -= 1
+            found += rows[start] is not None
+        end, found = stop, 0
+        while end < len(rows) and found < MIN_BLOCK - 1:
+            found += rows[end] is not None
+            end += 1
+        return start, end
+
+    def _count_runs(self, first: int, stop: int, sign: int) -> None:
+        """Count (or take out) the windows of MIN_BLOCK value lines within lines [first, stop) that share an
+        alignment beside the main one."""
+        main = self._main
+        if main is None:
+            return  # no main alignment, no blocks: counted once there is one
+        here = [_here(row, main) for row in self._rows[first:stop] if row is not None]
+        for start in range(len(here) - MIN_BLOCK + 1):
+            if here[start]:
+                for alignment in set(here[start]).intersection(*here[start + 1 : start + MIN_BLOCK]):
+                    _bump(self._runs, alignment, sign)
+
+    def _vote_all(self, target: Alignment, kept: frozenset[Alignment]) -> None:
+        self._votes = [None if row is None else _vote(row, target, kept) for row in self._rows]
+        self._tab_votes = Counter(vote for vote in self._votes if vote is not None)
+
+    def _mark_all(self, decision: _Decision) -> None:
+        marks: list[int | None] = []
+        for index, row in enumerate(self._rows):
+            if not index % self.PAUSE_EVERY:
+                pause()
+            marks.append(None if row is None else self._placed(row, decision))
+        self._marks = marks
+        self._commented = sum(mark is not None for mark in marks)
+        self._starts = Counter(mark for mark in marks if mark is not None and mark >= 0)
+
+    @staticmethod
+    def _placed(row: _Row, decision: _Decision) -> int | None:
+        """`_mark` of the row with its value placed."""
+        placed = _row(row.line)
+        _place_value(placed, decision.target, decision.kept, decision.tabs)
+        return _mark(placed)
+
+    def _formatted(self, index: int, decision: _Decision) -> str:
+        raw, line = self._raw[index], self._lines[index]
+        if self._rows[index] is None:
+            body = _other_line(line)
+        else:
+            placed = _row(line)
+            _place_value(placed, decision.target, decision.kept, decision.tabs)
+            _place_comment(placed, decision.comments, decision.style.values is None, decision.tabs)
+            body = placed.body()
+        text = raw.rstrip("\r\n")
+        newline = raw[len(text) :]
+        formatted = _unjoined(body, text, self._raw[index - 1] if index else "", newline) + newline
+        return raw if formatted == raw else formatted
+
+    def _ending(self) -> tuple[int | None, int, str | None]:
+        """Where the end marker is, how many lines are kept, and the line break the end marker gets (None:
+        it keeps its own)."""
+        kinds, raw = self._kinds, self._raw
+        end = kinds.index(syntax.END) if syntax.END in kinds else None
+        if end is None or not _drops_tail(kinds, end):
+            return end, len(raw), None
+        if raw[end].endswith(("\n", "\r")):
+            return end, end + 1, None
+        return end, end + 1, _usual_newline(text[len(text.rstrip("\r\n")) :] for text in raw)
+
+
+def _bump(counts: Counter[_Key], key: _Key, sign: int) -> None:
+    """Add `sign` to a count, forgetting counts that reach 0 (the decisions look at the keys)."""
+    count = counts[key] + sign
+    if count:
+        counts[key] = count
+    else:
+        del counts[key]
+
+
+def _line_parser() -> Callable[[str], syntax.Line]:
+    """A parser of single lines that remembers the lines it read."""
+    parsed: dict[str, syntax.Line] = {}
+
+    def parse(body: str) -> syntax.Line:
+        line = parsed.get(body)
+        if line is None:
+            line = parsed[body] = syntax.parse_text(body).lines[0]
+        return line
+
+    return parse
+
+
+def _common_prefix(old: Sequence[str], new: Sequence[str]) -> int:
+    """How many lines both start with (compared in stretches: unchanged lines are the same strings)."""
+    low, high = 0, min(len(old), len(new))
+    while low < high:
+        middle = (low + high + 1) // 2
+        if old[low:middle] == new[low:middle]:
+            low = middle
+        else:
+            high = middle - 1
+    return low
+
+
+def _common_suffix(old: Sequence[str], new: Sequence[str], prefix: int) -> int:
+    """How many lines both end with, not counting into the first `prefix` lines."""
+    low, high = 0, min(len(old), len(new)) - prefix
+    while low < high:
+        middle = (low + high + 1) // 2
+        if old[len(old) - middle : len(old) - low] == new[len(new) - middle : len(new) - low]:
+            low = middle
+        else:
+            high = middle - 1
+    return low
 
 
 def format_text(text: str, name: str = "<string>", options: FmtOptions | None = None) -> str:
