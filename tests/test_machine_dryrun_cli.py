@@ -98,6 +98,12 @@ def test_gantry_and_drive_controlled_spindle_of_the_portal(cli):
     assert axes["S"]["outcome"] == "not_simulated"
 
 
+def test_explain_of_the_portal_names_each_homing_type_once(cli):
+    out = cli("explain", str(PORTAL / "listen" / "hochlauf.lis"), "--color", "never").stdout.decode()
+    assert "homing skipped (IGNORE_ABS_POS)" in out and "(IGNORE_ABS_POS) (IGNORE_ABS_POS)" not in out
+    assert "homing disabled (DISABLED)" in out
+
+
 def portal_copy(tmp_path: Path, program: str, scenario: str) -> tuple[str, str, str]:
     """The portal in tmp_path with Y2's reference position 1 mm above Y's (-1449 mm against -1450 mm), a
     program and a machine scenario: start-up list, program, scenario."""

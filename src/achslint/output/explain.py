@@ -159,7 +159,7 @@ def machine_text(report: dict[str, Any], screen: Screen) -> None:
             str(row["logical_number"]),
             row["axis_type"],
             f"{row['drive_type']} {row['drive']}",
-            f"{row['strategy']['title']} ({row['homing_type']})"
+            strategy_words(row["strategy"]["title"], row["homing_type"])
             + (f"; a G74 runs {row['commanded']['title']}" if row["commanded"] != row["strategy"] else ""),
             _gantry_words(row["gantry"]),
         ]
@@ -298,3 +298,9 @@ def machine_markdown(report: dict[str, Any], screen: Screen) -> None:
 LIST: Registry[ListReport] = {"text": list_text, "json": write_json, "markdown": list_markdown}
 PARAMETER: Registry[ParameterCard] = {"text": card_text, "json": write_json, "markdown": card_markdown}
 MACHINE: Registry[dict[str, Any]] = {"text": machine_text, "json": write_json, "markdown": machine_markdown}
+
+
+def strategy_words(title: str, homing_type: str) -> str:
+    """A strategy's title with the homing type when the title does not name it already ("homing skipped
+    (IGNORE_ABS_POS)" is not followed by "(IGNORE_ABS_POS)" again)."""
+    return title if homing_type in title else f"{title} ({homing_type})"

@@ -26,6 +26,7 @@ from ..core.display import printable
 from ..core.version import __version__
 from . import markdown as md
 from .diff import _mapped
+from .explain import strategy_words
 from .figuredata import ASSUMED_GEOMETRY
 from .machine import OUTCOME_WORDS, machine_json
 from .svgplot import machine_svg, trace_svg
@@ -235,8 +236,7 @@ def _axis_row(section: AxisSection, number: int) -> list[object]:
 
 def _strategy_words(explained: ListReport) -> str:
     """The strategy's title, with the homing type when the title does not name it already."""
-    title, homing_type = explained["strategy"]["title"], explained["axis"]["homing_type"]
-    return title if homing_type in title else f"{title} ({homing_type})"
+    return strategy_words(explained["strategy"]["title"], explained["axis"]["homing_type"])
 
 
 def _outcome(section: AxisSection) -> str:
