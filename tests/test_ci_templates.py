@@ -10,7 +10,9 @@ steps are recorded (with their evaluated `with:`) instead of run. The install st
 environment and pip, so the default tests run the steps after it with this checkout's achslint on PATH, and
 one `slow` test runs them all. The GitLab job's `script` runs the same way (one shell, `-eo pipefail`, in
 `$CI_PROJECT_DIR`, its variables in the environment, later ones overriding the template's); its
-`before_script` installs, so only the slow test runs it.
+`before_script` installs, so only the slow test runs it. Without the install, the `achslint` the steps call
+is a warm one (tests/warm_cli.py: this checkout's CLI forked from a process that has loaded it, with the
+caller's streams, arguments, folder and environment), not a cold process for each of the ~40 calls.
 """
 
 from __future__ import annotations
@@ -28,11 +30,23 @@ from pathlib import Path
 import pytest
 
 from .conftest import FIXTURES, ROOT, jenkins_junit_errors
+from .warm_cli import warm_achslint
 
 yaml = pytest.importorskip("yaml")
 
 ACTION = ROOT / "action.yml"
 GITLAB = ROOT / "ci" / "gitlab.yml"
+
+# The folder of the warm `achslint` (tests/warm_cli.py) the steps find first on PATH unless they install.
+WARM: list[Path] = []
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _warm_achslint(tmp_path_factory):
+    with warm_achslint(tmp_path_factory.mktemp("warm")) as folder:
+        WARM.append(folder)
+        yield
+        WARM.remove(folder)
 
 
 def workspace(tmp_path: Path, broken: bool = False) -> Path:
@@ -134,7 +148,7 @@ def run_action(
     temp.mkdir(exist_ok=True)
     path = os.environ["PATH"]
     if not install:
-        path = f"{Path(sys.executable).parent}{os.pathsep}{path}"
+        path = os.pathsep.join([*map(str, WARM), str(Path(sys.executable).parent), path])
     else:  # the achslint of this test environment must not answer for the installed one
         path = os.pathsep.join(p for p in path.split(os.pathsep) if Path(p) != Path(sys.executable).parent)
     stdout, stderr, used, ran = [], [], [], []
@@ -303,7 +317,7 @@ def run_gitlab_job(
     env.pop("GITHUB_ACTIONS", None)
     ours = str(Path(sys.executable).parent)
     others = [p for p in env["PATH"].split(os.pathsep) if Path(p) != Path(ours)]
-    env["PATH"] = os.pathsep.join(others if install else [ours, *others])
+    env["PATH"] = os.pathsep.join(others if install else [*map(str, WARM), ours, *others])
     lines = [*(job["before_script"] if install else []), *job["script"]]
     script = temp / "job.sh"
     script.write_text("\n".join(lines) + "\n", encoding="utf-8")
