@@ -23,7 +23,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from generate import axis_list  # noqa: E402
+from generate import axis_list
 
 # benchmarks/run (a script without .py) holds the budget and the child processes' command and environment.
 _run = SourceFileLoader("run", str(HERE / "run")).load_module()
@@ -32,7 +32,9 @@ BUDGET_COLD_RATIO, achslint_command, child_env = _run.BUDGET_COLD_RATIO, _run.ac
 
 def instructions(command: list[str]) -> int:
     """Instructions the command executes (valgrind's callgrind, user space, the whole process)."""
-    subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=child_env(), check=False)
+    subprocess.run(
+        command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=child_env(), check=False
+    )
     done = subprocess.run(
         ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", *command],
         capture_output=True,
@@ -47,9 +49,13 @@ def instructions(command: list[str]) -> int:
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--lint-only", action="store_true", help="count only the lint")
-    parser.add_argument("--list", type=Path, help="the list to lint (default: a generated 250-line axis list)")
+    parser.add_argument(
+        "--list", type=Path, help="the list to lint (default: a generated 250-line axis list)"
+    )
     options = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         typical = options.list or Path(folder) / "achsmds1.lis"
@@ -63,7 +69,9 @@ def main() -> int:
         floor = instructions([sys.executable, "-c", "import lark, typer"])
         print(f"import achslint.cli                {imports / 1e6:8.1f} M")
         print(f"floor: import lark, typer          {floor / 1e6:8.1f} M")
-        print(f"ratio {lint / floor:.2f} x floor (budget <= {BUDGET_COLD_RATIO} x: {BUDGET_COLD_RATIO * floor / 1e6:.0f} M)")
+        print(
+            f"ratio {lint / floor:.2f} x floor (budget <= {BUDGET_COLD_RATIO} x: {BUDGET_COLD_RATIO * floor / 1e6:.0f} M)"
+        )
     return 0
 
 

@@ -302,3 +302,43 @@ def test_classifying_an_axis_loads_the_strategies_up_to_its_own() -> None:
     position = STRATEGY_MODULES.index(chosen)
     assert position < len(STRATEGY_MODULES) - 1  # a strategy in the middle: some are left out
     assert strategies == list(STRATEGY_MODULES[: position + 1])
+
+
+def test_linting_an_axis_list_imports_only_the_rules_that_run_on_it() -> None:
+    """The engine picks rules by the code table's scopes and kinds before importing any: a lint of axis lists
+    imports no program rule (LIS6xx) and no rule of channel or compensation lists (LIS7xx)."""
+    from achslint.rules import Scope, codes
+
+    axis_list = FIXTURES / "lists" / "achsmds4.lis"
+    loaded = _loaded_after(
+        "import contextlib, io\n"
+        "from achslint.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    main(['lint', {str(axis_list)!r}])\n"
+    )
+    rules = {m.removeprefix("achslint.rules.") for m in loaded if m.startswith("achslint.rules.lis")}
+    runs = {
+        codes.module_name(code)
+        for code in codes.known_codes()
+        if Scope.MACHINE in codes.scopes(code)
+        or (
+            {Scope.LIST, Scope.AFTER} & set(codes.scopes(code))
+            and codes.applies_to(codes.kinds(code), "axis")
+        )
+    }
+    assert rules == runs
+    assert not [name for name in rules if name.startswith(("lis6", "lis7"))]
+
+
+def test_the_code_table_declares_the_checks_of_every_rule_module() -> None:
+    """A rule module has the check function of each scope its line in the code table names, and no other
+    (the engine reads the table, never the module, to pick the rules of a scope)."""
+    import importlib
+
+    from achslint.rules import Scope, codes
+
+    for code in codes.known_codes():
+        module = importlib.import_module(f"achslint.rules.{codes.module_name(code)}")
+        assert code == module.CODE
+        present = {scope for scope in Scope if hasattr(module, scope.value)}
+        assert present == set(codes.scopes(code)), code

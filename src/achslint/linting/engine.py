@@ -27,7 +27,8 @@ from ..core.diagnostics import Diagnostic, Severity
 from ..core.pause import hook as pause_hook
 from ..core.pause import pause as pause  # re-exported: the pause points of a thread (engine.pause)
 from ..core.pause import set_hook
-from ..rules import Check, Scope, matches, registry
+from ..rules import Check, Scope, codes, known_codes, matches, rule
+from ..rules.codes import applies_to
 from .suppression import Suppressions
 
 ALL = ("ALL",)
@@ -157,13 +158,14 @@ def enabled_checks(
     code order; for a list (LIST, AFTER) only the rules that apply to its `kind`."""
     per_list = scope in (Scope.LIST, Scope.AFTER)
     chosen = []
-    for code, rule in registry().items():
-        check = rule.checker(scope)
-        if check is None or (policy is not None and not policy.enabled(code)):
+    for code in known_codes():  # by the code table: only the rules that run are imported (`rules.rule`)
+        if scope not in codes.scopes(code) or (policy is not None and not policy.enabled(code)):
             continue
-        if per_list and not rule.applies_to(kind):
+        if per_list and not applies_to(codes.kinds(code), kind):
             continue
-        if whole_axis or not rule.needs_whole_axis:
+        found = rule(code)
+        check = found.checker(scope)
+        if check is not None and (whole_axis or not found.needs_whole_axis):
             chosen.append((code, check))
     return tuple(chosen)
 
@@ -174,8 +176,8 @@ def enabled_codes(policy: Policy, whole_axis: bool = True, kind: str = "axis") -
     that is not enabled, or does not look at this kind of list, is not unused)."""
     return frozenset(
         code
-        for code, rule in registry().items()
+        for code in known_codes()
         if policy.enabled(code)
-        and (whole_axis or not rule.needs_whole_axis)
-        and (Scope.LIST not in rule.scopes or rule.applies_to(kind))
+        and (Scope.LIST not in codes.scopes(code) or applies_to(codes.kinds(code), kind))
+        and (whole_axis or not rule(code).needs_whole_axis)
     )

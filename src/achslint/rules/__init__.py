@@ -1,14 +1,15 @@
-"""The rule registry: every rule module of the code table (`codes.RULE_MODULES`), loaded in code order.
+"""The rule registry: every rule module of the code table (`codes.RULE_MODULES`), loaded in code order
+(`registry`) or one by one as a run needs them (`rule`).
 
 A rule is a module with `CODE`, `NAME`, `FIX` ("none", "safe", "unsafe" or
 "sometimes"), `SUMMARY`, a docstring with the sections What / Why / Example /
 Use instead / Reference, and one check function for each scope it takes part
-in; its severity is its line in the code table. The check function's name says
-the scope and what it is given:
+in; its severity, scopes and list kinds are its line in the code table. The
+check function's name says the scope and what it is given:
 
     check(ctx)                          LIST: one list (`context.Context`) of a kind
-                                        the module's `KINDS` names (default: axis
-                                        lists; `ALL_KINDS`: every kind with a
+                                        its line in the code table names (mostly
+                                        axis lists; `ALL_KINDS`: every kind with a
                                         catalogue)
     check_machine(machine)              MACHINE: one machine (`machine.resolved.
                                         Machine`): the summaries of its axis lists
@@ -30,10 +31,11 @@ from __future__ import annotations
 import importlib
 import re
 from dataclasses import dataclass
-from functools import cached_property, lru_cache
+from functools import cache, cached_property, lru_cache
 from types import ModuleType
 
 from ..core.diagnostics import Severity
+from . import codes
 from .codes import (
     ALL_KINDS,
     AXIS_KINDS,
@@ -58,6 +60,7 @@ __all__ = [
     "known_codes",
     "matches",
     "registry",
+    "rule",
     "selector_problem",
 ]
 
@@ -131,24 +134,35 @@ class Rule:
 
 @lru_cache(maxsize=1)
 def registry() -> dict[str, Rule]:
-    rules: dict[str, Rule] = {}
-    for module_name, severity in RULE_MODULES.items():
-        module = importlib.import_module(f"{__name__}.{module_name}")
-        rules[module.CODE] = Rule(
-            code=module.CODE,
-            name=module.NAME,
-            severity=severity,
-            fix=module.FIX,
-            summary=module.SUMMARY,
-            doc=(module.__doc__ or "").strip(),
-            module=module,
-            checks=tuple(
-                (scope, getattr(module, scope.value)) for scope in Scope if hasattr(module, scope.value)
-            ),
-            parameters=tuple(getattr(module, "PARAMETERS", ())),
-            produced_by=getattr(module, "PRODUCED_BY", "lint"),
-            refuses_homing=getattr(module, "CNC_REFUSES_HOMING", False),
-            info_when_unchecked=getattr(module, "INFO_WHEN_UNCHECKED", False),
-            kinds=tuple(getattr(module, "KINDS", AXIS_KINDS)),
+    """Every rule, in code order (every rule module imported)."""
+    return {code: rule(code) for code in known_codes()}
+
+
+@cache
+def rule(code: str) -> Rule:
+    """One rule, its module imported on first need: a run imports only the rules it runs (the engine picks
+    them by the code table's scopes and kinds), which saves a cold start the import of the others."""
+    module = importlib.import_module(f"{__name__}.{codes.module_name(code)}")
+    if code != module.CODE:
+        raise ImportError(f"rule module {module.__name__} has the code {module.CODE}, the code table {code}")
+    scopes = codes.scopes(code)
+    undeclared = [scope.value for scope in Scope if scope not in scopes and hasattr(module, scope.value)]
+    if undeclared:  # a check the engine would never call: the code table must name its scope
+        raise ImportError(
+            f"rule module {module.__name__} has {undeclared}, which the code table does not declare"
         )
-    return rules
+    return Rule(
+        code=code,
+        name=module.NAME,
+        severity=codes.severity(code),
+        fix=module.FIX,
+        summary=module.SUMMARY,
+        doc=(module.__doc__ or "").strip(),
+        module=module,
+        checks=tuple((scope, getattr(module, scope.value)) for scope in scopes),
+        parameters=tuple(getattr(module, "PARAMETERS", ())),
+        produced_by=getattr(module, "PRODUCED_BY", "lint"),
+        refuses_homing=getattr(module, "CNC_REFUSES_HOMING", False),
+        info_when_unchecked=getattr(module, "INFO_WHEN_UNCHECKED", False),
+        kinds=codes.kinds(code),
+    )

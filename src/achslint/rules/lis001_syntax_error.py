@@ -41,7 +41,6 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..syntax import parser as syntax
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -51,7 +50,6 @@ CODE = "LIS001"
 NAME = "syntax-error"
 FIX = "none"
 SUMMARY = "Line is not a valid `path value [comment]` assignment"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def explain_bad_path(path: str) -> str:

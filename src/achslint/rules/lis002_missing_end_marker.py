@@ -37,7 +37,6 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Edit, Fix
 from ..syntax import parser as syntax
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from .context import Context
@@ -46,7 +45,6 @@ CODE = "LIS002"
 NAME = "missing-end-marker"
 FIX = "safe"
 SUMMARY = "List does not end with `Ende`"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

@@ -36,7 +36,6 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Edit, Fix
 from ..syntax import parser as syntax
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from .context import Context
@@ -45,7 +44,6 @@ CODE = "LIS004"
 NAME = "misspelt-end-marker"
 FIX = "safe"
 SUMMARY = "`End` written instead of the end marker `Ende`"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

@@ -37,8 +37,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from .codes import ALL_KINDS
-
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
     from .context import Context
@@ -47,7 +45,6 @@ CODE = "LIS005"
 NAME = "duplicate-parameter"
 FIX = "none"
 SUMMARY = "Parameter assigned more than once"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

@@ -40,7 +40,6 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Fix
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from .context import Context
@@ -49,7 +48,6 @@ CODE = "LIS006"
 NAME = "byte-order-mark"
 FIX = "safe"
 SUMMARY = "UTF-8 byte-order mark at the start of the file"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

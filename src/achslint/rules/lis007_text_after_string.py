@@ -37,7 +37,6 @@ from typing import TYPE_CHECKING
 
 from ..axis.facts import CommentReadAsValue, TextAfterString
 from ._common import value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -49,7 +48,6 @@ CODE = "LIS007"
 NAME = "text-after-string"
 FIX = "none"
 SUMMARY = "Text after a string value that is not a `(` comment"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 Fact = CommentReadAsValue | TextAfterString
 FACTS: tuple[type[Fact], ...] = (CommentReadAsValue, TextAfterString)

@@ -44,7 +44,6 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..syntax import parser as syntax
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -54,7 +53,6 @@ CODE = "LIS008"
 NAME = "mixed-style"
 FIX = "none"
 SUMMARY = "Mixed line endings or tab/space separators"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 _NAMES = {"\r\n": "CRLF", "\n": "LF", "\r": "CR"}
 

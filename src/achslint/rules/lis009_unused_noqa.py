@@ -39,13 +39,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from ..core.diagnostics import Diagnostic, Directive
-from .codes import ALL_KINDS, known_codes, selector_problem, severity
+from .codes import known_codes, selector_problem, severity
 
 CODE = "LIS009"
 NAME = "unused-noqa"
 FIX = "none"
 SUMMARY = "Suppression comment that suppresses nothing"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check_after(

@@ -58,7 +58,6 @@ from ..core.closest import ratio_bound
 from ..core.diagnostics import Diagnostic, Severity
 from ..syntax import parser as syntax
 from ._common import replace_path_fix
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -68,7 +67,6 @@ CODE = "LIS101"
 NAME = "unknown-parameter"
 FIX = "sometimes"
 SUMMARY = "Unknown parameter name"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 INFO_WHEN_UNCHECKED = True  # a name another kind's partial catalogue lacks is not judged: info
 
 

@@ -36,7 +36,6 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ._common import known_settings, replace_path_fix
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -46,7 +45,6 @@ CODE = "LIS102"
 NAME = "old-syntax"
 FIX = "safe"
 SUMMARY = "Old parameter name (still accepted)"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

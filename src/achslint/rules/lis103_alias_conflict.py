@@ -37,8 +37,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from .codes import ALL_KINDS
-
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
     from ..core.diagnostics import Diagnostic
@@ -48,7 +46,6 @@ CODE = "LIS103"
 NAME = "alias-conflict"
 FIX = "none"
 SUMMARY = "Parameter and its old name set with different values"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

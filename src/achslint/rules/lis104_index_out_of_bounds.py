@@ -38,7 +38,6 @@ from typing import TYPE_CHECKING
 
 from ..axis.facts import IndexOutOfBounds
 from ._common import value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -50,7 +49,6 @@ CODE = "LIS104"
 NAME = "index-out-of-bounds"
 FIX = "none"
 SUMMARY = "Array index out of bounds"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 FACTS = (IndexOutOfBounds,)
 

@@ -39,7 +39,6 @@ from typing import TYPE_CHECKING
 
 from ..axis.facts import MissingValue, NotBoolean, RealForInteger, TextForNumber
 from ._common import expected, value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -51,7 +50,6 @@ CODE = "LIS201"
 NAME = "wrong-type"
 FIX = "sometimes"
 SUMMARY = "Value of the wrong data type"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 Fact = MissingValue | NotBoolean | RealForInteger | TextForNumber
 FACTS: tuple[type[Fact], ...] = (MissingValue, NotBoolean, RealForInteger, TextForNumber)

@@ -49,7 +49,6 @@ from typing import TYPE_CHECKING
 from ..axis.facts import NotAccepted, NotPositive, OutOfRange, UnusableNumber
 from ..catalogue.units import describe
 from ._common import expected, value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -61,7 +60,6 @@ CODE = "LIS202"
 NAME = "out-of-range"
 FIX = "none"
 SUMMARY = "Value outside the parameter's range"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 Fact = UnusableNumber | NotAccepted | NotPositive | OutOfRange
 FACTS: tuple[type[Fact], ...] = (UnusableNumber, NotAccepted, NotPositive, OutOfRange)

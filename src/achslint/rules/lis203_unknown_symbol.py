@@ -44,7 +44,6 @@ from typing import TYPE_CHECKING
 from ..axis.analysis import combined_flags
 from ..axis.facts import UnknownSymbol
 from ._common import value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -56,7 +55,6 @@ CODE = "LIS203"
 NAME = "unknown-symbol"
 FIX = "sometimes"
 SUMMARY = "Unknown symbol for an enumerated parameter"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 FACTS = (UnknownSymbol,)
 

@@ -42,7 +42,6 @@ from typing import TYPE_CHECKING
 from ..axis.facts import BadReference
 from ..catalogue.units import unit_label
 from ._common import value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -54,7 +53,6 @@ CODE = "LIS205"
 NAME = "bad-reference"
 FIX = "none"
 SUMMARY = "Parameter reference that cannot be resolved"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 FACTS = (BadReference,)
 

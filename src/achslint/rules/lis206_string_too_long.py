@@ -33,7 +33,6 @@ from typing import TYPE_CHECKING
 
 from ..axis.facts import TooLong
 from ._common import value_facts
-from .codes import ALL_KINDS
 
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
@@ -45,7 +44,6 @@ CODE = "LIS206"
 NAME = "string-too-long"
 FIX = "none"
 SUMMARY = "String longer than the parameter allows"
-KINDS = ALL_KINDS  # every list kind with a catalogue
 
 FACTS = (TooLong,)
 

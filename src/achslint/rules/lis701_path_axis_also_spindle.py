@@ -69,7 +69,6 @@ CODE = "LIS701"
 NAME = "path-axis-also-spindle"
 FIX = "none"
 SUMMARY = "Channel list gives one logical axis number to a path axis and to a spindle"
-KINDS = ("channel",)
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

@@ -68,7 +68,6 @@ CODE = "LIS702"
 NAME = "channel-name-twice"
 FIX = "none"
 SUMMARY = "Channel list gives one name to two path axes or to two spindles"
-KINDS = ("channel",)
 
 _ERROR = {False: ("path axes", 20424), True: ("spindles", 20419)}
 

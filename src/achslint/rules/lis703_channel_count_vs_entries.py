@@ -71,7 +71,6 @@ CODE = "LIS703"
 NAME = "channel-count-vs-entries"
 FIX = "none"
 SUMMARY = "achs_anzahl or spdl_anzahl differs from the axes or spindles the channel list defines"
-KINDS = ("channel",)
 
 
 def _counted(every: list[Slot]) -> dict[str, tuple[str, list[Slot]]]:

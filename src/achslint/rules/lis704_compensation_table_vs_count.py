@@ -82,7 +82,6 @@ CODE = "LIS704"
 NAME = "compensation-table-vs-count"
 FIX = "none"
 SUMMARY = "Compensation table entry beyond its count, or an entry the count includes not written"
-KINDS = ("compensation",)
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

@@ -75,7 +75,6 @@ CODE = "LIS705"
 NAME = "compensation-table-above-max-points"
 FIX = "none"
 SUMMARY = "Compensation table larger than its max_points reserves"
-KINDS = ("compensation",)
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:

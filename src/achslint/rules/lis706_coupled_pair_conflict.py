@@ -80,7 +80,6 @@ CODE = "LIS706"
 NAME = "coupled-pair-conflict"
 FIX = "none"
 SUMMARY = "Coupled pairs of a channel list that cannot all hold (two masters, a circle, the wrong mode)"
-KINDS = ("channel",)
 
 _PAIRS = "synchro_data.koppel_gruppe[i].paar[i]."
 
