@@ -241,6 +241,11 @@ def test_a_channel_list_beyond_kanal_anzahl_is_no_configured_channel(tmp_path: P
     (tmp_path / "hochlauf.lis").write_text(startup + "zahl_mds  1\nachs_mds[0]  ./achsmds1.lis\nEnde\n")
     found = [c for c in _codes(tmp_path / "hochlauf.lis") if c[2] in ("LIS504", "LIS512", "LIS522")]
     assert {code for *_, code in found} == {"LIS522"}, found
+    # explain --channel 2 agrees: the list is named, but not loaded (it said the start-up list names none).
+    done = run_cli("explain", str(tmp_path / "hochlauf.lis"), "--channel", "2")
+    err = done.stderr.decode()
+    assert done.returncode == 2 and "there is no channel 2: `sda_mds[1]` names a list for it" in err
+    assert "`kanal_anzahl 1` configures fewer channels" in err and "(LIS522)" in err
 
 
 def test_an_entry_written_twice_names_the_later_list_as_the_cnc_reads_it(tmp_path: Path) -> None:

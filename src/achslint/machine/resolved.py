@@ -267,11 +267,19 @@ class Machine:
         chosen = [entry for entry in channels if entry_index(entry) == number - 1]
         if not chosen:
             named = ", ".join(str(entry_index(entry) + 1) for entry in channels)
-            raise MachineError(
-                f"there is no channel {number}: the start-up list names channel lists for channel {named} "
-                f"(sda_mds[{number - 1}] is channel {number})",
-                self._startup().path,
-            )
+            count = self._startup().counts.get("kanal_anzahl")
+            if count is not None and any(entry_index(e) == number - 1 for e in self._startup().channels):
+                message = (
+                    f"there is no channel {number}: `sda_mds[{number - 1}]` names a list for it, but "
+                    f"`kanal_anzahl {count.value}` configures fewer channels, so the CNC does not load that list "
+                    "(LIS522)"
+                )
+            else:
+                message = (
+                    f"there is no channel {number}: the start-up list names channel lists for channel {named} "
+                    f"(sda_mds[{number - 1}] is channel {number})"
+                )
+            raise MachineError(message, self._startup().path)
         return chosen[-1]
 
     def channel_numbers(self) -> list[int]:
