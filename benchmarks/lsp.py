@@ -415,7 +415,7 @@ def edits_linear(size: int) -> bool:
                 assert fixed is not None
                 edits = features.diff_edits(document, fixed)
             else:
-                edits = features.format_document(document, document.parse())
+                edits = features.format_document(document)
             samples.append(time.process_time() - start)
             assert edits
         return statistics.median(samples)

@@ -19,6 +19,7 @@ from achslint.api import lint
 from achslint.core.decode import UnreadableInput
 from achslint.core.diagnostics import Diagnostic, Severity
 from achslint.docs import rules_markdown
+from achslint.fmt import LiveFormat, format_text
 from achslint.lsp import features
 from achslint.lsp.documents import Document
 from achslint.lsp.session import ClientSettings, Session, Snapshot, xml_bytes
@@ -474,10 +475,23 @@ def test_resolve_keeps_given_documentation_and_ignores_other_items() -> None:
 def test_range_formatting_leaves_formatted_lines_alone(session: Session, tmp_path: Path) -> None:
     text = "kenngr.antr_typ 1\nkenngr.achs_typ  1\nEnde\n"
     document = opened(session, tmp_path / "achsmds1.lis", text)
-    file = snapshot_of(session, document).file
-    assert features.format_range(document, file, lsp.Range(lsp.Position(1, 0), lsp.Position(2, 4))) == []
-    whole = features.format_range(document, file, EVERYWHERE)
+    live = LiveFormat()
+    live.update(document.body_lines)
+    assert features.format_range(document, live, lsp.Range(lsp.Position(1, 0), lsp.Position(2, 4))) == []
+    whole = features.format_range(document, live, EVERYWHERE)
     assert [(e.range.start.line, e.new_text) for e in whole] == [(0, "kenngr.antr_typ  1")]
+
+
+def test_formatting_edits_give_fmt_text_with_a_byte_order_mark(tmp_path: Path) -> None:
+    text = "\ufeffkopf.achs_nr 1\r\nkenngr.antr_typ   1\r\nEnde\r\n\r\n  "
+    document = Document("untitled:bom", None, text, 1)
+    edits = features.format_document(document)
+    # the two values, and the lines after the end marker up to the last one's blanks
+    assert [(e.range.start.line, e.range.end.line) for e in edits] == [(0, 2), (3, 4)]
+    for edit in reversed(edits):  # as the editor applies them
+        start, end = edit.range.start, edit.range.end
+        document.apply((start.line, start.character), (end.line, end.character), edit.new_text)
+    assert document.text == "\ufeff" + format_text(text[1:])
 
 
 def test_edits_from_an_empty_document(tmp_path: Path) -> None:

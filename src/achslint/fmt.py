@@ -529,7 +529,8 @@ class LiveFormat:
     again. The result is `format_file`'s, byte for byte (tests compare them over random edits).
     """
 
-    PAUSE_EVERY = 1024  # lines between two pause points while every line is formatted again
+    PAUSE_EVERY = 1024  # lines between two pause points of the language server's worker
+    LOCAL_LINES = 2000  # changed lines an `update` that may not format every line reads at most
 
     def __init__(
         self, options: FmtOptions | None = None, parse_line: Callable[[str], syntax.Line] | None = None
@@ -561,7 +562,8 @@ class LiveFormat:
     def update(self, raw_lines: Sequence[str], full: bool = True) -> bool:
         """Take the list's lines as they are now (with their breaks, as `syntax.split_lines` keeps them).
         Returns False, having formatted nothing, when the edit changes a decision about the whole file and
-        `full` is false: formatting every line again is left to a call that allows it."""
+        `full` is false: formatting every line again is left to a call that allows it (as is an edit of
+        more than `LOCAL_LINES` lines, or a first one)."""
         raw = list(raw_lines)
         extra = not raw or raw[-1].endswith(("\n", "\r"))
         if extra:
@@ -570,6 +572,8 @@ class LiveFormat:
         first = _common_prefix(old, raw)
         same = _common_suffix(old, raw, first)
         old_stop, new_stop = len(old) - same, len(raw) - same
+        if not full and (self._decision is None or max(old_stop, new_stop) - first > self.LOCAL_LINES):
+            return False
         self._extra = extra
         if first == old_stop == new_stop and self._decision is not None:
             return True
@@ -577,26 +581,35 @@ class LiveFormat:
         self._count_runs(*window, -1)
         for index in range(first, old_stop):
             self._tally(index, -1)
+        decision = self._decision
         new = raw[first:new_stop]
-        lines = [self._parse_line(text.rstrip("\r\n")) for text in new]
-        rows = [_row(line) if _aligns(line) else None for line in lines]
+        lines: list[syntax.Line] = []
+        rows: list[_Row | None] = []
+        votes: list[bool | None] = []
+        marks: list[int | None] = []
+        for count, text in enumerate(new, 1):
+            if not count % self.PAUSE_EVERY:
+                pause()
+            line = self._parse_line(text.rstrip("\r\n"))
+            row = _row(line) if _aligns(line) else None
+            lines.append(line)
+            rows.append(row)
+            if decision is not None and row is not None:  # (else worked out with every other line)
+                votes.append(_vote(row, decision.target, decision.kept))
+                marks.append(self._placed(row, decision))
+            else:
+                votes.append(None)
+                marks.append(None)
         self._raw[first:old_stop] = new
         self._lines[first:old_stop] = lines
         self._kinds[first:old_stop] = [line.kind for line in lines]
         self._rows[first:old_stop] = rows
-        decision = self._decision
-        if decision is None:
-            self._votes[first:old_stop] = [None] * len(new)
-            self._marks[first:old_stop] = [None] * len(new)
-        else:
-            self._votes[first:old_stop] = [
-                None if row is None else _vote(row, decision.target, decision.kept) for row in rows
-            ]
-            self._marks[first:old_stop] = [
-                None if row is None else self._placed(row, decision) for row in rows
-            ]
+        self._votes[first:old_stop] = votes
+        self._marks[first:old_stop] = marks
         self._out[first:old_stop] = [""] * len(new)
         for index in range(first, new_stop):
+            if not (index - first + 1) % self.PAUSE_EVERY:
+                pause()
             self._tally(index, 1)
         self._count_runs(window[0], window[1] + new_stop - old_stop, 1)
         return self._decide(first, new_stop, full)
@@ -630,6 +643,11 @@ class LiveFormat:
                 stops.append(lines)
                 texts.append([])
         return [(first, stop, "".join(text)) for first, stop, text in zip(starts, stops, texts, strict=True)]
+
+    def formatted(self, first: int, stop: int) -> list[str]:
+        """Lines [first, stop) formatted, each with its break (lines after the end marker as well: `changes`
+        drops them)."""
+        return self._out[first:stop]
 
     def text(self) -> str:
         """The formatted text."""
@@ -681,7 +699,7 @@ class LiveFormat:
         self._decision = decision
         lines = range(len(self._raw)) if again else range(first, min(stop + 1, len(self._raw)))
         for index in lines:
-            if again and not index % self.PAUSE_EVERY:
+            if again and index and not index % self.PAUSE_EVERY:
                 pause()
             self._out[index] = self._formatted(index, decision)
         return True
@@ -749,18 +767,25 @@ class LiveFormat:
             return  # no main alignment, no blocks: counted once there is one
         here = [_here(row, main) for row in self._rows[first:stop] if row is not None]
         for start in range(len(here) - MIN_BLOCK + 1):
+            if start and not start % self.PAUSE_EVERY:
+                pause()
             if here[start]:
                 for alignment in set(here[start]).intersection(*here[start + 1 : start + MIN_BLOCK]):
                     _bump(self._runs, alignment, sign)
 
     def _vote_all(self, target: Alignment, kept: frozenset[Alignment]) -> None:
-        self._votes = [None if row is None else _vote(row, target, kept) for row in self._rows]
-        self._tab_votes = Counter(vote for vote in self._votes if vote is not None)
+        votes: list[bool | None] = []
+        for index, row in enumerate(self._rows):
+            if index and not index % self.PAUSE_EVERY:
+                pause()
+            votes.append(None if row is None else _vote(row, target, kept))
+        self._votes = votes
+        self._tab_votes = Counter(vote for vote in votes if vote is not None)
 
     def _mark_all(self, decision: _Decision) -> None:
         marks: list[int | None] = []
         for index, row in enumerate(self._rows):
-            if not index % self.PAUSE_EVERY:
+            if index and not index % self.PAUSE_EVERY:
                 pause()
             marks.append(None if row is None else self._placed(row, decision))
         self._marks = marks

@@ -61,7 +61,8 @@ class LineCache:
             tuple[int, str], Line
         ] = {}  # (number, text with break) -> Line of the last parse
 
-    def _one(self, body: str) -> Line:
+    def line(self, body: str) -> Line:
+        """The parse of one line's text (no line break; number 0): shared, never to be changed."""
         template = self._parsed.get(body)
         if template is None:
             if len(self._parsed) > self.LIMIT:
@@ -83,7 +84,7 @@ class LineCache:
             line = previous.get(key)
             if line is None:
                 body = raw.rstrip("\r\n")
-                line = copy.copy(self._one(body))
+                line = copy.copy(self.line(body))
                 line.newline = raw[len(body) :]
                 line.number = number
             current[key] = line
@@ -122,6 +123,12 @@ class Document:
         if self._raw is None:
             self._raw = split_lines(self.text, keepends=True)
         return self._raw
+
+    @property
+    def body_lines(self) -> list[str]:
+        """The lines (with their breaks) of the text as achslint reads it: the first without a byte-order mark."""
+        raw = self.raw_lines
+        return [raw[0][1:], *raw[1:]] if self.bom else raw
 
     @property
     def line_count(self) -> int:

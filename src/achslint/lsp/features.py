@@ -12,7 +12,7 @@ from __future__ import annotations
 import bisect
 import os
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -40,6 +40,7 @@ from .textdiff import changed_blocks
 if TYPE_CHECKING:
     from ..axis.analysis import Setting
     from ..axis.resolved import ResolvedAxis
+    from ..fmt import Block, LiveFormat
     from ..linting.config import FmtOptions
     from ..machine.startup import StartupEntry
     from ..rules.context import Context
@@ -827,11 +828,23 @@ def diff_edits(document: Document, new_text: str) -> list[lsp.TextEdit]:
     old = document.raw_lines
     new = syntax.split_lines(new_text, keepends=True)
     return [
-        lsp.TextEdit(
-            lsp.Range(_line_start(document, old, i1), _line_start(document, old, i2)), "".join(new[j1:j2])
-        )
-        for i1, i2, j1, j2 in changed_blocks(old, new)
+        _line_edit(document, old, i1, i2, "".join(new[j1:j2])) for i1, i2, j1, j2 in changed_blocks(old, new)
     ]
+
+
+def format_edits(document: Document, blocks: Iterable[Block]) -> list[lsp.TextEdit]:
+    """The edits of `fmt.LiveFormat.changes` (lines of the text as achslint reads it) in the document."""
+    old = document.raw_lines
+    mark = "\ufeff" if document.bom else ""  # (read without it, the first line is written back with it)
+    return [
+        _line_edit(document, old, first, stop, mark + text if first == 0 else text)
+        for first, stop, text in blocks
+    ]
+
+
+def _line_edit(document: Document, old: list[str], first: int, stop: int, text: str) -> lsp.TextEdit:
+    """Lines [first, stop) of the document replaced by `text`."""
+    return lsp.TextEdit(lsp.Range(_line_start(document, old, first), _line_start(document, old, stop)), text)
 
 
 def _line_start(document: Document, old: list[str], index: int) -> lsp.Position:
@@ -946,29 +959,25 @@ def code_actions(
 # -- formatting ------------------------------------------------------------------------------------
 
 
-def format_document(
-    document: Document, file: syntax.ListFile, options: FmtOptions | None = None
-) -> list[lsp.TextEdit]:
-    from ..fmt import format_file
+def format_document(document: Document, options: FmtOptions | None = None) -> list[lsp.TextEdit]:
+    """The edits that format the document (the server keeps its `LiveFormat` to format again after edits)."""
+    from ..fmt import LiveFormat
 
-    formatted = format_file(file, options)
-    return diff_edits(document, ("\ufeff" if document.bom else "") + formatted)
+    live = LiveFormat(options, document.cache.line)
+    live.update(document.body_lines)
+    return format_edits(document, live.changes())
 
 
-def format_range(
-    document: Document, file: syntax.ListFile, request: lsp.Range, options: FmtOptions | None = None
-) -> list[lsp.TextEdit]:
-    from ..fmt import formatted_lines
-
-    bodies = formatted_lines(file, options)
+def format_range(document: Document, live: LiveFormat, request: lsp.Range) -> list[lsp.TextEdit]:
+    """Edits of the text of the lines in `request` that formatting rewrites (`live`: the formatting of the
+    document's text; line breaks and the lines after the end marker are the whole document's business)."""
+    first = max(request.start.line + 1, 1)
+    stop = min(max(request.end.line + (1 if request.end.character else 0), first), document.line_count)
     edits = []
-    first, last = request.start.line + 1, request.end.line + (1 if request.end.character else 0)
-    for line in file.lines[max(first, 1) - 1 : max(last, first)]:
-        body = bodies[line.number - 1]
-        if body != line.body:
-            edits.append(
-                lsp.TextEdit(lsp_range(document, line.number, 1, line.number, line.end_column), body)
-            )
+    for number, formatted in enumerate(live.formatted(first - 1, stop), first):
+        body, text = formatted.rstrip("\r\n"), document.line(number)
+        if body != text:
+            edits.append(lsp.TextEdit(lsp_range(document, number, 1, number, len(text) + 1), body))
     return edits
 
 

@@ -47,7 +47,7 @@ from .. import __version__
 from ..core.files import is_xml
 from ..core.pause import pause
 from . import features
-from .documents import Document, LineCache
+from .documents import Document
 from .outline import Outline
 from .protocol import FrameReader, Skipped
 from .session import ClientSettings, Session, Snapshot
@@ -55,6 +55,7 @@ from .worker import Gate, Latest, Superseded, WatchedSelector, Worker
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
+    from ..fmt import LiveFormat
     from ..linting.config import FmtOptions
     from ..machine.startup import StartupEntry
     from ..rules.context import Context
@@ -143,7 +144,11 @@ class AchslintServer(LanguageServer):
         self._fixes: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # fix-all edits by generation
         self.formats: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # formatting edits by generation
         self._outlines: dict[str, Outline] = {}  # each document's outline, line by line (on the worker)
-        self._loop_parses: dict[str, LineCache] = {}  # the loop's own parse of each document (formatting)
+        # each document's formatting, brought up to date with each request (`format_here`); on the loop, but
+        # for the moments the worker works one out (`format_on_worker`)
+        self._live: dict[str, LiveFormat] = {}
+        # formattings the worker made after a document's first lint, until the loop or a formatting job takes one
+        self._made: dict[str, LiveFormat] = {}
         self._converter = default_converter()  # type: ignore[no-untyped-call]  # the one pygls uses
         self._loop: asyncio.AbstractEventLoop | None = None
         self._worker: Worker | None = None
@@ -521,6 +526,12 @@ class AchslintServer(LanguageServer):
             outline = self._outline(uri, analysis)
             if outline is not None:
                 self._loop.call_soon_threadsafe(self._outlined, analysis, outline)
+            if outline is not None and document.line_count > LOOP_FORMAT_LINES:
+                # A long list's formatting, worked out once here, is then kept up to date on the loop with each
+                # request (a few milliseconds); worked out on request, it would wait for the lint.
+                live = self._made[uri] = self._new_format(document)
+                live.update(document.body_lines)
+                self._loop.call_soon_threadsafe(self._formatted_ready, uri)
         if not self._warm:
             self._warm = True
             self._warm_up()
@@ -536,6 +547,57 @@ class AchslintServer(LanguageServer):
     def _outlined(self, analysis: Analysis, outline: RawResult) -> None:
         if analysis.outline is None:
             analysis.outline = outline
+
+    # -- formatting --------------------------------------------------------------------------------
+    def _new_format(self, document: Document, options: FmtOptions | None = None) -> LiveFormat:
+        """A document's formatting (`fmt.LiveFormat`), with `[fmt]` of its configuration (as `achslint fmt`
+        formats), parsing lines with the document's cache (the lines its lints parsed)."""
+        from ..fmt import LiveFormat
+
+        if options is None:
+            options = self.session.config_for(document)[0].settings.fmt
+        return LiveFormat(options, document.cache.line)
+
+    def _formatted_ready(self, uri: str, live: LiveFormat | None = None) -> None:
+        """On the loop: a formatting the worker worked out is kept (unless a newer one is kept already): the
+        one given, or the one it made after a document's first lint (if no formatting job took it first)."""
+        if live is None:
+            live = self._made.pop(uri, None)
+        if live is not None and uri in self.documents:
+            self._live.setdefault(uri, live)
+
+    def format_here(self, document: Document, options: FmtOptions) -> LiveFormat | None:
+        """On the loop: the document's formatting, brought up to date with the edits since its last use when
+        they leave fmt's decisions about the whole file standing or the list is short (`LOOP_FORMAT_LINES`);
+        None when the worker is to work it out."""
+        uri = document.uri
+        short = document.line_count <= LOOP_FORMAT_LINES
+        live = self._live.get(uri)
+        if live is None or live.options != options:
+            if not short:
+                return None
+            live = self._live[uri] = self._new_format(document, options)
+        return live if live.update(document.body_lines, full=short) else None
+
+    async def format_on_worker(self, document: Document, options: FmtOptions) -> tuple[Document, LiveFormat]:
+        """The document's formatting worked out on the worker (after the work queued before), with the text it
+        is of; kept for the next requests."""
+        uri = document.uri
+        kept = self._live.pop(uri, None)  # the worker's alone until it is done
+        copy = document.copy()
+
+        def job() -> LiveFormat:
+            made = self._made.pop(
+                uri, None
+            )  # the one made after the first lint, if the loop has not taken it
+            live = next((one for one in (kept, made) if one is not None and one.options == options), None)
+            live = live or self._new_format(copy, options)
+            live.update(copy.body_lines)
+            return live
+
+        live = await self.run_on_worker(job)
+        self._formatted_ready(uri, live)
+        return copy, live
 
     def _warm_up(self) -> None:
         """After the first diagnostics, on the worker: import what the answers import on first use, and let the
@@ -674,7 +736,8 @@ class AchslintServer(LanguageServer):
         self.analyses.pop(uri, None)
         self._fixes.pop(uri, None)
         self.formats.pop(uri, None)
-        self._loop_parses.pop(uri, None)
+        self._live.pop(uri, None)
+        self._made.pop(uri, None)
         self._wake(uri, None)
         session, outlines = self.session, self._outlines
 
@@ -973,61 +1036,33 @@ async def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[
     )
 
 
-async def _formatted(
-    ls: AchslintServer,
-    uri: str,
-    edits: Callable[[Document, ListFile, FmtOptions], list[lsp.TextEdit]],
-    whole: bool = False,
-) -> list[lsp.TextEdit]:
-    """Formatting edits for the document's current text (a list of any kind, not XML); a `whole` document's
-    edits are kept for the analysis they were made for.
-
-    A list of up to `LOOP_FORMAT_LINES` lines is parsed and formatted here, on the loop, at once: the
-    parse re-reads only the lines edited since the last request (the loop's own `LineCache`), the worker
-    gives way meanwhile, and the lint of the last keystroke is not waited for. A longer list is formatted
-    on the worker from the analysis of its current text (its parse; it is linted at once after an edit).
-    """
+async def _formatting(ls: AchslintServer, uri: str) -> tuple[Document, LiveFormat] | None:
+    """The formatting of the document's text as it is now (a list of any kind, not XML) and that text, without
+    waiting for its lint: brought up to date on the loop (`AchslintServer.format_here`), else on the worker."""
     document = ls.documents.get(uri)
     if document is None or is_xml(document.name):
-        return []
-    if document.line_count <= LOOP_FORMAT_LINES:
-        generation = ls.generations.get(uri)
-        cached = ls.formats.get(uri)
-        if whole and cached is not None and cached[0] == generation:
-            return cached[1]
-        cache = ls._loop_parses.get(uri)
-        if cache is None:
-            cache = ls._loop_parses[uri] = LineCache(templates=document.cache)
-        # The configuration is read through caches that are safe to share with the worker (lru_cache).
-        options = ls.session.config_for(document)[0].settings.fmt  # `[fmt]`: as `achslint fmt` formats
-        found = edits(document, document.parse(cache), options)
-        if whole and generation is not None:
-            ls.formats[uri] = (generation, found)
-        return found
-    analysis = await ls.analysis(uri, current=True)
-    current = analysis is not None and analysis.generation == ls.generations.get(uri)
-    if analysis is not None and current and whole:
-        cached = ls.formats.get(uri)
-        if cached is not None and cached[0] == analysis.generation:
-            return cached[1]
-    copy = analysis.document if analysis is not None and current else document.copy()
-    parsed = analysis.snapshot.file if analysis is not None and current else None
-    session = ls.session
-
-    def job() -> list[lsp.TextEdit]:
-        options = session.config_for(copy)[0].settings.fmt  # `[fmt]`: the editor formats as `achslint fmt`
-        return edits(copy, parsed if parsed is not None else copy.parse(), options)
-
-    found = await ls.run_on_worker(job)
-    if analysis is not None and current and whole and uri in ls.documents:
-        ls.formats[uri] = (analysis.generation, found)
-    return found
+        return None
+    # The configuration is read through caches that are safe to share with the worker (lru_cache).
+    options = ls.session.config_for(document)[0].settings.fmt  # `[fmt]`: as `achslint fmt` formats
+    live = ls.format_here(document, options)
+    return (document, live) if live is not None else await ls.format_on_worker(document, options)
 
 
 @feature(lsp.TEXT_DOCUMENT_FORMATTING)
 @guarded(default=list)
 async def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
-    return await _formatted(ls, params.text_document.uri, features.format_document, whole=True)
+    uri = params.text_document.uri
+    generation = ls.generations.get(uri)
+    cached = ls.formats.get(uri)
+    if cached is not None and cached[0] == generation:
+        return cached[1]
+    found = await _formatting(ls, uri)
+    if found is None:
+        return []
+    edits = features.format_edits(found[0], found[1].changes())
+    if generation is not None and uri in ls.documents:
+        ls.formats[uri] = (generation, edits)
+    return edits
 
 
 @feature(lsp.TEXT_DOCUMENT_RANGE_FORMATTING)
@@ -1035,10 +1070,8 @@ async def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -
 async def range_formatting(
     ls: AchslintServer, params: lsp.DocumentRangeFormattingParams
 ) -> list[lsp.TextEdit]:
-    def edits(document: Document, file: ListFile, options: FmtOptions) -> list[lsp.TextEdit]:
-        return features.format_range(document, file, params.range, options)
-
-    return await _formatted(ls, params.text_document.uri, edits)
+    found = await _formatting(ls, params.text_document.uri)
+    return features.format_range(*found, params.range) if found is not None else []
 
 
 async def _list_analysis(ls: AchslintServer, uri: str) -> Analysis | None:
