@@ -312,8 +312,20 @@ class Catalogue:
         resolved = self.resolve(query)
         if resolved is not None:
             return resolved.parameter
-        members = [p for p in self.parameters if p.member == query or p.path.endswith("." + query)]
+        members = self._by_tail.get(query, [])
         return members[0] if len(members) == 1 else None
+
+    @cached_property
+    def _by_tail(self) -> dict[str, list[Parameter]]:
+        """Parameters by their member name and by each tail of their path after a dot (`homing_type`,
+        `homing.homing_type`): `find`'s last resort, once per catalogue instead of a walk through all."""
+        table: dict[str, list[Parameter]] = {}
+        for parameter in self.parameters:
+            parts = parameter.path.split(".")
+            tails = [".".join(parts[i:]) for i in range(1, len(parts))]
+            for tail in dict.fromkeys([parameter.member, *tails]):
+                table.setdefault(tail, []).append(parameter)
+        return table
 
     @cached_property
     def by_unindexed(self) -> dict[str, list[Parameter]]:
