@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 import os
 import subprocess
-import sys
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -21,6 +21,7 @@ from achslint.linting.config import ConfigError, forget_cached, load_file, repos
 from achslint.machine.startup import default_cnc_root, read_startup
 
 from .conftest import run_cli
+from .warm_cli import warm_achslint
 
 SECRET = "TOP-SECRET-4711"
 AXIS = "kopf.achs_nr  {n}\nkopf.log_achs_name  {name}\nkenngr.achs_typ  1\nEnde\n"
@@ -55,12 +56,17 @@ def _run(cwd: Path, *args: str) -> subprocess.CompletedProcess:
         os.chdir(before)
 
 
-def _real(cwd: Path, *args: str, timeout: float = 60) -> subprocess.CompletedProcess:
-    """The real entry point in a child process: for the cases that hung before (a FIFO blocks `open`)."""
+@pytest.fixture(scope="module")
+def warm(tmp_path_factory) -> Iterator[Path]:
+    with warm_achslint(tmp_path_factory.mktemp("warm")) as folder:
+        yield folder / "achslint"
+
+
+def _real(warm: Path, cwd: Path, *args: str, timeout: float = 60) -> subprocess.CompletedProcess:
+    """The CLI in a child process of its own (tests/warm_cli.py), not this one: for the cases that hung
+    before (a FIFO blocks `open`); the child is ended if it hangs."""
     env = {**os.environ, "NO_COLOR": "1"}
-    return subprocess.run(
-        [sys.executable, "-m", "achslint", *args], cwd=cwd, capture_output=True, timeout=timeout, env=env
-    )
+    return subprocess.run([warm, *args], cwd=cwd, capture_output=True, timeout=timeout, env=env)
 
 
 def _lis504(result: subprocess.CompletedProcess) -> list[str]:
@@ -268,14 +274,14 @@ def fifo(tmp_path) -> Path:
     ],
     ids=lambda args: " ".join(args[:1] + args[2:]),
 )
-def test_5_fifos_and_devices_are_refused_never_read(tmp_path, args):
+def test_5_fifos_and_devices_are_refused_never_read(tmp_path, args, warm):
     """Before, --program, --scenario and --config blocked on a FIFO forever and read /dev/zero until
     memory ran out; each is one line and exit 2 now (the child is killed after a minute if it hangs)."""
     _machine(tmp_path)
     (tmp_path / "rfp.nc").write_text(PROGRAM)
     os.mkfifo(tmp_path / "pipe")
     os.mkfifo(tmp_path / "pipe.nc")
-    done = _real(tmp_path, *(a.format(fifo=tmp_path / "pipe") for a in args))
+    done = _real(warm, tmp_path, *(a.format(fifo=tmp_path / "pipe") for a in args))
     assert done.returncode == 2, done.stderr
     message = done.stderr.decode()
     assert message.count("\n") == 1 and "Traceback" not in message

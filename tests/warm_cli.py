@@ -1,5 +1,6 @@
-"""A warm `achslint` command for tests that run shell scripts calling it many times (tests/test_ci_templates.py:
-the steps of action.yml and the GitLab job, two or three `achslint lint` each).
+"""A warm `achslint` command for tests that start it many times as a command of its own: the shell steps of
+action.yml and the GitLab job (tests/test_ci_templates.py, two or three `achslint lint` each), and the runs
+that must not hang on a FIFO (tests/test_reliability_reach.py: a hang stays in a child, which is ended).
 
 A cold `achslint` process spends most of its ~0.2 s of CPU starting Python and importing achslint; the lint of
 the fixture machine is a small part. Here one server process imports achslint and lints once (so the grammar,
@@ -38,6 +39,9 @@ if not answer:
     sys.stderr.write("achslint (tests/warm_cli.py): the server gave no exit code\\n")
 sys.exit(int(answer) if answer else 70)
 """
+
+
+CALL_LIMIT = 120  # seconds a call may take: then SIGALRM ends it, and its client exits 70
 
 
 @contextlib.contextmanager
@@ -100,6 +104,8 @@ def _child(connection: socket.socket) -> None:
         os.chdir(call["cwd"])
         os.environ.clear()
         os.environ.update(call["env"])
+        signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+        signal.alarm(CALL_LIMIT)  # a call that hangs (the bug a test looks for) ends rather than stays behind
         from achslint.cli import main
 
         code = main(call["argv"])
