@@ -99,7 +99,7 @@ RULE_MODULES: dict[str, tuple[Severity, tuple[Scope, ...], tuple[str, ...]]] = {
     "lis325_homing_acceleration_above_max": (ERROR, LIST, AXIS_KINDS),
     "lis326_homing_ramp_time_below_min": (ERROR, LIST, AXIS_KINDS),
     "lis327_spindle_not_modulo": (ERROR, LIST, AXIS_KINDS),
-    "lis328_fixed_stop_torque_not_limited": (WARNING, LIST, AXIS_KINDS),
+    "lis328_fixed_stop_torque_not_limited": (ERROR, LIST, AXIS_KINDS),
     "lis401_parameter_without_effect": (INFO, LIST, AXIS_KINDS),
     "lis402_one_phase_with_cam": (WARNING, LIST, AXIS_KINDS),
     "lis403_cam_edge_repeatability": (WARNING, LIST, AXIS_KINDS),
