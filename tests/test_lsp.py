@@ -410,6 +410,39 @@ async def test_formatting_gives_fmt_output(client: LanguageClient, folder: Path)
     close_doc(client, uri)
 
 
+async def test_formatting_after_each_edit_gives_fmt_output(client: LanguageClient, folder: Path):
+    """The server keeps a list's formatting and brings it up to date with the edits since the last request
+    (`fmt.LiveFormat`): after every edit, the edits it answers turn the text into fmt's."""
+    path = folder / "fmt-edits" / "achsmds1.lis"
+    path.parent.mkdir()
+    text = (FIXTURES / "lsp" / "unaligned.lis").read_bytes().decode("latin-1")
+    uri = open_doc(client, path, text)
+    rng = random.Random(28)
+    for version in range(2, 14):
+        lines = text.splitlines(keepends=True)
+        line = rng.randrange(len(lines))
+        if version % 3:  # a character typed into a line
+            character = rng.randrange(len(lines[line].rstrip("\r\n")) + 1)
+            where = lsp.Range(lsp.Position(line, character), lsp.Position(line, character))
+            typed = rng.choice([" ", "\t", "7", "  "])
+        else:  # a line inserted
+            where = lsp.Range(lsp.Position(line, 0), lsp.Position(line, 0))
+            typed = rng.choice(["kopf.achs_nr 3\n", "  getriebe[0].vb_reflow\t\t900  ( comment\n", "\n"])
+        client.text_document_did_change(
+            lsp.DidChangeTextDocumentParams(
+                lsp.VersionedTextDocumentIdentifier(version=version, uri=uri),
+                [lsp.TextDocumentContentChangePartial(range=where, text=typed)],
+            )
+        )
+        text = apply_edits(text, [lsp.TextEdit(where, typed)])
+        edits = await client.text_document_formatting_async(
+            lsp.DocumentFormattingParams(lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True))
+        )
+        expected = format_bytes(text.encode("latin-1"))[0].decode("latin-1")
+        assert apply_edits(text, edits) == expected, version
+    close_doc(client, uri)
+
+
 async def test_document_symbols_are_grouped(client: LanguageClient, folder: Path):
     path = folder / "outline" / "achsmds1.lis"
     path.parent.mkdir()

@@ -141,9 +141,10 @@ class _Row:
     _sep: str
     sep2: str
     free: bool = field(init=False)
-    # worked out once, forgotten when the indent or the separator changes: `alignments()`, where the value
-    # starts and ends (-1: not yet)
+    # worked out once, forgotten when the indent or the separator changes: `alignments()`, where the path
+    # ends, where the value starts and ends (-1: not yet)
     aligned: tuple[Alignment, Alignment] | None = field(default=None, init=False)
+    _path_end: int = field(default=-1, init=False)
     _start: int = field(default=-1, init=False)
     _end: int = field(default=-1, init=False)
 
@@ -157,7 +158,7 @@ class _Row:
     @indent.setter
     def indent(self, indent: str) -> None:
         self._indent = indent
-        self.aligned, self._start, self._end = None, -1, -1
+        self.aligned, self._path_end, self._start, self._end = None, -1, -1, -1
 
     @property
     def sep(self) -> str:
@@ -178,7 +179,9 @@ class _Row:
 
     @property
     def path_end(self) -> int:
-        return _advance(0, self.indent) + len(self.path)
+        if self._path_end < 0:
+            self._path_end = _advance(0, self._indent) + len(self.path)
+        return self._path_end
 
     @property
     def value_start(self) -> int:
@@ -680,8 +683,7 @@ class LiveFormat:
             self._decision = None
             return False
         decision = _Decision(style, target, kept, tabs, None)
-        if again:
-            self._mark_all(decision)
+        placed = self._mark_all(decision) if again else None
         if self.options.comment_column is not None:
             comments: int | None = self.options.comment_column - 1
         else:
@@ -701,7 +703,7 @@ class LiveFormat:
         for index in lines:
             if again and index and not index % self.PAUSE_EVERY:
                 pause()
-            self._out[index] = self._formatted(index, decision)
+            self._out[index] = self._formatted(index, decision, placed[index] if placed is not None else None)
         return True
 
     def _blocks(self, main: Alignment) -> tuple[Alignment, ...]:
@@ -782,15 +784,25 @@ class LiveFormat:
         self._votes = votes
         self._tab_votes = Counter(vote for vote in votes if vote is not None)
 
-    def _mark_all(self, decision: _Decision) -> None:
+    def _mark_all(self, decision: _Decision) -> list[_Row | None]:
+        """Every line's `_mark`; the value lines with their values placed (for `_formatted`)."""
         marks: list[int | None] = []
+        placed: list[_Row | None] = []
         for index, row in enumerate(self._rows):
             if index and not index % self.PAUSE_EVERY:
                 pause()
-            marks.append(None if row is None else self._placed(row, decision))
+            if row is None:
+                marks.append(None)
+                placed.append(None)
+                continue
+            moved = _row(row.line)
+            _place_value(moved, decision.target, decision.kept, decision.tabs)
+            marks.append(_mark(moved))
+            placed.append(moved)
         self._marks = marks
         self._commented = sum(mark is not None for mark in marks)
         self._starts = Counter(mark for mark in marks if mark is not None and mark >= 0)
+        return placed
 
     @staticmethod
     def _placed(row: _Row, decision: _Decision) -> int | None:
@@ -799,13 +811,15 @@ class LiveFormat:
         _place_value(placed, decision.target, decision.kept, decision.tabs)
         return _mark(placed)
 
-    def _formatted(self, index: int, decision: _Decision) -> str:
+    def _formatted(self, index: int, decision: _Decision, placed: _Row | None = None) -> str:
+        """Line `index` formatted (`placed`: the line with its value placed already), with its break."""
         raw, line = self._raw[index], self._lines[index]
         if self._rows[index] is None:
             body = _other_line(line)
         else:
-            placed = _row(line)
-            _place_value(placed, decision.target, decision.kept, decision.tabs)
+            if placed is None:
+                placed = _row(line)
+                _place_value(placed, decision.target, decision.kept, decision.tabs)
             _place_comment(placed, decision.comments, decision.style.values is None, decision.tabs)
             body = placed.body()
         text = raw.rstrip("\r\n")
