@@ -520,7 +520,27 @@ def _has_table(pyproject: Path) -> bool:
 
     A pyproject.toml that is not valid TOML is a configuration error: it may hold our table, and using
     the defaults instead would pass silently what the project meant to fail.
+
+    The answer is kept for the file's content: a project's pyproject.toml without our table lies above
+    every list of the project, and was parsed again for each run of a process (the language server, the
+    tests), after `forget_cached`.
     """
+    from ..core.files import SETTINGS_LIMIT, read_list
+
+    try:
+        content = read_list(pyproject, limit=SETTINGS_LIMIT)
+    except OSError:
+        return _table_in(pyproject)  # read_toml says why, or there is no file any more
+    return _table_in_content(pyproject, content)
+
+
+@lru_cache(maxsize=16)
+def _table_in_content(pyproject: Path, content: bytes) -> bool:
+    """`_table_in` for a file holding `content` (the key: an edit is a new content)."""
+    return _table_in(pyproject)
+
+
+def _table_in(pyproject: Path) -> bool:
     from ..core.tomlfile import read_toml
 
     try:
