@@ -140,8 +140,9 @@ def test_the_plot_range_includes_the_position_searched_for():
 TORQ = (
     b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
     b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
-    b"kenngr.homing.torq_max_distance 2000000\nEnde\n"
-)
+    b"kenngr.homing.torq_max_distance 2000000\n"
+    b"antr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\nantr.fixed_stop.drive_ident[0].wr_ident S_0_0092\nEnde\n"
+)  # with the torque limit a SERCOS drive needs for the move (P-AXIS-00719; LIS328 otherwise)
 
 
 def test_a_fixed_stop_beyond_torq_max_distance_names_both():

@@ -255,6 +255,7 @@ def test_acceleration_source_per_strategy():
     assert "a_ref" in linear().acceleration_source and linear().acceleration == 500
     torq = dry_run(
         b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\ngetriebe[0].a_ref 900\n"
+        b"antr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\n"
         b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
         b"kenngr.homing.torq_max_distance 2000000\nEnde\n",
         "t.lis",
@@ -348,8 +349,9 @@ def test_a_rule_that_says_the_cnc_refuses_the_homing_refuses_the_dry_run(code):
     assert refusal((folder / "good.lis").read_bytes(), "good.lis") is None
 
 
-def test_the_rules_that_refuse_the_homing_are_the_drive_type_and_the_spindle_direction():
-    assert [code for code, rule in registry().items() if rule.refuses_homing] == ["LIS306", "LIS319"]
+def test_the_rules_that_refuse_the_homing_are_the_drive_type_the_spindle_direction_and_the_torque_limit():
+    refusing = [code for code, rule in registry().items() if rule.refuses_homing]
+    assert refusing == ["LIS306", "LIS319", "LIS328"]
 
 
 def write(folder: Path, name: str, text: str) -> Path:

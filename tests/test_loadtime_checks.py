@@ -14,7 +14,8 @@ import pytest
 from achslint import lint
 from achslint.api import LintRequest, run_lint
 from achslint.axis.resolved import resolve_bytes
-from achslint.dryrun import dry_run
+from achslint.core.diagnostics import Severity
+from achslint.dryrun import DryRunRefused, dry_run
 from achslint.explanation import explain_list
 from achslint.homing.scenario_input import ScenarioInput
 from achslint.linting.config import Overrides
@@ -218,17 +219,31 @@ LIMIT = (
 )
 
 
+def severities(text: str, code: str) -> list[Severity]:
+    return [d.severity for d in lint(listed(text), name="achsmds1.lis") if d.code == code]
+
+
 @pytest.mark.parametrize("drive", ["2", "8"])  # SERCOS, CANopen: the CNC writes drive_ident to the drive
-def test_fixed_stop_without_torque_limit_warns(drive):
-    (message,) = found(f"kenngr.antr_typ {drive}\n" + TORQ, "LIS328")
-    assert "no antr.fixed_stop.drive_ident[i].id is TORQUE_LIMIT" in message and "full torque" in message
+def test_fixed_stop_without_torque_limit_is_an_error_the_dry_run_refuses(drive):
+    # P-AXIS-00719: TORQUE_LIMIT is required for the move; without it the CNC stops homing with P-ERR-70541.
+    text = f"kenngr.antr_typ {drive}\n" + TORQ
+    (message,) = found(text, "LIS328")
+    assert "no antr.fixed_stop.drive_ident[i].id is TORQUE_LIMIT" in message and "P-ERR-70541" in message
+    assert "full torque" not in message
+    assert severities(text, "LIS328") == [Severity.ERROR]
+    with pytest.raises(DryRunRefused, match="LIS328"):
+        dry_run(listed(text), "achsmds1.lis")
     assert found(f"kenngr.antr_typ {drive}\n" + TORQ + LIMIT.format(i=3), "LIS328") == []
 
 
 def test_a_torque_limit_that_is_never_sent_does_not_count():
     ignored = LIMIT.format(i=1) + "antr.fixed_stop.drive_ident[1].commu IGNORE\n"
-    (message,) = found("kenngr.antr_typ 2\n" + TORQ + ignored, "LIS328")
-    assert "`antr.fixed_stop.drive_ident[1].commu` IGNORE" in message
+    text = "kenngr.antr_typ 2\n" + TORQ + ignored
+    (message,) = found(text, "LIS328")
+    assert "`antr.fixed_stop.drive_ident[1].commu` IGNORE" in message and "full torque" in message
+    # configured but not sent: no documented CNC error, so a warning, and the homing runs
+    assert severities(text, "LIS328") == [Severity.WARNING]
+    assert dry_run(listed(text), "achsmds1.lis").trace.strategy.id == "fixed_stop"
     # Another entry (the position-lag window) is no torque limit either.
     window = (
         "antr.fixed_stop.drive_ident[0].id MON_WINDOW\nantr.fixed_stop.drive_ident[0].wr_ident S_0_0159\n"

@@ -4,7 +4,7 @@ Builds the resolved axis and the strategy, completes the scenario (the
 configuration's `scenario` table, then the scenario file, then the
 command-line options; `cycle-time-us` of the configuration as the cycle),
 refuses what the CNC would not run (the findings of the rules that say so,
-`CNC_REFUSES_HOMING`: LIS306, LIS319) and scenarios that do not
+`CNC_REFUSES_HOMING` and an error: LIS306, LIS319, LIS328) and scenarios that do not
 fit the axis (a `[drive]` table on an axis that does not home drive-controlled),
 runs the strategy's sequence (homing/sequences/ over homing/motion.py), puts the
 facts the simulation found in the words of their rules (LIS317 soft limits, LIS402
@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .axis.resolved import ResolvedAxis, plain, resolve_bytes
+from .core.diagnostics import Severity
 from .homing import classify
 from .homing.motion import Fact, Simulator, SoftLimitOvershoot, StartOnCam, Trace, TraceWarning
 from .homing.scenario import ScenarioError, parse_input
@@ -125,6 +126,8 @@ def _refused(context: Context) -> str | None:
     """The refusal with the first such finding (in code order), run by the lint engine; None if none."""
     policy = _refusing()
     found = engine.run(Scope.LIST, (context,), policy) if policy is not None else []
+    # only an error refuses: LIS328 warns of an unsent torque limit, with which the homing does run
+    found = [diagnostic for diagnostic in found if diagnostic.severity is Severity.ERROR]
     if not found:
         return None
     first = min(found, key=lambda diagnostic: diagnostic.code)

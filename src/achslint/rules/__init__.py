@@ -83,6 +83,8 @@ class Rule:
     refuses_homing: bool = False  # a finding means the CNC does not run the homing (LIS306, LIS319)
     # an info finding says the check could not run (LIS317 on an axis too short for any assumed cam)
     info_when_unchecked: bool = False
+    # the lower severity some of its findings have (LIS328: a torque limit configured but never sent)
+    also: tuple[Severity, ...] = ()
     kinds: tuple[str, ...] = AXIS_KINDS  # the list kinds its LIST check runs for (ALL_KINDS: every kind)
 
     def applies_to(self, kind: str) -> bool:
@@ -103,7 +105,8 @@ class Rule:
     @property
     def severities(self) -> tuple[Severity, ...]:
         """Every severity the rule emits: its own, and info for "not checked" where the rule says so."""
-        return (self.severity, Severity.INFO) if self.info_when_unchecked else (self.severity,)
+        unchecked = (Severity.INFO,) if self.info_when_unchecked else ()
+        return (self.severity, *self.also, *unchecked)
 
     @property
     def scopes(self) -> tuple[Scope, ...]:
@@ -164,5 +167,6 @@ def rule(code: str) -> Rule:
         produced_by=getattr(module, "PRODUCED_BY", "lint"),
         refuses_homing=getattr(module, "CNC_REFUSES_HOMING", False),
         info_when_unchecked=getattr(module, "INFO_WHEN_UNCHECKED", False),
+        also=tuple(getattr(module, "ALSO_SEVERITIES", ())),
         kinds=codes.kinds(code),
     )

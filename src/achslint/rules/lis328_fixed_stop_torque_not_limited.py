@@ -2,19 +2,24 @@
 What
 ----
 Homing to a fixed stop (`TORQ`) on a SERCOS or CANopen drive whose list has no
-`antr.fixed_stop.drive_ident[i]` entry with the identifier `TORQUE_LIMIT` (or
-only one whose `commu` is `IGNORE`, which is never sent). With these drives the
-CNC limits the torque by writing that entry to the drive at the start of homing.
+`antr.fixed_stop.drive_ident[i]` entry with the identifier `TORQUE_LIMIT`
+(error), or only one whose `commu` is `IGNORE`, which is never sent (warning).
+With these drives the CNC limits the torque by writing that entry to the drive
+at the start of homing.
 
 Why
 ---
 For homing to a fixed stop the drive's torque must be limited (§2.3.3.4.1);
 the CNC does it through the drive parameters of "move to fixed stop"
 (§2.3.3.4.3), where `TORQUE_LIMIT` is the identifier reserved for the torque
-limit. Without it nothing limits the torque: the axis drives into the stop with
-the drive's full torque, which can damage the mechanics, and detection by
-torque has nothing to compare with. The CNC loads such a list without a
-message, so this is a warning.
+limit and required for the move (P-AXIS-00719). Without such an entry the CNC
+stops the homing when it starts with error P-ERR-70541 ("no drive ident
+TORQUE_LIMIT configured for fixed-stop movement"): the axis is not homed, and
+`achslint dry-run` refuses it with this finding. An entry that is configured
+but not sent (`commu IGNORE`) leaves the torque unlimited: the axis pushes into
+the stop with the drive's full torque, which can damage the mechanics, and
+detection by torque has nothing to compare with. The manuals name no error for
+that case, so it is a warning.
 
 Example
 -------
@@ -45,7 +50,8 @@ Reference
 ---------
 TF5200 homing manual §2.3.3.4.1 (the maximum torque must be limited), §2.3.3.4.3 (drive parameters
 P-AXIS-00719 … P-AXIS-00731, written at the start of homing) and the SERCOS example of §2.3.3.4.6;
-P-AXIS-00719 (`TORQUE_LIMIT` reserved and required for moving to a fixed stop), P-AXIS-00720.
+P-AXIS-00719 (`TORQUE_LIMIT` reserved and required for moving to a fixed stop), P-AXIS-00720 (`commu`);
+P-ERR-70541 (no drive ident TORQUE_LIMIT configured for the fixed-stop movement; runtime error).
 """
 
 from __future__ import annotations
@@ -54,6 +60,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..axis.drives import CANOPEN, SERCOS
+from ..core.diagnostics import Severity
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -69,6 +76,8 @@ PARAMETERS = (
     "antr.fixed_stop.drive_ident[i].commu",
 )  # parameters this rule reads
 SUMMARY = "Fixed-stop homing on a drive whose torque is not limited"
+CNC_REFUSES_HOMING = True  # without TORQUE_LIMIT the CNC stops the homing (P-ERR-70541): a dry-run refuses
+ALSO_SEVERITIES = (Severity.WARNING,)  # a TORQUE_LIMIT entry that is never sent (no documented CNC error)
 
 ENTRIES = range(4)  # antr.fixed_stop.drive_ident[0..3]
 
@@ -82,15 +91,22 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     if sent:
         return
     ignored = [f"antr.fixed_stop.drive_ident[{i}].commu" for i in named]
-    found = (
-        f"its TORQUE_LIMIT entry is not sent ({', '.join(f'`{p}` IGNORE' for p in ignored)})"
-        if ignored
-        else "no antr.fixed_stop.drive_ident[i].id is TORQUE_LIMIT"
-    )
+    if not ignored:
+        yield ctx.cross(
+            CODE,
+            f"fixed-stop homing (TORQ) on kenngr.antr_typ {values.drive_type} ({values.drive_name()}) without a "
+            "torque limit: no antr.fixed_stop.drive_ident[i].id is TORQUE_LIMIT, which the move to a fixed stop "
+            "requires (P-AXIS-00719), so the CNC stops the homing at its start with error P-ERR-70541. Add an "
+            "entry with id TORQUE_LIMIT, the drive's torque-limit object as wr_ident and the limit as active_value",
+            ["kenngr.homing.homing_type", "kenngr.antr_typ"],
+        )
+        return
+    listed = ", ".join(f"`{path}` IGNORE" for path in ignored)
     yield ctx.cross(
         CODE,
         f"fixed-stop homing (TORQ) on kenngr.antr_typ {values.drive_type} ({values.drive_name()}) without a torque "
-        f"limit: {found}, so the axis pushes into the stop with the drive's full torque (§2.3.3.4.1). Add an "
-        "entry with id TORQUE_LIMIT, the drive's torque-limit object as wr_ident and the limit as active_value",
+        f"limit: its TORQUE_LIMIT entry is not sent ({listed}), so the axis pushes into the stop with the drive's "
+        "full torque (§2.3.3.4.1). Send it: set its commu to ACYCLIC (or CYCLIC)",
         ["kenngr.homing.homing_type", *ignored, "kenngr.antr_typ"],
+        severity=Severity.WARNING,
     )
