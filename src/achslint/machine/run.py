@@ -241,7 +241,7 @@ class _Axis:
         self._refusal_known = False
 
     def refused(self) -> str | None:
-        """The lint finding that makes the CNC refuse this axis's homing (LIS306, LIS319), checked once."""
+        """The lint finding that makes the CNC refuse this axis's homing (LIS306, LIS319, LIS328), checked once."""
         if not self._refusal_known:
             self._refused = refusal(self.axis.data, self.axis.name, self.axis.defaults)
             self._refusal_known = True
