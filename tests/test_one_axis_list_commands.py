@@ -108,3 +108,15 @@ def test_load_and_loads_refuse_a_list_of_another_kind(name: str) -> None:
         achslint.load(path)
     with pytest.raises(UnreadableInput, match="not an axis list"):
         achslint.loads(path.read_text(encoding="latin-1"), filename=name)
+
+
+def test_fmt_leaves_an_nc_program_as_it_is(tmp_path: Path) -> None:
+    # A program's blocks are no `parameter value` lines: aligned like a list, `N10   G74 X1` would be rewritten.
+    program = tmp_path / "rfp.nc"
+    text = b"N10   G74 X1\nN20 G74    Y1\nM30\n"
+    program.write_bytes(text)
+    for mode in ((), ("--check",), ("--diff",)):
+        result = run_cli("fmt", *mode, str(program))
+        assert result.returncode == 2 and result.stdout == "", mode
+        assert "fmt rewrites lists only, not NC programs" in result.stderr
+    assert program.read_bytes() == text

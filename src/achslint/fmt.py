@@ -57,7 +57,7 @@ from .core.files import is_xml, read_list, reason, write_atomically
 from .core.pause import pause
 from .linting.config import KEEP, LEFT, RIGHT, FmtOptions
 from .linting.discovery import Finder
-from .linting.run import not_rewritten, write_error
+from .linting.run import is_program, not_rewritten, write_error
 from .syntax import parser as syntax
 from .syntax.diff import unified_diff
 
@@ -966,6 +966,9 @@ def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatO
         if is_xml(target.name):
             if target.name in request.paths:  # XML found in a folder is simply not fmt's business
                 outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
+            continue
+        if is_program(target.name):  # its blocks are no `parameter value` lines: aligned, they would be garbled
+            outcome.errors.append(f"{target.name}: fmt rewrites lists only, not NC programs")
             continue
         try:
             if target.path is not None:
