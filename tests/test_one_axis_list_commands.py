@@ -26,7 +26,9 @@ OTHER_KINDS = {  # fixture -> the kind lint reads it as
 
 def run_cli(*args: str) -> subprocess.CompletedProcess[str]:
     result = run_cli_bytes(*args)
-    return subprocess.CompletedProcess(result.args, result.returncode, result.stdout.decode(), result.stderr.decode())
+    return subprocess.CompletedProcess(
+        result.args, result.returncode, result.stdout.decode(), result.stderr.decode()
+    )
 
 
 @pytest.mark.parametrize("name", sorted(OTHER_KINDS))
@@ -120,3 +122,13 @@ def test_fmt_leaves_an_nc_program_as_it_is(tmp_path: Path) -> None:
         assert result.returncode == 2 and result.stdout == "", mode
         assert "fmt rewrites lists only, not NC programs" in result.stderr
     assert program.read_bytes() == text
+
+
+def test_schema_refuses_a_kind_it_would_ignore() -> None:
+    result = run_cli("schema", "--output", "lint", "--kind", "channel")
+    assert result.returncode == 2 and result.stdout == ""
+    assert "--kind goes with --output model" in result.stderr
+    channel = run_cli("schema", "--kind", "channel")
+    axis = run_cli("schema")
+    assert channel.returncode == axis.returncode == 0 and channel.stdout != axis.stdout
+    assert '"Antr"' in axis.stdout and '"Antr"' not in channel.stdout

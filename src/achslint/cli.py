@@ -1151,8 +1151,11 @@ def schema(
         help="model: the typed parameter model of a kind of list (--kind); lint: the output of "
         "`lint --format json`.",
     ),
-    kind: SchemaKind = typer.Option(
-        SchemaKind.axis, "--kind", help="With --output model: the model of axis, channel or start-up lists."
+    kind: SchemaKind | None = typer.Option(
+        None,
+        "--kind",
+        help="With --output model: the model of axis (the default), channel or start-up lists.",
+        show_default=False,
     ),
 ) -> None:
     """Print a JSON Schema: of the parameter model of axis, channel or start-up lists, or of the lint JSON
@@ -1160,11 +1163,13 @@ def schema(
     from .output import write_json
 
     if output == SchemaOutput.lint:
+        if kind is not None:
+            _fail("--kind goes with --output model: the output of `lint --format json` has one schema")
         from .output.reporters.json_format import SCHEMA as document
     else:
         from .model import json_schema
 
-        document = json_schema(kind.value)
+        document = json_schema((kind or SchemaKind.axis).value)
     write_json(document, _screen(Color.never))
 
 
