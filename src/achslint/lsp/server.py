@@ -142,7 +142,7 @@ class AchslintServer(LanguageServer):
         self._waiting: dict[str, list[tuple[int, asyncio.Future[Analysis | None]]]] = {}
         self._to_lint: Latest[tuple[Document, int]] = Latest()
         self._fixes: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # fix-all edits by generation
-        self.formats: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # formatting edits by generation
+        self.formats: dict[str, tuple[int, RawResult]] = {}  # formatting edits by generation
         self._outlines: dict[str, Outline] = {}  # each document's outline, line by line (on the worker)
         # each document's formatting, brought up to date with each request (`format_here`); on the loop, but
         # for the moments the worker works one out (`format_on_worker`)
@@ -150,7 +150,9 @@ class AchslintServer(LanguageServer):
         # formattings the worker made after a document's first lint, until the loop or a formatting job takes one
         self._made: dict[str, LiveFormat] = {}
         self._formats_made: set[str] = set()  # the documents whose formatting the worker made (on the worker)
-        self._coming: dict[str, asyncio.Future[None]] = {}  # formattings the worker is making now
+        # what the worker is making now for a document's first analysis ("outline", "format"): requests wait
+        # for it rather than make it again on the loop or queue a job after the next lint
+        self._coming: dict[tuple[str, str], asyncio.Future[None]] = {}
         self._converter = default_converter()  # type: ignore[no-untyped-call]  # the one pygls uses
         self._loop: asyncio.AbstractEventLoop | None = None
         self._worker: Worker | None = None
@@ -516,31 +518,36 @@ class AchslintServer(LanguageServer):
         message = {"jsonrpc": "2.0", "method": lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": params}
         # The outline, which the editor asks for after each edit: made before the loop has the analysis, so it
         # answers at once (2 ms for a 2,000-line list, the lines an edit did not touch are kept); the first of
-        # a document (all its lines: 12 ms there) after its diagnostics are out.
+        # a document (all its lines: 12 ms there, 250 ms for 50,000 lines) after its diagnostics are out.
         first = uri not in self._outlines
         if analysis is not None and not first:
             analysis.outline = self._outline(uri, analysis)
         if analysis is not None and analysis.snapshot.file is not None:
             features.paths_for_completion(analysis.snapshot.file)  # what completion ranks by, likewise
         body = json.dumps(self._converter.unstructure(message)).encode("utf-8")
+        # Likewise the document's formatting, made once after its first diagnostics and then brought up to date
+        # on the loop with each request (a few milliseconds for a one-line edit of 50,000 lines); made on
+        # request, it would wait for the lint (or, on the loop, hold up other answers).
+        make_outline = analysis is not None and first and analysis.snapshot.file is not None
+        make_format = analysis is not None and uri not in self._formats_made and not is_xml(document.name)
+        # Requests that come meanwhile wait for them: told before the diagnostics go out.
+        for what, making in (("outline", make_outline), ("format", make_format)):
+            if making:
+                self._coming_soon(what, uri)
         self._hand_over(uri, generation, analysis, body, peers)
-        if analysis is not None and first and self._loop is not None and not self._to_lint.waiting(uri):
-            outline = self._outline(uri, analysis)
-            if outline is not None:
-                self._loop.call_soon_threadsafe(self._outlined, analysis, outline)
-        if analysis is not None and uri not in self._formats_made and not is_xml(document.name):
-            # The document's formatting, worked out once after its diagnostics are out, is then brought up to
-            # date on the loop with each request (a few milliseconds for a one-line edit of 50,000 lines);
-            # worked out on request, it would wait for the lint (or, on the loop, hold up other answers).
+        if make_outline and analysis is not None:
+            outline = None
+            try:
+                outline = self._outline(uri, analysis)
+            finally:  # (whatever happens, a request waiting for it is answered)
+                self._arrived("outline", uri, lambda: self._outlined(analysis, outline))
+        if make_format:
             self._formats_made.add(uri)
-            if self._loop is not None:
-                self._loop.call_soon_threadsafe(self._format_coming, uri)
             try:
                 live = self._made[uri] = self._new_format(document)
                 live.update(document.body_lines)
-            finally:  # (whatever happens, a request waiting for it is answered)
-                if self._loop is not None:
-                    self._loop.call_soon_threadsafe(self._formatted_ready, uri)
+            finally:
+                self._arrived("format", uri, lambda: self._formatted_ready(uri))
         if not self._warm:
             self._warm = True
             self._warm_up()
@@ -553,9 +560,40 @@ class AchslintServer(LanguageServer):
             return None
         return RawResult(self._outlines.setdefault(uri, Outline()).json(analysis.document, file))
 
-    def _outlined(self, analysis: Analysis, outline: RawResult) -> None:
+    def _outlined(self, analysis: Analysis, outline: RawResult | None) -> None:
         if analysis.outline is None:
             analysis.outline = outline
+
+    def _coming_soon(self, what: str, uri: str) -> None:
+        """On the worker: the document's `what` is made next; requests for it wait (`until_made`)."""
+        if self._loop is not None:
+            self._loop.call_soon_threadsafe(self._expect, (what, uri))
+
+    def _arrived(self, what: str, uri: str, keep: Callable[[], None]) -> None:
+        """On the worker: the document's `what` is made; on the loop, `keep` keeps it, and the requests that
+        waited for it go on."""
+
+        def arrived() -> None:
+            keep()
+            coming = self._coming.pop((what, uri), None)
+            if coming is not None and not coming.done():
+                coming.set_result(None)
+
+        if self._loop is not None:
+            self._loop.call_soon_threadsafe(arrived)
+
+    def _expect(self, key: tuple[str, str]) -> None:
+        if key[1] in self.documents and self._loop is not None and key not in self._coming:
+            self._coming[key] = self._loop.create_future()
+
+    async def until_made(self, what: str, uri: str) -> bool:
+        """Wait until the worker has made the document's `what`, if it is making it now; whether it was."""
+        coming = self._coming.get((what, uri))
+        if coming is None:
+            return False
+        with contextlib.suppress(asyncio.TimeoutError):  # (not TimeoutError before Python 3.11)
+            await asyncio.wait_for(asyncio.shield(coming), FIRST_ANALYSIS_WAIT)
+        return True
 
     # -- formatting --------------------------------------------------------------------------------
     def _new_format(self, document: Document, options: FmtOptions | None = None) -> LiveFormat:
@@ -567,11 +605,6 @@ class AchslintServer(LanguageServer):
             options = self.session.config_for(document)[0].settings.fmt
         return LiveFormat(options, document.cache.line)
 
-    def _format_coming(self, uri: str) -> None:
-        """On the loop: the worker makes the document's formatting now; requests wait for it (`formatting`)."""
-        if uri in self.documents and self._loop is not None and uri not in self._coming:
-            self._coming[uri] = self._loop.create_future()
-
     def _formatted_ready(self, uri: str, live: LiveFormat | None = None) -> None:
         """On the loop: a formatting the worker worked out is kept (unless a newer one is kept already): the
         one given, or the one it made after a document's first lint (if no formatting job took it first)."""
@@ -579,9 +612,6 @@ class AchslintServer(LanguageServer):
             live = self._made.pop(uri, None)
         if live is not None and uri in self.documents:
             self._live.setdefault(uri, live)
-        coming = self._coming.pop(uri, None)
-        if coming is not None and not coming.done():
-            coming.set_result(None)
 
     def format_here(self, document: Document, options: FmtOptions) -> LiveFormat | None:
         """On the loop: the document's formatting, brought up to date with the edits since its last use when
@@ -755,9 +785,10 @@ class AchslintServer(LanguageServer):
         self.formats.pop(uri, None)
         self._live.pop(uri, None)
         self._made.pop(uri, None)
-        coming = self._coming.pop(uri, None)
-        if coming is not None and not coming.done():
-            coming.set_result(None)
+        for what in ("outline", "format"):
+            coming = self._coming.pop((what, uri), None)
+            if coming is not None and not coming.done():
+                coming.set_result(None)
         self._wake(uri, None)
         session, outlines = self.session, self._outlines
 
@@ -1067,10 +1098,7 @@ async def _formatting(ls: AchslintServer, uri: str) -> tuple[Document, LiveForma
     # The configuration is read through caches that are safe to share with the worker (lru_cache).
     options = ls.session.config_for(document)[0].settings.fmt  # `[fmt]`: as `achslint fmt` formats
     live = ls.format_here(document, options)
-    coming = ls._coming.get(uri)
-    if live is None and coming is not None:  # the worker makes it right now: sooner than a job after the lint
-        with contextlib.suppress(asyncio.TimeoutError):  # (not TimeoutError before Python 3.11)
-            await asyncio.wait_for(asyncio.shield(coming), FIRST_ANALYSIS_WAIT)
+    if live is None and await ls.until_made("format", uri):  # sooner than a job after the next lint
         document = ls.documents.get(uri)
         if document is None:
             return None
@@ -1080,7 +1108,9 @@ async def _formatting(ls: AchslintServer, uri: str) -> tuple[Document, LiveForma
 
 @feature(lsp.TEXT_DOCUMENT_FORMATTING)
 @guarded(default=list)
-async def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -> list[lsp.TextEdit]:
+async def formatting(
+    ls: AchslintServer, params: lsp.DocumentFormattingParams
+) -> list[lsp.TextEdit] | RawResult:
     uri = params.text_document.uri
     generation = ls.generations.get(uri)
     cached = ls.formats.get(uri)
@@ -1089,7 +1119,7 @@ async def formatting(ls: AchslintServer, params: lsp.DocumentFormattingParams) -
     found = await _formatting(ls, uri)
     if found is None:
         return []
-    edits = features.format_edits(found[0], found[1].changes())
+    edits = RawResult(features.format_edits_json(found[0], found[1].changes()))
     if generation is not None and uri in ls.documents:
         ls.formats[uri] = (generation, edits)
     return edits
@@ -1123,9 +1153,11 @@ async def document_symbol(
     analysis = await _list_analysis(ls, uri)
     if analysis is None or analysis.snapshot.file is None or uri not in ls.documents:
         return []
-    if analysis.outline is None:
+    if analysis.outline is None and await ls.until_made("outline", uri):
+        analysis = ls.analyses.get(uri, analysis)  # (made for the analysis it waited for, or a newer one)
+    if analysis.outline is None and analysis.snapshot.file is not None:
         analysis.outline = RawResult(Outline().json(analysis.document, analysis.snapshot.file))
-    return analysis.outline
+    return analysis.outline or []
 
 
 @feature(lsp.TEXT_DOCUMENT_DEFINITION)
