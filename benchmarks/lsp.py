@@ -22,7 +22,8 @@
   client's capabilities, a 2,000-line list typed into (bursts of keystrokes 40 ms apart): from the
   last keystroke to its diagnostics, and hover, completion, formatting and outline asked right after
   a keystroke (worst case, not median); then a 50,000-line list: how long each of those requests
-  waits while the list is linted again.
+  waits while the list is linted again (the first round of them right after the list was opened, when
+  the server makes its outline and formatting once: shown apart as well).
 """
 
 from __future__ import annotations
@@ -709,9 +710,14 @@ def _as_a_client_sees_it(bursts: int) -> bool:
     )
     good = worst * 1000 <= BUDGET_LARGE_WAIT_MS
     ok = ok and good
-    print("  a 50,000-line list, each request while it is linted again:")
+    print(
+        "  a 50,000-line list, each request while it is linted again (the first: right after it was opened):"
+    )
     for name, samples in waits.items():
-        print(f"    {name:<12} {max(samples) * 1000:7.1f} ms worst, {median_ms(samples):7.1f} ms median")
+        print(
+            f"    {name:<12} {max(samples) * 1000:7.1f} ms worst, {median_ms(samples):7.1f} ms median, "
+            f"{samples[0] * 1000:7.1f} ms first, {max(samples[1:]) * 1000:7.1f} ms worst after it"
+        )
     print(
         f"  longest wait {worst * 1000:.1f} ms ({worst_name}; budget <= {BUDGET_LARGE_WAIT_MS} ms)  -> {verdict(good)}"
     )
