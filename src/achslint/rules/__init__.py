@@ -80,7 +80,8 @@ class Rule:
     checks: tuple[tuple[Scope, Check], ...] = ()  # one check per scope the rule takes part in
     parameters: tuple[str, ...] = ()  # catalogue paths (with [i]) a cross-parameter rule reads
     produced_by: str = "lint"  # "dry-run" for findings only the homing simulation can make (LIS405)
-    refuses_homing: bool = False  # an error finding means the CNC does not run the homing (LIS306, LIS319, LIS328)
+    # an error finding means the CNC does not run the homing (LIS306, LIS319, LIS328)
+    refuses_homing: bool = False
     # an info finding says the check could not run (LIS317 on an axis too short for any assumed cam)
     info_when_unchecked: bool = False
     # the lower severity some of its findings have (LIS328: a torque limit configured but never sent)
