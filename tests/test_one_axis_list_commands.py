@@ -132,3 +132,19 @@ def test_schema_refuses_a_kind_it_would_ignore() -> None:
     axis = run_cli("schema")
     assert channel.returncode == axis.returncode == 0 and channel.stdout != axis.stdout
     assert '"Antr"' in axis.stdout and '"Antr"' not in channel.stdout
+
+
+def test_a_channel_list_a_start_up_list_loads_is_explained_as_that_channel_of_its_machine() -> None:
+    machine = FIXTURES / "rules" / "LIS522" / "good"  # two channels: sda_mds[0], sda_mds[1]
+    startup = str(machine / "hochlauf.lis")
+    second = str(machine / "sda_mds2.lis")
+    for fmt in ("text", "json"):
+        result = run_cli("explain", second, "--format", fmt)
+        assert result.returncode == 0, result.stderr
+        assert result.stdout == run_cli("explain", startup, "--channel", "2", "--format", fmt).stdout
+        assert result.stdout != run_cli("explain", startup, "--format", fmt).stdout  # channel 1's names
+    assert run_cli("explain", second, "--channel", "2").returncode == 0
+    other = run_cli("explain", second, "--channel", "1")  # 1 is the default: the list's own channel wins
+    assert other.returncode == 0 and other.stdout == run_cli("explain", second).stdout
+    wrong = run_cli("explain", second, "--channel", "3")
+    assert wrong.returncode == 2 and "is the list of channel 2 of" in wrong.stderr and wrong.stdout == ""

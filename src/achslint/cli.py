@@ -647,7 +647,8 @@ def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> Non
 def explain(
     target: str = typer.Argument(
         ...,
-        help="An axis list file, or a parameter of any list: name, alias or id (vb_reflow, getriebe[0].vb_reflow, "
+        help="An axis list, a start-up list (the machine), a channel list (the machine, with that channel's "
+        "names), or a parameter of any list: name, alias or id (vb_reflow, getriebe[0].vb_reflow, "
         "P-AXIS-00218, P-CHAN-00036).",
     ),
     kind: ListKind | None = typer.Option(
@@ -676,7 +677,7 @@ def explain(
 ) -> None:
     """Explain the homing configuration of a list or a machine (start-up list), or describe one parameter."""
 
-    from .core.files import not_a_list_file
+    from .core.files import not_a_list_file, shown_path
     from .explanation import default_underneath, explain_list, parameter_card
     from .linting.discovery import is_startup
     from .output import explain as shown
@@ -686,8 +687,17 @@ def explain(
     screen = _screen(color)
     if kind is not None and (problem is None or problem not in NOT_A_FILE):
         _fail("--kind goes with a parameter name, not with a file")
-    if problem is None and is_startup(path):  # by its name, or by its content when named otherwise
-        report = _machine_report(path, program, channel, cnc_root, gear)
+    startup = path if problem is None and is_startup(path) else None  # by its name, or by its content
+    loaded = _channel_of_a_machine(path) if problem is None and startup is None else None
+    if loaded is not None:  # a channel list a start-up list loads: its machine, with that channel's names
+        startup, number = loaded
+        if channel not in (1, number):
+            _fail(
+                f"{target} is the list of channel {number} of {shown_path(startup)}, not of channel {channel}"
+            )
+        channel = number
+    if startup is not None:
+        report = _machine_report(startup, program, channel, cnc_root, gear)
         shown.MACHINE[output_format.value](report, screen)
     elif program is not None:
         _fail("--program goes with a start-up list (hochlauf.lis)")
@@ -769,6 +779,23 @@ NOT_A_FILE = (
     "a part of the path is not a folder",
     "a name the file system cannot hold",
 )
+
+
+def _channel_of_a_machine(path: Path) -> tuple[Path, int] | None:
+    """For `explain` of a channel list: the start-up list that loads it and its channel number, when exactly
+    one does (a channel list alone has no axes to explain: `_one_list` refuses it)."""
+    from .axis.source import read_one_list
+    from .core.decode import UnreadableInput
+    from .linting.discovery import channel_loaded_by
+    from .linting.linter import NotAnAxisList, axis_list_only
+
+    try:
+        axis_list_only(read_one_list(path, str(path)), str(path))
+    except NotAnAxisList as exc:
+        return channel_loaded_by(path) if exc.kind in ("channel", "default_channel") else None
+    except (OSError, UnreadableInput):
+        pass  # `_one_list` says why
+    return None
 
 
 def _one_list(path: Path, name: str) -> bytes:

@@ -47,7 +47,7 @@ from ..core.files import (
     shown_path,
 )
 from ..machine.resolved import Machine
-from ..machine.startup import Startup, StartupEntry, is_startup_list, read_startup
+from ..machine.startup import Startup, StartupEntry, entry_index, is_startup_list, read_startup
 from ..syntax.parser import parse_bytes
 from .config import ConfigError, Overrides, ResolvedConfig, Settings, discover, load_file, matches_glob
 
@@ -600,6 +600,19 @@ def is_startup(path: Path) -> bool:
     # The start-up keys at the start of a line are clear evidence already: the content decides (no minimum
     # number of lines; a start-up list may name one axis list).
     return kind_of(file).id == STARTUP.id
+
+
+def channel_loaded_by(path: Path) -> tuple[Path, int] | None:
+    """The start-up list that loads `path` as one of its channels (an `sda_mds[i]` below `kanal_anzahl`) and
+    that channel's number (i + 1), for `explain` of a channel list; None unless exactly one start-up list
+    beside the list or in the folder above does."""
+    found = {
+        (startup.path, entry_index(entry) + 1)
+        for startup in Finder().startups_around(path.parent)
+        for entry in startup.loaded_channels()
+        if entry.path is not None and same_file(entry.path, path)
+    }
+    return found.pop() if len(found) == 1 else None
 
 
 # The keys only a start-up list has at the start of a line: a list without any is none (a cheap look at the

@@ -166,7 +166,12 @@ def list_kind(file: ListFile, name: str, given: str | None = None) -> Kind:
 
 
 class NotAnAxisList(UnreadableInput):
-    """A list of another kind given to a command that reads one axis list."""
+    """A list of another kind given to a command that reads one axis list; `kind` is the kind's id (None: an
+    NC program, or a text that names no parameter of any kind)."""
+
+    def __init__(self, message: str, kind: str | None = None) -> None:
+        super().__init__(message)
+        self.kind = kind
 
 
 def axis_list_only(data: bytes, name: str) -> bytes:
@@ -198,7 +203,8 @@ def axis_list_only(data: bytes, name: str) -> bytes:
     article = "an" if kind.name[0] in "aeiou" else "a"
     raise NotAnAxisList(
         f"{name} is {article} {kind.name}, not an axis list: this command reads one axis list. "
-        f"`achslint lint` checks it against the parameters of its kind{hint}"
+        f"`achslint lint` checks it against the parameters of its kind{hint}",
+        kind.id,
     )
 
 
