@@ -32,7 +32,7 @@ from .linting.discovery import is_startup
 from .listdiff import Comparison, Difference, UnknownDifference, WrittenDifference, compare_axes, differ
 from .machine.channel import ChannelList
 from .machine.resolved import Machine, open_startup
-from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup
+from .machine.startup import LISTS_FOLDER, STARTUP_NAMES, Startup, entry_index
 
 VERSION = 1
 BY_NUMBER, BY_NAME, BY_ORDER = "logical axis number", "axis name", "number and name (in start-up order)"
@@ -204,10 +204,6 @@ def _shown_entry(path: Path | None) -> str | None:
     return shown_path(path) if path is not None else None
 
 
-def _channel_number(key: str) -> int:
-    return int(key[key.index("[") + 1 : -1]) + 1
-
-
 def read_machine(startup: Path, cnc_root: Path | None) -> _Machine:
     """Every axis list and channel list of the machine, read as the CNC loads them.
 
@@ -225,7 +221,7 @@ def read_machine(startup: Path, cnc_root: Path | None) -> _Machine:
     for entry in entries.loaded_channels():  # the channels of kanal_anzahl; a later entry wins
         channel = machine.channel(entry, strict=True)
         assert channel is not None
-        channels[_channel_number(entry.key)] = (_shown_entry(entry.path) or entry.raw, channel)
+        channels[entry_index(entry) + 1] = (_shown_entry(entry.path) or entry.raw, channel)
     return _Machine(entries, axes, channels)
 
 
