@@ -115,7 +115,19 @@ def _child(connection: socket.socket) -> None:
             sys.stderr.flush()
         with contextlib.suppress(OSError):
             connection.sendall(str(code).encode())
+        _save_coverage()
         os._exit(0)
+
+
+def _save_coverage() -> None:
+    """Under `coverage run` (which measures the server as a child process), the call's measurements too: a
+    forked child writes a data file of its own (coverage starts one when the process id changed)."""
+    coverage = sys.modules.get("coverage")
+    current = coverage.Coverage.current() if coverage is not None else None
+    if current is not None:
+        with contextlib.suppress(Exception):
+            current.stop()
+            current.save()
 
 
 if __name__ == "__main__":
