@@ -51,7 +51,7 @@ def test_a_simulated_drive_reads_no_cam_no_zero_pulse_no_latch():
 
 
 def test_fixed_stop_is_assumed_only_for_torq_on_a_real_drive():
-    torq = "kenngr.homing.homing_type TORQ\nantr.fixed_stop.drive_ident TORQUE_LIMIT\n"
+    torq = "kenngr.homing.homing_type TORQ\nantr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\n"
     # TORQ on SERCOS (§2.3.3.4): the fixed stop is where the scenario puts it, here assumed; no cam or pulses.
     assert assumed("kenngr.antr_typ 2\n" + torq + "Ende\n") == [
         "start_position",

@@ -90,6 +90,7 @@ def test_a_fixed_stop_reference_time_is_when_the_stop_is_detected():
     # (25000 µs) later: the reference time is 4.075 s. No zero pulse: no arming point, no offset.
     text = (
         b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+        b"antr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\n"  # required for the move (P-AXIS-00719, LIS328)
         b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
         b"kenngr.homing.torq_max_distance 2000000\nkenngr.homing.torq_detect_time 25000\nEnde\n"
     )

@@ -252,6 +252,7 @@ def test_simulated_drive():
 def test_fixed_stop_by_hand():
     text = (
         b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+        b"antr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\n"  # required for the move (P-AXIS-00719, LIS328)
         b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
         b"kenngr.homing.torq_max_distance 2000000\nkenngr.homing.torq_detect_time 25000\n"
         b"kenngr.homing.torq_retraction_distance 50000\nkenngr.homing.torq_homing_position 100000\nEnde\n"
@@ -273,6 +274,7 @@ def test_fixed_stop_without_a_stop_in_the_scenario_aborts_after_the_maximum_dist
     # (2000000 x 0.1 µm = 200 mm), as when the stop lies beyond it (it raised a TypeError before).
     text = (
         b"kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
+        b"antr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\n"  # required for the move (P-AXIS-00719, LIS328)
         b"getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
         b"kenngr.homing.torq_max_distance 2000000\nEnde\n"
     )
@@ -286,7 +288,7 @@ def test_fixed_stop_without_a_stop_in_the_scenario_aborts_after_the_maximum_dist
 TORQ = (
     "kenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
     "getriebe[0].homing.torq_move_velocity 5000\ngetriebe[0].homing.torq_move_acceleration 50\n"
-    "kenngr.homing.torq_detect_time 25000\n"
+    "kenngr.homing.torq_detect_time 25000\nantr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\n"
 )
 
 
