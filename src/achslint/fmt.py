@@ -219,7 +219,21 @@ class _Row:
 
     def fits(self, kept: Set[Alignment]) -> bool:
         """Whether the value stands in one of the `kept` alignments (an indented line never does)."""
-        return not self.indent and any(alignment in kept for alignment in self.alignments())
+        if self._indent:
+            return False
+        left, right = self.alignments()
+        return left in kept or right in kept
+
+    def copy(self) -> _Row:
+        """The row as it is, to be changed on its own (with what it worked out already)."""
+        row = _Row(self.line, self._indent, self._sep, self.sep2)
+        row.aligned, row._path_end, row._start, row._end = (
+            self.aligned,
+            self._path_end,
+            self._start,
+            self._end,
+        )
+        return row
 
     def start_for(self, alignment: Alignment) -> int | None:
         """Where the value starts in `alignment`, written without indent; None if the line cannot get there."""
@@ -795,7 +809,7 @@ class LiveFormat:
                 marks.append(None)
                 placed.append(None)
                 continue
-            moved = _row(row.line)
+            moved = row.copy()
             _place_value(moved, decision.target, decision.kept, decision.tabs)
             marks.append(_mark(moved))
             placed.append(moved)
@@ -807,18 +821,18 @@ class LiveFormat:
     @staticmethod
     def _placed(row: _Row, decision: _Decision) -> int | None:
         """`_mark` of the row with its value placed."""
-        placed = _row(row.line)
+        placed = row.copy()
         _place_value(placed, decision.target, decision.kept, decision.tabs)
         return _mark(placed)
 
     def _formatted(self, index: int, decision: _Decision, placed: _Row | None = None) -> str:
         """Line `index` formatted (`placed`: the line with its value placed already), with its break."""
-        raw, line = self._raw[index], self._lines[index]
-        if self._rows[index] is None:
+        raw, line, row = self._raw[index], self._lines[index], self._rows[index]
+        if row is None:
             body = _other_line(line)
         else:
             if placed is None:
-                placed = _row(line)
+                placed = row.copy()
                 _place_value(placed, decision.target, decision.kept, decision.tabs)
             _place_comment(placed, decision.comments, decision.style.values is None, decision.tabs)
             body = placed.body()
@@ -967,7 +981,9 @@ def run_format(request: FormatRequest, stdin: BinaryIO | None = None) -> FormatO
             if target.name in request.paths:  # XML found in a folder is simply not fmt's business
                 outcome.errors.append(f"{target.name}: fmt rewrites plain lists only, not XML files")
             continue
-        if is_program(target.name):  # its blocks are no `parameter value` lines: aligned, they would be garbled
+        if is_program(
+            target.name
+        ):  # its blocks are no `parameter value` lines: aligned, they would be garbled
             outcome.errors.append(f"{target.name}: fmt rewrites lists only, not NC programs")
             continue
         try:
