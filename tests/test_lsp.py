@@ -95,10 +95,21 @@ def offset(text: str, position: lsp.Position) -> int:
 
 
 def apply_edits(text: str, edits: list[lsp.TextEdit]) -> str:
+    """The text with the edits applied, as an editor applies them (last first; in time linear in the text:
+    formatting a long list is thousands of edits)."""
+    starts = [0]
+    for line in text.splitlines(keepends=True):
+        starts.append(starts[-1] + len(line))
+
+    def at(position: lsp.Position) -> int:  # (as `offset`)
+        return (starts[position.line] if position.line < len(starts) else len(text)) + position.character
+
+    pieces, end = [], len(text)
     for edit in sorted(edits, key=lambda e: (e.range.start.line, e.range.start.character), reverse=True):
-        start, end = offset(text, edit.range.start), offset(text, edit.range.end)
-        text = text[:start] + edit.new_text + text[end:]
-    return text
+        start = at(edit.range.start)
+        pieces += [text[at(edit.range.end) : end], edit.new_text]
+        end = start
+    return text[:end] + "".join(reversed(pieces))
 
 
 async def hover_at(client, uri, line, character) -> str:
@@ -440,6 +451,45 @@ async def test_formatting_after_each_edit_gives_fmt_output(client: LanguageClien
         )
         expected = format_bytes(text.encode("latin-1"))[0].decode("latin-1")
         assert apply_edits(text, edits) == expected, version
+    close_doc(client, uri)
+
+
+async def test_formatting_of_a_long_list_is_kept_up_to_date(client: LanguageClient, folder: Path):
+    """A list longer than the server formats on the loop from scratch: its formatting is made on the worker
+    after its first diagnostics (a request meanwhile waits for it), then brought up to date on the loop; an
+    edit of thousands of lines is formatted on the worker. Every answer turns the text into fmt's."""
+    path = folder / "fmt-long" / "achsmds1.lis"
+    path.parent.mkdir()
+    body = [
+        "kopf.achs_nr 1   ( logical axis number   \n",
+        "kenngr.achs_typ        1\n",
+        "getriebe[0].vb_reflow 20000   ( reference speed\n",
+        "kopf.log_achs_name\tX\n",
+    ]
+    text = "".join(body * 3500) + "Ende\n"  # 14,001 lines
+    uri = open_doc(client, path, text)
+    await diagnostics_when(client, uri)
+
+    async def formatted() -> str:
+        edits = await client.text_document_formatting_async(
+            lsp.DocumentFormattingParams(lsp.TextDocumentIdentifier(uri), lsp.FormattingOptions(4, True))
+        )
+        return apply_edits(text, edits)
+
+    edits = [
+        (lsp.Range(lsp.Position(1, 0), lsp.Position(1, 0)), "  "),  # an indent
+        (lsp.Range(lsp.Position(5000, 0), lsp.Position(5000, 0)), "kopf.achs_nr\t\t7\n"),  # a line
+        (lsp.Range(lsp.Position(2, 0), lsp.Position(3500, 0)), ""),  # a quarter of the lines gone
+    ]
+    for version, (where, typed) in enumerate(edits, 2):
+        client.text_document_did_change(
+            lsp.DidChangeTextDocumentParams(
+                lsp.VersionedTextDocumentIdentifier(version=version, uri=uri),
+                [lsp.TextDocumentContentChangePartial(range=where, text=typed)],
+            )
+        )
+        text = apply_edits(text, [lsp.TextEdit(where, typed)])
+        assert await formatted() == format_bytes(text.encode("latin-1"))[0].decode("latin-1"), version
     close_doc(client, uri)
 
 
