@@ -560,9 +560,8 @@ class LiveFormat:
         self._kinds: list[str] = []
         self._rows: list[_Row | None] = []  # each line as fmt found it, if fmt aligns its value
         self._votes: list[bool | None] = []  # each line's say in tabs or blanks (`_vote`)
-        self._marks: list[
-            int | None
-        ] = []  # where each line's comment starts once its value is placed (`_mark`)
+        # where each line's comment starts once its value is placed (`_mark`)
+        self._marks: list[int | None] = []
         self._out: list[str] = []  # each line formatted, with its break (the line itself if unchanged)
         self._row_count = 0
         self._counts: Counter[Alignment] = Counter()  # alignments of value lines without indent
