@@ -148,8 +148,21 @@ def test_the_warm_up_after_the_first_lint_reads_and_writes_every_sample(monkeypa
             return True
 
     monkeypatch.setattr(server.contextlib, "suppress", Loud)
-    server.create()._warm_up()
+    server.create()._warm_up(None)
+    # with the first analysis of a list: one of its hover cards is made too
+    from achslint.lsp.documents import Document
+    from achslint.lsp.session import Session
+
+    session, document = Session(), Document("untitled:warm", None, LIST, 1)
+    session.open(document)
+    snapshot, found, _ = session.diagnostics(document.uri)
+    assert snapshot is not None
+    cards: list[str] = []
+    hover_text = server.features.hover_text
+    monkeypatch.setattr(server.features, "hover_text", lambda *args: cards.append(hover_text(*args)))
+    server.create()._warm_up(server.Analysis(1, document, snapshot, found))
     assert failed == []
+    assert len(cards) == 1 and "P-AXIS-00016" in cards[0]  # kopf.achs_nr, the first line
 
 
 def test_the_pipe_to_the_client_is_widened_where_the_system_allows(tmp_path):

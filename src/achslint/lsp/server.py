@@ -539,6 +539,9 @@ class AchslintServer(LanguageServer):
             if making:
                 self._coming_soon(what, uri)
         self._hand_over(uri, generation, analysis, body, peers)
+        if not self._warm:  # (first: a request may come while the outline and formatting are made)
+            self._warm = True
+            self._warm_up(analysis)
         if make_outline and analysis is not None:
             outline = None
             try:
@@ -552,9 +555,6 @@ class AchslintServer(LanguageServer):
                 live.update(document.body_lines)
             finally:
                 self._arrived("format", uri, lambda: self._formatted_ready(uri))
-        if not self._warm:
-            self._warm = True
-            self._warm_up()
 
     def _outline(self, uri: str, analysis: Analysis) -> RawResult | None:
         """On the worker: the analysis's outline as JSON (`outline.Outline` rewrites only the lines changed
@@ -650,12 +650,21 @@ class AchslintServer(LanguageServer):
         self._formatted_ready(uri, live)
         return copy, live
 
-    def _warm_up(self) -> None:
-        """After the first diagnostics, on the worker: import what the answers import on first use, and let the
-        converters make their code for the requests and answers (cattrs writes it on first use): the first
-        hover would otherwise take the loop 5 to 15 ms longer than the next."""
+    def _warm_up(self, analysis: Analysis | None) -> None:
+        """After the first diagnostics, on the worker: import what the answers import on first use, fill the
+        caches a hover card reads (one card of the list), and let the converters make their code for the
+        requests and answers (cattrs writes it on first use): the first hover would otherwise take the loop 5
+        to 15 ms longer than the next."""
         from .. import explanation, fmt  # noqa: F401
         from ..homing import registry  # noqa: F401
+
+        file = analysis.snapshot.file if analysis is not None else None
+        if analysis is not None and file is not None and not is_xml(analysis.document.name):
+            kind = features.document_kind(analysis.snapshot)
+            line = next((line for line in file.lines if line.path and line.path_ok), None)
+            if line is not None:
+                with contextlib.suppress(Exception):  # only a head start
+                    features.hover_text(analysis.snapshot.context, file, line.number, 1, self.markdown, kind)
 
         span = {"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 1}}
         where = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 1))
