@@ -362,3 +362,29 @@ def test_1_a_failure_after_a_shorter_text_was_written_puts_the_whole_old_text_ba
     with pytest.raises(WriteFailed, match="its old content was put back"):
         write_atomically(target, b"kopf.achs_nr 1\nEnde\n", expected=old)
     assert target.read_bytes() == old
+
+
+@pytest.mark.parametrize("stop_at", ["pwrite", "ftruncate", "fsync"])
+def test_1_ctrl_c_in_the_middle_of_a_rewrite_in_place_puts_the_old_text_back(tmp_path, monkeypatch, stop_at):
+    """Found by review: a hard-linked list is rewritten in place, and only an OSError put its old bytes
+    back. Ctrl-C (or SIGTERM, which the command line turns into an exception too) arriving after the new,
+    shorter text was written but before the file was cut left the new text followed by the old one's tail."""
+    old = b"kopf.achs_nr     1\n" + b"kenngr.achs_typ  1\n" * 5 + b"Ende\n"
+    new = b"kopf.achs_nr 1\nEnde\n"
+    target = tmp_path / "achsmds1.lis"
+    target.write_bytes(old)
+    os.link(target, tmp_path / "copy.lis")
+    real, calls = getattr(files.os, stop_at), []
+
+    def interrupted_once(*args):
+        result = real(*args)
+        calls.append(args)
+        if len(calls) == 1:
+            raise KeyboardInterrupt
+        return result
+
+    monkeypatch.setattr(files.os, stop_at, interrupted_once)
+    with pytest.raises(KeyboardInterrupt):
+        write_atomically(target, new, expected=old)
+    assert target.read_bytes() == old
+    assert (tmp_path / "copy.lis").read_bytes() == old

@@ -20,8 +20,9 @@ Writing (`fmt`, `lint --fix`) keeps the file what it was:
   cannot be kept (someone else's file in a folder we may write), or the folder
   cannot take a temporary file, the file is rewritten in place instead;
 * a rewrite in place keeps the old bytes: when the file system stops it part-way
-  (disk full, quota, file-size limit), they are written back and the file cut
-  to its old length, and the error says so;
+  (disk full, quota, file-size limit), or a signal (Ctrl-C) ends the run in the
+  middle of it, they are written back and the file cut to its old length, and
+  the error says so;
 * nothing is written when the file changed on disk since it was read.
 """
 
@@ -349,6 +350,10 @@ def _write_in_place(target: Path, shown: Path, data: bytes, expected: bytes | No
         except OSError as exc:
             restored = _restore(fd, old, progress[0])
             raise WriteFailed(shown, exc, RESTORED if restored else DAMAGED) from None
+        except BaseException:  # Ctrl-C or an exit signal part-way: the old bytes go back before the run ends
+            # all of them: the signal may have come after a write returned and before `progress` counted it
+            _restore(fd, old, max(progress[0], len(data), len(old)))
+            raise
 
 
 def _write_all(fd: int, data: bytes, progress: list[int] | None = None) -> None:
