@@ -388,3 +388,83 @@ def test_1_ctrl_c_in_the_middle_of_a_rewrite_in_place_puts_the_old_text_back(tmp
         write_atomically(target, new, expected=old)
     assert target.read_bytes() == old
     assert (tmp_path / "copy.lis").read_bytes() == old
+
+
+# -- 3. files a command makes (-o, --plot): all of the new one or the old one -------------------------
+
+OLD_REPORT = b"the report of yesterday's run\n"
+
+
+def _many_findings(folder: Path) -> None:
+    """A list whose reports (lint json, the html report, the plot) are well over 4 KB."""
+    lines = b"".join(b"kopf.unbekannt_%d  %d\n" % (i, i) for i in range(60))
+    (folder / "achsmds1.lis").write_bytes(b"kopf.achs_nr  1\n" + lines + b"Ende\n")
+
+
+@pytest.mark.parametrize(
+    ("args", "output"),
+    [
+        (("lint", "achsmds1.lis", "--format", "json", "-o"), "out.json"),
+        (("report", "achsmds1.lis", "-o"), "report.html"),
+        (("dry-run", "achsmds1.lis", "--plot"), "plot.svg"),
+    ],
+    ids=["lint -o", "report -o", "dry-run --plot"],
+)
+def test_3_an_output_file_the_disk_cannot_take_keeps_the_old_one(tmp_path, args, output):
+    """Found by review: -o truncated the old report at once and wrote the new one over it, so a full disk
+    left half a report (and `lint -o` / `report -o` ended in `internal error: OSError: [Errno 27] File too
+    large`, naming no file). Now the new file is made beside it and renamed: the old report stays whole."""
+    _many_findings(tmp_path)
+    (tmp_path / output).write_bytes(OLD_REPORT)
+    done = _achslint(*args, output, cwd=tmp_path, **_limited(4096))
+    assert done.returncode == 2, done.stderr
+    assert f"cannot write {'the plot to ' if 'plot' in output else ''}{output}" in done.stderr
+    assert "internal error" not in done.stderr and "Traceback" not in done.stderr
+    assert (tmp_path / output).read_bytes() == OLD_REPORT
+    assert _no_temporaries(tmp_path) == []
+
+
+def test_3_an_output_file_is_written_whole_through_a_link_and_keeps_its_mode(cli, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    _many_findings(tmp_path)
+    (tmp_path / "reports").mkdir()
+    real = tmp_path / "reports" / "out.json"
+    real.write_bytes(OLD_REPORT)
+    real.chmod(0o640)
+    (tmp_path / "out.json").symlink_to(real)
+    done = cli("lint", "achsmds1.lis", "--format", "json", "-o", "out.json")
+    assert done.returncode == 0, done.stderr  # LIS101 is a warning
+    assert (tmp_path / "out.json").is_symlink()
+    assert "kopf.unbekannt_59" in real.read_text()
+    assert real.stat().st_mode & 0o777 == 0o640
+    assert _no_temporaries(tmp_path) == [] and _no_temporaries(tmp_path / "reports") == []
+
+
+def test_3_output_to_dev_stdout_appends_to_what_the_shell_opened(tmp_path):
+    """`-o /dev/stdout` is written as it is (no temporary file beside /proc's link), and appended: a shell's
+    `>> log` keeps what the log held."""
+    _many_findings(tmp_path)
+    log = tmp_path / "log"
+    log.write_bytes(b"earlier\n")
+    with log.open("ab") as stream:
+        done = subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "achslint",
+                "lint",
+                "achsmds1.lis",
+                "--format",
+                "concise",
+                "-o",
+                "/dev/stdout",
+            ],
+            stdout=stream,
+            stderr=subprocess.PIPE,
+            cwd=tmp_path,
+            env={**os.environ, "NO_COLOR": "1", "HOME": str(tmp_path)},
+            timeout=120,
+        )
+    assert done.returncode == 0, done.stderr
+    text = log.read_text()
+    assert text.startswith("earlier\n") and "kopf.unbekannt_59" in text

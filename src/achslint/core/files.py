@@ -302,6 +302,49 @@ def write_atomically(path: Path, data: bytes, expected: bytes | None = None) -> 
         raise
 
 
+def write_output(path: Path, data: bytes) -> None:
+    """Write a file a command makes (a report, a plot) at `path`, which the user named.
+
+    A regular file (or a new one) gets its new content through a temporary file beside it that is renamed
+    over it, so a full disk or a signal leaves the earlier file, never half of a new one (a link is
+    followed; the link stays). A device or FIFO (a pipe), a name in /dev or /proc (`/dev/stdout`) is
+    written as it is, and so is a file with several names or in a folder that cannot take a temporary
+    file. Raises `OSError`.
+    """
+    try:
+        info: os.stat_result | None = os.stat(path)
+    except FileNotFoundError:
+        info = None
+    # `/dev/stdout` stands for what the shell opened, maybe a file `>>` appends to: appended to, never cut
+    if any(_at_or_below(Path(os.path.abspath(path)), Path(root)) for root in KERNEL_FILE_SYSTEMS):
+        _write_plainly(path, data, "ab")
+        return
+    if info is not None and (not stat.S_ISREG(info.st_mode) or info.st_nlink > 1):
+        _write_plainly(path, data)
+        return
+    target = real_path(path)
+    temporary = target.parent / f".{target.name}.{os.getpid()}.{os.urandom(4).hex()}.achslint"
+    try:  # created as `open` would create the file (mode 0o666 less the umask), never over another file
+        handle = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0), 0o666)
+    except PermissionError:  # a folder we may not write: the file itself may still be writable
+        _write_plainly(target, data)
+        return
+    try:
+        with os.fdopen(handle, "wb", buffering=0) as stream:
+            _write_all(stream.fileno(), data)
+        if info is not None:
+            os.chmod(temporary, stat.S_IMODE(info.st_mode))
+        os.replace(temporary, target)
+    except BaseException:  # also Ctrl-C and the exit signals: never leave the temporary file
+        temporary.unlink(missing_ok=True)
+        raise
+
+
+def _write_plainly(target: Path, data: bytes, mode: str = "wb") -> None:
+    with open(target, mode) as stream:
+        stream.write(data)
+
+
 def _keep_owner(temporary: str, info: os.stat_result) -> bool:
     """Give the temporary file the owner and group of the original; False when that is not allowed."""
     current = os.stat(temporary)

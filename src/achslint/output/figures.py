@@ -15,7 +15,7 @@ searched for (within the view); and an inset zooming on the phase where the refe
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 from .figuredata import (
     PULSE_COLOUR,
@@ -203,9 +203,9 @@ def _assumed_note(figure: Figure, note: str) -> None:
         figure.text(0.01, 0.005, note, fontsize=8, color="#aa3377", ha="left", va="bottom", gid="assumed")
 
 
-def save_png(build: Callable[[], Figure], target: str) -> None:
-    """Build a figure and write it to `target` as PNG; the figure is closed again whether or not the file
-    could be written."""
+def save_png(build: Callable[[], Figure], target: str | BinaryIO) -> None:
+    """Build a figure and write it to `target` (a file name or a binary stream) as PNG; the figure is closed
+    again whether or not it could be written."""
     _use_matplotlib()
     import matplotlib.pyplot as plt
 

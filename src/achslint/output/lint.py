@@ -3,8 +3,10 @@ ruff's closing lines or `--statistics` instead, what `--fix` and `--diff` print,
 
 from __future__ import annotations
 
+import io
 import sys
 from collections.abc import Callable
+from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
 from . import OutputFailed
@@ -17,27 +19,31 @@ if TYPE_CHECKING:
 
 
 class destination:
-    """The report stream: `--output-file` opens a UTF-8 file (never the console's code page), else `stream`.
-    A file that cannot be opened is an `OutputFailed`."""
+    """The report stream: `--output-file` collects the report and writes it at the end, as UTF-8 (never the
+    console's code page) and through a temporary file (`files.write_output`: a full disk or Ctrl-C leaves
+    the earlier report, never half of one); else `stream`. A file that cannot be written is an
+    `OutputFailed` naming it."""
 
     def __init__(self, path: str | None, stream: TextIO) -> None:
         self.path, self.stream = path, stream
-        self.file: TextIO | None = None
+        self.file: io.StringIO | None = None
 
     def __enter__(self) -> TextIO:
         if self.path is None:
             return self.stream
-        try:
-            self.file = open(self.path, "w", encoding="utf-8", newline="\n")
-        except OSError as exc:
-            from ..core.files import reason
-
-            raise OutputFailed(f"cannot write {self.path}: {reason(exc)}") from None
+        self.file = io.StringIO(newline="\n")
         return self.file
 
-    def __exit__(self, *exc: object) -> None:
-        if self.file is not None:
-            self.file.close()
+    def __exit__(self, kind: type[BaseException] | None, *rest: object) -> None:
+        if self.file is None or self.path is None or kind is not None:
+            return
+        from ..core.files import reason, write_output
+
+        try:
+            write_output(Path(self.path), self.file.getvalue().encode("utf-8"))
+        except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the name
+            why = reason(exc) if isinstance(exc, OSError) else "a name the file system cannot hold"
+            raise OutputFailed(f"cannot write {self.path}: {why}") from None
 
 
 def write_report(

@@ -7,6 +7,7 @@ file that cannot be written become one `OutputFailed` line for the user.
 
 from __future__ import annotations
 
+import io
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -38,14 +39,17 @@ def plot_machine(run: MachineRun, target: str) -> None:
 
 
 def _write(target: str, svg: Callable[[], str], figure: Callable[[], Figure]) -> None:
+    from ..core.files import write_output
     from .figuredata import PlotUnavailable
     from .figures import save_png
 
     suffix = target.lower().rsplit(".", 1)[-1] if "." in target else ""
     if suffix == "svg":
-        Path(target).write_text(svg(), encoding="utf-8")
+        write_output(Path(target), svg().encode("utf-8"))
     elif suffix == "png":
-        save_png(figure, target)
+        png = io.BytesIO()
+        save_png(figure, png)
+        write_output(Path(target), png.getvalue())
     else:
         raise PlotUnavailable(f"--plot needs a .png or .svg file name, not {target!r}")
 
@@ -61,3 +65,7 @@ def write_plot(draw: Callable[[str], None], target: str) -> None:
         raise OutputFailed(str(exc)) from None
     except OSError as exc:
         raise OutputFailed(f"cannot write the plot to {target}: {reason(exc)}") from None
+    except ValueError:  # a NUL byte in the name
+        raise OutputFailed(
+            f"cannot write the plot to {target!r}: a name the file system cannot hold"
+        ) from None
