@@ -180,3 +180,42 @@ def test_every_public_name_is_typed_for_the_checkers():
     checked = next(node for node in package.body if isinstance(node, ast.If))
     typed = {alias.name for node in checked.body for alias in node.names}
     assert set(achslint.__all__) - {"__version__"} == typed
+
+
+TWO_FINDINGS = "kenngr.swe_poss 1\nkenngr.swe_pos x\nEnde\n"  # LIS101 (unknown name), LIS201 (not a number)
+
+
+@pytest.mark.parametrize(
+    ("keyword", "value", "codes"),
+    [
+        ("select", "LIS201", ["LIS201"]),
+        ("select", "LIS101,LIS201", ["LIS101", "LIS201"]),
+        ("ignore", "LIS101", ["LIS201"]),
+        ("ignore", ("LIS101",), ["LIS201"]),
+    ],
+)
+def test_select_and_ignore_take_one_string_as_the_command_line_does(tmp_path, keyword, value, codes):
+    """Found by review: a string was read letter by letter, so `ignore="LIS101"` ignored the prefix `L`,
+    i.e. every rule (the call returned nothing), and `select="LIS201"` selected every rule."""
+    assert sorted(d.code for d in achslint.lint_text(TWO_FINDINGS, **{keyword: value})) == codes
+    assert sorted(d.code for d in achslint.lint(TWO_FINDINGS.encode(), **{keyword: value})) == codes
+    (tmp_path / "achsmds1.lis").write_text(TWO_FINDINGS)
+    assert sorted(d.code for d in achslint.lint_paths([tmp_path], **{keyword: value})) == codes
+
+
+def test_a_code_that_picks_no_rule_is_a_value_error():
+    with pytest.raises(ValueError, match=r"ignore: .*LIS9999"):
+        achslint.lint_text(TWO_FINDINGS, ignore=["LIS9999"])
+    with pytest.raises(ValueError, match="select"):
+        achslint.lint(TWO_FINDINGS.encode(), select="LIS2O1")
+
+
+def test_odd_arguments_are_type_errors_that_say_what_is_taken(tmp_path):
+    """Found by review: lint_paths("listen") linted the paths `l`, `i`, `s` ... (FileNotFoundError for
+    `l`), and dumps(None) raised AttributeError from inside the model code."""
+    with pytest.raises(TypeError, match=r"list of paths.*lint_paths\(\[path\]\)"):
+        achslint.lint_paths(str(tmp_path))
+    with pytest.raises(TypeError, match="list of paths"):
+        achslint.lint_paths(tmp_path)
+    with pytest.raises(TypeError, match=r"dumps.*not NoneType"):
+        achslint.dumps(None)

@@ -17,7 +17,7 @@ from .core.diagnostics import Diagnostic, Severity
 from .core.files import read_list
 from .fmt import FormatOutcome, FormatRequest, run_format
 from .homing.scenario import ScenarioError
-from .linting.config import ConfigError, Overrides, forget_cached
+from .linting.config import ConfigError, Overrides, forget_cached, parse_codes
 from .linting.discovery import is_startup
 from .linting.linter import FileSettings, axis_list_only, findings, lint_file
 from .linting.run import LintOutcome, LintRequest, LintRun, OutputIsInput, run_lint
@@ -77,11 +77,23 @@ def _text(value: object, function: str, instead: str) -> str:
     raise TypeError(f"{function}() takes the text of a list (str), not {type(value).__name__}{instead}")
 
 
+def _codes(values: str | Iterable[str] | None, argument: str) -> list[str]:
+    """Rule codes and prefixes given to `select` / `ignore`: a list, or one string (comma-separated, as on the
+    command line). A string was taken letter by letter (`ignore="LIS101"` ignored every rule: prefix `L`).
+    `ValueError` for one that picks no rule, as the command line refuses it."""
+    if values is None:
+        return []
+    try:
+        return parse_codes([values] if isinstance(values, str) else [str(value) for value in values])
+    except ValueError as exc:
+        raise ValueError(f"{argument}: {exc}") from None
+
+
 def lint(
     source: Source,
     *,
-    select: Iterable[str] | None = None,
-    ignore: Iterable[str] | None = None,
+    select: str | Iterable[str] | None = None,
+    ignore: str | Iterable[str] | None = None,
     name: str | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files.
@@ -93,15 +105,15 @@ def lint(
         if path.is_dir() or (path.is_file() and is_startup(path)):
             return lint_paths([path], select=select, ignore=ignore)
     data, default_name = _as_bytes(source)
-    settings = FileSettings.of(list(select) if select else None, list(ignore or []))
+    settings = FileSettings.of(_codes(select, "select") or None, _codes(ignore, "ignore"))
     return findings(data, name or default_name, settings)
 
 
 def lint_paths(
     paths: Iterable[str | os.PathLike[str]],
     *,
-    select: Iterable[str] | None = None,
-    ignore: Iterable[str] | None = None,
+    select: str | Iterable[str] | None = None,
+    ignore: str | Iterable[str] | None = None,
     config: str | os.PathLike[str] | None = None,
 ) -> list[Diagnostic]:
     """What `achslint lint PATH...` reports: files, folders (searched) and start-up lists (their machines),
@@ -109,12 +121,16 @@ def lint_paths(
 
     Raises `FileNotFoundError` for a path that does not exist, `ConfigError` for a bad configuration and
     `LintFailed` when a list that was found cannot be read."""
+    if isinstance(paths, (str, bytes, os.PathLike)):  # a string would be taken letter by letter
+        raise TypeError(
+            f"lint_paths() takes a list of paths, not one {type(paths).__name__}: lint_paths([path])"
+        )
     names = [os.fspath(path) for path in paths]
     for name in names:
         if not os.path.lexists(name):
             raise FileNotFoundError(2, "no such file or folder", name)
     forget_cached()  # configuration files read as they are now, not as an earlier call found them
-    overrides = Overrides(select=list(select) if select else None, ignore=list(ignore or []))
+    overrides = Overrides(select=_codes(select, "select") or None, ignore=_codes(ignore, "ignore"))
     request = LintRequest(
         paths=names,
         overrides=overrides,
@@ -133,12 +149,12 @@ def lint_text(
     text: str,
     *,
     filename: str = "<string>",
-    select: Iterable[str] | None = None,
-    ignore: Iterable[str] | None = None,
+    select: str | Iterable[str] | None = None,
+    ignore: str | Iterable[str] | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the text of one list, reported under `filename` (built-in defaults, no config files)."""
     text = _text(text, "lint_text", "; lint() takes a path or bytes")
-    settings = FileSettings.of(list(select) if select else None, list(ignore or []))
+    settings = FileSettings.of(_codes(select, "select") or None, _codes(ignore, "ignore"))
     return findings(text_bytes(text), filename, settings)
 
 
@@ -195,7 +211,10 @@ def dumps(model: ListBase) -> str:
     `loads(dumps(model)) == model` for an axis model."""
     from .fmt import canonical_text
     from .model import dumps as model_dumps
+    from .model.base import ListBase
 
+    if not isinstance(model, ListBase):
+        raise TypeError(f"dumps() takes a list model (from load or loads), not {type(model).__name__}")
     return canonical_text(model_dumps(model))
 
 
