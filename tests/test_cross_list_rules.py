@@ -187,3 +187,19 @@ def test_lis504_reports_a_channel_list_and_a_default_channel_list_that_cannot_be
     assert where(found) == [("hochlauf.lis", 3, "LIS504"), ("hochlauf.lis", 4, "LIS504")]
     assert all(d["severity"] == "error" and "cannot be read as a list" in d["message"] for d in found)
     assert "UTF-16" in found[0]["message"] and "binary" in found[1]["message"]
+
+
+@pytest.mark.parametrize("index", [32, 40, 10**18])
+def test_lis516_does_not_ask_for_a_count_above_the_largest_one(tmp_path, index):
+    """Found by review: an entry at index 32 or above asked to `raise zahl_mds to 33` (or to 10**18 + 1),
+    a count LIS202 calls out of range (P-STUP-00014: 1 ... 32), so one finding's remedy was another's
+    error. No count reaches such an entry: it names a free index below 32 or removing the entry instead."""
+    text = f"zahl_mds 2\nachs_mds[0] ./achsmds1.lis\nachs_mds[1] ./achsmds2.lis\nachs_mds[{index}] ./achsmds3.lis\nEnde\n"
+    found = lint(machine(tmp_path, text, None, {1: "X", 2: "Y", 3: "Z"}), "LIS516")
+    assert where(found) == [("hochlauf.lis", 4, "LIS516")]
+    message = found[0]["message"]
+    assert "raise zahl_mds" not in message and f"{index + 1}" not in message
+    assert "zahl_mds is at most 32" in message and "free index below 32" in message
+    # below 32 the count is still the remedy
+    text = text.replace(f"achs_mds[{index}]", "achs_mds[31]")
+    assert "raise zahl_mds to 32 at least" in lint(machine(tmp_path, text), "LIS516")[0]["message"]

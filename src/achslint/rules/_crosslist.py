@@ -20,6 +20,7 @@ COUNTED = {
     "zahl_mds": ("achs_mds", "P-STUP-00014", "P-STUP-00015"),
     "zahl_kw": ("achs_kw", "P-STUP-00016", "P-STUP-00017"),
 }
+MAX_ENTRIES = 32  # zahl_mds and zahl_kw range 1 ... 32 (P-STUP-00014, P-STUP-00016)
 
 
 def by_number(members: list[Member]) -> dict[int, Member]:

@@ -62,7 +62,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ._crosslist import COUNTED, index
+from ._crosslist import COUNTED, MAX_ENTRIES, index
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -114,11 +114,19 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             for entry in entries:
                 if index(entry) < count.value:
                     continue
+                # Raising the count is the remedy only up to its largest value (32): an entry at index 32 or
+                # above is never loaded whatever the count says (LIS202 refuses a larger count).
+                remedy = (
+                    f"raise {count_key} to {index(entry) + 1} at least, or remove the entry"
+                    if index(entry) < MAX_ENTRIES
+                    else f"no {count_key} reaches it ({count_key} is at most {MAX_ENTRIES}, so {entry_key}"
+                    f"[{MAX_ENTRIES - 1}] is the last entry read): give the list a free index below "
+                    f"{MAX_ENTRIES}, or remove the entry"
+                )
                 yield _at(
                     startup,
                     entry,
                     f"`{entry.key}` lies beyond `{count_key} {count.raw}`: the CNC reads {_span(entry_key, count.value)}"
-                    f", so the {what} `{entry.raw}` is never loaded; raise {count_key} to {index(entry) + 1} at "
-                    "least, or remove the entry",
+                    f", so the {what} `{entry.raw}` is never loaded; {remedy}",
                     (Related(str(startup.path), count.line, count.column, count_key, "the count"),),
                 )

@@ -61,7 +61,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
-from ._crosslist import COUNTED, index
+from ._crosslist import COUNTED, MAX_ENTRIES, index
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -76,9 +76,6 @@ SHOWN = 6  # more missing entries are shortened in messages
 
 def _span(key: str, count: int) -> str:
     return f"{key}[0]" if count == 1 else f"{key}[0] … {key}[{count - 1}]"
-
-
-MAX_ENTRIES = 32  # zahl_mds and zahl_kw range 1 ... 32 (P-STUP-00014, P-STUP-00016)
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
