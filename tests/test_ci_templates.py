@@ -506,3 +506,21 @@ def test_a_markdown_summary_goes_to_the_job_page_unless_told_otherwise(tmp_path)
     summary.unlink()
     run_action(repo, tmp_path, {"summary": "false"})
     assert not summary.exists()
+
+
+def test_a_path_named_like_an_option_is_linted_never_obeyed(tmp_path):
+    """Found by review: the paths came before the options on the command line, so a file named like an
+    option (as a changed-files list may hand over) was read as one: a file `-w` turned on --watch, which
+    waits for changes until the job times out, and `-w.lis` ended in a usage error (`no such option: -`).
+    The paths now follow `--`, in the action and in the GitLab job."""
+    repo = workspace(tmp_path)
+    data = (repo / "listen" / "achsmds3.lis").read_bytes().replace(b"DRIVE_CONTROLLED", b"DRIVE_CONROLLED")
+    (repo / "-w.lis").write_bytes(data)
+    run = run_action(repo, tmp_path, {"paths": "-w.lis", "annotations": "false", "summary": "false"})
+    assert run.returncode == 1, run.stderr
+    assert "-w.lis:8:34: LIS203 [error]" in run.stdout
+    job = run_gitlab_job(repo, tmp_path, {"ACHSLINT_PATHS": "-w.lis"})
+    assert job.returncode == 1, job.stderr
+    assert "-w.lis:8:34: LIS203 [error]" in job.stdout
+    quality, _ = reports(repo)
+    assert [issue["location"]["path"] for issue in quality if issue["check_name"] == "LIS203"] == ["-w.lis"]
