@@ -146,3 +146,31 @@ def test_a_start_up_entry_too_long_for_the_file_system_is_a_missing_list(cli, tm
     finding = found["LIS504"]
     assert len(finding["message"]) < MESSAGE_LIMIT and "5,006 characters" in finding["message"]
     assert len(found["LIS206"]["message"]) < MESSAGE_LIMIT
+
+
+DEEP = "[" * 5000 + "]" * 5000
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "args"),
+    [
+        ("achslint.toml", f"x = {DEEP}\n", ("lint", "achsmds1.lis")),
+        ("pyproject.toml", f"[tool.achslint]\nx = {DEEP}\n", ("lint", "achsmds1.lis")),
+        (
+            "scenario.toml",
+            f"start_position = {DEEP}\n",
+            ("dry-run", "achsmds1.lis", "--scenario", "scenario.toml"),
+        ),
+    ],
+    ids=["config", "pyproject", "scenario"],
+)
+def test_a_toml_file_nested_thousands_deep_is_a_one_line_error(cli, tmp_path, monkeypatch, name, text, args):
+    """Found by review: tomllib reads nested arrays recursively, and 5,000 `[` ended the run in
+    `internal error: RecursionError` that named no file."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nEnde\n")
+    (tmp_path / name).write_text(text)
+    done = cli(*args)
+    assert done.returncode == 2
+    assert f"{name}: " in done.stderr.decode() and "too deeply" in done.stderr.decode()
+    assert b"internal error" not in done.stderr and b"Traceback" not in done.stderr

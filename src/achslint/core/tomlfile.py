@@ -33,6 +33,10 @@ def read_toml(path: Path, what: str, error: type[Exception]) -> dict[str, Any]:
         raise error(f"{path}: {what} is not UTF-8 text (byte {exc.start + 1}); save it as UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
         raise error(toml_error(path, what, exc, text)) from None
+    except RecursionError:  # tomllib reads nested arrays and inline tables recursively
+        raise error(
+            f"{path}: {what} nests arrays or inline tables too deeply to be read (hundreds of levels); fix the file"
+        ) from None
 
 
 def toml_error(path: Path, what: str, exc: Exception, document: str) -> str:
