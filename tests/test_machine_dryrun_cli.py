@@ -276,3 +276,28 @@ def test_timeline_figure_marks_lanes_groups_and_failure(tmp_path):
         assert len(figure.axes) == 1 + 3  # the timeline, then X, Y and Z, the axes that moved
     finally:
         plt.close(figure)
+
+
+def test_a_program_of_more_blocks_than_the_dry_run_runs_is_refused_at_once(cli, tmp_path):
+    """Found by review: a 1.3 MB program of 100,000 `G74 X1` blocks (far below the 16 MB a program may have)
+    ran for over a minute and took 1.2 GB, as each block keeps its motion. Above 2,000 homing and motion
+    blocks the run is refused in one line naming the program; comment lines do not count."""
+    from achslint.machine.run import MAX_PROGRAM_MOVES
+
+    program = tmp_path / "rfp.nc"
+    blocks = "".join(f"N{i} G74 X1\n" for i in range(MAX_PROGRAM_MOVES + 1))
+    program.write_text(blocks + "M30\n")
+    done = cli("dry-run", str(PORTAL / "listen" / "hochlauf.lis"), "--program", str(program))
+    assert done.returncode == 2
+    message = done.stderr.decode()
+    assert (
+        str(program) in message and "2,001 homing and motion blocks" in message and "at most 2,000" in message
+    )
+    assert done.stdout == b""
+    # the largest program it runs, with comment lines between the blocks, is run
+    program.write_text("".join(f"; step {i}\nN{i} G74 X1\n" for i in range(MAX_PROGRAM_MOVES)) + "M30\n")
+    done = cli(
+        "dry-run", str(PORTAL / "listen" / "hochlauf.lis"), "--program", str(program), "--format", "json"
+    )
+    assert done.returncode in (0, 1), done.stderr
+    assert len(json.loads(done.stdout)["blocks"]) >= MAX_PROGRAM_MOVES
