@@ -251,3 +251,10 @@ def test_an_internal_error_is_one_line_unless_debugging(cli: Cli, monkeypatch: p
     )
     with pytest.raises(RuntimeError, match="something unexpected"):
         cli("lint", X_AXIS, "--debug")
+
+
+def test_help_texts_keep_their_square_brackets(cli):
+    """Found by review: rich read `[axes.NAME]` in `report --help` as a style tag and dropped it, so the help
+    said "per axis () for a machine"."""
+    done = cli("report", "--help", env={"COLUMNS": "200"})
+    assert "per axis ([axes.NAME]) for a machine" in done.stdout.decode()

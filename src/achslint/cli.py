@@ -1057,7 +1057,7 @@ def report(
         None, "--program", metavar="NC", help="Homing program (rfp.nc) run over the machine: the timeline."
     ),
     scenario: str | None = typer.Option(
-        None, "--scenario", help="Scenario TOML: per axis ([axes.NAME]) for a machine, as dry-run reads it."
+        None, "--scenario", help="Scenario TOML: per axis (\\[axes.NAME]) for a machine, as dry-run reads it."
     ),
     against: str | None = typer.Option(
         None,
