@@ -19,7 +19,7 @@ from enum import Enum
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn, TextIO, get_args
 
-from .core import codecache
+from .core import codecache, streams
 
 # Set up the process for a short command-line run before the modules below load:
 # - the code of the dataclass methods comes from the per-user cache (core/codecache.py);
@@ -1217,6 +1217,9 @@ def main(argv: list[str] | None = None) -> int:
     except Stopped as stop:
         _say(stop.words)
         return stop.exit_code
+    except streams.StandardOutputFailed as exc:  # a full disk or a file-size limit (cli.run's output)
+        _say(str(exc))
+        return EXIT_ERROR
     except typer.Abort:
         _say("interrupted")
         return 130
@@ -1270,7 +1273,15 @@ def run() -> NoReturn:
     Buffers are still flushed and exit handlers still run. Not done in `main()`, which tests and the
     language server call in a process that goes on.
     """
+    streams.install()
     code = main()
+    try:
+        sys.stdout.flush()  # what is left of the output, while a failure can still be told
+    except streams.StandardOutputFailed as exc:
+        _say(str(exc))
+        code = EXIT_ERROR
+    except BrokenPipeError:  # the reader has gone (`| head`): nothing more to say to it
+        sys.stdout = open(os.devnull, "w")  # noqa: SIM115  # the interpreter's last flush goes nowhere
     gc.freeze()
     sys.exit(code)
 
