@@ -5,7 +5,9 @@ A count in the start-up list that is larger than its entries: `zahl_mds`
 (P-STUP-00014) counts an axis list `achs_mds[i]` (P-STUP-00015) that the
 start-up list does not name, or `zahl_kw` (P-STUP-00016) an axis
 compensation list `achs_kw[i]` (P-STUP-00017) that it does not name. Every
-index from 0 up to the count minus one needs an entry.
+index from 0 up to the count minus one needs an entry. A count above the
+largest the CNC accepts (32) is LIS202's finding alone: how the CNC reads such
+a count is not documented, so no entry is called missing for it.
 
 Why
 ---
@@ -83,13 +85,11 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     for startup in startups:
         for count_key, (entry_key, _, _) in COUNTED.items():
             count = startup.counts.get(count_key)
-            if count is None or count.value is None or count.value <= 0:
-                continue
+            if count is None or count.value is None or not 0 < count.value <= MAX_ENTRIES:
+                continue  # out of range: LIS202 on the count's own line says so
             entries = startup.axes if entry_key == "achs_mds" else startup.compensations
             named = {index(entry) for entry in entries}
-            # Only indices up to the largest the CNC accepts (32, P-STUP-00014/16) can be missing: a count of
-            # 10**12 is out of range (LIS202 on the start-up list's own line), not 10**12 missing entries.
-            missing = [number for number in range(min(count.value, MAX_ENTRIES)) if number not in named]
+            missing = [number for number in range(count.value) if number not in named]
             if not missing:
                 continue
             shown = ", ".join(f"{entry_key}[{number}]" for number in missing[:SHOWN])
