@@ -342,3 +342,19 @@ def test_the_code_table_declares_the_checks_of_every_rule_module() -> None:
         assert code == module.CODE
         present = {scope for scope in Scope if hasattr(module, scope.value)}
         assert present == set(codes.scopes(code)), code
+
+
+def test_ctrl_c_while_the_cache_is_saved_leaves_no_temporary_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = str(tmp_path / "code.cache")
+    cache = codecache.CodeCache(path)
+    cache.code("x = 1\n")  # one text compiled: save writes the file
+
+    def stopped(*_: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(codecache.os, "replace", stopped)
+    with pytest.raises(KeyboardInterrupt):
+        cache.save()
+    assert list(tmp_path.iterdir()) == []  # neither the cache nor the process's temporary file

@@ -148,3 +148,11 @@ def test_a_channel_list_a_start_up_list_loads_is_explained_as_that_channel_of_it
     assert other.returncode == 0 and other.stdout == run_cli("explain", second).stdout
     wrong = run_cli("explain", second, "--channel", "3")
     assert wrong.returncode == 2 and "is the list of channel 2 of" in wrong.stderr and wrong.stdout == ""
+
+
+def test_the_api_says_a_folder_is_not_one_list(tmp_path: Path) -> None:
+    for call in (achslint.explain, achslint.dry_run, achslint.load):
+        with pytest.raises(IsADirectoryError, match="a folder, not one list"):
+            call(tmp_path)
+    listen = FIXTURES / "machines" / "sdk4" / "listen"
+    assert isinstance(achslint.lint(listen), list)  # lint takes a folder: the machine

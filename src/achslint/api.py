@@ -56,6 +56,8 @@ def _as_bytes(source: Source) -> tuple[bytes, str]:
     if isinstance(source, str) and "\n" in source:
         return text_bytes(source), "<string>"
     path = Path(source)
+    if path.is_dir():
+        raise IsADirectoryError(21, "a folder, not one list (lint and lint_paths take folders)", str(path))
     if not path.is_file():
         raise FileNotFoundError(2, "no such axis list", str(path))
     return read_list(path), str(path)

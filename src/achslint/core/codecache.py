@@ -106,9 +106,11 @@ class CodeCache:
             with open(temporary, "wb") as stream:
                 stream.write(data)
             os.replace(temporary, self.path)
-        except OSError:
+        except BaseException as exc:  # a failed write, or Ctrl-C at exit: no temporary file left behind
             with contextlib.suppress(OSError):
                 os.unlink(temporary)
+            if not isinstance(exc, OSError):
+                raise
 
 
 def _read(path: str) -> dict[str, bytes]:
