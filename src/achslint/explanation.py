@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, TypedDict
+from typing import TYPE_CHECKING, NotRequired, TypedDict
 
 from .axis.resolved import CorrectionData, plain, resolve_bytes
 from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, Scalar, Value, catalogue
@@ -115,8 +115,34 @@ class AliasInfo(TypedDict):
 
 
 class RangeInfo(TypedDict):
-    min: float | None
-    max: float | None
+    min: float | None  # None: no lower bound is checked (a REAL64 range that states none)
+    max: float | None  # None: no upper bound is checked
+    min_exclusive: NotRequired[bool]  # present (True) when `min` itself is refused: "0 < x" of a REAL64
+
+
+def range_words(info: RangeInfo) -> str:
+    """A checked range for people: `0 .. 65535`, `above 0`, `at most 2147483647`, `above 0, at most 250`."""
+    low, high = info["min"], info["max"]
+    exclusive = info.get("min_exclusive", False)
+    if low is not None and high is not None and not exclusive:
+        return f"{low} .. {high}"
+    words = []
+    if low is not None:
+        words.append(f"{'above' if exclusive else 'at least'} {low}")
+    if high is not None:
+        words.append(f"at most {high}")
+    return ", ".join(words)
+
+
+def checked_range(parameter: Parameter) -> RangeInfo | None:
+    """The bounds the range check (LIS202) applies to a parameter, None when it applies none."""
+    low, high = parameter.limits
+    if low is None and high is None:
+        return None
+    info: RangeInfo = {"min": low, "max": high}
+    if parameter.strict_positive_real and low == parameter.min and parameter.default != low:
+        info["min_exclusive"] = True  # LIS202: "must be greater than 0" (the default is always accepted)
+    return info
 
 
 class StrategyUse(TypedDict):
@@ -374,7 +400,6 @@ def find_parameters(query: str, kind: Kind | None = None) -> list[Found]:
 def parameter_card(parameter: Parameter, kind: Kind = AXIS) -> ParameterCard:
     """A parameter's card: what the catalogue of its kind says, and (in axis lists) the drive and axis
     types it applies to and the homing strategies that read it."""
-    low, high = parameter.limits
     axis = kind.prefix == AXIS_PREFIX
     drives = catalogue().drive_type_names if axis else {}
     return {
@@ -385,7 +410,7 @@ def parameter_card(parameter: Parameter, kind: Kind = AXIS) -> ParameterCard:
         "aliases": [{"path": a.path, "kind": a.kind} for a in parameter.aliases],
         "type": parameter.type,
         "range": parameter.range_text or None,
-        "checked_range": None if low is None and high is None else {"min": low, "max": high},
+        "checked_range": checked_range(parameter),
         "accepted_values": list(parameter.allowed) or None,
         "symbols": list(parameter.symbols) or None,
         "max_length": parameter.max_length,

@@ -245,7 +245,7 @@ def document_kind(snapshot: Snapshot | None) -> Kind | None:
 
 
 def card_text(parameter: Parameter, markdown: bool = True, kind: Kind = AXIS) -> list[str]:
-    from ..explanation import parameter_card
+    from ..explanation import parameter_card, range_words
 
     card = parameter_card(parameter, kind)
     b = (lambda s: f"**{s}**") if markdown else (lambda s: s)
@@ -258,7 +258,7 @@ def card_text(parameter: Parameter, markdown: bool = True, kind: Kind = AXIS) ->
         ("range", card["range"]),
         (
             "checked range",
-            card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}",
+            card["checked_range"] and range_words(card["checked_range"]),
         ),
         ("symbols", card["symbols"] and ", ".join(card["symbols"])),
         ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),

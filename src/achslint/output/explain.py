@@ -97,6 +97,8 @@ def card_text(card: ParameterCard, screen: Screen) -> None:
     first: the kind of list it belongs to)."""
     from rich.text import Text
 
+    from ..explanation import range_words
+
     console = screen.console
     console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))
     console.print(card["description"])
@@ -106,7 +108,7 @@ def card_text(card: ParameterCard, screen: Screen) -> None:
         ("range (manual)", card["range"]),
         (
             "checked range",
-            card["checked_range"] and f"{card['checked_range']['min']} .. {card['checked_range']['max']}",
+            card["checked_range"] and range_words(card["checked_range"]),
         ),
         ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
         ("symbols", card["symbols"] and ", ".join(card["symbols"])),
@@ -129,7 +131,7 @@ def card_text(card: ParameterCard, screen: Screen) -> None:
     ]
     width = max(len(k) for k, _ in rows)
     for key, value in rows:
-        if value not in (None, "", False, [], {}):
+        if value is not False and value not in (None, "", [], {}):  # a default of 0 is shown (0 == False)
             console.print(Text(f"  {key:<{width}}  ", style="bold") + Text(str(value)))
 
 

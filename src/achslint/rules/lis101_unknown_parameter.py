@@ -20,6 +20,14 @@ name, or an index missing or too many); the rename is offered as an unsafe
 fix, never applied by `--fix` alone. `unknown-parameters = "ignore"` silences
 these too.
 
+A name that is not an axis parameter but one of another kind of list
+(`wz[1].laenge` of a tool data list, `dynamic_weighting[0].path_limit` of a
+channel list) is told as such, with no rename: a list whose content is too
+short to show its kind (one or two lines) is read as an axis list, and renaming
+its names to the nearest axis parameter would rewrite a correct list. The start-up
+list entry that names it (`werkz_data[i]`, `sda_mds[i]` ...) makes it the
+kind it is.
+
 Why
 ---
 The CNC reports an unknown name while reading the list and ignores the line,
@@ -54,6 +62,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..catalogue import fill_indices
+from ..catalogue.kinds import BY_ID, ENTRY_KINDS, path_index
 from ..core.closest import ratio_bound
 from ..core.diagnostics import Diagnostic, Severity
 from ..syntax import parser as syntax
@@ -105,6 +114,9 @@ def _diagnose(ctx: Context, setting: Setting) -> tuple[str, str | None, str | No
             target,
             "safe",
         )
+    elsewhere = _other_kinds(path, pattern)
+    if elsewhere:
+        return elsewhere, None, None
     shape = cat.by_unindexed.get(pattern.replace("[i]", ""))
     if shape and len(shape) == 1:
         right = shape[0].path
@@ -128,6 +140,27 @@ def _diagnose(ctx: Context, setting: Setting) -> tuple[str, str | None, str | No
         others = ", ".join(f"`{_with_indices(c, indices)[0]}`" for c in candidates[1:])
         message += f" (other candidates: {others})"
     return message, best, "safe" if unambiguous else None
+
+
+def _other_kinds(path: str, pattern: str) -> str | None:
+    """For a name an axis list does not know: what it is when it is a parameter of another kind of list (that
+    kind, its id, the start-up entry naming such a list), else None."""
+    owners = path_index().get(pattern, ())
+    if not owners:
+        return None
+    described = []
+    for kind_id in owners:
+        kind = BY_ID[kind_id]
+        cat = kind.catalogue()
+        parameter = cat.by_pattern.get(pattern) if cat is not None else None
+        entries = [f"`{key}`" for key, named in ENTRY_KINDS.items() if named.table == kind.table]
+        what = f"of a {kind.name}" + (f" ({parameter.id})" if parameter is not None else "")
+        described.append(what + (f", named by the start-up entry {' or '.join(entries)}" if entries else ""))
+    return (
+        f"`{path}` is no axis-list parameter: it is a parameter {'; or '.join(described)}. An axis list "
+        "cannot set it (the CNC ignores the line); if this file is such a list, name it in that entry "
+        "(its content was too little to show its kind)"
+    )
 
 
 def _diagnose_other_kind(ctx: Context, setting: Setting) -> tuple[str, str | None, str | None]:

@@ -1,0 +1,57 @@
+"""Lists of the other kinds (channel, start-up, tools, compensation ...) as the reference tables describe them:
+findings that agree with `explain`, no rename of a correct list into an axis list, catalogue bounds as the
+range texts state them."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from achslint import lint
+
+from .conftest import run_cli
+
+# The head of a channel list: enough channel parameters for its content to show its kind.
+CHANNEL = b"".join(
+    b"gruppe[0].achse[%d].bezeichnung %s\ngruppe[0].achse[%d].log_achs_nr %d\n" % (i, name, i, i + 1)
+    for i, name in enumerate((b"X", b"Y", b"Z"))
+)
+
+
+def test_a_short_list_of_another_kind_is_not_renamed_into_axis_parameters(tmp_path: Path) -> None:
+    # Two channel-list lines (P-CHAN-00191/00192) are too little to show the list's kind, so the list is read
+    # as an axis list; the nearest axis names (`dynamic_weighting.param[0].…`) must not be written over them
+    channel = tmp_path / "kanal.lis"
+    text = "dynamic_weighting[0].path_limit 5\ndynamic_weighting[0].velocity_fact 20\nEnde\n"
+    channel.write_text(text)
+    result = run_cli("lint", "--fix", str(channel), "--format", "json")
+    assert channel.read_text() == text
+    messages = [d["message"] for d in json.loads(result.stdout)["diagnostics"] if d["code"] == "LIS101"]
+    assert len(messages) == 2
+    assert "`dynamic_weighting[0].path_limit` is no axis-list parameter" in messages[0]
+    assert "channel list (P-CHAN-00191)" in messages[0] and "`sda_mds[i]`" in messages[0]
+    assert "did you mean" not in messages[0]
+
+
+def test_an_unknown_axis_name_of_another_kind_says_what_explain_says() -> None:
+    # `achslint explain wz[1].laenge` describes P-TOOL-00003; the finding on it must not call it unknown and
+    # offer an axis parameter instead (it suggested `antr.sercos.ident[1].laenge`)
+    [finding] = lint(b"wz[1].laenge 1000\nEnde\n", name="werkzeug.lis", select="LIS101")
+    assert "tool data list (P-TOOL-00003)" in finding.message and "`werkz_data[i]`" in finding.message
+    assert finding.fix is None
+    # a name no catalogue has keeps its suggestion
+    [typo] = lint(b"kenngr.ref_ricth 1\nEnde\n", name="achsmds1.lis", select="LIS101")
+    assert "did you mean `kenngr.ref_richt`" in typo.message
+
+
+def test_explain_shows_the_range_lis202_checks_and_a_default_of_zero() -> None:
+    # P-CHAN-00034 `0 < lin_aufloes < MAX(REAL64)`: LIS202 refuses 0, so the card must not say "0 .. None"
+    shown = run_cli("explain", "lin_aufloes", "--kind", "channel").stdout.decode()
+    assert "checked range    above 0\n" in shown and "None" not in shown
+    [finding] = lint(CHANNEL + b"lin_aufloes 0\nEnde\n", name="sda_mds1.lis", select="LIS202")
+    assert "must be greater than 0" in finding.message
+    card = json.loads(run_cli("explain", "lin_aufloes", "--kind", "channel", "--format", "json").stdout)
+    assert card["checked_range"] == {"min": 0, "max": None, "min_exclusive": True}
+    # P-CHAN-00019 defaults to 0: the card shows it (a 0 was dropped as if it were no value)
+    shown = run_cli("explain", "syn_chk.errors_total", "--kind", "channel").stdout.decode()
+    assert "  default          0\n" in shown
