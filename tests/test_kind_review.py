@@ -55,3 +55,56 @@ def test_explain_shows_the_range_lis202_checks_and_a_default_of_zero() -> None:
     # P-CHAN-00019 defaults to 0: the card shows it (a 0 was dropped as if it were no value)
     shown = run_cli("explain", "syn_chk.errors_total", "--kind", "channel").stdout.decode()
     assert "  default          0\n" in shown
+
+
+def _built(tmp_path: Path, table: str, rows: list[str]) -> list[dict]:
+    """The catalogue entries tools/build_kinds.py makes of reference table rows (the tables are not part of
+    the repository: the rows are written here in the table's columns)."""
+    import sys
+
+    from .conftest import ROOT
+
+    if str(ROOT / "tools") not in sys.path:
+        sys.path.insert(0, str(ROOT / "tools"))
+    import build_kinds
+
+    folder = tmp_path / "reference"
+    folder.mkdir()
+    header = "id\tpath\ttype\tdefault\tunit\tmax_number\trestart\tsymbols\trange\ttitle\n"
+    (folder / f"params-{table}.tsv").write_text(header + "\n".join(rows) + "\n", encoding="utf-8")
+    return [
+        json.loads(line.rstrip(",")) for line in build_kinds.build(folder)[f"{table}.json"].splitlines()[5:-2]
+    ]
+
+
+def test_range_texts_naming_an_indexed_parameter_or_a_unit_give_their_bounds(tmp_path: Path) -> None:
+    # P-CHAN-00324 `0 ≤ time[i] ≤ MAX_REAL64` and P-EXTV-00021 `1 ... 800 bytes`: their bounds were lost
+    # (a negative time, a 1,000-byte element passed LIS202)
+    time, size = _built(
+        tmp_path,
+        "chan",
+        [
+            "P-CHAN-00324\tesa.time[]\tREAL64\t0.0\t\t\tfalse\t\t0 ≤ time[i] ≤ MAX_REAL64\tt",
+            "P-CHAN-00325\tstruct[].size\tUNS32\t0\t\t\tfalse\t\t1 ... 800 bytes\tt",
+        ],
+    )
+    assert (time["min"], time.get("max")) == (0, None)
+    assert (size["min"], size["max"]) == (1, 800)
+
+
+def test_a_length_is_no_bound_of_an_integer_parameter(tmp_path: Path) -> None:
+    # P-CHAN-00447 is a UNS16 group id (`trafo[0].group[0].id 100` in the vendor's example) whose range cell
+    # says "Maximum of 16 characters": explain showed a max length and LIS206 for a number
+    [group] = _built(
+        tmp_path,
+        "chan",
+        ["P-CHAN-00447\ttrafo[].group[].id\tUNS16\t0\t\t\tfalse\t\tMaximum of 16 characters\tt"],
+    )
+    assert "max_length" not in group and (group["min"], group["max"]) == (0, 65535)
+    card = json.loads(run_cli("explain", "P-CHAN-00447", "--format", "json").stdout)
+    assert card["max_length"] is None and "LIS206" not in card["rules"]
+
+
+def test_the_packaged_catalogues_check_the_bounds_their_tables_state() -> None:
+    esa = CHANNEL + b"esa.time[0] -1.5\nEnde\n"
+    assert [d.code for d in lint(esa, name="sda_mds1.lis", select="LIS202")] == ["LIS202"]

@@ -73,6 +73,10 @@ NUMERIC_TYPES = {*TYPE_LIMITS, "REAL64"}  # the types a range bounds (STRING, CH
 _REFERENCE_ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}")
 _RUN_ON = re.compile(r"[a-z][A-Z][a-z]")  # "charactersThe ...": a lost line break, prose follows
 _DASHED = re.compile(r"\s*([+-]?[0-9]+)\s+[-–]\s+([+-]?[0-9]+)\s*")  # "1 - 12": a range written with a dash
+_INDEXED_NAME = re.compile(r"(\w)\[[a-z]\]")  # "0 ≤ time[i] ≤ ...": the compared name's index, dropped
+# "1 ... 800 bytes": a range with the unit after its upper bound
+_TRAILING_UNIT = re.compile(r"\s*([+-]?[0-9]+)\s*\.\.\.\s*([+-]?[0-9]+)\s+(?:bytes|characters)\s*")
+STRING_TYPES = {"STRING", "CHAR"}  # the types a "Maximum of N characters" bounds
 
 
 class TableError(SystemExit):
@@ -145,6 +149,16 @@ def index_bounds(text: str, path: str, table: Path, line: int) -> list[list[int]
     return [[0, int(size) - 1] for size in sizes]
 
 
+def _plain_range(text: str) -> str:
+    """A range text in the spelling the range reader knows: `1 - 12` and `1 ... 800 bytes` as `1 ... 12`
+    and `1 ... 800`, `0 ≤ time[i] ≤ MAX` without the compared name's index."""
+    for spelling in (_DASHED, _TRAILING_UNIT):
+        match = spelling.fullmatch(text)
+        if match:
+            return f"{match.group(1)} ... {match.group(2)}"
+    return _INDEXED_NAME.sub(r"\1", text)
+
+
 def entry_of(row: dict[str, str], table: Path, line: int) -> dict[str, object]:
     """One catalogue entry (keys in the order of the axis catalogue's entries)."""
     pid, ptype = row["id"].strip(), row["type"].strip()
@@ -159,10 +173,9 @@ def entry_of(row: dict[str, str], table: Path, line: int) -> dict[str, object]:
     if symbols:
         entry["symbols"] = symbols
     text = row["range"].strip()
-    dashed = _DASHED.fullmatch(text)
-    parsed = parse_range(f"{dashed.group(1)} ... {dashed.group(2)}" if dashed else text, ptype)
+    parsed = parse_range(_plain_range(text), ptype)
     taken = False
-    if "max_length" in parsed:
+    if "max_length" in parsed and ptype in STRING_TYPES:  # "Maximum of 16 characters" of a UNS16: a doc slip
         entry["max_length"] = parsed["max_length"]
         taken = True
     for end in ("min", "max") if ptype in NUMERIC_TYPES else ():
