@@ -108,3 +108,11 @@ def test_a_length_is_no_bound_of_an_integer_parameter(tmp_path: Path) -> None:
 def test_the_packaged_catalogues_check_the_bounds_their_tables_state() -> None:
     esa = CHANNEL + b"esa.time[0] -1.5\nEnde\n"
     assert [d.code for d in lint(esa, name="sda_mds1.lis", select="LIS202")] == ["LIS202"]
+
+
+def test_a_max_points_written_as_zero_is_not_called_unset() -> None:
+    # P-COMP-00062: 0 means the default (20); the finding said the list did not set what its last line sets
+    text = b"kopf.achs_nr 1\nfrict_comp.table_entries 50\nfrict_comp.mode 3\nfrict_comp.max_points 0\nEnde\n"
+    [finding] = lint(text, name="achskw1.lis", select="LIS705")
+    assert "`frict_comp.max_points` = 0, which means its default 20" in finding.message
+    assert [related.line for related in finding.related] == [4]

@@ -136,7 +136,8 @@ def test_max_points_bounds_the_table_size_and_zero_is_the_default() -> None:
     # 0 written is the default 20 (P-COMP-00061 says so of plane compensation; read alike here)
     zero = HEAD + "frict_comp.max_points 0\nfrict_comp.table_entries 21\n" + full
     [(code, line, message)] = found(zero, "compensation", TABLES)
-    assert (code, line) == ("LIS705", 4) and "is not set, so its default 20 applies" in message
+    assert (code, line) == ("LIS705", 4)
+    assert "`frict_comp.max_points` = 0, which means its default 20" in message  # written: not "not set"
     # a table out of its range gets LIS705 only: what the CNC makes of its entries is not known
     sparse = HEAD + "frict_comp.table_entries 30\nfrict_comp.table[0].in 1\n"
     assert [code for code, *_ in found(sparse, "compensation", TABLES)] == ["LIS705"]

@@ -84,14 +84,18 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         counts = [count for count in table.counts if count is not None]
         if not counts or table.size <= limit:
             continue
+        zero = values.get(table.kind.max_points) if reserved is None else None  # `max_points 0`: the default
         origin = (
             f"`{table.kind.max_points}` = {limit}"
             if reserved is not None
-            else (f"`{table.kind.max_points}` is not set, so its default {limit} applies")
+            else f"`{table.kind.max_points}` = 0, which means its default {limit}"
+            if zero is not None
+            else f"`{table.kind.max_points}` is not set, so its default {limit} applies"
         )
+        shown = reserved if reserved is not None else zero
+        related = [ctx.related(shown, "the reserved size")] if shown is not None else []
         sizes = " × ".join(str(size) for size in table.sizes)
         total = f"{sizes} = {table.size}" if len(table.sizes) > 1 else str(table.size)
-        related = [ctx.related(reserved, "the reserved size")] if reserved is not None else []
         start, end = ctx.value_span(counts[0].line)
         yield ctx.report(
             CODE,
