@@ -24,9 +24,10 @@ A name that is not an axis parameter but one of another kind of list
 (`wz[1].laenge` of a tool data list, `dynamic_weighting[0].path_limit` of a
 channel list) is told as such, with no rename: a list whose content is too
 short to show its kind (one or two lines) is read as an axis list, and renaming
-its names to the nearest axis parameter would rewrite a correct list. The start-up
-list entry that names it (`werkz_data[i]`, `sda_mds[i]` ...) makes it the
-kind it is.
+its names to the nearest axis parameter would rewrite a correct list. The
+start-up list entry that names it (`werkz_data[i]`, `sda_mds[i]` ...) makes it
+the kind it is; a list of another kind named by `achs_mds[i]` gets the same
+message.
 
 Why
 ---
@@ -158,8 +159,8 @@ def _other_kinds(path: str, pattern: str) -> str | None:
         described.append(what + (f", named by the start-up entry {' or '.join(entries)}" if entries else ""))
     return (
         f"`{path}` is no axis-list parameter: it is a parameter {'; or '.join(described)}. An axis list "
-        "cannot set it (the CNC ignores the line); if this file is such a list, name it in that entry "
-        "(its content was too little to show its kind)"
+        "cannot set it (the CNC ignores the line); if this file is such a list, it belongs in that start-up "
+        "entry"
     )
 
 
