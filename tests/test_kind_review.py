@@ -116,3 +116,17 @@ def test_a_max_points_written_as_zero_is_not_called_unset() -> None:
     [finding] = lint(text, name="achskw1.lis", select="LIS705")
     assert "`frict_comp.max_points` = 0, which means its default 20" in finding.message
     assert [related.line for related in finding.related] == [4]
+
+
+def test_a_channel_entry_no_channel_count_reaches_is_not_asked_to_raise_the_count(tmp_path: Path) -> None:
+    # kanal_anzahl ranges 1 ... 12 (P-STUP-00001): raising it to 13 is what LIS202 calls an error
+    (tmp_path / "achsmds1.lis").write_text("kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n")
+    (tmp_path / "sda_mds1.lis").write_text(CHANNEL.decode() + "Ende\n")
+    (tmp_path / "hochlauf.lis").write_text(
+        "kanal_anzahl 1\nsda_mds[0] ./sda_mds1.lis\nsda_mds[12] ./sda_mds1.lis\nsda_mds[3] ./sda_mds1.lis\n"
+        "zahl_mds 1\nachs_mds[0] ./achsmds1.lis\nEnde\n"
+    )
+    found = {d.line: d.message for d in lint(tmp_path / "hochlauf.lis", select="LIS522")}
+    assert sorted(found) == [3, 4]
+    assert "no kanal_anzahl reaches it (kanal_anzahl is at most 12" in found[3] and "raise" not in found[3]
+    assert "raise kanal_anzahl to 4 if the channel is meant" in found[4]

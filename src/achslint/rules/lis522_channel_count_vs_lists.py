@@ -6,7 +6,9 @@ not match the lists it names per channel: a channel below the count without
 a channel list `sda_mds[i]` (P-STUP-00009), or a per-channel entry for a
 channel the count leaves out: `sda_mds[i]`, tool data `werkz_data[i]`
 (P-STUP-00010), zero offsets `nullp_data[i]` (P-STUP-00011) or clamp position
-offsets `pzv_data[i]` (P-STUP-00012) with an index not below the count. The
+offsets `pzv_data[i]` (P-STUP-00012) with an index not below the count. An
+index of 12 or above is told that no count reaches it (`kanal_anzahl` is at
+most 12), not asked to raise the count beyond its range. The
 index of these entries is the channel's (0 for the first channel). A start-up
 list that does not write `kanal_anzahl` is not judged, nor one whose count is
 out of range (LIS202); missing channel lists are reported only when the
@@ -102,6 +104,7 @@ NAME = "channel-count-vs-lists"
 FIX = "none"
 SUMMARY = "kanal_anzahl differs from the channel lists, or a list is named for a channel beyond it"
 
+MAX_CHANNELS = 12  # kanal_anzahl ranges 1 ... 12 (P-STUP-00001): sda_mds[11] is the last channel's list
 PER_CHANNEL = {
     "sda_mds[i]": "channel list",
     "werkz_data[i]": "tool data list",
@@ -139,8 +142,14 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             entry,
             Severity.WARNING,
             f"`{path}` names the {what} of channel index {indices[0]}, but `kanal_anzahl` = {count} "
-            f"configures {_channels(count)}: raise kanal_anzahl to {indices[0] + 1} if the channel is meant, "
-            "or remove the entry",
+            f"configures {_channels(count)}: "
+            + (
+                f"raise kanal_anzahl to {indices[0] + 1} if the channel is meant, or remove the entry"
+                if indices[0] < MAX_CHANNELS
+                else f"no kanal_anzahl reaches it (kanal_anzahl is at most {MAX_CHANNELS}, so index "
+                f"{MAX_CHANNELS - 1} is the last channel's): give it the index of a channel below "
+                f"{MAX_CHANNELS}, or remove the entry"
+            ),
             [related_at(name, setting, "the number of channels")],
             value=False,
         )
