@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, NotRequired, TypedDict
+from typing import TYPE_CHECKING, TypedDict
 
 from .axis.resolved import CorrectionData, plain, resolve_bytes
 from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, Scalar, Value, catalogue
@@ -114,10 +114,13 @@ class AliasInfo(TypedDict):
     kind: str
 
 
-class RangeInfo(TypedDict):
+class _Bounds(TypedDict):
     min: float | None  # None: no lower bound is checked (a REAL64 range that states none)
     max: float | None  # None: no upper bound is checked
-    min_exclusive: NotRequired[bool]  # present (True) when `min` itself is refused: "0 < x" of a REAL64
+
+
+class RangeInfo(_Bounds, total=False):
+    min_exclusive: bool  # present (True) when `min` itself is refused: "0 < x" of a REAL64
 
 
 def range_words(info: RangeInfo) -> str:
