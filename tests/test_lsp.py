@@ -20,7 +20,8 @@ from lsprotocol import types as lsp
 from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
 from achslint.api import lint
-from achslint.fmt import format_bytes
+from achslint.fmt import LiveFormat, format_bytes
+from achslint.lsp.server import LOOP_FORMAT_LINES
 
 from .conftest import FIXTURES
 
@@ -28,8 +29,25 @@ pytestmark = pytest.mark.asyncio(loop_scope="module")
 WORK = Path(os.environ.get("ACHSLINT_LSP_TEST_DIR", "")) if os.environ.get("ACHSLINT_LSP_TEST_DIR") else None
 
 
+# The server of `client` is `achslint server` with two limits a tenth of their size, so that the paths of a
+# long list are reached by a list of 1,400 lines rather than 14,000 (test_formatting_of_a_long_list_...): it
+# formats on the loop lists up to LOOP_FORMAT_LINES // 10 lines, and brings a formatting up to date on the
+# loop for edits up to LiveFormat.LOCAL_LINES // 10 lines. Every other test's lists are far shorter; the
+# server of `plain_client` (and test_lsp_protocol's) is the plain `python -m achslint server`.
+SCALE = 10
+SCALED_SERVER = (
+    "import sys\n"
+    "import achslint.cli\n"
+    "from achslint.fmt import LiveFormat\n"
+    "from achslint.lsp import server\n"
+    f"server.LOOP_FORMAT_LINES //= {SCALE}\n"
+    f"LiveFormat.LOCAL_LINES //= {SCALE}\n"
+    "sys.exit(achslint.cli.main(['server']))\n"
+)
+
+
 @pytest_lsp.fixture(
-    scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "achslint", "server"])
+    scope="module", config=ClientServerConfig(server_command=[sys.executable, "-c", SCALED_SERVER])
 )
 async def client(lsp_client: LanguageClient):
     await lsp_client.initialize_session(
@@ -457,7 +475,10 @@ async def test_formatting_after_each_edit_gives_fmt_output(client: LanguageClien
 async def test_formatting_of_a_long_list_is_kept_up_to_date(client: LanguageClient, folder: Path):
     """A list longer than the server formats on the loop from scratch: its formatting is made on the worker
     after its first diagnostics (a request meanwhile waits for it), then brought up to date on the loop; an
-    edit of thousands of lines is formatted on the worker. Every answer turns the text into fmt's."""
+    edit of more lines than the loop takes is formatted on the worker. Every answer turns the text into
+    fmt's. (The server's limits are a tenth of a real one's, see SCALED_SERVER: the lines below are a
+    tenth too.)"""
+    assert LOOP_FORMAT_LINES // SCALE == 1000 and LiveFormat.LOCAL_LINES // SCALE == 200
     path = folder / "fmt-long" / "achsmds1.lis"
     path.parent.mkdir()
     body = [
@@ -466,7 +487,7 @@ async def test_formatting_of_a_long_list_is_kept_up_to_date(client: LanguageClie
         "getriebe[0].vb_reflow 20000   ( reference speed\n",
         "kopf.log_achs_name\tX\n",
     ]
-    text = "".join(body * 3500) + "Ende\n"  # 14,001 lines
+    text = "".join(body * 350) + "Ende\n"  # 1,401 lines
     uri = open_doc(client, path, text)
     await diagnostics_when(client, uri)
 
@@ -478,8 +499,8 @@ async def test_formatting_of_a_long_list_is_kept_up_to_date(client: LanguageClie
 
     edits = [
         (lsp.Range(lsp.Position(1, 0), lsp.Position(1, 0)), "  "),  # an indent
-        (lsp.Range(lsp.Position(5000, 0), lsp.Position(5000, 0)), "kopf.achs_nr\t\t7\n"),  # a line
-        (lsp.Range(lsp.Position(2, 0), lsp.Position(3500, 0)), ""),  # a quarter of the lines gone
+        (lsp.Range(lsp.Position(500, 0), lsp.Position(500, 0)), "kopf.achs_nr\t\t7\n"),  # a line
+        (lsp.Range(lsp.Position(2, 0), lsp.Position(350, 0)), ""),  # a quarter of the lines gone
     ]
     for version, (where, typed) in enumerate(edits, 2):
         client.text_document_did_change(
