@@ -272,3 +272,38 @@ def kind_of(file: ListFile) -> KindGuess:
     if AXIS.id in leaders:
         return replace(guess, kind=AXIS)
     return replace(guess, kind=BY_ID[leaders[0]] if len(leaders) == 1 else None)
+
+
+AXIS_PROBE = 64  # lines looked at before the other kinds' catalogues are asked
+EVIDENCE = 3  # parameter ids in comments, or paths of another kind (at least half the list), that decide
+
+
+def content_kind(file: ListFile) -> Kind | None:
+    """The kind `file`'s content clearly shows, None when it is not clear (too short, a tie, names of no
+    catalogue). Lint reads an unclear list as an axis list (`linting.linter.list_kind`); LIS523 compares a
+    clear kind with the start-up entry that names the file.
+
+    A list whose first assignments are all axis parameters is an axis list without asking the other
+    catalogues (they are read only for a list that may be of another kind). Only clear evidence makes a list
+    another kind: an axis list full of typos must still be checked (and its typos found), so a few names
+    another catalogue happens to have are not enough. An axis list is clear from `EVIDENCE` axis names (or
+    P-AXIS ids in comments) on.
+    """
+    axis = catalogue()
+    head = [line.path for line in file.lines[:AXIS_PROBE] if line.kind == ASSIGNMENT and line.path]
+    if all(axis.resolve(path) is not None for path in head):
+        return AXIS if len(head) >= EVIDENCE else None
+    guess = kind_of(file)
+    kind = guess.kind
+    if kind is None:
+        return None
+    assignments = sum(1 for line in file.lines[: guess.lines] if line.kind == ASSIGNMENT)
+    paths, ids = guess.paths.get(kind.id, 0), guess.ids.get(kind.id, 0)
+    axis_paths = guess.paths.get(AXIS.id, 0)
+    if kind.id == AXIS.id or axis_paths >= paths or 2 * axis_paths >= assignments:
+        # mostly axis parameters, whatever comments cite
+        clear = max(axis_paths, guess.ids.get(AXIS.id, 0)) >= EVIDENCE
+        return AXIS if clear else None
+    if ids >= EVIDENCE or (paths >= EVIDENCE and 2 * paths >= assignments):
+        return kind
+    return None

@@ -17,8 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..axis.source import NOT_A_LIST, looks_like_a_list
-from ..catalogue import catalogue
-from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, DEFAULT_AXIS, Kind, kind_of
+from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, DEFAULT_AXIS, Kind, content_kind, kind_of
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import is_xml
@@ -26,7 +25,7 @@ from ..machine import startup as machine
 from ..machine.resolved import Machine
 from ..rules import Scope
 from ..rules.context import Context
-from ..syntax.parser import ASSIGNMENT, ListFile, parse_bytes
+from ..syntax.parser import ListFile, parse_bytes
 from .config import PROGRAM_SUFFIXES, Overrides, ResolvedConfig, Settings
 from .engine import Policy, run
 from .suppression import Suppressions
@@ -139,30 +138,13 @@ def default_list(data: bytes) -> ListFile:
 
 def list_kind(file: ListFile, name: str, given: str | None = None) -> Kind:
     """The kind of a list: as the start-up list's entry says (`given`), a default list by its name, else told
-    by its content. A list whose first assignments are all axis parameters is an axis list without asking
-    the other catalogues (they are read only for a list that may be of another kind)."""
+    by its content (`kinds.content_kind`); a list whose content does not clearly show another kind is an axis
+    list."""
     if given is not None:
         return BY_ID[given]
     if machine.is_default_list(Path(name)):
         return DEFAULT_AXIS
-    axis = catalogue()
-    head = (line.path for line in file.lines[:AXIS_PROBE] if line.kind == ASSIGNMENT and line.path)
-    if all(axis.resolve(path) is not None for path in head):
-        return AXIS
-    guess = kind_of(file)
-    kind = guess.kind
-    if kind is None or kind.id == AXIS.id:
-        return AXIS
-    # Only clear evidence makes a list another kind: an axis list full of typos must still be checked (and
-    # its typos found), so a few names another catalogue happens to have are not enough.
-    assignments = sum(1 for line in file.lines[: guess.lines] if line.kind == ASSIGNMENT)
-    paths, ids = guess.paths.get(kind.id, 0), guess.ids.get(kind.id, 0)
-    axis_paths = guess.paths.get(AXIS.id, 0)
-    if axis_paths >= paths or 2 * axis_paths >= assignments:  # mostly axis parameters, whatever comments cite
-        return AXIS
-    if ids >= EVIDENCE or (paths >= EVIDENCE and 2 * paths >= assignments):
-        return kind
-    return AXIS
+    return content_kind(file) or AXIS
 
 
 class NotAnAxisList(UnreadableInput):
@@ -213,10 +195,6 @@ def _names_nothing_known(file: ListFile) -> bool:
     as an axis list it would be every catalogue default under a file name."""
     guess = kind_of(file)
     return guess.unknown > 0 and not guess.paths and not guess.ids
-
-
-AXIS_PROBE = 64  # lines looked at before the other kinds' catalogues are asked
-EVIDENCE = 3  # parameter ids in comments, or paths of another kind (at least half the list), that decide
 
 
 def not_checked(file: ListFile, name: str, given: str | None = None) -> str | None:
