@@ -203,3 +203,23 @@ def test_lis516_does_not_ask_for_a_count_above_the_largest_one(tmp_path, index):
     # below 32 the count is still the remedy
     text = text.replace(f"achs_mds[{index}]", "achs_mds[31]")
     assert "raise zahl_mds to 32 at least" in lint(machine(tmp_path, text), "LIS516")[0]["message"]
+
+
+@pytest.mark.parametrize("counts", ["", "kanal_anzahl 20\nzahl_kw 40\n"])
+def test_lis504_leaves_out_entries_no_count_reaches(tmp_path, counts):
+    """Found by review: `sda_mds[12]` (kanal_anzahl is at most 12, P-STUP-00001), `achs_kw[32]` (zahl_kw at
+    most 32, P-STUP-00016) and tool data of channel index 12 are never loaded, whatever the count says (LIS516
+    and LIS522 say no count reaches them), yet LIS504 said the CNC aborts the start-up (or cannot load the
+    list) when such an entry names a missing file. The last entries a count can reach are still reported.
+    With no count written, or one out of range (LIS202), the range of the count bounds the entries."""
+    text = (
+        f"{counts}zahl_mds 1\nachs_mds[0] ./achsmds1.lis\n"
+        "sda_mds[11] ./sda_mds12.lis\nsda_mds[12] ./sda_mds13.lis\n"
+        "achs_kw[31] ./kw32.lis\nachs_kw[32] ./kw33.lis\n"
+        "werkz_data[11] ./wz12.lis\nwerkz_data[12] ./wz13.lis\nEnde\n"
+    )
+    skip = 2 if counts else 0
+    found = lint(machine(tmp_path, text, None, {1: "X"}), "LIS504")
+    assert where(found) == [("hochlauf.lis", skip + line, "LIS504") for line in (3, 5, 7)]
+    assert [d["severity"] for d in found] == ["error", "warning", "warning"]
+    assert all("[11]" in d["message"] or "[31]" in d["message"] for d in found)

@@ -35,6 +35,11 @@ _ENTRY = re.compile(
 )
 # how many achs_mds[i] / achs_kw[i] entries and channels the CNC reads (P-STUP-00014/16, P-STUP-00001)
 COUNTS = ("zahl_mds", "zahl_kw", "kanal_anzahl")
+# the largest value of each count: zahl_mds and zahl_kw range 1 ... 32, kanal_anzahl 1 ... 12, so an entry at
+# that index or above is never read, whatever the count says (LIS516, LIS522)
+MAX_COUNT = {"zahl_mds": 32, "zahl_kw": 32, "kanal_anzahl": 12}
+# the lists named per channel besides the channel list, `werkz_data[i]` with the channel's index i
+CHANNEL_ENTRIES = ("werkz_data", "nullp_data", "pzv_data")
 
 
 @dataclass
@@ -77,26 +82,36 @@ class Startup:
 
     def loaded_axes(self) -> list[StartupEntry]:
         """The axis lists the CNC loads: with `zahl_mds` written (P-STUP-00014), the entries below that count
-        — it ignores the others (LIS516 says so) —, else every `achs_mds[i]`."""
+        — it ignores the others (LIS516 says so) —, else every `achs_mds[i]` up to `achs_mds[31]`."""
         return self._below("zahl_mds", self.axes)
 
     def loaded_channels(self) -> list[StartupEntry]:
         """The channel lists the CNC loads: with `kanal_anzahl` written (P-STUP-00001: the number of configured
         channels), those of the channels below that count — a list named for a channel beyond it belongs to
-        no configured channel (LIS522 says so) —, else every `sda_mds[i]`."""
+        no configured channel (LIS522 says so) —, else every `sda_mds[i]` up to `sda_mds[11]`."""
         return self._below("kanal_anzahl", self.channels)
 
     def loaded_compensations(self) -> list[StartupEntry]:
         """The axis compensation lists the CNC loads: with `zahl_kw` written (P-STUP-00016), the entries below
-        that count (LIS516 says so of the others), else every `achs_kw[i]`."""
+        that count (LIS516 says so of the others), else every `achs_kw[i]` up to `achs_kw[31]`."""
         return self._below("zahl_kw", self.compensations)
 
+    def loaded_others(self) -> list[StartupEntry]:
+        """The lists of other kinds the CNC loads: all of them, but the lists of a channel (tool data, zero
+        offsets, clamp position offsets: their index is the channel's, P-STUP-00010 … P-STUP-00012) only for
+        the channels `loaded_channels` counts."""
+        per_channel = [entry for entry in self.others if entry.key.split("[")[0] in CHANNEL_ENTRIES]
+        left_out = {id(entry) for entry in per_channel} - {
+            id(entry) for entry in self._below("kanal_anzahl", per_channel)
+        }
+        return [entry for entry in self.others if id(entry) not in left_out]
+
     def _below(self, key: str, entries: list[StartupEntry]) -> list[StartupEntry]:
-        """The entries whose index is below the count `key` when it is written as a whole number, else all."""
+        """The entries whose index is below the count `key` when it is written as a whole number, and below the
+        count's largest value in any case (`MAX_COUNT`: no count reaches `sda_mds[12]` or `achs_kw[32]`)."""
         count = self.counts.get(key)
-        if count is None or count.value is None:
-            return list(entries)
-        return [entry for entry in entries if entry_index(entry) < count.value]
+        limit = MAX_COUNT[key] if count is None or count.value is None else min(count.value, MAX_COUNT[key])
+        return [entry for entry in entries if entry_index(entry) < limit]
 
 
 def entry_index(entry: StartupEntry) -> int:

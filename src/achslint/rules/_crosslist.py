@@ -9,7 +9,7 @@ import os
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
-from ..machine.startup import entry_index
+from ..machine.startup import MAX_COUNT, entry_index
 
 if TYPE_CHECKING:
     from ..machine.channel import ChannelAxis
@@ -20,7 +20,7 @@ COUNTED = {
     "zahl_mds": ("achs_mds", "P-STUP-00014", "P-STUP-00015"),
     "zahl_kw": ("achs_kw", "P-STUP-00016", "P-STUP-00017"),
 }
-MAX_ENTRIES = 32  # zahl_mds and zahl_kw range 1 ... 32 (P-STUP-00014, P-STUP-00016)
+MAX_ENTRIES = MAX_COUNT["zahl_mds"]  # zahl_mds and zahl_kw range 1 ... 32 (P-STUP-00014, P-STUP-00016)
 
 
 def by_number(members: list[Member]) -> dict[int, Member]:

@@ -16,6 +16,11 @@ readable); an axis list like that is reported on the axis list itself. A list
 of another kind the start-up list names (a compensation list `achs_kw[i]` up
 to `zahl_kw`, tool data `werkz_data[i]`, zero offsets `nullp_data[i]`, the
 real-time configuration `rtconf_lis` ...) that does not exist is a warning.
+Only the entries the CNC loads are checked: an entry its count leaves out
+(LIS516, LIS522) is never read, nor is one no count reaches (`achs_mds[32]`,
+`achs_kw[32]` and above: `zahl_mds` and `zahl_kw` are at most 32; channel
+entries `sda_mds[12]`, `werkz_data[12]` ... and above: `kanal_anzahl` is at
+most 12), whatever the count says or when none is written.
 
 Why
 ---
@@ -129,7 +134,8 @@ def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
     """The lists of other kinds a start-up list names (compensation lists up to `zahl_kw`, tool data, zero
     offsets ...) that do not exist: the CNC cannot load them; what it does then is documented for axis and
     channel lists only, hence a warning."""
-    for entry in [*startup.loaded_compensations(), *startup.others]:  # beyond zahl_kw: LIS516
+    # beyond the counts, or beyond what any count reaches: never read (LIS516, LIS522)
+    for entry in [*startup.loaded_compensations(), *startup.loaded_others()]:
         if entry.path is not None or entry.refused:
             continue  # there (its own lint checks it), or refused (the warning above says why)
         kind = entry_kind(entry.key)

@@ -93,6 +93,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Severity
+from ..machine.startup import MAX_COUNT
 from ..syntax.parser import path_pattern
 from ._kindvalues import at_setting, related_at, shown, startup_settings, whole, written
 
@@ -104,7 +105,7 @@ NAME = "channel-count-vs-lists"
 FIX = "none"
 SUMMARY = "kanal_anzahl differs from the channel lists, or a list is named for a channel beyond it"
 
-MAX_CHANNELS = 12  # kanal_anzahl ranges 1 ... 12 (P-STUP-00001): sda_mds[11] is the last channel's list
+MAX_CHANNELS = MAX_COUNT["kanal_anzahl"]  # 1 ... 12 (P-STUP-00001): sda_mds[11] is the last channel's list
 PER_CHANNEL = {
     "sda_mds[i]": "channel list",
     "werkz_data[i]": "tool data list",
