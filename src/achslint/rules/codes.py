@@ -126,6 +126,7 @@ RULE_MODULES: dict[str, tuple[Severity, tuple[Scope, ...], tuple[str, ...]]] = {
     "lis520_compensation_axis_number_mismatch": (ERROR, MACHINE, AXIS_KINDS),
     "lis521_offset_for_missing_channel_axis": (WARNING, MACHINE, AXIS_KINDS),
     "lis522_channel_count_vs_lists": (WARNING, MACHINE, AXIS_KINDS),
+    "lis523_entry_names_list_of_other_kind": (WARNING, MACHINE, AXIS_KINDS),
     "lis601_program_text": (ERROR, PROGRAM, AXIS_KINDS),
     "lis602_unknown_axis": (ERROR, PROGRAM, AXIS_KINDS),
     "lis603_axis_twice_in_g74": (ERROR, PROGRAM, AXIS_KINDS),
