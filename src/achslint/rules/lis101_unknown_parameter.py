@@ -18,7 +18,9 @@ message says the catalogue was not complete enough to judge it, and names a
 parameter only when the written name is very close to one (a typo of a known
 name, or an index missing or too many); the rename is offered as an unsafe
 fix, never applied by `--fix` alone. `unknown-parameters = "ignore"` silences
-these too.
+these too. When the list's content clearly is of another kind than the start-up
+entry that names it says (an axis list named by `sda_mds[i]`: LIS523 on that
+entry), a name of that other kind is told as such instead.
 
 A name that is not an axis parameter but one of another kind of list
 (`wz[1].laenge` of a tool data list, `dynamic_weighting[0].path_limit` of a
@@ -63,7 +65,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..catalogue import fill_indices
-from ..catalogue.kinds import BY_ID, ENTRY_KINDS, path_index
+from ..catalogue.kinds import BY_ID, ENTRY_KINDS, Kind, content_kind, path_index
 from ..core.closest import ratio_bound
 from ..core.diagnostics import Diagnostic, Severity
 from ..syntax import parser as syntax
@@ -190,6 +192,16 @@ def _diagnose_other_kind(ctx: Context, setting: Setting) -> tuple[str, str | Non
     return unknown, None, None
 
 
+def _of_content_kind(ctx: Context, setting: Setting, shown: Kind, parameter: str) -> str:
+    """The message for a name of the kind the list's content shows, in a list read as another kind."""
+    article = "an" if shown.name[0] in "aeiou" else "a"
+    return (
+        f"`{setting.line.path}` is a parameter of {article} {shown.name} ({parameter}), not of a "
+        f"{ctx.kind_name}, and this file's content is {article} {shown.name}: it is read as a {ctx.kind_name} "
+        f"because the start-up entry naming it says so (LIS523 there), where its lines set nothing"
+    )
+
+
 def check(ctx: Context) -> Iterator[Diagnostic]:
     mode = ctx.options.unknown_parameters
     if mode == "ignore":
@@ -209,10 +221,22 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
 
 
 def _check_other_kind(ctx: Context) -> Iterator[Diagnostic]:
+    # A list whose content clearly is of another kind than the start-up entry names (LIS523 there): its names
+    # are told as that kind's, not as names a partial catalogue may lack.
+    shown = content_kind(ctx.file)
+    other = shown.catalogue() if shown is not None and shown.prefix != ctx.kind.prefix else None
     for setting in ctx.settings:
         if setting.known or syntax.is_misspelt_end(setting.line):
             continue
-        message, suggestion, applicability = _diagnose_other_kind(ctx, setting)
+        parameter = other.resolve(setting.line.path or "") if other is not None else None
+        if shown is not None and parameter is not None:
+            message, suggestion, applicability = (
+                _of_content_kind(ctx, setting, shown, parameter.parameter.id),
+                None,
+                None,
+            )
+        else:
+            message, suggestion, applicability = _diagnose_other_kind(ctx, setting)
         line = setting.line
         start, end = ctx.path_span(line)
         fix = replace_path_fix(line, suggestion, applicability) if suggestion and applicability else None

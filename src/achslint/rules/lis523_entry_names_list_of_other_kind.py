@@ -98,7 +98,9 @@ if TYPE_CHECKING:
 CODE = "LIS523"
 NAME = "entry-names-list-of-other-kind"
 FIX = "none"
-SUMMARY = "Start-up list entry names a list whose content is of another kind (a channel list as an axis list ...)"
+SUMMARY = (
+    "Start-up list entry names a list whose content is of another kind (a channel list as an axis list ...)"
+)
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:
@@ -155,7 +157,7 @@ def _message(entry: StartupEntry, named: Kind, shown: Kind) -> str:
     )
     return (
         f"`{entry.key}` names `{entry.raw}`, whose content is {_a(shown.name)} ({shown.prefix} parameters): "
-        f"the CNC reads it as {_a(named.name)}, and its names are no {named.name} parameters, so "
+        f"the CNC reads it as {_a(named.name)}, and its names are no parameters of {_a(named.name)}, so "
         f"{_stands_for(entry, named)} gets no {named.name} of its own; name the {named.name} here, {move}"
     )
 
