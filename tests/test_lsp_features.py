@@ -382,6 +382,23 @@ def test_findings_of_another_file_get_no_noqa_action(session: Session, tmp_path:
     assert features.code_actions(document, snapshot, [other], EVERYWHERE, None, list) == []
 
 
+def test_machine_findings_get_no_noqa_action(session: Session, tmp_path: Path) -> None:
+    # A `noqa` cannot suppress what the machine step finds (LIS501 here): the action would only add LIS009.
+    one_machine(tmp_path)
+    text = "kopf.achs_nr 1\nkenngr.ref_richt 7\nEnde\n"
+    for name in ("achsmds1.lis", "achsmds2.lis"):
+        (tmp_path / name).write_text(text, encoding="latin-1")
+    document = opened(session, tmp_path / "achsmds2.lis")
+    snapshot, found, _ = session.diagnostics(document.uri)
+    assert {"LIS501", "LIS201"} <= set(codes(found))
+    titles = [a.title for a in features.code_actions(document, snapshot, found, EVERYWHERE, None, list)]
+    assert "Suppress LIS201 on this line (noqa)" in titles  # the list's own finding: suppressed by a noqa
+    assert not [title for title in titles if "LIS501" in title]
+    suppressed = text.replace("kopf.achs_nr 1", "kopf.achs_nr 1  # noqa: LIS501")
+    again = opened(session, tmp_path / "achsmds2.lis", suppressed)
+    assert {"LIS501", "LIS009"} <= set(codes(session.diagnostics(again.uri)[1]))  # why none is offered
+
+
 # -- completion --------------------------------------------------------------------------------------------
 
 

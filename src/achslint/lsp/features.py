@@ -921,6 +921,9 @@ def code_actions(
     actions = []
     file = snapshot.file if snapshot is not None else None
     xml = file is None
+    # A `noqa` in a list suppresses only the list's own findings: the machine step's (LIS5xx) are not
+    # suppressed (`engine.run`), and a `noqa` for one would only add LIS009.
+    own = {id(d) for d in snapshot.result.diagnostics} if snapshot is not None else set()
     if wanted(lsp.CodeActionKind.QuickFix):
         for d in found:
             if not (d.line <= end_line and d.end_line >= start_line):
@@ -938,7 +941,7 @@ def code_actions(
                         edit=lsp.WorkspaceEdit(changes={document.uri: text_edits(document, d.fix)}),
                     )
                 )
-            if not xml and d.path == document.name:
+            if not xml and d.path == document.name and id(d) in own:
                 edit = noqa_edit(document, file, d)
                 if edit is not None:
                     whole_file = edit.new_text.startswith("# achslint: noqa")
