@@ -577,6 +577,18 @@ async def test_definition_from_a_startup_list_opens_the_named_list(client: Langu
         lsp.DefinitionParams(lsp.TextDocumentIdentifier(uri), where)
     )
     assert target[0].uri == (machine / "achsmds1.lis").resolve().as_uri()
+    # An entry of any list, in a buffer whose lines are not those on disk: the entry of its key and value.
+    (machine / "sda_mds1.lis").write_text("grp_anzahl 1\nEnde\n", encoding="latin-1")
+    entry = "sda_mds[0]  ./sda_mds1.lis\nEnde\n"
+    (machine / "hochlauf.lis").write_text(text.replace("Ende\n", entry), encoding="latin-1")
+    edited = "# a line the file on disk does not have\n" + text.replace("Ende\n", entry)
+    change(client, uri, 2, edited)
+    for needle, name in (("./achsmds1.lis", "achsmds1.lis"), ("./sda_mds1.lis", "sda_mds1.lis")):
+        where = position_of(edited, needle, 3)
+        target = await client.text_document_definition_async(
+            lsp.DefinitionParams(lsp.TextDocumentIdentifier(uri), where)
+        )
+        assert [t.uri for t in target] == [(machine / name).resolve().as_uri()]
     close_doc(client, uri)
 
 

@@ -1070,9 +1070,9 @@ def definition(
     line = file.lines[line_number - 1]
     if part_at(line, column) != "value":
         return []
-    if snapshot.startup:
+    if snapshot.startup:  # the entries as on disk: the one of this key and value (the buffer may differ)
         for entry in startup_entries():
-            if entry.line == line_number and entry.path is not None:
+            if entry.key == line.path and entry.raw == line.value and entry.path is not None:
                 zero = lsp.Range(lsp.Position(0, 0), lsp.Position(0, 0))
                 return [lsp.Location(uri_of(entry.path), zero)]
         return []

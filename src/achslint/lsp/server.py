@@ -1185,18 +1185,25 @@ async def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[l
         return []
     line, column = document.from_lsp(params.position.line, params.position.character)
     snapshot = analysis.snapshot
-    if snapshot.startup and snapshot.file is None:  # a start-up list is not parsed by its lint
+    # A start-up list's lines as they are now (its lint may not parse them, or may be of an older text).
+    if snapshot.startup and (snapshot.file is None or snapshot.text != document.text):
         copy = document.copy()
         parsed = await ls.run_on_worker(lambda: parse_text(copy.text, copy.name))
         snapshot = Snapshot(snapshot.version, copy.text, snapshot.result, parsed, startup=True)
 
     def entries() -> list[StartupEntry]:
+        from ..core.decode import UnreadableInput
         from ..machine.startup import read_startup
 
         if document.path is None:  # not a file: no start-up list
             return []
-        startup = read_startup(document.path)
-        return ([startup.default] if startup.default else []) + startup.axes
+        try:
+            startup = read_startup(document.path)
+        except (OSError, UnreadableInput):  # not saved yet, or unreadable on disk (its lint says why)
+            return []
+        single = [startup.default, startup.default_channel]
+        found = [entry for entry in single if entry is not None]
+        return found + startup.axes + startup.channels + startup.compensations + startup.others
 
     return features.definition(document, snapshot, line, column, entries)
 
