@@ -6,6 +6,7 @@ completion, formatting, definitions, inlay hints). test_lsp.py runs the server e
 from __future__ import annotations
 
 import os
+import shutil
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -25,7 +26,7 @@ from achslint.lsp.documents import Document
 from achslint.lsp.session import ClientSettings, Session, Snapshot, xml_bytes
 from achslint.machine.startup import StartupEntry
 
-from .conftest import one_machine
+from .conftest import FIXTURES, one_machine
 
 EVERYWHERE = lsp.Range(lsp.Position(0, 0), lsp.Position(99, 0))
 
@@ -733,3 +734,24 @@ def test_outline_positions_are_the_clients_units_in_ascii_and_wide_texts(
         assert kopf.children[0].range == features.lsp_range(document, 1, 1, 1, line.end_column)
         assert kopf.children[0].range.end.character == len(text.splitlines()[0].encode("utf-16-le")) // 2
         assert [s.name for s in symbols] == ["kopf", "getriebe[0]", "Ende"]
+
+
+def test_hover_on_a_list_named_as_another_kind_shows_the_kind_its_content_is(
+    session: Session, tmp_path: Path
+) -> None:
+    # sda_mds[0] names an axis list (LIS523): read as a channel list, `kopf.achs_nr` is none of its names, so
+    # the card comes from the axis catalogue the content shows, and says how the list is read.
+    machine = tmp_path / "machine"
+    shutil.copytree(FIXTURES / "rules" / "LIS523" / "bad", machine)
+    document = opened(session, machine / "achsmds2.lis")
+    snapshot = snapshot_of(session, document)
+    assert features.document_kind(snapshot) is not None and features.document_kind(snapshot).id == "channel"
+    line = next(n for n, text in enumerate(document.text.splitlines(), 1) if text.startswith("kopf.achs_nr"))
+    card = features.hover_text(snapshot.context, snapshot.file, line, 2, markdown=False)
+    assert card is not None and card.startswith("P-AXIS-00016 kopf.achs_nr")
+    assert "read as a channel list (LIS523" in card and "its content is an axis list" in card
+    # the list read as its own kind: the card has no such note
+    right = opened(session, machine / "achsmds1.lis")
+    mine = snapshot_of(session, right)
+    own = features.hover_text(mine.context, mine.file, 1, 2, markdown=False)
+    assert own is not None and "LIS523" not in own

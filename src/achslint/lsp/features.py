@@ -28,7 +28,7 @@ from ..catalogue import (
     Parameter,
     fill_indices,
 )
-from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, STARTUP, Kind
+from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, STARTUP, Kind, content_kind
 from ..catalogue.units import describe, unit_label
 from ..core.diagnostics import Diagnostic, Fix, Severity
 from ..core.pause import pause
@@ -352,6 +352,8 @@ def hover_text(
     cat = kind.catalogue() if kind is not None else None
     setting = setting_of(context, line)
     resolution = cat.resolve(line.path or "") if cat is not None and line.path_ok else None
+    if kind is not None and resolution is None and part == "path" and line.path_ok:
+        return _other_kind_card(file, line.path or "", kind, markdown)
     if kind is None or resolution is None:
         return None
     parameter = resolution.parameter
@@ -394,6 +396,27 @@ def hover_text(
             f"the CNC uses {value_words(values, canonical)} instead ({correction.error}: {correction.reason})"
         )
     return "\n\n".join(out)
+
+
+def _other_kind_card(file: syntax.ListFile, path: str, read_as: Kind, markdown: bool) -> str | None:
+    """The card of a name the list's kind does not know, from the kind its content clearly shows (a channel
+    list a start-up entry names as an axis list: LIS523, LIS101), said to be read as the other; else None."""
+    shown = content_kind(file)
+    if shown is None or shown.prefix == read_as.prefix:
+        return None
+    catalogue = shown.catalogue()
+    resolution = catalogue.resolve(path) if catalogue is not None else None
+    if resolution is None:
+        return None
+    note = (
+        f"This list is read as {_a(read_as.name)} (LIS523: the start-up entry that names it), but its content "
+        f"is {_a(shown.name)}: the parameter below is not one of {_a(read_as.name)}."
+    )
+    return "\n".join([*card_text(resolution.parameter, markdown, shown), "", note])
+
+
+def _a(words: str) -> str:
+    return f"{'an' if words[0] in 'aeiou' else 'a'} {words}"
 
 
 def _value_text(parameter: Parameter, written: object, unit: str | None) -> str | None:
