@@ -688,7 +688,7 @@ def explain(
     if kind is not None and (problem is None or problem not in NOT_A_FILE):
         _fail("--kind goes with a parameter name, not with a file")
     startup = path if problem is None and is_startup(path) else None  # by its name, or by its content
-    loaded = _channel_of_a_machine(path) if problem is None and startup is None else None
+    data, loaded = _read_for_explain(path) if problem is None and startup is None else (None, None)
     if loaded is not None:  # a channel list a start-up list loads: its machine, with that channel's names
         startup, number = loaded
         if channel not in (1, number):
@@ -703,7 +703,8 @@ def explain(
         _fail("--program goes with a start-up list (hochlauf.lis)")
     elif problem is None or problem not in NOT_A_FILE:
         defaults, under = default_underneath(path)
-        axis_report = explain_list(_one_list(path, target), target, gear, defaults, under)
+        listed = data if data is not None else _one_list(path, target)  # (which says why it cannot be read)
+        axis_report = explain_list(listed, target, gear, defaults, under)
         shown.LIST[output_format.value](axis_report, screen)
     else:
         found = _parameter(target, kind.value if kind is not None else None)
@@ -781,32 +782,30 @@ NOT_A_FILE = (
 )
 
 
-def _channel_of_a_machine(path: Path) -> tuple[Path, int] | None:
-    """For `explain` of a channel list: the start-up list that loads it and its channel number, when exactly
-    one does (a channel list alone has no axes to explain: `_one_list` refuses it)."""
-    from .axis.source import read_one_list
+def _read_for_explain(path: Path) -> tuple[bytes | None, tuple[Path, int] | None]:
+    """`explain` of a file that is no start-up list, read once: its axis list, or for a channel list that exactly
+    one start-up list loads, that start-up list and the channel's number (a channel list alone has no axes to
+    explain); (None, None) for anything else, which `_one_list` refuses after the option checks."""
     from .core.decode import UnreadableInput
     from .linting.discovery import channel_loaded_by
-    from .linting.linter import NotAnAxisList, axis_list_only
+    from .linting.linter import NotAnAxisList, read_axis_list
 
     try:
-        axis_list_only(read_one_list(path, str(path)), str(path))
+        return read_axis_list(path, str(path)), None
     except NotAnAxisList as exc:
-        return channel_loaded_by(path) if exc.kind in ("channel", "default_channel") else None
+        return None, channel_loaded_by(path) if exc.kind in ("channel", "default_channel") else None
     except (OSError, UnreadableInput):
-        pass  # `_one_list` says why
-    return None
+        return None, None  # `_one_list` says why
 
 
 def _one_list(path: Path, name: str) -> bytes:
     """The one axis list in a file, or a one-line failure (exit 2)."""
-    from .axis.source import read_one_list
     from .core.decode import UnreadableInput
     from .core.files import Refused, reason
-    from .linting.linter import axis_list_only
+    from .linting.linter import read_axis_list
 
     try:
-        return axis_list_only(read_one_list(path, name), name)
+        return read_axis_list(path, name)
     except Refused as exc:
         _fail(str(exc))
     except OSError as exc:

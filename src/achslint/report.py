@@ -27,7 +27,7 @@ from .dryrun import DryRun, DryRunRefused
 from .explanation import ListReport, default_underneath, explain_list
 from .homing.scenario import ScenarioError
 from .linting.config import ConfigError
-from .linting.linter import axis_list_only
+from .linting.linter import read_axis_list
 from .linting.run import LintOutcome, LintRequest, run_lint
 from .machine.resolved import MachineError
 from .machinediff import MachineDiffError, MachineDiffReport, startup_in
@@ -238,7 +238,6 @@ def _lists(startup: Path, cnc_root: Path | None) -> list[ListFile]:
 
 
 def _axis_report(request: ReportRequest) -> CommissioningReport:
-    from .axis.source import read_one_list
     from .dryrun import dry_run, scenario_input
 
     path = request.target
@@ -246,7 +245,7 @@ def _axis_report(request: ReportRequest) -> CommissioningReport:
         raise ReportFailed(
             f"--program goes with a start-up list (hochlauf.lis), not with the axis list {path}"
         )
-    data = axis_list_only(read_one_list(path, str(path)), str(path))
+    data = read_axis_list(path, str(path))
     defaults, under = default_underneath(path)
     explained = explain_list(data, str(path), request.gear, defaults, under)
     axis = explained["axis"]
@@ -284,8 +283,7 @@ def _compare(report: CommissioningReport, request: ReportRequest, startup: Path 
     if machines is not None:
         report.machine_diff = diff_machines(*machines)
         return
-    from .axis.source import read_one_list
 
-    ours = axis_list_only(read_one_list(request.target, str(request.target)), str(request.target))
-    theirs = axis_list_only(read_one_list(request.against, str(request.against)), str(request.against))
+    ours = read_axis_list(request.target, str(request.target))
+    theirs = read_axis_list(request.against, str(request.against))
     report.list_diff = diff_lists(theirs, str(request.against), ours, str(request.target))

@@ -59,6 +59,11 @@ class Kind:
     table: str | None = None
 
     @property
+    def a_name(self) -> str:
+        """The name after its article, for messages: "an axis list", "a channel list"."""
+        return f"{'an' if self.name[0] in 'aeiou' else 'a'} {self.name}"
+
+    @property
     def has_catalogue(self) -> bool:
         return self.table is not None or self.prefix == AXIS_PREFIX
 

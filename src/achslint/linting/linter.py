@@ -16,7 +16,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..axis.source import NOT_A_LIST, looks_like_a_list
+from ..axis.source import NOT_A_LIST, looks_like_a_list, read_one_list
 from ..catalogue.kinds import AXIS, AXIS_PREFIX, BY_ID, DEFAULT_AXIS, Kind, content_kind, kind_of
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Severity
@@ -182,12 +182,17 @@ def axis_list_only(data: bytes, name: str) -> bytes:
         if kind.id in ("channel", "default_channel")
         else ""
     )
-    article = "an" if kind.name[0] in "aeiou" else "a"
     raise NotAnAxisList(
-        f"{name} is {article} {kind.name}, not an axis list: this command reads one axis list. "
+        f"{name} is {kind.a_name}, not an axis list: this command reads one axis list. "
         f"`achslint lint` checks it against the parameters of its kind{hint}",
         kind.id,
     )
+
+
+def read_axis_list(path: Path, name: str) -> bytes:
+    """The one axis list of a file named on the command line (`axis.source.read_one_list`), refused as
+    `axis_list_only` refuses a list of another kind. Raises `OSError`, `UnreadableInput` or `NotAnAxisList`."""
+    return axis_list_only(read_one_list(path, name), name)
 
 
 def _names_nothing_known(file: ListFile) -> bool:

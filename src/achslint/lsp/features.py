@@ -409,14 +409,10 @@ def _other_kind_card(file: syntax.ListFile, path: str, read_as: Kind, markdown: 
     if resolution is None:
         return None
     note = (
-        f"This list is read as {_a(read_as.name)} (LIS523: the start-up entry that names it), but its content "
-        f"is {_a(shown.name)}: the parameter below is not one of {_a(read_as.name)}."
+        f"This list is read as {read_as.a_name} (LIS523: the start-up entry that names it), but its content "
+        f"is {shown.a_name}: the parameter below is not one of {read_as.a_name}."
     )
     return "\n".join([*card_text(resolution.parameter, markdown, shown), "", note])
-
-
-def _a(words: str) -> str:
-    return f"{'an' if words[0] in 'aeiou' else 'a'} {words}"
 
 
 def _value_text(parameter: Parameter, written: object, unit: str | None) -> str | None:

@@ -194,10 +194,9 @@ def _diagnose_other_kind(ctx: Context, setting: Setting) -> tuple[str, str | Non
 
 def _of_content_kind(ctx: Context, setting: Setting, shown: Kind, parameter: str) -> str:
     """The message for a name of the kind the list's content shows, in a list read as another kind."""
-    article = "an" if shown.name[0] in "aeiou" else "a"
     return (
-        f"`{setting.line.path}` is a parameter of {article} {shown.name} ({parameter}), not of a "
-        f"{ctx.kind_name}, and this file's content is {article} {shown.name}: it is read as a {ctx.kind_name} "
+        f"`{setting.line.path}` is a parameter of {shown.a_name} ({parameter}), not of a "
+        f"{ctx.kind_name}, and this file's content is {shown.a_name}: it is read as a {ctx.kind_name} "
         f"because the start-up entry naming it says so (LIS523 there), where its lines set nothing"
     )
 

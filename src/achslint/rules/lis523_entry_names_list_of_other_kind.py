@@ -156,8 +156,8 @@ def _message(entry: StartupEntry, named: Kind, shown: Kind) -> str:
         else f"the reference tables name no start-up entry for a {shown.name}"
     )
     return (
-        f"`{entry.key}` names `{entry.raw}`, whose content is {_a(shown.name)} ({shown.prefix} parameters): "
-        f"the CNC reads it as {_a(named.name)}, and its names are no parameters of {_a(named.name)}, so "
+        f"`{entry.key}` names `{entry.raw}`, whose content is {shown.a_name} ({shown.prefix} parameters): "
+        f"the CNC reads it as {named.a_name}, and its names are no parameters of {named.a_name}, so "
         f"{_stands_for(entry, named)} gets no {named.name} of its own; name the {named.name} here, {move}"
     )
 
@@ -169,7 +169,3 @@ def _stands_for(entry: StartupEntry, named: Kind) -> str:
     if entry.key.startswith(("sda_mds[", "werkz_data[", "nullp_data[", "pzv_data[")):
         return f"channel {entry_index(entry) + 1}"
     return "the machine"
-
-
-def _a(words: str) -> str:
-    return f"{'an' if words[0] in 'aeiou' else 'a'} {words}"
