@@ -6,6 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from achslint.rules import registry
 
 from .conftest import FIXTURES, one_machine
@@ -266,6 +268,7 @@ def test_show_settings_prints_what_a_run_uses_as_toml_or_json(cli, tmp_path: Pat
 # --watch -------------------------------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_watch_lints_again_when_a_list_changes(tmp_path: Path):
     """The real entry point in a child process, polling every 20 ms: a report, a change, a second report;
     then it is terminated (about half a second in all, most of it the interpreter starting)."""

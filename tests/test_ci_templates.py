@@ -206,6 +206,7 @@ def run_action(
 # --- the action -----------------------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_action_is_a_composite_action_that_installs_its_own_checkout():
     action = yaml.safe_load(ACTION.read_text(encoding="utf-8"))
     install = next(step for step in action["runs"]["steps"] if step.get("id") == "install")
@@ -217,6 +218,7 @@ def test_the_action_is_a_composite_action_that_installs_its_own_checkout():
     assert len(uploads) == 1 and uploads[0]["uses"].startswith("github/codeql-action/upload-sarif@v")
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_annotations_by_default_and_the_step_fails_on_an_error(tmp_path):
     repo = workspace(tmp_path, broken=True)
     run = run_action(repo, tmp_path)
@@ -227,6 +229,7 @@ def test_annotations_by_default_and_the_step_fails_on_an_error(tmp_path):
     assert run.used == [] and run.outputs["sarif-file"] == ""  # nothing uploaded without `sarif`
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_clean_machine_passes_with_plain_output(tmp_path):
     repo = workspace(tmp_path)
     run = run_action(
@@ -246,6 +249,7 @@ def test_a_clean_machine_passes_with_plain_output(tmp_path):
     assert run.stdout.count("LIS102") == 1
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_args_decide_the_result(tmp_path):
     repo = workspace(tmp_path)  # infos only: passes by default, fails with --fail-on info
     assert run_action(repo, tmp_path).returncode == 0
@@ -253,6 +257,7 @@ def test_args_decide_the_result(tmp_path):
     assert strict.returncode == 1 and "::notice " in strict.stdout
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_sarif_is_written_and_uploaded_even_when_the_lint_fails(tmp_path):
     repo = workspace(tmp_path, broken=True)
     run = run_action(repo, tmp_path, {"sarif": "true", "sarif-file": "reports/achslint.sarif"})
@@ -268,6 +273,7 @@ def test_sarif_is_written_and_uploaded_even_when_the_lint_fails(tmp_path):
     assert given == {"sarif_file": "reports/achslint.sarif", "category": "achslint"}
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_usage_error_fails_the_step_before_any_upload(tmp_path):
     repo = workspace(tmp_path)
     run = run_action(repo, tmp_path, {"paths": "no-such-folder", "sarif": "true"})
@@ -341,6 +347,7 @@ def reports(project: Path) -> tuple[list[dict], ET.Element]:
     return quality, junit
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_gitlab_job_fails_on_an_error_and_keeps_both_reports(tmp_path):
     project = workspace(tmp_path, broken=True)
     job = run_gitlab_job(project, tmp_path)
@@ -352,6 +359,7 @@ def test_the_gitlab_job_fails_on_an_error_and_keeps_both_reports(tmp_path):
     assert junit.get("failures") == "1" and jenkins_junit_errors(junit) == []
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_an_absolute_path_gives_paths_relative_to_the_project(tmp_path):
     project = workspace(tmp_path, broken=True)
     relative = run_gitlab_job(project, tmp_path)
@@ -364,6 +372,7 @@ def test_an_absolute_path_gives_paths_relative_to_the_project(tmp_path):
     assert sorted(i["fingerprint"] for i in second) == sorted(i["fingerprint"] for i in first)
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_gitlab_job_passes_a_clean_machine_and_takes_arguments(tmp_path):
     project = workspace(tmp_path)  # infos only
     assert run_gitlab_job(project, tmp_path).returncode == 0
@@ -374,6 +383,7 @@ def test_the_gitlab_job_passes_a_clean_machine_and_takes_arguments(tmp_path):
     assert int(junit.get("failures")) == len(quality) == 2
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_gitlab_job_says_what_to_install(tmp_path):
     project = workspace(tmp_path)
     job = run_gitlab_job(project, tmp_path, install=True)  # ACHSLINT_REQUIREMENT not set: stops at once
@@ -429,6 +439,7 @@ def git(*args: str) -> subprocess.CompletedProcess:
     return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, check=False)
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_readme_pins_a_revision_that_exists_and_carries_the_wiring():
     workflow = readme_block("jobs")
     action_step = next(step for step in workflow["jobs"]["achslint"]["steps"] if "achslint@" in step["uses"])
@@ -460,6 +471,7 @@ def test_the_readme_pins_a_revision_that_exists_and_carries_the_wiring():
     assert set(gitlab["achslint"]["variables"]) <= set(pinned_job["variables"])
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_readme_workflow_runs(tmp_path):
     """The README's workflow, copied as it is: its action step with its inputs, on a machine with an error."""
     workflow = readme_block("jobs")
@@ -475,6 +487,7 @@ def test_the_readme_workflow_runs(tmp_path):
     assert (repo / run.outputs["sarif-file"]).is_file()
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_readme_gitlab_job_runs(tmp_path):
     """The README's GitLab block: its variables on the template's job (all but the install)."""
     gitlab = readme_block("include")
@@ -496,6 +509,7 @@ def test_the_readme_local_hook_is_the_published_one():
         assert hook[key] == published[key], key
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_markdown_summary_goes_to_the_job_page_unless_told_otherwise(tmp_path):
     repo = workspace(tmp_path, broken=True)
     summary = tmp_path / "runner-temp" / "step-summary.md"
@@ -508,6 +522,7 @@ def test_a_markdown_summary_goes_to_the_job_page_unless_told_otherwise(tmp_path)
     assert not summary.exists()
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_path_named_like_an_option_is_linted_never_obeyed(tmp_path):
     """Found by review: the paths came before the options on the command line, so a file named like an
     option (as a changed-files list may hand over) was read as one: a file `-w` turned on --watch, which

@@ -70,6 +70,7 @@ def test_help_and_a_misspelt_command_see_every_command(
     assert "did you mean 'lint'" in capsys.readouterr().err.lower()
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_linting_leaves_the_formatter_and_the_api_module_unloaded() -> None:
     """`lint` takes the lint run from `linting.run` itself: `api` re-exports it beside the format run."""
     probe = (
@@ -209,6 +210,7 @@ def _plain_dataclasses() -> dict[str, typing.Any]:
     return result
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_second_run_compiles_no_dataclass_method_and_the_classes_are_the_same(tmp_path: Path) -> None:
     first = _probe(tmp_path)
     second = _probe(tmp_path)
@@ -222,6 +224,7 @@ def test_the_second_run_compiles_no_dataclass_method_and_the_classes_are_the_sam
     assert first["frozen"] and first["eq"] == [True, False, True] and first["hash"]
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_damaged_or_foreign_cache_file_is_compiled_again(tmp_path: Path) -> None:
     folder = tmp_path / "achslint"
     folder.mkdir(mode=0o700)
@@ -238,6 +241,7 @@ def test_a_damaged_or_foreign_cache_file_is_compiled_again(tmp_path: Path) -> No
         assert _probe(tmp_path)["compiled"] == 0  # written again, whole
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_no_cache_in_a_folder_others_can_write(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     if os.name != "posix":
         pytest.skip("folder permissions are POSIX")
@@ -260,6 +264,7 @@ def test_the_cached_code_is_what_compiling_the_text_gives() -> None:
     assert code.co_filename == "<string>" and code.co_flags == direct.co_flags
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_command_line_keeps_the_cache_and_a_calmer_collector(tmp_path: Path) -> None:
     env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
     shown = subprocess.run(
@@ -285,6 +290,7 @@ def _loaded_after(code: str) -> list[str]:
     return done.stdout.split()
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_classifying_an_axis_loads_the_strategies_up_to_its_own() -> None:
     """Classification takes the first strategy that matches; the ones after it are never imported."""
     from achslint.homing.registry import STRATEGY_MODULES
@@ -304,6 +310,7 @@ def test_classifying_an_axis_loads_the_strategies_up_to_its_own() -> None:
     assert strategies == list(STRATEGY_MODULES[: position + 1])
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_linting_an_axis_list_imports_only_the_rules_that_run_on_it() -> None:
     """The engine picks rules by the code table's scopes and kinds before importing any: a lint of axis lists
     imports no program rule (LIS6xx) and no rule of channel or compensation lists (LIS7xx)."""

@@ -11,6 +11,7 @@ import pytest
 from .conftest import FIXTURES, run_cli, run_real_cli
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_module_entry_point_exit_codes_and_output():
     bad = str(FIXTURES / "rules" / "LIS203" / "bad.lis")
     good = str(FIXTURES / "rules" / "LIS203" / "good.lis")
@@ -24,6 +25,7 @@ def test_module_entry_point_exit_codes_and_output():
     assert len(usage.stderr.decode().strip().splitlines()) == 1
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_stdin_through_the_entry_point_equals_in_process():
     data = (FIXTURES / "rules" / "LIS202" / "bad.lis").read_bytes()
     args = ("lint", "-", "--stdin-filename", "achsmds1.lis", "--format", "json")
@@ -33,6 +35,7 @@ def test_stdin_through_the_entry_point_equals_in_process():
     assert json.loads(real.stdout) == json.loads(inside.stdout)
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_parallel_run_in_a_real_process_equals_serial():
     folder = str(FIXTURES / "lists")
     # the serial run in this process: the one above shows the real entry point prints what it prints
@@ -42,6 +45,7 @@ def test_parallel_run_in_a_real_process_equals_serial():
     assert json.loads(serial.stdout) == json.loads(parallel.stdout)
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 @pytest.mark.skipif(
     shutil.which("achslint") is None, reason="the console script is not on PATH (package not installed)"
 )

@@ -439,6 +439,7 @@ def test_the_walk_sees_deferred_type_checking_and_registry_imports(tmp_path: Pat
     assert path_back(next(a for a in arrows(package) if str(a) == "api -> low"), package) == ["low", "api"]
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_linting_a_list_leaves_pydantic_matplotlib_and_pygls_unloaded(tmp_path: Path) -> None:
     """Start-up time: the CLI and the API lint lists of every kind (and explain a parameter of another kind)
     without the model, plotting or editor libraries."""

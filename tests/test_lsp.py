@@ -25,7 +25,8 @@ from achslint.lsp.server import LOOP_FORMAT_LINES
 
 from .conftest import FIXTURES
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+# every test here talks to a real server process: the slow tier (.ci/run, `pytest -m slow`)
+pytestmark = [pytest.mark.asyncio(loop_scope="module"), pytest.mark.slow]
 WORK = Path(os.environ.get("ACHSLINT_LSP_TEST_DIR", "")) if os.environ.get("ACHSLINT_LSP_TEST_DIR") else None
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import subprocess
 import sys
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -113,6 +114,7 @@ def test_byte_order_mark_kept_by_the_editor_shifts_only_the_first_line():
     )
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_server_without_the_extra_names_it_and_exits_2():
     blocked = (
         "import sys; sys.modules['pygls'] = None; sys.modules['pygls.lsp.server'] = None; "

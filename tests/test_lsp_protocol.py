@@ -266,6 +266,7 @@ def test_the_end_of_the_stream_inside_a_body_ends_the_reading() -> None:
 # -- the server on the wire ------------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_every_message_is_answered_over_stdio(tmp_path: Path) -> None:
     """`achslint server` as a process: malformed headers, an oversize length, invalid params, a request
     before initialize and after shutdown: each gets its answer (or a log line), and a hover still works."""

@@ -144,6 +144,7 @@ LOADED_BY = {
 ALWAYS = {"output", "output.reporters"}  # lint's --format choices come from the registry
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_command_loads_only_its_own_output_module(tmp_path: Path) -> None:
     """One process runs the commands one after another; what each loads on top of the ones before is its own
     output module (so a command's module cannot hide behind an earlier command's)."""

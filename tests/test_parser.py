@@ -122,6 +122,7 @@ def _probe(cache_home):
     )
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_grammar_cache_is_private_and_a_damaged_cache_is_harmless(tmp_path):
     first = _probe(tmp_path)
     assert first.returncode == 0, first.stderr
@@ -136,6 +137,7 @@ def test_grammar_cache_is_private_and_a_damaged_cache_is_harmless(tmp_path):
     assert "Traceback" not in second.stderr
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_grammar_cache_is_not_used_in_a_folder_others_can_write(tmp_path):
     folder = tmp_path / "achslint"
     folder.mkdir()

@@ -259,6 +259,7 @@ def fifo(tmp_path) -> Path:
     return path
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 @pytest.mark.parametrize(
     "args",
     [

@@ -78,6 +78,7 @@ def _no_temporaries(folder: Path) -> list[str]:
 # -- 1. a write that fails part-way leaves the old bytes ----------------------------------------------
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 @pytest.mark.parametrize(
     ("command", "original"),
     [(("fmt",), MESSY), (("lint", "--fix"), BROKEN_END)],
@@ -100,6 +101,7 @@ def test_1_hard_linked_list_full_disk_keeps_old_bytes(tmp_path, command, origina
     assert "fixed 1" not in done.stderr
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_1_temporary_file_on_a_full_disk_leaves_the_list_and_no_temporary(tmp_path):
     """The ordinary path (temporary file, then rename) with the disk full: the list is untouched, the
     temporary file removed, and the message says the list is unchanged."""
@@ -148,6 +150,7 @@ def _as_nobody(folder: Path, size: int, *args: str) -> tuple[int, str]:
     return os.waitstatus_to_exitcode(status), printed
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 @AS_ROOT_ONLY
 def test_1_list_in_a_folder_we_may_not_write_full_disk(shared_folder):
     """nobody may write the list but not its folder (no temporary file there): rewritten in place."""
@@ -160,6 +163,7 @@ def test_1_list_in_a_folder_we_may_not_write_full_disk(shared_folder):
     assert "put back" in printed
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 @AS_ROOT_ONLY
 def test_1_list_whose_owner_cannot_be_kept_full_disk(shared_folder):
     """nobody may write root's list (mode 666) and the folder, but cannot give a new file root's owner:
@@ -199,6 +203,7 @@ def test_1_a_failed_restore_is_said_plainly(tmp_path, monkeypatch):
     assert calls == [0, 3, 0]  # the write, its continuation, then the attempt to put 3 old bytes back
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_1_a_list_larger_than_the_limit_is_restored_where_it_was_written(tmp_path):
     """The file-size limit lies inside the old content: only the bytes written before the write stopped
     are put back (writing the whole old content again would hit the same limit and wrongly report the
@@ -401,6 +406,7 @@ def _many_findings(folder: Path) -> None:
     (folder / "achsmds1.lis").write_bytes(b"kopf.achs_nr  1\n" + lines + b"Ende\n")
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 @pytest.mark.parametrize(
     ("args", "output"),
     [
@@ -440,6 +446,7 @@ def test_3_an_output_file_is_written_whole_through_a_link_and_keeps_its_mode(cli
     assert _no_temporaries(tmp_path) == [] and _no_temporaries(tmp_path / "reports") == []
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_3_output_to_dev_stdout_appends_to_what_the_shell_opened(tmp_path):
     """`-o /dev/stdout` is written as it is (no temporary file beside /proc's link), and appended: a shell's
     `>> log` keeps what the log held."""

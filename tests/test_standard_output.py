@@ -36,6 +36,7 @@ def achslint(*args: str, stdout: object, limit: int | None = None) -> subprocess
     )
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_full_disk_and_a_file_size_limit_are_told_in_one_line(tmp_path: Path) -> None:
     with open("/dev/full", "wb") as full:
         result = achslint("explain", AXIS, stdout=full)
@@ -49,6 +50,7 @@ def test_a_full_disk_and_a_file_size_limit_are_told_in_one_line(tmp_path: Path) 
     assert out.stat().st_size == 1024  # as far as the limit let it go, and said so
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_output_that_fits_is_written_whole(tmp_path: Path) -> None:
     out = tmp_path / "out.txt"
     with out.open("wb") as target:
@@ -58,6 +60,7 @@ def test_output_that_fits_is_written_whole(tmp_path: Path) -> None:
     assert text.startswith(AXIS) and "Axis Z (logical axis 3)" in text and len(text) > 1024
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_a_reader_that_goes_away_gets_no_message() -> None:
     # `achslint schema | head -c 10`: the schema (~250 KB) is more than a pipe holds, so the write meets the
     # closed pipe; as click has it, the run ends quietly with exit 1.

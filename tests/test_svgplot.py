@@ -278,6 +278,7 @@ def test_the_timeline_has_a_lane_per_axis_the_blocks_and_the_failure(failed_run)
     assert machine_svg(failed_run, "m") == machine_svg(failed_run, "m")
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_plot_svg_from_the_cli_is_the_same_renderer_and_loads_no_matplotlib(tmp_path):
     target = tmp_path / "homing.svg"
     probe = (
@@ -307,6 +308,7 @@ def test_plot_svg_from_the_cli_is_the_same_renderer_and_loads_no_matplotlib(tmp_
     assert {"homing-position", "homing-velocity", "homing-phases", "homing-reference"} <= set(ids)
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_the_report_draws_its_figures_without_matplotlib(tmp_path):
     """Issue 29's budget (2 s for 32 axes) holds because no figure of the report goes through matplotlib."""
     page = tmp_path / "report.html"

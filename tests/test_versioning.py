@@ -7,6 +7,8 @@ import re
 import sys
 from importlib import metadata
 
+import pytest
+
 from achslint import __version__
 
 from .conftest import ROOT, run_real_cli, source_tree
@@ -40,6 +42,7 @@ def test_the_installed_metadata_carries_it():
     assert metadata.version("achslint") == __version__
 
 
+@pytest.mark.slow  # runs a real process (the slow tier: .ci/run, `pytest -m slow`)
 def test_version_from_the_entry_point():
     done = run_real_cli("--version")
     assert done.returncode == 0 and done.stdout.decode() == f"achslint {__version__}\n"
