@@ -281,3 +281,23 @@ def test_what_a_program_counts_as_homed_follows_the_axis_strategy():
     assert findings(machine, "N10 G01 X3=5 F100\n") == [(1, 9, "LIS606")]
     assert findings(machine, "N10 G74 X1=1\nN20 G01 X3=5 F100\n") == []
     assert findings(machine, "N10 G74 X1=1\nN20 G01 X4=5 F100\n") == [(2, 9, "LIS606")]
+
+
+def test_explain_of_a_long_program_reads_repeated_blocks_as_one_line_and_stops_at_a_limit(tmp_path):
+    """A block that reads like the one before it joins its line; the text form stops after its limit and
+    says how many blocks it leaves to `--format json`, which keeps them all."""
+    from achslint.output.explain import PROGRAM_LINES
+
+    same = [f"N{n} G74 X1" for n in range(1, 501)]  # 500 blocks that home X: one line
+    mixed = [f"N{n} G01 G90 X{n} F100" for n in range(501, 501 + PROGRAM_LINES + 50)]  # each its own line
+    program = tmp_path / "long.nc"
+    program.write_text("%long\n" + "\n".join(same + mixed) + "\nM30\n")
+    result = cli("explain", str(SDK4), "--program", str(program))
+    assert result.returncode == 0, result.stderr
+    assert "  line 2 N1 to line 501 N500, 500 blocks: G74 homes X\n" in result.stdout
+    assert "  line 502 N501: G01 F100 G90 X501\n" in result.stdout
+    shown = [line for line in result.stdout.splitlines() if line.startswith("  line ")]
+    assert len(shown) == PROGRAM_LINES
+    assert "  … 51 more blocks not shown (`--format json` lists every block)" in result.stdout
+    every = json.loads(cli("explain", str(SDK4), "--program", str(program), "--format", "json").stdout)
+    assert len(every["program"]["blocks"]) == 500 + PROGRAM_LINES + 50

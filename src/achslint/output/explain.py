@@ -7,6 +7,7 @@ each of `FORMATS` to its renderer.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from . import Screen, write_json
@@ -187,29 +188,55 @@ def machine_text(report: dict[str, Any], screen: Screen) -> None:
     if program is None:
         return
     console.print(Text(f"Homing order of {program['name']}:", style="bold"))
-    for block in program["blocks"]:
-        label = f"line {block['line']}" + (f" N{block['number']}" if block.get("number") is not None else "")
-        if block["kind"] == "homing":
-            steps = "; then ".join(", ".join(group["axes"]) for group in block["groups"]) or "no axis"
-            console.print(f"  {label}: G74 homes {steps}")
-        elif block["kind"] == "move":
-            targets = " ".join(f"{name}{value:g}" for name, value in block["targets"].items())
-            mode = (
-                "G00"
-                if block["rapid"]
-                else f"G01 F{block['feed_mm_min']:g}"
-                if block["feed_mm_min"]
-                else "G01"
-            )
-            console.print(f"  {label}: {mode} {'G90' if block['absolute'] else 'G91'} {targets}")
-        else:
-            console.print(f"  {label}: not simulated — {block['reason']}")
+    runs = list(_runs(program["blocks"]))
+    for first, last, count, words in runs[:PROGRAM_LINES]:
+        where = _block_label(first) + (f" to {_block_label(last)}, {count:,} blocks" if count > 1 else "")
+        console.print(f"  {where}: {words}")
+    if len(runs) > PROGRAM_LINES:
+        hidden = sum(run[2] for run in runs[PROGRAM_LINES:])
+        console.print(f"  … {hidden:,} more blocks not shown (`--format json` lists every block)")
     for finding in program["findings"]:
         style = {"error": "red", "warning": "yellow"}.get(finding["severity"], "")
         console.print(
             Text(f"  {finding['code']} {finding['severity']}", style=style)
             + Text(f" line {finding['line']}:{finding['column']}: {finding['message']}")
         )
+
+
+PROGRAM_LINES = 200  # lines of the text form's homing order; JSON has every block
+
+
+def _block_label(block: dict[str, Any]) -> str:
+    return f"line {block['line']}" + (f" N{block['number']}" if block.get("number") is not None else "")
+
+
+def _block_words(block: dict[str, Any]) -> str:
+    if block["kind"] == "homing":
+        steps = "; then ".join(", ".join(group["axes"]) for group in block["groups"]) or "no axis"
+        return f"G74 homes {steps}"
+    if block["kind"] == "move":
+        targets = " ".join(f"{name}{value:g}" for name, value in block["targets"].items())
+        mode = (
+            "G00" if block["rapid"] else f"G01 F{block['feed_mm_min']:g}" if block["feed_mm_min"] else "G01"
+        )
+        return f"{mode} {'G90' if block['absolute'] else 'G91'} {targets}"
+    return f"not simulated — {block['reason']}"
+
+
+def _runs(blocks: list[dict[str, Any]]) -> Iterator[tuple[dict[str, Any], dict[str, Any], int, str]]:
+    """Consecutive blocks that read the same, as one: (first, last, how many, the words). A program that
+    homes the same axes in a thousand blocks is one line, not a thousand."""
+    run: list[Any] = []
+    for block in blocks:
+        words = _block_words(block)
+        if run and run[3] == words and block["line"] == run[1]["line"] + 1:
+            run[1], run[2] = block, run[2] + 1
+            continue
+        if run:
+            yield run[0], run[1], run[2], run[3]
+        run = [block, block, 1, words]
+    if run:
+        yield run[0], run[1], run[2], run[3]
 
 
 def _gantry_words(gantry: dict[str, Any] | None) -> str:
