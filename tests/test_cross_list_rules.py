@@ -223,3 +223,16 @@ def test_lis504_leaves_out_entries_no_count_reaches(tmp_path, counts):
     assert where(found) == [("hochlauf.lis", skip + line, "LIS504") for line in (3, 5, 7)]
     assert [d["severity"] for d in found] == ["error", "warning", "warning"]
     assert all("[11]" in d["message"] or "[31]" in d["message"] for d in found)
+
+
+def test_an_object_list_entry_written_default_names_no_file(tmp_path):
+    """ISG's own SDK start-up list writes `hmi[0].objects default` and `channel[0].objects default`: the
+    built-in objects, not a file called `default` (LIS504 said the list was missing). Any other name of an
+    object list is still looked for, and `default` means nothing special for the other entries."""
+    text = (
+        "zahl_mds 1\nachs_mds[0] ./achsmds1.lis\nhmi[0].objects default\nchannel[0].objects  DEFAULT\n"
+        "channel[1].objects ./objekte2.lis\nwerkz_data[0] default\nEnde\n"
+    )
+    found = lint(machine(tmp_path, text, None, {1: "X"}), "LIS504")
+    assert where(found) == [("hochlauf.lis", 5, "LIS504"), ("hochlauf.lis", 6, "LIS504")]
+    assert "objekte2.lis" in found[0]["message"] and "`default`" in found[1]["message"]

@@ -114,6 +114,20 @@ class Startup:
         return [entry for entry in entries if entry_index(entry) < limit]
 
 
+# The entries whose value `default` names no file: ISG's own SDK start-up list writes `hmi[0].objects default`
+# and `channel[0].objects default` (the HMI's and the channel's built-in objects; real files win over the
+# parameter table, which only says "name of the list file").
+_BUILT_IN = ("hmi_objects", "channel_objects")
+
+
+def names_no_file(key: str, value: str) -> bool:
+    """Whether a start-up entry's value is the keyword `default` of an object list entry, not a file name."""
+    from ..catalogue.kinds import entry_kind
+
+    kind = entry_kind(key)
+    return kind is not None and kind.id in _BUILT_IN and value.strip().lower() == "default"
+
+
 def entry_index(entry: StartupEntry) -> int:
     """The index of an entry like `achs_mds[3]` (3)."""
     return int(entry.key[entry.key.index("[") + 1 : -1])
@@ -200,6 +214,8 @@ def read_startup(
         if not line.path_ok or not line.path or line.value is None:
             continue
         if _ENTRY.fullmatch(line.path) or entry_kind(line.path) is not None:
+            if names_no_file(line.path, line.value):
+                continue
             entries.append((line.path, line.value, line))
         elif line.path in COUNTS:
             number = parse_integer(line.value)

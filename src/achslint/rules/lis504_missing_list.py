@@ -16,6 +16,8 @@ readable); an axis list like that is reported on the axis list itself. A list
 of another kind the start-up list names (a compensation list `achs_kw[i]` up
 to `zahl_kw`, tool data `werkz_data[i]`, zero offsets `nullp_data[i]`, the
 real-time configuration `rtconf_lis` ...) that does not exist is a warning.
+An object list entry written `default` (`hmi[0].objects default`, as ISG's SDK
+start-up list has it) names the built-in objects, no file.
 Only the entries the CNC loads are checked: an entry its count leaves out
 (LIS516, LIS522) is never read, nor is one no count reaches (`achs_mds[32]`,
 `achs_kw[32]` and above: `zahl_mds` and `zahl_kw` are at most 32; channel
