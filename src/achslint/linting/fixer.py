@@ -96,19 +96,25 @@ def apply_edits(source: SourceText, fixes: Iterable[Fix]) -> tuple[SourceText, i
     return SourceText("".join(pieces), source.encoding, bom), applied
 
 
-def behaviour(data: bytes, name: str) -> dict[str, str]:
-    """What the CNC ends up with: every parameter the list sets, with the value used after corrections."""
+def behaviour(data: bytes, name: str, defaults: bytes | None = None) -> dict[str, str]:
+    """What the CNC ends up with: every parameter the list sets, with the value used after corrections
+    (`defaults`: the default list loaded under it)."""
     from ..axis.resolved import resolve_bytes
 
-    axis = resolve_bytes(data, name)
+    axis = resolve_bytes(data, name, defaults)
     return {path: repr(axis.get(path)) for path in axis.set_paths()}
 
 
 def keeps_behaviour(
-    data: bytes, name: str, settings: FileSettings | None, diagnostic: Diagnostic, before: FileResult
+    data: bytes,
+    name: str,
+    settings: FileSettings | None,
+    diagnostic: Diagnostic,
+    before: FileResult,
+    defaults: bytes | None = None,
 ) -> bool:
     """Whether `diagnostic`'s fix changes nothing but the corrected finding (see the module docstring)."""
-    return _Check(data, name, settings, before).keeps([diagnostic])
+    return _Check(data, name, settings, before, defaults).keeps([diagnostic])
 
 
 # At most this many behaviour checks (each a lint of the whole list) per round: fixes are checked
@@ -119,14 +125,22 @@ MAX_CHECKS = 24
 
 
 class _Check:
-    """The behaviour test of a list's fixes, against one lint and one resolved axis of the list."""
+    """The behaviour test of a list's fixes, against one lint and one resolved axis of the list (with the
+    default list the CNC loads under it, as `achslint lint` lints it)."""
 
-    def __init__(self, data: bytes, name: str, settings: FileSettings | None, before: FileResult) -> None:
+    def __init__(
+        self,
+        data: bytes,
+        name: str,
+        settings: FileSettings | None,
+        before: FileResult,
+        defaults: bytes | None = None,
+    ) -> None:
         from ..axis.resolved import resolve_bytes
 
-        self.data, self.name, self.settings = data, name, settings
+        self.data, self.name, self.settings, self.defaults = data, name, settings, defaults
         self.old = Counter((d.code, d.parameter) for d in before.diagnostics)
-        self.was = resolve_bytes(data, name)
+        self.was = resolve_bytes(data, name, defaults)
         self.count = 0
 
     def keeps(self, group: list[Diagnostic]) -> bool:
@@ -139,14 +153,14 @@ class _Check:
         if applied != len(group):
             return False  # overlapping edits: not all of them were tried
         new_data = source.encode()
-        after = lint_file(new_data, self.name, self.settings)
+        after = lint_file(new_data, self.name, self.settings, self.defaults)
         if after.error:
             return False
         old = self.old.copy()
         old.subtract((d.code, d.parameter) for d in group)
         if Counter((d.code, d.parameter) for d in after.diagnostics) - +old:
             return False  # a finding that was not there before
-        now = resolve_bytes(new_data, self.name)
+        now = resolve_bytes(new_data, self.name, self.defaults)
         paths = set(self.was.set_paths()) | set(now.set_paths())
         changed = {path for path in paths if repr(self.was.get(path)) != repr(now.get(path))}
         return changed <= {d.parameter for d in group}
@@ -187,24 +201,33 @@ def _demoted(result: FileResult, unsafe: set[int], why: str = "changes what the 
         d.fix = replace(d.fix, applicability="unsafe", description=f"{d.fix.description} ({why})")
 
 
-def _check(data: bytes, name: str, settings: FileSettings | None, result: FileResult) -> None:
+def _check(
+    data: bytes, name: str, settings: FileSettings | None, result: FileResult, defaults: bytes | None
+) -> None:
     """Give every safe fix of `result` the behaviour test; demote those that fail it or were not checked."""
-    failing, unchecked = _Check(data, name, settings, result).risky(result)
+    failing, unchecked = _Check(data, name, settings, result, defaults).risky(result)
     _demoted(result, failing)
     _demoted(result, unchecked, "not checked: too many fixes in one list, run --fix again or review them")
 
 
 def fix_bytes(
-    data: bytes, name: str, settings: FileSettings | None = None, *, unsafe: bool = False
+    data: bytes,
+    name: str,
+    settings: FileSettings | None = None,
+    *,
+    unsafe: bool = False,
+    defaults: bytes | None = None,
 ) -> FixOutcome:
-    """Fix what can be fixed; the result holds the diagnostics that remain."""
+    """Fix what can be fixed; the result holds the diagnostics that remain. `defaults` is the default list
+    the CNC loads under the list: the fixes are checked, and what remains is found, with it underneath, so
+    the findings of a fixing run are those a plain lint of the fixed list reports."""
     fixed = 0
-    result = lint_file(data, name, settings)
+    result = lint_file(data, name, settings, defaults)
     checked = False  # whether `result`'s safe fixes have had the behaviour test
     for _ in range(MAX_ROUNDS):
         if result.error:
             break
-        _check(data, name, settings, result)
+        _check(data, name, settings, result, defaults)
         checked = True
         allowed = {"safe", "unsafe"} if unsafe else {"safe"}
         fixes = [d.fix for d in result.diagnostics if d.fix is not None and d.fix.applicability in allowed]
@@ -216,8 +239,8 @@ def fix_bytes(
             break
         fixed += applied
         data = new_data
-        result = lint_file(data, name, settings)
+        result = lint_file(data, name, settings, defaults)
         checked = False
     if not result.error and not checked:
-        _check(data, name, settings, result)
+        _check(data, name, settings, result, defaults)
     return FixOutcome(data, fixed, result)

@@ -267,7 +267,7 @@ def _process(
     from ..syntax.diff import unified_diff
     from .fixer import fix_bytes
 
-    outcome = fix_bytes(data, name, settings, unsafe=unsafe)
+    outcome = fix_bytes(data, name, settings, unsafe=unsafe, defaults=defaults)
     result = outcome.result
     result.fixed = outcome.fixed
     if outcome.data != data:

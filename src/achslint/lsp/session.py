@@ -218,7 +218,12 @@ class Session:
         config, _ = self.config_for(document)
         settings = self.file_settings(config, document.path, document.name)
         settings.keep_context = False
-        outcome = fix_bytes(text_bytes(document.body), document.name, settings)
+        underneath = None
+        if document.path is not None:  # the kind and the list underneath that `_lint` gives it
+            settings.kind = STARTUP.id if is_startup(document.path) else self.finder.entry_kind(document.path)
+            if settings.kind != STARTUP.id:
+                underneath = self._underneath(document, settings.kind)[1]
+        outcome = fix_bytes(text_bytes(document.body), document.name, settings, defaults=underneath)
         if not outcome.fixed:
             return None
         return ("\ufeff" if document.bom else "") + outcome.data.decode("utf-8")

@@ -1,0 +1,72 @@
+"""A review of the commands that write or suggest edits (`lint --fix`, `--add-noqa`, `fmt`, the editor's
+quick fixes) and of `report`: each test holds one defect the review found, through the real CLI on files in
+a temporary folder."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+# A machine whose default list sets the slow homing speed above the fast one the axis list sets (LIS302,
+# an error only with the default list underneath) and whose axis list ends in `End` (LIS004, a safe fix).
+STARTUP = b"zahl_mds 1\ndefault_achs_mds ./listen/default_mds.lis\nachs_mds[0]  ./listen/a1.lis\nEnde\n"
+DEFAULTS = b"getriebe[0].vb_reflow 30000\nEnde\n"
+AXIS = (
+    b"kopf.achs_nr 1\nkopf.log_achs_name X\nkenngr.achs_typ 1\nkenngr.antr_typ 8\n"
+    b"getriebe[0].vb_refmax 20000\nEnd\n"
+)
+
+
+def _machine(root: Path) -> Path:
+    listen = root / "listen"
+    listen.mkdir()
+    (listen / "hochlauf.lis").write_bytes(STARTUP)
+    (listen / "default_mds.lis").write_bytes(DEFAULTS)
+    (listen / "a1.lis").write_bytes(AXIS)
+    return listen
+
+
+def _codes(done) -> list[tuple[str, int, str]]:
+    return [(d["path"], d["line"], d["code"]) for d in json.loads(done.stdout)["diagnostics"]]
+
+
+@pytest.mark.parametrize("how", [(), ("--diff",)])
+def test_fix_reports_what_the_default_list_causes(cli, tmp_path, monkeypatch, how):
+    """`lint --fix` linted (and checked the fixes of) each list without the default list under it: the
+    LIS302 error the default list causes vanished from the run's findings and the run exited 0."""
+    monkeypatch.chdir(tmp_path)
+    _machine(tmp_path)
+    plain = cli("lint", "listen/hochlauf.lis", "--format", "json")
+    assert ("listen/a1.lis", 5, "LIS302") in _codes(plain) and plain.returncode == 1
+    fixing = cli("lint", "listen/hochlauf.lis", "--fix", *how, "--format", "concise")
+    findings = (fixing.stderr if how else fixing.stdout).decode()  # --diff puts the findings on stderr
+    assert "listen/a1.lis:5:1: LIS302 [error]" in findings
+    assert fixing.returncode == 1
+    if not how:
+        assert (tmp_path / "listen" / "a1.lis").read_bytes() == AXIS.replace(b"End\n", b"Ende\n")
+        after = cli("lint", "listen/hochlauf.lis", "--format", "concise")
+        assert after.stdout.decode().splitlines() == fixing.stdout.decode().splitlines()
+
+
+def test_editor_fix_all_fixes_what_lint_fix_fixes_with_the_default_list(cli, tmp_path, monkeypatch):
+    """The editor's "fix all" (`Session.fixed_text`) checked the fixes of a list without its default list
+    and without the kind its start-up entry gives it: a symbol fix that keeps what the CNC does only with the
+    default list's CANopen drive underneath (as `lint --fix` applies it) was not offered."""
+    from achslint.lsp.documents import Document
+    from achslint.lsp.session import Session
+
+    monkeypatch.chdir(tmp_path)
+    listen = _machine(tmp_path)
+    (listen / "default_mds.lis").write_bytes(b"kenngr.antr_typ 8\nEnde\n")
+    axis = b"kopf.achs_nr 1\nkopf.log_achs_name X\nkenngr.achs_typ 1\nkenngr.homing.homing_type DRIVE_CONROLLED\nEnde\n"
+    (listen / "a1.lis").write_bytes(axis)
+    session = Session(tmp_path)
+    path = listen / "a1.lis"
+    document = Document(path.as_uri(), path, axis.decode(), 1)
+    session.open(document)
+    fixed = session.fixed_text(document)
+    assert cli("lint", "listen/hochlauf.lis", "--fix").returncode == 0
+    assert path.read_bytes() == axis.replace(b"CONROLLED", b"CONTROLLED")
+    assert fixed == path.read_text()
