@@ -92,7 +92,7 @@ def test_json_shape(cli):
         "url",
     }
     assert (first["line"], first["column"], first["end_column"]) == (5, 1, 17)
-    assert first["fix"]["applicability"] == "safe"
+    assert first["fix"]["applicability"] == "unsafe"  # the rename lets the value take effect: --fix leaves it
     assert first["fix"]["edits"] == [
         {"line": 5, "column": 1, "end_line": 5, "end_column": 17, "content": "kenngr.ref_richt"}
     ]

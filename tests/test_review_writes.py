@@ -70,3 +70,25 @@ def test_editor_fix_all_fixes_what_lint_fix_fixes_with_the_default_list(cli, tmp
     assert cli("lint", "listen/hochlauf.lis", "--fix").returncode == 0
     assert path.read_bytes() == axis.replace(b"CONROLLED", b"CONTROLLED")
     assert fixed == path.read_text()
+
+
+def test_plain_lint_counts_only_the_fixes_fix_applies(cli, tmp_path, monkeypatch):
+    """A plain lint said "2 fixable with --fix" (and JSON called both fixes safe) for a list whose two fixes
+    `--fix` then refuses as changing what the CNC does ("fixed 0 diagnostics")."""
+    monkeypatch.chdir(tmp_path)
+    text = (
+        b"kopf.achs_nr 1\nkopf.log_achs_name X\nkenngr.achs_typ 1\nkenngr.antr_typ 4\n"
+        b"kenngr.ref_ricth 1\nkenngr.homing.homing_type DRIVE_CONROLLED\nEnde\n"
+    )
+    (tmp_path / "a.lis").write_bytes(text)
+    fixing = cli("lint", "a.lis", "--fix", "--format", "json")
+    assert fixing.stderr.decode().strip() == "fixed 0 diagnostics"
+    fixes = [d["fix"]["applicability"] for d in json.loads(fixing.stdout)["diagnostics"] if d["fix"]]
+    assert fixes == ["unsafe", "unsafe"]
+    plain = cli("lint", "a.lis", "--format", "json")
+    assert [d["fix"] for d in json.loads(plain.stdout)["diagnostics"] if d["fix"]] == [
+        d["fix"] for d in json.loads(fixing.stdout)["diagnostics"] if d["fix"]
+    ]
+    said = cli("lint", "a.lis").stdout.decode()
+    assert "fixable with --fix\n" not in said.replace("--unsafe-fixes", "")
+    assert said.rstrip().endswith("2 fixable with --fix --unsafe-fixes")

@@ -201,10 +201,11 @@ def _demoted(result: FileResult, unsafe: set[int], why: str = "changes what the 
         d.fix = replace(d.fix, applicability="unsafe", description=f"{d.fix.description} ({why})")
 
 
-def _check(
+def check_fixes(
     data: bytes, name: str, settings: FileSettings | None, result: FileResult, defaults: bytes | None
 ) -> None:
-    """Give every safe fix of `result` the behaviour test; demote those that fail it or were not checked."""
+    """Give every safe fix of `result` (a lint of `data`) the behaviour test; demote those that fail it or
+    were not checked. A plain lint calls it too, so the fixes it calls safe are those --fix applies."""
     failing, unchecked = _Check(data, name, settings, result, defaults).risky(result)
     _demoted(result, failing)
     _demoted(result, unchecked, "not checked: too many fixes in one list, run --fix again or review them")
@@ -227,7 +228,7 @@ def fix_bytes(
     for _ in range(MAX_ROUNDS):
         if result.error:
             break
-        _check(data, name, settings, result, defaults)
+        check_fixes(data, name, settings, result, defaults)
         checked = True
         allowed = {"safe", "unsafe"} if unsafe else {"safe"}
         fixes = [d.fix for d in result.diagnostics if d.fix is not None and d.fix.applicability in allowed]
@@ -242,5 +243,5 @@ def fix_bytes(
         result = lint_file(data, name, settings, defaults)
         checked = False
     if not result.error and not checked:
-        _check(data, name, settings, result, defaults)
+        check_fixes(data, name, settings, result, defaults)
     return FixOutcome(data, fixed, result)

@@ -263,7 +263,14 @@ def _process(
     if noqa:
         return _add_noqa(data, name, settings, path, defaults)
     if not fix:
-        return lint_file(data, name, settings, defaults)
+        linted = lint_file(data, name, settings, defaults)
+        if not linted.error and any(
+            d.fix is not None and d.fix.applicability == "safe" for d in linted.diagnostics
+        ):
+            from .fixer import check_fixes
+
+            check_fixes(data, name, settings, linted, defaults)  # a fix --fix would refuse is not called safe
+        return linted
     from ..syntax.diff import unified_diff
     from .fixer import fix_bytes
 
