@@ -78,15 +78,54 @@ def shown_path(path: Path) -> str:
 def real_path(path: Path) -> Path:
     """`path` with every symbolic link resolved; as far as possible when a link loops or is broken."""
     resolved = _RESOLVED.get()
-    if resolved is not None and path in resolved:
-        return resolved[path]
+    if resolved is None:
+        return _resolve_links(path)
+    known = resolved.get(path)
+    if known is None:
+        known = _resolve_held(path, resolved)
+    return known
+
+
+def _resolve_links(path: Path) -> Path:
     try:
-        real = Path(os.path.realpath(path))
+        return Path(os.path.realpath(path))
     except (OSError, RuntimeError, ValueError):
-        real = Path(os.path.abspath(path))
-    if resolved is not None:
-        resolved[path] = real
+        return Path(os.path.abspath(path))
+
+
+def _resolve_held(path: Path, resolved: dict[Path, Path]) -> Path:
+    """`real_path` while `links_held` is in force: a path is its folder's resolution (found once, and kept
+    for the other files of that folder) and its own name, unless that name is a link itself, so a file
+    costs one `lstat` instead of one per part of its path. The same answer as `os.path.realpath`, which
+    resolves part by part from the left and keeps a part that is no link as it is."""
+    if os.name != "posix":  # only POSIX resolves a path part by part (Windows asks the file system)
+        resolved[path] = real = _resolve_links(path)
+        return real
+    chain: list[Path] = []
+    current = path
+    while current not in resolved:
+        name, parent = current.name, current.parent
+        if not name or name == ".." or parent == current:  # a root, `.`, or a step up: resolved whole
+            resolved[current] = _resolve_links(current)
+            break
+        chain.append(current)
+        current = parent
+    real = resolved[current]
+    for step in reversed(chain):
+        real = resolved[step] = _one_more_part(real, step)
     return real
+
+
+def _one_more_part(folder: Path, path: Path) -> Path:
+    """`path` resolved, given its folder resolved (`folder`)."""
+    candidate = folder / path.name
+    try:
+        link = stat.S_ISLNK(os.lstat(candidate).st_mode)
+    except OSError:  # missing, a loop on the way, not allowed: realpath keeps the name as it is too
+        link = False
+    except ValueError:  # a NUL in the name: what `_resolve_links` gives for it
+        return Path(os.path.abspath(path))
+    return _resolve_links(path) if link else candidate
 
 
 # The links resolved while `links_held` is in force, by the path asked about.
@@ -147,6 +186,21 @@ def _kernel_file_systems() -> tuple[Path, ...]:
     return tuple(real_path(Path(root)) for root in KERNEL_FILE_SYSTEMS)
 
 
+@functools.cache
+def _kernel_prefixes() -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """`_kernel_file_systems` as `_at_or_below` compares them: each root itself, and the start of a path
+    below it (asked for every list a run looks at)."""
+    roots = tuple(os.path.normcase(root) for root in _kernel_file_systems())
+    return roots, tuple(root if root.endswith(os.sep) else root + os.sep for root in roots)
+
+
+def _of_the_system(target: Path) -> bool:
+    """Whether a resolved path is, or lies below, one of the kernel's file systems."""
+    roots, below = _kernel_prefixes()
+    one = os.path.normcase(target)
+    return one in roots or one.startswith(below)
+
+
 # What `not_a_list_file` says when there is no file to read at all (as opposed to one that is refused).
 MISSING = (
     "no such file or directory",
@@ -173,8 +227,7 @@ def not_a_list_file(path: Path, *, limit: int | None = None, what: str = "a list
     limit = LIST_LIMIT if limit is None else limit
     if info.st_size > limit:
         return f"a file larger than the {_megabytes(limit)} achslint reads for {what}"
-    target = real_path(path)
-    if any(_at_or_below(target, root) for root in _kernel_file_systems()):
+    if _of_the_system(real_path(path)):
         return f"a file of the operating system (/proc, /sys, /dev), not {'an axis list' if what == 'a list' else what}"
     return None
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 import functools
 import os
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -124,6 +124,8 @@ class Discovery:
 
 
 def _identity(path: Path) -> object:
+    if _LOOKED_AT.get() is not None:  # in a run: the (device, inode) looked up for the machines already
+        return _file_id(path) or os.path.abspath(path)
     try:
         info = os.stat(path)
         return (info.st_dev, info.st_ino)
@@ -149,11 +151,31 @@ class _LookedAt:
         self.configs: dict[Path, ResolvedConfig] = {}  # the configuration of each path (`Finder.config_for`)
         # by the id of the start-up list: the list and its absolute path (`_unique` asks it for every list)
         self.where: dict[int, tuple[Startup, str]] = {}
-        # `Finder._naming` by folder and the sequence of start-up lists known (kept, so that its id stays its
+        # `Finder._naming` by folder (as given) and the sequence of start-up lists known (kept, so that its id stays its
         # own; `find` passes one for all its lists)
         self.naming: dict[tuple[str, int, int], tuple[Sequence[Startup], tuple[list[Startup], _Named]]] = {}
         # the lists of a folder by its absolute path (`_folder_machine`, asked for each XML file in it)
         self.folders: dict[str, list[Path]] = {}
+        # the machine of each start-up list, by the list's id (kept, so that its id stays its own): what
+        # `find` asks of it (its key, files, default list) is read, never changed
+        self.machines: dict[int, tuple[Startup, Machine]] = {}
+        # git's answers (`_not_ignored_by_git`): the folder asked from, the files asked about (absolute) and
+        # those it ignores
+        self.git: list[tuple[Path, frozenset[str], frozenset[str]]] = []
+        # whether a file's content makes it a start-up list (`is_startup`): each file is sniffed once a run,
+        # though it is asked about as a list, as a neighbour of every list of its folder and of the one below
+        self.sniffed: dict[Path, bool] = {}
+        # the files of a folder that are start-up lists, by the folder as given (`startups_around` asks
+        # for a folder and the folder above it; neighbouring folders share the one above); None: unreadable
+        self.places: dict[str, list[Path] | None] = {}
+        # `_naming` for the start-up lists known to `find` alone, by their sequence's id (kept, so that its
+        # id stays its own): each folder adds only the start-up lists around it that are not among them
+        self.known: dict[
+            tuple[int, int], tuple[Sequence[Startup], tuple[list[Startup], _Named, set[str]]]
+        ] = {}
+        # the (device, inode) of a sequence of files by its id (kept, so that its id stays its own): the axis
+        # lists of a folder's start-up lists, the files of a `[[machine]]` table
+        self.identities: dict[int, tuple[object, frozenset[tuple[int, int]]]] = {}
 
 
 _LOOKED_AT: ContextVar[_LookedAt | None] = ContextVar("looked_at", default=None)
@@ -236,9 +258,8 @@ class Finder:
         if key not in self._around:
             found: list[Startup] = []
             for place in (folder, folder.parent):
-                try:
-                    candidates = sorted(p for p in place.iterdir() if _may_be_startup(p) and is_startup(p))
-                except (OSError, ValueError):  # ValueError: a NUL in the name
+                candidates = _startup_files_in(place)
+                if candidates is None:
                     continue
                 for candidate in candidates:
                     if not_a_list_file(candidate) is not None:
@@ -261,15 +282,15 @@ class Finder:
                 startup = self.startup(path)
             except (OSError, UnreadableInput):
                 return []
-            return [Machine.of(startup)]
+            return [_machine_of(startup)]
         if is_list_update(path):
             return []  # it changes one list; it is no axis of its own
         startups, index = self._naming(path.parent, known)
         identity = _file_id(path)
         naming = [s for s, kinds in index.get(identity, ()) if _loads(kinds)] if identity is not None else []
-        declared = [m for m in self._declared(path) if any(_names(f, path) for f in m.files)]
+        declared = [m for m in self._declared(path) if identity is not None and _among(identity, m, m.files)]
         if naming or declared:
-            return [*(Machine.of(startup) for startup in naming), *declared]
+            return [*(_machine_of(startup) for startup in naming), *declared]
         if is_xml(path.name):
             folder = self._folder_machine(path.parent, startups)
             if any(same_file(f, path) for f in folder.files):
@@ -282,15 +303,22 @@ class Finder:
         kinds each names it as, in the start-up lists' order. Made once per folder in a run: a folder lint
         asks it for every list, of every start-up list of the run."""
         looked = _LOOKED_AT.get()
-        key = (os.path.abspath(folder), id(known), len(known))
+        key = (str(folder), id(known), len(known))  # the folder as given: the same answer however spelt
         if looked is not None and key in looked.naming and looked.naming[key][0] is known:
             return looked.naming[key][1]
-        startups = _unique([*known, *self.startups_around(folder)])
-        index: _Named = {}
-        for startup in startups:
-            for identity, kinds in _kinds_named(startup).items():
-                index.setdefault(identity, []).append((startup, kinds))
-        if looked is not None:
+        around = self.startups_around(folder)
+        if looked is None:
+            startups = _unique([*known, *around])
+            index = _index(startups)
+        else:
+            # `known` first, then those around the folder that are not known: the index of `known` is made
+            # once a run, and each folder adds the few of its own (most folders have none to add)
+            startups, index, where = _known_index(known, looked)
+            extra = [s for s in _unique(around) if _where(s) not in where]
+            if extra:
+                startups, index = [*startups, *extra], dict(index)
+                for identity, named in _index(extra).items():
+                    index[identity] = [*index.get(identity, ()), *named]
             looked.naming[key] = (known, (startups, index))
         return startups, index
 
@@ -322,7 +350,9 @@ class Finder:
         if looked is not None and key in looked.folders:
             lists = looked.folders[key]
         else:
-            lists, _ = self._walk(folder, Scope.of([str(folder)]), Discovery(), recursive=False)
+            lists, _ = self._walk(
+                folder, Scope.of([str(folder)]), Discovery(), recursive=False, only_xml=True
+            )
             if looked is not None:
                 looked.folders[key] = lists
         members = [
@@ -459,7 +489,7 @@ class Finder:
         name = str(startup.path)
         found.add(Target(name, startup.path, self.config_for(startup.path), (name,), kind=STARTUP.id))
         found_inside = []
-        for member in self.member_targets([Machine.of(startup)]):
+        for member in self.member_targets([_machine_of(startup)]):
             assert member.path is not None  # members are files
             if named:
                 # Its own folder counts as named with it; lists in other folders are only checked.
@@ -482,7 +512,7 @@ class Finder:
             target = Target(
                 shown_path(entry.path), entry.path, self.config_for(entry.path), (str(startup.path),)
             )
-            under = loaded_under(kind, [Machine.of(startup)])
+            under = loaded_under(kind, [_machine_of(startup)])
             found.add(replace(target, writable=self.follow_startup or mine, kind=kind, defaults=under))
         return found_inside
 
@@ -511,11 +541,13 @@ class Finder:
         return lists
 
     def _walk(
-        self, folder: Path, scope: Scope, found: Discovery, *, recursive: bool = True
+        self, folder: Path, scope: Scope, found: Discovery, *, recursive: bool = True, only_xml: bool = False
     ) -> tuple[list[Path], list[Path]]:
         """The lists and start-up lists in a folder tree. A folder that cannot be read, or a list that
         cannot (a broken link, a loop), is an error: those could be lists nobody checked. FIFOs, devices and
-        links that lead outside the paths given are skipped with a note: they are not lists of this project."""
+        links that lead outside the paths given are skipped with a note: they are not lists of this project.
+        `only_xml`: the other files are passed over (for a caller that keeps the XML lists alone; git is
+        then asked about none of the others)."""
         lists: list[Path] = []
         startups: list[Path] = []
 
@@ -524,16 +556,20 @@ class Finder:
 
         for root, dirs, files in os.walk(folder, onerror=unreadable):
             dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
+            here = Path(root)
             for name in dirs:  # os.walk does not enter linked folders; one that leads outside is said
-                linked = Path(root) / name
+                linked = here / name
                 if os.path.islink(linked) and not scope.contains(linked):
                     found.notes.append(
                         f"{linked}: skipped, it links to {real_path(linked)}, outside the paths given"
                     )
-            config = self.config_for(Path(root) / "x")
-            include = self.overrides.apply(config.settings).include
+            config = self.config_for(here / "x")
+            settings = self.overrides.apply(config.settings)
+            include, exclude = settings.include, settings.exclude
             for name in sorted(files):
-                path = Path(root) / name
+                if only_xml and not is_xml(name):
+                    continue
+                path = here / name
                 # a start-up list by its name, or (a `.lis` the include patterns do not take) by its content
                 startup = is_startup_list(path) or (
                     path.suffix.lower() == ".lis" and not _included(name, include) and is_startup(path)
@@ -543,7 +579,7 @@ class Finder:
                 xml = is_xml(name)  # axis XML is found by content, whatever the export calls it
                 if not xml and not startup and not _included(name, include):
                     continue
-                if self._excluded(config, path):
+                if exclude and _excluded_by(config, path, exclude):
                     continue
                 problem = not_a_list_file(path)
                 if xml and problem is None and scope.contains(path) and not _axis_xml(path, found):
@@ -564,8 +600,11 @@ class Finder:
         return lists, startups
 
     def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
-        patterns = self.overrides.apply(config.settings).exclude
-        return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
+        return _excluded_by(config, path, self.overrides.apply(config.settings).exclude)
+
+
+def _excluded_by(config: ResolvedConfig, path: Path, patterns: Sequence[str]) -> bool:
+    return any(matches_glob(config.relative(path), pattern) for pattern in patterns)
 
 
 HEAD_BYTES = 64 * 1024  # what is read of a named file to tell a start-up list by its content
@@ -580,13 +619,40 @@ def _included(name: str, include: list[str]) -> bool:
     return any(matches_glob(name.lower(), pattern.lower()) for pattern in include)
 
 
+def _startup_files_in(place: Path) -> list[Path] | None:
+    """The files of a folder that are start-up lists (by name or content), sorted; None when the folder
+    cannot be read. Looked at once per folder in a run."""
+    looked = _LOOKED_AT.get()
+    key = str(place)
+    if looked is not None and key in looked.places:
+        return looked.places[key]
+    found: list[Path] | None
+    try:
+        found = sorted(p for p in place.iterdir() if _may_be_startup(p) and is_startup(p))
+    except (OSError, ValueError):  # ValueError: a NUL in the name
+        found = None
+    if looked is not None:
+        looked.places[key] = found
+    return found
+
+
 def is_startup(path: Path) -> bool:
     """A start-up list by its name (`hochlauf*.lis`, `startup*.lis`) or, named otherwise, by its content
-    (`achs_mds[0]`, `zahl_mds` ...: `catalogue.kinds`), read from the head of the file."""
+    (`achs_mds[0]`, `zahl_mds` ...: `catalogue.kinds`), read from the head of the file (once per run)."""
     if is_startup_list(path):
         return True
     if is_xml(path.name):
         return False
+    looked = _LOOKED_AT.get()
+    if looked is None:
+        return _startup_by_content(path)
+    known = looked.sniffed.get(path)
+    if known is None:
+        known = looked.sniffed[path] = _startup_by_content(path)
+    return known
+
+
+def _startup_by_content(path: Path) -> bool:
     try:
         head = read_list(path, HEAD_BYTES)
     except OSError:
@@ -721,8 +787,58 @@ def _kinds_named(startup: Startup) -> dict[tuple[int, int], list[str]]:
     return kinds
 
 
+def _machine_of(startup: Startup) -> Machine:
+    """`Machine.of(startup)`, made once a run (every list a start-up list names asks for it)."""
+    looked = _LOOKED_AT.get()
+    known = looked.machines.get(id(startup)) if looked is not None else None
+    if known is not None and known[0] is startup:
+        return known[1]
+    machine = Machine.of(startup)
+    if looked is not None:
+        looked.machines[id(startup)] = (startup, machine)
+    return machine
+
+
 def _named_by(startups: list[Startup], path: Path) -> bool:
-    return any(_names(e.path, path) for s in startups for e in s.axes)
+    """Whether an axis entry of one of `startups` names the file `path`."""
+    identity = _file_id(path)
+    return identity is not None and _among(identity, startups, (e.path for s in startups for e in s.axes))
+
+
+def _among(identity: tuple[int, int], owner: object, files: Iterable[Path | None]) -> bool:
+    """Whether one of `files` (those of `owner`) is the file of that (device, inode). In a run they are
+    looked up once for `owner`, whose files do not change while the run lasts."""
+    looked = _LOOKED_AT.get()
+    known = looked.identities.get(id(owner)) if looked is not None else None
+    if known is not None and known[0] is owner:
+        return identity in known[1]
+    identities = frozenset(i for i in (_file_id(f) for f in files if f is not None) if i is not None)
+    if looked is not None:
+        looked.identities[id(owner)] = (owner, identities)
+    return identity in identities
+
+
+def _index(startups: Sequence[Startup]) -> _Named:
+    """By (device, inode): the start-up lists naming a file, each with the kinds it names the file as, in
+    the order of `startups`."""
+    index: _Named = {}
+    for startup in startups:
+        for identity, kinds in _kinds_named(startup).items():
+            index.setdefault(identity, []).append((startup, kinds))
+    return index
+
+
+def _known_index(known: Sequence[Startup], looked: _LookedAt) -> tuple[list[Startup], _Named, set[str]]:
+    """`known` each once, their `_index` and their absolute paths: made once a run for `find`'s start-up
+    lists."""
+    key = (id(known), len(known))
+    made = looked.known.get(key)
+    if made is not None and made[0] is known:
+        return made[1]
+    startups = _unique(list(known))
+    answer = (startups, _index(startups), {_where(s) for s in startups})
+    looked.known[key] = (known, answer)
+    return answer
 
 
 def _unique(startups: list[Startup]) -> list[Startup]:
@@ -786,25 +902,74 @@ def machine_files(startup: Path, cnc_root: Path | None = None, config_file: str 
 
 def _not_ignored_by_git(folder: Path, files: list[Path]) -> list[Path]:
     """`files` without those git ignores (.gitignore, .git/info/exclude); all of them outside a git work tree
-    or without git."""
+    or without git. In a run, git is not asked again about files it answered for a folder of the same work
+    tree (the lists of a folder a machine of XML exports is made of, found by the folder lint already)."""
     import subprocess
 
     if not files or not _maybe_in_git_work_tree(folder):
         return files
+    asked = [os.path.abspath(f) for f in files]
+    looked = _LOOKED_AT.get()
+    known = _answered_before(folder, asked, looked) if looked is not None else None
+    if known is not None:
+        return [f for f, name in zip(files, asked, strict=True) if name not in known] if known else files
     try:
         answer = subprocess.run(
             ["git", "-C", str(folder), "check-ignore", "--stdin", "-z"],
-            input=b"\0".join(os.fsencode(os.path.abspath(f)) for f in files) + b"\0",
+            input=b"\0".join(os.fsencode(name) for name in asked) + b"\0",
             capture_output=True,
             timeout=60,
             check=False,
         )
     except (OSError, subprocess.SubprocessError):
         return files
-    if answer.returncode != 0:  # 1: nothing ignored; 128: not a git work tree
+    if answer.returncode not in (0, 1):  # 0: some are ignored; 1: none is; 128: not a git work tree
         return files
-    ignored = {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
-    return [f for f in files if os.path.abspath(f) not in ignored]
+    ignored = (
+        {os.fsdecode(name) for name in answer.stdout.split(b"\0") if name}
+        if answer.returncode == 0
+        else set()
+    )
+    if looked is not None:
+        looked.git.append((folder, frozenset(asked), frozenset(ignored)))
+    if answer.returncode != 0:
+        return files
+    return [f for f, name in zip(files, asked, strict=True) if name not in ignored]
+
+
+def _answered_before(folder: Path, asked: list[str], looked: _LookedAt) -> frozenset[str] | None:
+    """Which of `asked` git ignores, when an earlier answer of the run covers them all and was given for a
+    folder of the same work tree as `folder`; None when git must be asked."""
+    if any(os.environ.get(name) for name in _WHERE_GIT_LOOKS):  # git told where to look: ask it each time
+        return None
+    for earlier, names, ignored in looked.git:
+        if names.issuperset(asked) and _same_work_tree(real_path(earlier), real_path(folder)):
+            return ignored
+    return None
+
+
+# What tells git where its repository is, or how far up to look for one.
+_WHERE_GIT_LOOKS = ("GIT_DIR", "GIT_WORK_TREE", "GIT_COMMON_DIR", "GIT_CEILING_DIRECTORIES")
+
+
+def _same_work_tree(top: Path, below: Path) -> bool:
+    """Whether git, started in the resolved folder `below`, finds the repository it finds in the resolved
+    folder `top`: `below` is `top` or lies under it, on the same file system (git stops at another one),
+    with no `.git` of a repository of its own on the way up."""
+    if not inside(below, top):
+        return False
+    try:
+        device = os.stat(top).st_dev
+        current = below
+        while current != top:
+            if os.path.lexists(current / ".git") or os.stat(current).st_dev != device:
+                return False
+            if current.parent == current:
+                return False
+            current = current.parent
+    except (OSError, ValueError):
+        return False
+    return True
 
 
 def _maybe_in_git_work_tree(folder: Path) -> bool:
