@@ -92,3 +92,60 @@ def test_plain_lint_counts_only_the_fixes_fix_applies(cli, tmp_path, monkeypatch
     said = cli("lint", "a.lis").stdout.decode()
     assert "fixable with --fix\n" not in said.replace("--unsafe-fixes", "")
     assert said.rstrip().endswith("2 fixable with --fix --unsafe-fixes")
+
+
+@pytest.mark.parametrize(
+    ("line", "written"),
+    [
+        # text after a symbol that is no `(` comment: the CNC reads it with the value, so the codes go into
+        # a `(` comment of their own, after it, and the text stays as it was
+        (
+            b"kenngr.homing_type   CNC_CONTROLLED  # old",
+            b"kenngr.homing_type   CNC_CONTROLLED  # old  ( noqa: LIS007, LIS102",
+        ),
+        (b'kopf.log_achs_name  "X" trailing', b'kopf.log_achs_name  "X" trailing  ( noqa: LIS007'),
+        # after a number everything is a comment: joined as before
+        (b"getriebe[6].vb_refmax 20000 # wide", b"getriebe[6].vb_refmax 20000 # wide  noqa: LIS104"),
+        (
+            b"kenngr.homing_type   CNC_CONTROLLED  ( old",
+            b"kenngr.homing_type   CNC_CONTROLLED  ( old  noqa: LIS102",
+        ),
+    ],
+)
+def test_add_noqa_after_text_that_is_no_comment_opens_a_comment(cli, tmp_path, monkeypatch, line, written):
+    """`--add-noqa` appended `noqa: CODE` to the text after a symbol or string (LIS007: not a comment, the
+    CNC reads it as part of the value), which lengthened what the CNC reads; the README promises "after
+    text only `(`"."""
+    monkeypatch.chdir(tmp_path)
+    head = b"kopf.achs_nr 1\nkenngr.achs_typ 1\nkenngr.antr_typ 8\n"
+    (tmp_path / "a.lis").write_bytes(head + line + b"\nEnde\n")
+    (tmp_path / ".achslint.toml").write_text('ignore = ["LIS404"]\n')
+    assert cli("lint", "a.lis", "--add-noqa").returncode == 0
+    assert (tmp_path / "a.lis").read_bytes() == head + written + b"\nEnde\n"
+    after = cli("lint", "a.lis", "--format", "concise")
+    assert after.stdout.decode() == "All checks passed!\n"
+    assert cli("lint", "a.lis", "--add-noqa").stderr.decode().startswith("added 0 noqa")
+
+
+def test_editor_noqa_action_after_text_that_is_no_comment_opens_a_comment(tmp_path):
+    """The editor's "Suppress … on this line (noqa)" appended `noqa: CODE` to the text after a symbol (no
+    comment: the CNC reads it with the value), as `--add-noqa` did."""
+    from achslint.core.diagnostics import Diagnostic, Severity
+    from achslint.lsp import features
+    from achslint.lsp.documents import Document
+    from achslint.lsp.session import Session
+
+    text = "kenngr.homing.homing_type  CNC_CONTROLLED  # old\nkenngr.achs_typ  1  # linear\nEnde\n"
+    path = tmp_path / "achsmds1.lis"
+    session = Session(tmp_path)
+    document = Document(path.as_uri(), path, text, 1)
+    session.open(document)
+    file = document.parse()
+
+    def finding(line: int) -> Diagnostic:
+        return Diagnostic(document.name, line, 1, line, 2, "LIS007", Severity.WARNING, "text after")
+
+    after_symbol = features.noqa_edit(document, file, finding(1))
+    assert after_symbol is not None and after_symbol.new_text == "  ( noqa: LIS007"
+    after_number = features.noqa_edit(document, file, finding(2))  # a comment there: joined
+    assert after_number is not None and after_number.new_text == "  noqa: LIS007"

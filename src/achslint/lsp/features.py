@@ -918,9 +918,11 @@ def noqa_edit(document: Document, file: syntax.ListFile | None, d: Diagnostic) -
         return lsp.TextEdit(lsp.Range(lsp.Position(*where), lsp.Position(*where)), f", {d.code}")
     if existing:
         return None  # a bare noqa already suppresses everything
-    if line.rest is not None:
-        return lsp.TextEdit(at_end, f"  noqa: {d.code}")
-    marker = "#" if line.value_kind in (syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE) else "("
+    after_number = line.value_kind in (syntax.INT, syntax.HEX, syntax.REAL, syntax.REFERENCE)
+    if line.rest is not None and (after_number or line.rest.startswith("(")):
+        return lsp.TextEdit(at_end, f"  noqa: {d.code}")  # into the comment there
+    # after a symbol or string only `(` starts a comment: other text there is read with the value
+    marker = "#" if after_number else "("
     return lsp.TextEdit(at_end, f"  {marker} noqa: {d.code}")
 
 
