@@ -192,15 +192,15 @@ def _line_edit(line: syntax.Line, codes: list[str], marker: str) -> Edit | None:
         at = start + existing.end()
         return Edit(line.number, at, line.number, at, f", {added}") if added else None
     end = line.end_column
+    # Text after a symbol or string that is no `(` comment is read with the value (LIS007): the codes go into
+    # a `(` comment of their own after it.
     text_after_a_string = (
         line.rest is not None and not line.rest.startswith("(") and line.value_kind not in NUMBERS
     )
-    if (line.rest is not None or in_value) and not text_after_a_string:
-        return Edit(line.number, end, line.number, end, f"  noqa: {_missing(codes, None)}")
-    if (
-        text_after_a_string
-    ):  # the CNC reads that text with the value: the codes go into a `(` comment after it
+    if text_after_a_string:
         return Edit(line.number, end, line.number, end, f"  ( noqa: {_missing(codes, None)}")
+    if line.rest is not None or in_value:
+        return Edit(line.number, end, line.number, end, f"  noqa: {_missing(codes, None)}")
     here = marker if marker == "(" or line.value_kind in NUMBERS else "("
     return Edit(line.number, end, line.number, end, f"  {here} noqa: {_missing(codes, None)}")
 
