@@ -149,3 +149,17 @@ def test_editor_noqa_action_after_text_that_is_no_comment_opens_a_comment(tmp_pa
     assert after_symbol is not None and after_symbol.new_text == "  ( noqa: LIS007"
     after_number = features.noqa_edit(document, file, finding(2))  # a comment there: joined
     assert after_number is not None and after_number.new_text == "  noqa: LIS007"
+
+
+def test_add_noqa_on_a_list_it_may_not_write_does_not_blame_the_rules(cli, tmp_path, monkeypatch):
+    """A read-only list keeps its findings because it was not written (said on standard error, exit 2), not
+    because a noqa cannot suppress them, which the summary said."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "achsmds1.lis").write_bytes(b"kopf.achs_nr 1\nkenngr.ref_ricth 1\nEnde\n")
+    (tmp_path / "achsmds1.lis").chmod(0o444)
+    done = cli("lint", "--add-noqa", "achsmds1.lis")
+    said = done.stderr.decode()
+    assert done.returncode == 2
+    assert "achsmds1.lis is read-only; not rewritten" in said
+    assert said.rstrip().endswith("added 0 noqa directives; 1 list not read or not written (said above)")
+    assert "cannot suppress" not in said

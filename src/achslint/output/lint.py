@@ -136,12 +136,16 @@ def noqa_count(results: list[FileResult]) -> str:
     """What `--add-noqa` did, and what it left: findings a `noqa` in a list cannot suppress."""
     added = sum(r.noqa_added for r in results)
     said = f"added {added} noqa directive{'s' if added != 1 else ''}"
-    left = sum(len(r.diagnostics) for r in results)
+    # A list that could not be read or written (said above, exit 2) keeps its findings for another reason.
+    left = sum(len(r.diagnostics) for r in results if r.error is None)
     if left:
         said += (
             f"; {left} finding{'s' if left != 1 else ''} left that a noqa in the list cannot suppress "
             "(machine rules, unused noqa LIS009): `achslint lint` shows them"
         )
+    failed = sum(1 for r in results if r.error is not None)
+    if failed:
+        said += f"; {failed} list{'s' if failed != 1 else ''} not read or not written (said above)"
     return said
 
 
