@@ -178,3 +178,107 @@ def test_changes_are_the_lines_fmt_rewrites():
     unterminated = LiveFormat()
     check(unterminated, "a  1\nEnde")
     assert unterminated.changes() == [(1, 2, "Ende\n")]  # the end marker gets the file's line break
+
+
+def spaced(start: int, stop: int, tabs: bool) -> str:
+    """Whitespace from column `start` to column `stop` (at least one blank): tab stops every 8 columns first,
+    if `tabs`."""
+    gap = ""
+    while tabs and (start // 8 + 1) * 8 <= stop:
+        gap, start = gap + "\t", (start // 8 + 1) * 8
+    return gap + " " * (stop - start) if gap or stop > start else " "
+
+
+def layout_line(rng: random.Random, column: int, comments: int, tabs: float = 0.05) -> str:
+    """A value line in a layout (values from `column`, comments from `comments`), or nearly: now and then its
+    comment one blank after the value or off the column, blanks at its end, or its value ending in the column
+    instead. Its gaps are tabs as far as they go with probability `tabs`."""
+    path, value = rng.choice(PATHS), rng.choice(VALUES)
+    if rng.random() < 0.2:  # right-aligned: the value ends in the column
+        text = path + spaced(len(path), column + 16 - len(value), rng.random() < tabs) + value
+    else:
+        text = path + spaced(len(path), column, rng.random() < tabs) + value
+    if rng.random() < 0.7:
+        comment = rng.choice(["( comment", "(x", "# note", "/* c", "( P-AXIS-00016 : a comment"])
+        where = rng.choice([comments, comments, comments, len(text) + 1, len(text) + 2, comments + 3])
+        text += spaced(len(text.expandtabs(8)), where, rng.random() < tabs) + comment
+    text += rng.choice(["", "", "", "", " ", "  ", "\t"])
+    return text + rng.choice(BREAKS[:3])
+
+
+def layout_list(rng: random.Random, count: int) -> list[str]:
+    column, comments = rng.choice([(40, 60), (48, 68), (24, 40), (16, 24)])
+    tabs = rng.choice([0.0, 0.05, 0.8])  # (0.8: a list separated by tabs, blanks here and there)
+    lines = [
+        layout_line(rng, column, comments, tabs) if rng.random() < 0.85 else random_line(rng)
+        for _ in range(count)
+    ]
+    return [*lines, "Ende\n"] if rng.random() < 0.7 else lines
+
+
+@pytest.mark.parametrize("seed", range(examples(40)))
+def test_lists_in_a_layout_stay_fmt(seed):
+    """Most lines of such a list already stand where the layout wants them: LiveFormat finds what becomes of
+    them without working them through as `format_file` does (`_facts_of`); the text is `format_file`'s all
+    the same, before and after edits."""
+    rng = random.Random(seed)
+    lines = layout_list(rng, rng.randrange(5, 80))
+    live = LiveFormat(rng.choice([FmtOptions(), *OPTIONS]))  # (the list's own layout more often)
+    for _ in range(15):
+        check(live, "".join(lines), full=rng.random() < 0.5)
+        lines = edited(rng, lines)
+        if rng.random() < 0.3:
+            at = rng.randrange(len(lines) + 1)
+            lines[at:at] = [layout_line(rng, 40, 60)]
+
+
+@pytest.mark.parametrize("seed", range(examples(20)))
+def test_facts_of_a_line_are_what_its_row_works_out(seed):
+    """What LiveFormat keeps of a value line is what `_Row` (`format_file`'s way) works out for it, and a line
+    it finds plain stays as it is (but for blanks at its end) when its value and comment stay where they are."""
+    rng = random.Random(seed)
+    live = LiveFormat()
+    for _ in range(300):
+        text = layout_line(rng, 40, 60) if rng.random() < 0.5 else random_line(rng)
+        body = text.rstrip("\r\n")
+        line = syntax.parse_text(body).lines[0]
+        if not fmt._aligns(line):
+            continue
+        row = fmt._row(line)
+        found = live._facts_of(line, body)
+        assert found[0] == (None if row.indent else row.alignments()), body
+        assert found[1:4] == (row.value_start, row.extent_end, fmt._width(row)), body
+        assert found[4] == ("\t" in row.sep if fmt._next_stop(row.path_end) <= row.value_start else None), (
+            body
+        )
+        assert found[5] == fmt._mark(row), body
+        assert found[7:] == (row.comment_start if row.free else -1, row.value_end), body
+        if found[6] and not row.indent:
+            placed = row.copy()
+            left = fmt.Alignment("left", row.value_start)
+            fmt._place_value(placed, left, {left}, tabs=False)
+            fmt._place_comment(placed, found[7] if row.free else None, canonical=False, tabs=False)
+            assert placed.body() == body.rstrip(" \t"), body
+            assert (found[6] == 1) == (body == body.rstrip(" \t")), body
+
+
+def test_a_list_in_its_layout_is_formatted_without_working_through_its_lines(monkeypatch):
+    """The first formatting of a list works through `_Row` only the lines whose values move (what makes it
+    take a tenth of a second for 50,000 lines in a layout rather than half a second)."""
+    made: list[str | None] = []
+    row = fmt._row
+
+    def counted(line):
+        made.append(line.path)
+        return row(line)
+
+    monkeypatch.setattr(fmt, "_row", counted)
+    lines = large_list(random.Random(28), 5000)
+    lines[10] = lines[10].rstrip("\n") + "  \n"  # blanks at its end: it only loses them
+    live = LiveFormat()
+    check(live, "".join(lines))
+    changed = [index for first, stop, _ in live.changes() for index in range(first, stop)]
+    assert changed[0] == 10 and live.formatted(10, 11) == [lines[10].rstrip(" \n") + "\n"]
+    moved = {syntax.parse_text(lines[index]).lines[0].path for index in changed[1:]}
+    assert 0 < len(moved) < 10  # (a few long paths in the right-aligned block)
+    assert set(made) == moved

@@ -530,6 +530,41 @@ class _Decision(NamedTuple):
     kept: frozenset[Alignment]
     tabs: bool
     comments: int | None
+    lefts: frozenset[int]  # the columns of the kept left alignments
+    rights: frozenset[int]  # ... and of the kept right ones
+
+
+# What LiveFormat keeps of a value line, worked out once from its text (a plain tuple: a 50,000-line list has
+# tens of thousands of them, and a tuple is made and read far faster than an object with attributes):
+# - 0: its `_Row.alignments()`, None when it is indented (it then stands in no alignment);
+# - 1, 2: the columns of these alignments (where the value starts, where its extent ends);
+# - 3: its `_width`;
+# - 4: its `_vote` when its value stays where it is;
+# - 5: its `_mark` when its value stays where it is;
+# - 6: what becomes of it when its value stays where it is, blanks separate and its comment (if any) keeps its
+#   column: 0 work it out (a tab between path and value or before the comment), 1 it stays byte for byte, 2
+#   it only loses the blanks at its end;
+# - 7: where its comment after the value starts (-1: it has none that fmt may move);
+# - 8: where its value ends.
+_Facts = tuple[tuple[Alignment, Alignment] | None, int, int, int, bool | None, int | None, int, int, int]
+_ENDS_BLANK = (" ", "\t")
+
+
+def _stays(facts: _Facts, lefts: Set[int], rights: Set[int]) -> bool:
+    """Whether the value line's value stands in one of the kept alignments (`_Row.fits`)."""
+    return facts[0] is not None and (facts[1] in lefts or facts[2] in rights)
+
+
+def _comment_stays(facts: _Facts, decision: _Decision) -> bool:
+    """Whether `_place_comment` leaves the comment of a line whose value stays where it was (and whose blanks
+    are plain) as it is."""
+    start, end = facts[7], facts[8]
+    if start < 0:
+        return True  # no comment fmt moves
+    column = decision.comments
+    if column is not None:
+        return start == column or (column <= end and start == end + 1)
+    return decision.style.values is not None or start == end + 1
 
 
 class LiveFormat:
@@ -544,6 +579,11 @@ class LiveFormat:
     run exactly when there is such a window), so an edit recounts only the windows around it. Each line's
     formatted text is kept while the decisions stand; when an edit changes one, every line is formatted
     again. The result is `format_file`'s, byte for byte (tests compare them over random edits).
+
+    What a value line adds to the counts is worked out once from its text (`_facts_of`); so is what it
+    becomes when its value already stands in a kept alignment, as most values of a list in a layout do: such a
+    line is only worked through `_Row` (the way `format_file` places it) when it has tabs, blanks at its end or
+    a comment to move. Each line costs a few microseconds at first, not tens.
     """
 
     PAUSE_EVERY = 256  # lines between two pause points of the language server's worker (a few milliseconds)
@@ -558,7 +598,8 @@ class LiveFormat:
         self._extra = False  # the last of them is the empty one the parser reads after a final line break
         self._lines: list[syntax.Line] = []
         self._kinds: list[str] = []
-        self._rows: list[_Row | None] = []  # each line as fmt found it, if fmt aligns its value
+        self._facts: list[_Facts | None] = []  # each value line's `_facts_of` (None: not a line fmt aligns)
+        self._lengths: list[int] = []  # each line's `_path_length`
         self._votes: list[bool | None] = []  # each line's say in tabs or blanks (`_vote`)
         # where each line's comment starts once its value is placed (`_mark`)
         self._marks: list[int | None] = []
@@ -574,6 +615,10 @@ class LiveFormat:
         self._starts: Counter[int] = Counter()  # comment starts showing a column
         self._commented = 0  # value lines with a comment after the value
         self._decision: _Decision | None = None  # None: every line's formatting is to be worked out again
+        # one Alignment object per column and kind (the counts and the facts share them: made once, and
+        # compared by identity before by value)
+        self._left_at: dict[int, Alignment] = {}
+        self._right_at: dict[int, Alignment] = {}
 
     def update(self, raw_lines: Sequence[str], full: bool = True) -> bool:
         """Take the list's lines as they are now (with their breaks, as `syntax.split_lines` keeps them).
@@ -595,40 +640,106 @@ class LiveFormat:
             return True
         window = self._window(first, old_stop)
         self._count_runs(*window, -1)
-        for index in range(first, old_stop):
-            self._tally(index, -1)
+        self._tally(first, old_stop, -1)
         decision = self._decision
         new = raw[first:new_stop]
-        lines: list[syntax.Line] = []
-        rows: list[_Row | None] = []
-        votes: list[bool | None] = []
-        marks: list[int | None] = []
-        for count, text in enumerate(new, 1):
-            if not count % self.PAUSE_EVERY:
-                pause()
-            line = self._parse_line(text.rstrip("\r\n"))
-            row = _row(line) if _aligns(line) else None
-            lines.append(line)
-            rows.append(row)
-            if decision is not None and row is not None:  # (else worked out with every other line)
-                votes.append(_vote(row, decision.target, decision.kept))
-                marks.append(self._placed(row, decision))
-            else:
-                votes.append(None)
-                marks.append(None)
+        lines, facts, lengths = self._read(new)
+        if decision is None:  # worked out with every other line
+            votes: list[bool | None] = [None] * len(new)
+            marks: list[int | None] = [None] * len(new)
+        else:
+            votes, marks = [], []
+            for line, found in zip(lines, facts, strict=True):
+                if found is None:
+                    votes.append(None)
+                    marks.append(None)
+                elif _stays(found, decision.lefts, decision.rights):
+                    votes.append(found[4])
+                    marks.append(found[5])
+                else:
+                    row = _row(line)
+                    votes.append(_vote(row, decision.target, decision.kept))
+                    marks.append(self._placed(row, decision))
         self._raw[first:old_stop] = new
         self._lines[first:old_stop] = lines
         self._kinds[first:old_stop] = [line.kind for line in lines]
-        self._rows[first:old_stop] = rows
+        self._facts[first:old_stop] = facts
+        self._lengths[first:old_stop] = lengths
         self._votes[first:old_stop] = votes
         self._marks[first:old_stop] = marks
         self._out[first:old_stop] = [""] * len(new)
-        for index in range(first, new_stop):
-            if not (index - first + 1) % self.PAUSE_EVERY:
-                pause()
-            self._tally(index, 1)
+        self._tally(first, new_stop, 1)
         self._count_runs(window[0], window[1] + new_stop - old_stop, 1)
         return self._decide(first, new_stop, full)
+
+    def _read(self, texts: Sequence[str]) -> tuple[list[syntax.Line], list[_Facts | None], list[int]]:
+        """The lines of `texts` parsed, their facts (value lines) and their `_path_length`."""
+        parse, facts_of = self._parse_line, self._facts_of
+        lines: list[syntax.Line] = []
+        facts: list[_Facts | None] = []
+        for begin in range(0, len(texts), self.PAUSE_EVERY):
+            if begin:
+                pause()
+            bodies = [text.rstrip("\r\n") for text in texts[begin : begin + self.PAUSE_EVERY]]
+            parsed = list(map(parse, bodies))
+            lines += parsed
+            facts += [
+                facts_of(line, body)
+                if line.kind == syntax.ASSIGNMENT
+                and line.path_ok
+                and line.value is not None
+                and line.value_kind != syntax.BAD_STRING
+                else None
+                for line, body in zip(parsed, bodies, strict=True)
+            ]
+        lengths = [
+            len(line.path) if line.kind == syntax.ASSIGNMENT and line.path_ok and line.path else -1
+            for line in lines
+        ]
+        return lines, facts, lengths
+
+    def _facts_of(self, line: syntax.Line, body: str) -> _Facts:
+        """What LiveFormat keeps of a line fmt aligns (see `_Facts`), as `_Row` works it out."""
+        indent, sep, sep2, rest = line.indent, line.sep, line.sep2, line.rest
+        path, value = line.path or "", line.value or ""
+        free = rest is not None and (line.value_kind in NUMERIC_OR_REFERENCE or rest.startswith("("))
+        tail = value if rest is None or free else value + sep2 + rest.rstrip(BLANKS)
+        if "\t" in body:
+            path_end = _advance(0, indent) + len(path)
+            tab = "\t" in sep
+            start = _advance(path_end, sep)
+            end = _advance(start, value)
+            right = _advance(start, tail)
+            comment = _advance(end, sep2) if free else -1
+            plain = 0 if tab or (free and "\t" in sep2) else 2 if body.endswith(_ENDS_BLANK) else 1
+            width = -1 if "\t" in tail else len(path) + 2 + len(tail)
+        else:  # (most lines: every column is a length)
+            path_end = len(indent) + len(path)
+            tab = False
+            start = path_end + len(sep)
+            end = start + len(value)
+            right = start + len(tail)
+            comment = end + len(sep2) if free else -1
+            plain = 2 if body.endswith(" ") else 1
+            width = len(path) + 2 + len(tail)
+        aligned = None
+        if not indent:
+            left_at, right_at = self._left_at, self._right_at
+            aligned = (
+                left_at.get(start) or left_at.setdefault(start, Alignment(LEFT, start)),
+                right_at.get(right) or right_at.setdefault(right, Alignment(RIGHT, right)),
+            )
+        return (
+            aligned,
+            start,
+            right,
+            width,
+            tab if (path_end // TAB_WIDTH + 1) * TAB_WIDTH <= start else None,
+            (comment if comment - end >= 2 else -1) if free else None,
+            plain,
+            comment,
+            end,
+        )
 
     def changes(self) -> list[Block]:
         """The stretches of lines formatting rewrites, in order (lines after the end marker dropped: replaced
@@ -676,7 +787,7 @@ class LiveFormat:
         main = _most_common(self._counts, (LEFT, RIGHT))
         if main != self._main:
             self._main, self._runs = main, Counter()
-            self._count_runs(0, len(self._rows), 1)
+            self._count_runs(0, len(self._facts), 1)
         evidence = _Evidence(
             self._counts, self._row_count, self._blocks, self._fitting, self._canonical, self._widest
         )
@@ -688,15 +799,22 @@ class LiveFormat:
         if again and not full:
             self._decision = None
             return False
+        lefts = frozenset(alignment.column for alignment in kept if alignment.kind == LEFT)
+        rights = frozenset(alignment.column for alignment in kept if alignment.kind == RIGHT)
+        stays: list[bool] | None = None  # (`_staying`, worked out once the first line is formatted again)
         if again:
-            self._vote_all(target, kept)
+            stays = self._staying(lefts, rights)
+            self._vote_all(target, kept, stays)
         tabs = style.values is not None and self._tab_votes[True] > self._tab_votes[False]
         again = again or old is None or tabs != old.tabs
         if again and not full:
             self._decision = None
             return False
-        decision = _Decision(style, target, kept, tabs, None)
-        placed = self._mark_all(decision) if again else None
+        decision = _Decision(style, target, kept, tabs, None, lefts, rights)
+        placed: dict[int, _Row] = {}
+        if again:
+            stays = stays if stays is not None else self._staying(lefts, rights)
+            placed = self._mark_all(decision, stays)
         if self.options.comment_column is not None:
             comments: int | None = self.options.comment_column - 1
         else:
@@ -712,11 +830,11 @@ class LiveFormat:
             self._decision = None
             return False
         self._decision = decision
-        lines = range(len(self._raw)) if again else range(first, min(stop + 1, len(self._raw)))
-        for index in lines:
-            if again and index and not index % self.PAUSE_EVERY:
-                pause()
-            self._out[index] = self._formatted(index, decision, placed[index] if placed is not None else None)
+        if again:
+            self._format_all(decision, placed, stays if stays is not None else self._staying(lefts, rights))
+        else:
+            for index in range(first, min(stop + 1, len(self._raw))):
+                self._out[index] = self._formatted(index, decision)
         return True
 
     def _blocks(self, main: Alignment) -> tuple[Alignment, ...]:
@@ -733,44 +851,43 @@ class LiveFormat:
         return max(self._widths, default=0)
 
     # -- each line's part ----------------------------------------------------------------------------
-    def _tally(self, index: int, sign: int) -> None:
-        """Add (sign 1) or take out (-1) what line `index` counts for."""
-        path = _path_length(self._lines[index])
-        if path >= 0:
-            _bump(self._paths, path, sign)
-        row = self._rows[index]
-        if row is None:
+    def _tally(self, first: int, stop: int, sign: int) -> None:
+        """Add (sign 1) or take out (-1) what lines [first, stop) count for."""
+        lengths = Counter(self._lengths[first:stop])
+        lengths.pop(-1, None)
+        _add(self._paths, lengths, sign)
+        facts = [found for found in self._facts[first:stop] if found is not None]
+        if not facts:
             return
-        self._row_count += sign
-        if not row.indent:
-            aligned = row.alignments()
-            _bump(self._counts, aligned[0], sign)
-            _bump(self._counts, aligned[1], sign)
-            _bump(self._pairs, aligned, sign)
-        width = _width(row)
-        if width >= 0:
-            _bump(self._widths, width, sign)
+        self._row_count += sign * len(facts)
+        pairs = Counter([found[0] for found in facts if found[0] is not None])
+        counts: Counter[Alignment] = Counter()
+        for (left, right), count in pairs.items():
+            counts[left] += count
+            counts[right] += count
+        _add(self._pairs, pairs, sign)
+        _add(self._counts, counts, sign)
+        widths = Counter([found[3] for found in facts])
+        widths.pop(-1, None)
+        _add(self._widths, widths, sign)
         if self._decision is None:
             return
-        vote, mark = self._votes[index], self._marks[index]
-        if vote is not None:
-            _bump(self._tab_votes, vote, sign)
-        if mark is not None:
-            self._commented += sign
-            if mark >= 0:
-                _bump(self._starts, mark, sign)
+        _add(self._tab_votes, Counter([vote for vote in self._votes[first:stop] if vote is not None]), sign)
+        marks = [mark for mark in self._marks[first:stop] if mark is not None]
+        self._commented += sign * len(marks)
+        _add(self._starts, Counter([mark for mark in marks if mark >= 0]), sign)
 
     def _window(self, first: int, stop: int) -> tuple[int, int]:
         """The lines that hold every window of MIN_BLOCK value lines with a value line of [first, stop): from
         the MIN_BLOCK - 1st value line before `first` to the MIN_BLOCK - 1st from `stop` on."""
-        rows = self._rows
+        facts = self._facts
         start, found = first, 0
         while start > 0 and found < MIN_BLOCK - 1:
             start -= 1
-            found += rows[start] is not None
+            found += facts[start] is not None
         end, found = stop, 0
-        while end < len(rows) and found < MIN_BLOCK - 1:
-            found += rows[end] is not None
+        while end < len(facts) and found < MIN_BLOCK - 1:
+            found += facts[end] is not None
             end += 1
         return start, end
 
@@ -780,42 +897,94 @@ class LiveFormat:
         main = self._main
         if main is None:
             return  # no main alignment, no blocks: counted once there is one
-        here = [_here(row, main) for row in self._rows[first:stop] if row is not None]
-        for start in range(len(here) - MIN_BLOCK + 1):
-            if start and not start % self.PAUSE_EVERY:
+        # each value line's alignments it can make a block with (`_here`): none when it is indented or in the
+        # main alignment
+        here = [
+            () if aligned is None or main in aligned else aligned
+            for aligned in (found[0] for found in self._facts[first:stop] if found is not None)
+        ]
+        starts = range(len(here) - MIN_BLOCK + 1)
+        for begin in range(0, len(starts), self.PAUSE_EVERY):
+            if begin:
                 pause()
-            if here[start]:
+            stop = begin + self.PAUSE_EVERY
+            for start in compress(starts[begin:stop], here[begin:stop]):  # (the lines that can start a run)
                 for alignment in set(here[start]).intersection(*here[start + 1 : start + MIN_BLOCK]):
                     _bump(self._runs, alignment, sign)
 
-    def _vote_all(self, target: Alignment, kept: frozenset[Alignment]) -> None:
-        votes: list[bool | None] = []
-        for index, row in enumerate(self._rows):
-            if index and not index % self.PAUSE_EVERY:
-                pause()
-            votes.append(None if row is None else _vote(row, target, kept))
-        self._votes = votes
-        self._tab_votes = Counter(vote for vote in votes if vote is not None)
+    def _staying(self, lefts: frozenset[int], rights: frozenset[int]) -> list[bool]:
+        """For each line, whether it is a value line whose value stands in a kept alignment (`_stays`)."""
+        return [
+            found is not None and found[0] is not None and (found[1] in lefts or found[2] in rights)
+            for found in self._facts
+        ]
 
-    def _mark_all(self, decision: _Decision) -> list[_Row | None]:
-        """Every line's `_mark`; the value lines with their values placed (for `_formatted`)."""
-        marks: list[int | None] = []
-        placed: list[_Row | None] = []
-        for index, row in enumerate(self._rows):
-            if index and not index % self.PAUSE_EVERY:
+    def _vote_all(self, target: Alignment, kept: frozenset[Alignment], stays: list[bool]) -> None:
+        votes: list[bool | None] = []
+        facts, lines = self._facts, self._lines
+        for begin in range(0, len(facts), self.PAUSE_EVERY):
+            if begin:
                 pause()
-            if row is None:
-                marks.append(None)
-                placed.append(None)
-                continue
-            moved = row.copy()
+            stop = begin + self.PAUSE_EVERY
+            votes += [
+                None if found is None else found[4] if stay else _vote(_row(line), target, kept)
+                for found, stay, line in zip(
+                    facts[begin:stop], stays[begin:stop], lines[begin:stop], strict=True
+                )
+            ]
+        self._votes = votes
+        self._tab_votes = Counter([vote for vote in votes if vote is not None])
+
+    def _mark_all(self, decision: _Decision, stays: list[bool]) -> dict[int, _Row]:
+        """Every line's `_mark`; the value lines whose values move, placed (for `_formatted`)."""
+        marks: list[int | None] = []
+        placed: dict[int, _Row] = {}
+        facts, lines = self._facts, self._lines
+
+        def place(index: int) -> int | None:
+            moved = placed[index] = _row(lines[index])
             _place_value(moved, decision.target, decision.kept, decision.tabs)
-            marks.append(_mark(moved))
-            placed.append(moved)
+            return _mark(moved)
+
+        for begin in range(0, len(facts), self.PAUSE_EVERY):
+            if begin:
+                pause()
+            stop = begin + self.PAUSE_EVERY
+            marks += [
+                None if found is None else found[5] if stay else place(index)
+                for (index, found), stay in zip(
+                    enumerate(facts[begin:stop], begin), stays[begin:stop], strict=True
+                )
+            ]
         self._marks = marks
-        self._commented = sum(mark is not None for mark in marks)
-        self._starts = Counter(mark for mark in marks if mark is not None and mark >= 0)
+        commented = [mark for mark in marks if mark is not None]
+        self._commented = len(commented)
+        self._starts = Counter([mark for mark in commented if mark >= 0])
         return placed
+
+    def _format_all(self, decision: _Decision, placed: dict[int, _Row], stays: list[bool]) -> None:
+        """Every line formatted (`_formatted`); a plain line whose value and comment stay is found without
+        `_Row`."""
+        raw, facts, out, formatted = self._raw, self._facts, self._out, self._formatted
+        plain = not decision.tabs  # (with tabs, a gap may change to tabs)
+        column = decision.comments
+        kept = column is None and decision.style.values is not None  # (every comment stays where it is)
+        for begin in range(0, len(raw), self.PAUSE_EVERY):
+            if begin:
+                pause()
+            stop = begin + self.PAUSE_EVERY
+            out[begin:stop] = [
+                (text if found[6] == 1 else _stripped(text))
+                if plain
+                and stay
+                and found is not None
+                and found[6]
+                and (kept or found[7] < 0 or found[7] == column or _comment_stays(found, decision))
+                else formatted(index, decision, placed.get(index))
+                for (index, text), found, stay in zip(
+                    enumerate(raw[begin:stop], begin), facts[begin:stop], stays[begin:stop], strict=True
+                )
+            ]
 
     @staticmethod
     def _placed(row: _Row, decision: _Decision) -> int | None:
@@ -826,12 +995,19 @@ class LiveFormat:
 
     def _formatted(self, index: int, decision: _Decision, placed: _Row | None = None) -> str:
         """Line `index` formatted (`placed`: the line with its value placed already), with its break."""
-        raw, line, row = self._raw[index], self._lines[index], self._rows[index]
-        if row is None:
+        raw, line, found = self._raw[index], self._lines[index], self._facts[index]
+        if found is None:
             body = _other_line(line)
         else:
             if placed is None:
-                placed = row.copy()
+                if (
+                    not decision.tabs
+                    and found[6]
+                    and _stays(found, decision.lefts, decision.rights)
+                    and _comment_stays(found, decision)
+                ):
+                    return raw if found[6] == 1 else _stripped(raw)
+                placed = _row(line)
                 _place_value(placed, decision.target, decision.kept, decision.tabs)
             _place_comment(placed, decision.comments, decision.style.values is None, decision.tabs)
             body = placed.body()
@@ -850,6 +1026,18 @@ class LiveFormat:
         if raw[end].endswith(("\n", "\r")):
             return end, end + 1, None
         return end, end + 1, _usual_newline(text[len(text.rstrip("\r\n")) :] for text in raw)
+
+
+def _stripped(raw: str) -> str:
+    """A line without the blanks at its end (its break kept)."""
+    text = raw.rstrip("\r\n")
+    return text.rstrip(BLANKS) + raw[len(text) :]
+
+
+def _add(counts: Counter[_Key], counted: Counter[_Key], sign: int) -> None:
+    """Add (sign 1) or take out (-1) `counted` from `counts` (`_bump` for each key)."""
+    for key, count in counted.items():
+        _bump(counts, key, sign * count)
 
 
 def _bump(counts: Counter[_Key], key: _Key, sign: int) -> None:
