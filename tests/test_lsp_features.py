@@ -755,3 +755,30 @@ def test_hover_on_a_list_named_as_another_kind_shows_the_kind_its_content_is(
     mine = snapshot_of(session, right)
     own = features.hover_text(mine.context, mine.file, 1, 2, markdown=False)
     assert own is not None and "LIS523" not in own
+
+
+def test_a_quick_fix_that_lint_fix_refuses_is_offered_as_unsafe(session: Session, tmp_path: Path) -> None:
+    """Both fixes of this list are safe by their rule but change what the CNC does (on the simulated drive of
+    antr_typ 4, `DRIVE_CONTROLLED` is LIS305): `achslint lint` calls them unsafe and `--fix` refuses them, so
+    the editor must not offer them as safe, preferred quick fixes. A fix that passes stays safe."""
+    text = (
+        "kopf.achs_nr 1\nkopf.log_achs_name X\nkenngr.achs_typ 1\nkenngr.antr_typ 4\n"
+        "kenngr.ref_ricth 1\nkenngr.homing.homing_type DRIVE_CONROLLED\nEnde\n"
+    )
+    document = opened(session, tmp_path / "achsmds1.lis", text)
+    snapshot = snapshot_of(session, document)
+    found = snapshot.result.diagnostics
+    refused = session.unsafe_fixes(document)
+    assert {code for code, _, _ in refused} == {"LIS101", "LIS203"}
+    for action in features.code_actions(document, snapshot, found, EVERYWHERE, None, list, refused):
+        if action.title.startswith(("LIS101", "LIS203")):
+            assert action.title.endswith("(unsafe fix: check the result)") and not action.is_preferred
+    assert session.fixed_text(document) is None  # what fix-all applies: nothing, as `--fix`
+    # a misspelt end marker's fix changes nothing the CNC does: safe and preferred
+    plain = opened(session, tmp_path / "achsmds2.lis", "kopf.achs_nr 2\nkenngr.antr_typ 1\nENDE\n")
+    assert session.unsafe_fixes(plain) == set()
+    found = snapshot_of(session, plain).result.diagnostics
+    actions = features.code_actions(plain, snapshot_of(session, plain), found, EVERYWHERE, None, list)
+    assert [a.title for a in actions if a.is_preferred and a.title.startswith("LIS004")], [
+        a.title for a in actions
+    ]

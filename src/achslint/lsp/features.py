@@ -13,7 +13,7 @@ import bisect
 import json
 import os
 import re
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence, Set
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -933,7 +933,11 @@ def code_actions(
     request: lsp.Range,
     only: Sequence[str] | None,
     fix_all_edits: Callable[[], list[lsp.TextEdit]],
+    refused: Set[tuple[str, int, int]] = frozenset(),
 ) -> list[lsp.CodeAction]:
+    """The quick fixes, noqa actions and fix-all for the findings in `request`. `refused`: (code, line,
+    column) of the findings whose fix the lint calls safe and `--fix` refuses (`Session.unsafe_fixes`):
+    offered as unsafe, as `achslint lint` shows them."""
     start_line, end_line = request.start.line + 1, request.end.line + 1
 
     def wanted(kind: str) -> bool:
@@ -951,7 +955,7 @@ def code_actions(
                 continue
             diagnostic = to_lsp_diagnostic(document, d)
             if d.fix is not None and (d.fix.edits or (d.fix.remove_bom and document.bom)):
-                unsafe = d.fix.applicability != "safe"
+                unsafe = d.fix.applicability != "safe" or (d.code, d.line, d.column) in refused
                 actions.append(
                     lsp.CodeAction(
                         title=f"{d.code}: {d.fix.description}"

@@ -145,7 +145,8 @@ class AchslintServer(LanguageServer):
         self._timers: dict[str, asyncio.TimerHandle] = {}
         self._waiting: dict[str, list[tuple[int, asyncio.Future[Analysis | None]]]] = {}
         self._to_lint: Latest[tuple[Document, int]] = Latest()
-        self._fixes: dict[str, tuple[int, list[lsp.TextEdit]]] = {}  # fix-all edits by generation
+        # fix-all edits and the fixes --fix refuses (`Session.unsafe_fixes`), by generation
+        self._fixes: dict[str, tuple[int, list[lsp.TextEdit], set[tuple[str, int, int]]]] = {}
         self.formats: dict[str, tuple[int, RawResult]] = {}  # formatting edits by generation
         self._outlines: dict[str, Outline] = {}  # each document's outline, line by line (on the worker)
         # each document's formatting, brought up to date with each request (`format_here`); on the loop, but
@@ -778,22 +779,26 @@ class AchslintServer(LanguageServer):
         except asyncio.TimeoutError:  # (not TimeoutError before Python 3.11)
             return None
 
-    async def fix_all_edits(self, analysis: Analysis) -> list[lsp.TextEdit]:
-        """The edits of every safe fix in the analysed text (computed once per text, on the worker)."""
+    async def fix_all_edits(self, analysis: Analysis) -> tuple[list[lsp.TextEdit], set[tuple[str, int, int]]]:
+        """The edits of every safe fix in the analysed text, and the findings whose fix the lint calls safe
+        but `--fix` refuses (computed once per text, on the worker)."""
         uri = analysis.document.uri
         cached = self._fixes.get(uri)
         if cached is not None and cached[0] == analysis.generation:
-            return cached[1]
+            return cached[1], cached[2]
         document, session = analysis.document, self.session
 
-        def edits() -> list[lsp.TextEdit]:
+        def edits() -> tuple[list[lsp.TextEdit], set[tuple[str, int, int]]]:
             fixed = session.fixed_text(document)
-            return features.diff_edits(document, fixed) if fixed is not None else []
+            return (
+                features.diff_edits(document, fixed) if fixed is not None else [],
+                session.unsafe_fixes(document),
+            )
 
-        found = await self.run_on_worker(edits)
+        found, refused = await self.run_on_worker(edits)
         if uri in self.documents:
-            self._fixes[uri] = (analysis.generation, found)
-        return found
+            self._fixes[uri] = (analysis.generation, found, refused)
+        return found, refused
 
     def close(self, uri: str) -> Document | None:
         document = self.documents.pop(uri, None)
@@ -1104,10 +1109,11 @@ async def code_action(ls: AchslintServer, params: lsp.CodeActionParams) -> list[
         return []  # no analysis of the text as it is now: an edit computed on another text could land anywhere
     snapshot, found = analysis.snapshot, analysis.found
     edits: list[lsp.TextEdit] = []
+    refused: set[tuple[str, int, int]] = set()
     if snapshot.file is not None and any(d.fix is not None and d.fix.applicability == "safe" for d in found):
-        edits = await ls.fix_all_edits(analysis)
+        edits, refused = await ls.fix_all_edits(analysis)
     return features.code_actions(
-        analysis.document, snapshot, found, params.range, params.context.only, lambda: edits
+        analysis.document, snapshot, found, params.range, params.context.only, lambda: edits, refused
     )
 
 

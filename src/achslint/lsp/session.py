@@ -215,18 +215,43 @@ class Session:
         when no fix applies."""
         from ..linting.fixer import fix_bytes
 
-        config, _ = self.config_for(document)
-        settings = self.file_settings(config, document.path, document.name)
-        settings.keep_context = False
-        underneath = None
-        if document.path is not None:  # the kind and the list underneath that `_lint` gives it
-            settings.kind = STARTUP.id if is_startup(document.path) else self.finder.entry_kind(document.path)
-            if settings.kind != STARTUP.id:
-                underneath = self._underneath(document, settings.kind)[1]
+        settings, underneath = self._fix_settings(document)
         outcome = fix_bytes(text_bytes(document.body), document.name, settings, defaults=underneath)
         if not outcome.fixed:
             return None
         return ("\ufeff" if document.bom else "") + outcome.data.decode("utf-8")
+
+    def unsafe_fixes(self, document: Document) -> set[tuple[str, int, int]]:
+        """(code, line, column) of the findings whose fix the lint calls safe but `achslint lint` does not: the
+        fixes `--fix` refuses because they change what the list does (`fixer.check_fixes`), so that a quick fix
+        is offered as safe exactly when the command line calls it safe."""
+        from ..linting.fixer import check_fixes
+
+        settings, underneath = self._fix_settings(document)
+        data = text_bytes(document.body)
+        result = lint_file(data, document.name, settings, underneath)
+        safe = {id(d) for d in result.diagnostics if d.fix is not None and d.fix.applicability == "safe"}
+        if result.error or not safe:
+            return set()
+        check_fixes(data, document.name, settings, result, underneath)
+        return {
+            (d.code, d.line, d.column)
+            for d in result.diagnostics
+            if id(d) in safe and d.fix is not None and d.fix.applicability != "safe"
+        }
+
+    def _fix_settings(self, document: Document) -> tuple[FileSettings, bytes | None]:
+        """The settings and the list underneath for fixing the document, as `achslint lint --fix` has them:
+        the kind and the list underneath that `_lint` gives it."""
+        config, _ = self.config_for(document)
+        settings = self.file_settings(config, document.path, document.name)
+        settings.keep_context = False
+        underneath = None
+        if document.path is not None:
+            settings.kind = STARTUP.id if is_startup(document.path) else self.finder.entry_kind(document.path)
+            if settings.kind != STARTUP.id:
+                underneath = self._underneath(document, settings.kind)[1]
+        return settings, underneath
 
     # -- linting ---------------------------------------------------------------------------------
     def snapshot(self, uri: str) -> Snapshot | None:
