@@ -677,6 +677,21 @@ class LiveFormat:
         parse, facts_of = self._parse_line, self._facts_of
         lines: list[syntax.Line] = []
         facts: list[_Facts | None] = []
+        # The facts of each line read here: a line that repeats another (lists joined from several exports
+        # repeat thousands) is parsed into the same Line, and its facts are the same.
+        known: dict[syntax.Line, _Facts | None] = {}
+
+        def first_read(line: syntax.Line, body: str) -> _Facts | None:
+            found = known[line] = (
+                facts_of(line, body)
+                if line.kind == syntax.ASSIGNMENT
+                and line.path_ok
+                and line.value is not None
+                and line.value_kind != syntax.BAD_STRING
+                else None
+            )
+            return found
+
         for begin in range(0, len(texts), self.PAUSE_EVERY):
             if begin:
                 pause()
@@ -684,12 +699,7 @@ class LiveFormat:
             parsed = list(map(parse, bodies))
             lines += parsed
             facts += [
-                facts_of(line, body)
-                if line.kind == syntax.ASSIGNMENT
-                and line.path_ok
-                and line.value is not None
-                and line.value_kind != syntax.BAD_STRING
-                else None
+                known[line] if line in known else first_read(line, body)
                 for line, body in zip(parsed, bodies, strict=True)
             ]
         lengths = [
