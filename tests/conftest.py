@@ -27,6 +27,11 @@ codecache._installed = True
 # worker and 0.2-0.3 s per child. The files go to the __pycache__ folders git ignores.
 sys.dont_write_bytecode = False
 
+# Hypothesis loads the plugins other packages register for it: trio (installed for selenium, which drives
+# the browser test) registers one that imports trio, ~0.1 s in every test process that imports hypothesis.
+# No test uses trio.
+os.environ.setdefault("HYPOTHESIS_NO_PLUGINS", "1")
+
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "fixtures"
 
