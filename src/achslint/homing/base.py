@@ -8,6 +8,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from ..axis.drives import SERCOS
 from .scenario import Scenario, ScenarioError, complete, fitted_cams
 
 if TYPE_CHECKING:
@@ -174,6 +175,20 @@ class HomingStrategy:
         return self.setup.falling_edge and self.with_cam
 
     @property
+    def unlatched_zero_pulse(self) -> bool:
+        """CNC-controlled homing of a SERCOS drive on its zero pulse with nothing to capture the pulse: the CNC
+        does not search a SERCOS zero pulse itself (TF5200 §2.2), it needs the drive's latch (S-0-146,
+        P-AXIS-00386), the AX5000 latch (P-AXIS-00060) or the encoder overflow (P-AXIS-00294, §3.1.1.2). Without
+        one the pulse is never found (LIS322), and the dry-run does not home the axis either."""
+        setup = self.setup
+        if setup.axis.drive_type != SERCOS or self.controlled_by != "cnc" or not self.with_zero_pulse:
+            return False
+        if setup.overflow or setup.simulated or self.flying:
+            return False
+        axis = setup.axis
+        return not (axis.get("antr.sercos.drive_supports_cnc_homing") or axis.get("kenngr.echtzeit_bit_nr"))
+
+    @property
     def moves(self) -> bool:
         return bool(self.phases)
 
@@ -247,7 +262,7 @@ class HomingStrategy:
                 if search is not None and drive.method == "standard":
                     needs.add({"limit_switch": "limit_switches"}.get(search.trigger, search.trigger))
             return frozenset(needs)
-        if not self.moves:
+        if not self.moves or self.unlatched_zero_pulse:  # the latter fails before it moves (LIS322)
             return frozenset()
         needs = {"limit_switches", "cycle_time"}
         if self.with_cam:

@@ -96,6 +96,9 @@ class Homing(Protocol):
     @property
     def moves(self) -> bool: ...
 
+    @property
+    def unlatched_zero_pulse(self) -> bool: ...
+
     def simulate(self, simulator: Simulator, trace: Trace, start: float, cam_shift: float) -> Trace: ...
 
 
@@ -587,6 +590,14 @@ class Simulator:
         x = self.scenario.start_position if start is None else start
         self.start = x
         turning = self.scenario.start_velocity
+        if self.strategy.unlatched_zero_pulse:
+            return self.stand_still(
+                trace,
+                "failed",
+                "the SERCOS drive's zero pulse is never captured: CNC-controlled homing on the zero pulse needs "
+                "the drive's latch (antr.sercos.drive_supports_cnc_homing), the AX5000 latch "
+                "(kenngr.echtzeit_bit_nr) or encoder-overflow homing, and none is configured (LIS322)",
+            )
         try:
             if turning and self.strategy.moves and not self.strategy.flying:
                 return self._from_rotation(trace, turning)

@@ -45,8 +45,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ..axis.drives import DriveType
-
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
     from .context import Context
@@ -66,17 +64,8 @@ PULSE = "kenngr.homing_without_zero_pulse"
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    values, strategy = ctx.values, ctx.strategy
-    setup = strategy.setup
-    if (
-        values.drive_type != DriveType.SERCOS
-        or strategy.controlled_by != "cnc"
-        or not strategy.with_zero_pulse
-    ):
-        return
-    if setup.overflow or setup.simulated or strategy.definition.flying:
-        return
-    if values.get("antr.sercos.drive_supports_cnc_homing") or values.get("kenngr.echtzeit_bit_nr"):
+    # one reading for the rule and the dry-run, which fails such a homing with this code
+    if not ctx.strategy.unlatched_zero_pulse:
         return
     yield ctx.cross(
         CODE,
