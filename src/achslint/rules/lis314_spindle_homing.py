@@ -76,6 +76,6 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         yield ctx.cross(
             CODE,
             f"a SERCOS spindle with drive-controlled homing needs the KEINE_AUTO_RPF bit (0x100) in "
-            f"`kenngr.achs_mode` ({mode:#x}); without it the CNC starts its own homing before M19. Use {mode | KEINE_AUTO_RPF:#x}",
+            f"`kenngr.achs_mode` ({mode:#x}); without it the CNC starts an automatic homing before the spindle positions (M19). Use {mode | KEINE_AUTO_RPF:#x}",
             ["kenngr.achs_mode", "kenngr.homing.homing_type", "kenngr.antr_typ"],
         )
