@@ -267,12 +267,25 @@ class ResolvedConfig:
         return self.path.parent if self.path else Path.cwd()
 
     def relative(self, target: Path) -> str:
+        """`target` relative to the configuration's folder, by the name it is found under: a link is
+        matched where it lies, not where it leads (as git and ruff match), so `backup/achsmds1.lis ->
+        ../listen/achsmds1.lis` is `backup/achsmds1.lis`. A path that reaches the folder through a link
+        above it (a linked working folder) is taken from the last folder on its way that is the
+        configuration's folder; a path outside it stays as it is given."""
+        from ..core.files import real_path
+
+        absolute = Path(os.path.abspath(target))
+        root = Path(os.path.abspath(self.root))
+        if absolute.is_relative_to(root):
+            return PurePosixPath(absolute.relative_to(root)).as_posix()
         try:
-            return PurePosixPath(
-                Path(os.path.realpath(target)).relative_to(os.path.realpath(self.root))
-            ).as_posix()
-        except (ValueError, OSError):
-            return PurePosixPath(Path(target)).as_posix()
+            real_root = real_path(root)
+            for folder in absolute.parents:
+                if real_path(folder) == real_root:
+                    return PurePosixPath(absolute.relative_to(folder)).as_posix()
+        except (OSError, ValueError):
+            pass
+        return PurePosixPath(Path(target)).as_posix()
 
     def cnc_root(self) -> Path | None:
         """The `cnc-root` setting as a folder (relative to the configuration file's folder), or None."""
@@ -306,14 +319,23 @@ class ResolvedConfig:
 
 
 def matches_glob(relative: str, pattern: str) -> bool:
-    """Glob match on the path relative to the config folder; a pattern without `/` also matches any file name."""
+    """Glob match on the path relative to the config folder (`*` crosses `/`), as `.gitignore` and ruff
+    match: a pattern without `/` matches the file's name or the name of a folder on its way (`archive`,
+    `*.lis`); a pattern with one is anchored at the configuration's folder and matches the file or a folder
+    on its way (`legacy/old`, `./archive/`, `**/archive` which takes `archive` at the top too)."""
     if fnmatch.fnmatch(relative, pattern):
         return True
+    parts = relative.split("/")
     if "/" not in pattern:
-        return fnmatch.fnmatch(relative.rsplit("/", 1)[-1], pattern)
-    return fnmatch.fnmatch(relative, pattern.lstrip("./")) or fnmatch.fnmatch(
-        relative, pattern.rstrip("/") + "/*"
-    )
+        return any(fnmatch.fnmatch(part, pattern) for part in parts)
+    anchored = pattern.rstrip("/")
+    while anchored.startswith("./"):
+        anchored = anchored[2:]
+    if not anchored:
+        return False
+    forms = [anchored, anchored[3:]] if anchored.startswith("**/") else [anchored]
+    leading = ["/".join(parts[:end]) for end in range(1, len(parts) + 1)]  # the folders on the way, the file
+    return any(fnmatch.fnmatch(prefix, form) for form in forms if form for prefix in leading)
 
 
 def _model_of(annotation: Any) -> Any:

@@ -555,8 +555,14 @@ class Finder:
             found.errors.append(f"cannot read folder {exc.filename}: {reason(exc)}")
 
         for root, dirs, files in os.walk(folder, onerror=unreadable):
-            dirs[:] = sorted(d for d in dirs if not d.startswith(".")) if recursive else []
             here = Path(root)
+            # a folder its own configuration excludes is not searched (`exclude = ["archive"]`): nothing in
+            # it is linted, so nothing in it is looked at or reported
+            dirs[:] = (
+                sorted(d for d in dirs if not d.startswith(".") and not self._pruned(here / d))
+                if recursive
+                else []
+            )
             for name in dirs:  # os.walk does not enter linked folders; one that leads outside is said
                 linked = here / name
                 if os.path.islink(linked) and not scope.contains(linked):
@@ -601,6 +607,22 @@ class Finder:
 
     def _excluded(self, config: ResolvedConfig, path: Path) -> bool:
         return _excluded_by(config, path, self.overrides.apply(config.settings).exclude)
+
+    def _pruned(self, folder: Path) -> bool:
+        """Whether a folder found in a walk is excluded by the configuration of the files in it."""
+        config = self.config_for(folder / "x")
+        exclude = self.overrides.apply(config.settings).exclude
+        return bool(exclude) and _excluded_by(config, folder, [_folder_form(p) for p in exclude])
+
+
+def _folder_form(pattern: str) -> str:
+    """An exclude pattern as it applies to a folder: `archive/*` (`*` crosses `/`) and `archive/**` take
+    everything below `archive`, so they exclude the folder itself (still anchored where the pattern is)."""
+    for tail in ("/**", "/*"):
+        if pattern.endswith(tail) and pattern[: -len(tail)].strip("/"):
+            head = pattern[: -len(tail)]
+            return head if "/" in head else f"./{head}"
+    return pattern
 
 
 def _excluded_by(config: ResolvedConfig, path: Path, patterns: Sequence[str]) -> bool:

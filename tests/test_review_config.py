@@ -1,0 +1,115 @@
+"""Configuration and discovery as a user meets them: found in a review of the real command line on real
+folders (each test names what went wrong before its fix)."""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+import pytest
+
+from .conftest import FIXTURES, run_cli
+
+AXIS = FIXTURES / "lists" / "achsmds2.lis"  # findings of several families (LIS102, LIS401)
+
+
+def listed(folder: Path, *args: str) -> list[str]:
+    """The files `lint --show-files` lists (their names, relative to `folder`)."""
+    result = run_cli("lint", "--show-files", *args)
+    assert result.returncode == 0, text(result.stderr)
+    names = [line.split("\t")[0] for line in text(result.stdout).splitlines() if line]
+    return [Path(os.path.relpath(name, folder)).as_posix() if os.path.isabs(name) else name for name in names]
+
+
+def linted(*args: str) -> set[str]:
+    """The files `lint --format json` reports findings for."""
+    import json
+
+    result = run_cli("lint", "--format", "json", "--exit-zero", *args)
+    assert result.returncode == 0, result.stderr
+    return {d["path"] for d in json.loads(result.stdout)["diagnostics"]}
+
+
+def text(out: str | bytes) -> str:
+    return out.decode() if isinstance(out, bytes) else out
+
+
+def project(root: Path, *names: str) -> Path:
+    for name in names:
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(AXIS, root / name)
+    return root
+
+
+# -- exclude: a folder's name, and files matched by the name they are found under ---------------------------
+
+
+@pytest.mark.parametrize("pattern", ["archive", "archive/", "./archive", "**/archive", "archive/*"])
+def test_exclude_names_a_folder_as_gitignore_and_ruff_do(tmp_path: Path, monkeypatch, pattern: str) -> None:
+    """Before: `exclude = ["archive"]` (or `./archive`, `**/archive`) excluded nothing below archive/."""
+    project(tmp_path, "listen/achsmds1.lis", "archive/achsmds1.lis", "archive/old/achsmds2.lis")
+    (tmp_path / "achslint.toml").write_text(f'exclude = ["{pattern}"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    assert listed(tmp_path, ".") == ["listen/achsmds1.lis"]
+    assert linted(".") == {"listen/achsmds1.lis"}
+
+
+def test_a_name_pattern_excludes_a_folder_of_that_name_at_any_depth(tmp_path: Path, monkeypatch) -> None:
+    project(tmp_path, "m1/listen/achsmds1.lis", "m1/backup/achsmds1.lis", "m2/backup/achsmds1.lis")
+    (tmp_path / "achslint.toml").write_text('exclude = ["backup"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    assert listed(tmp_path, ".") == ["m1/listen/achsmds1.lis"]
+
+
+def test_per_file_ignores_takes_a_folder_name_too(tmp_path: Path, monkeypatch) -> None:
+    project(tmp_path, "legacy/achsmds1.lis")
+    (tmp_path / "achslint.toml").write_text('[per-file-ignores]\n"legacy" = ["LIS"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    assert linted(".") == set()
+
+
+def test_a_link_is_excluded_by_the_name_it_is_found_under(tmp_path: Path, monkeypatch) -> None:
+    """Before: exclude matched a link by its target: `backup/achsmds1.lis -> ../listen/achsmds1.lis` was
+    linted despite `backup/*`, and `listen/achsmds2.lis -> ../archive/...` was left out by `archive/*`."""
+    project(tmp_path, "listen/achsmds1.lis", "archive/achsmds2.lis")
+    (tmp_path / "backup").mkdir()
+    (tmp_path / "backup" / "achsmds1.lis").symlink_to("../listen/achsmds1.lis")
+    (tmp_path / "listen" / "achsmds2.lis").symlink_to("../archive/achsmds2.lis")
+    (tmp_path / "achslint.toml").write_text('exclude = ["backup/*", "archive/*"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    assert listed(tmp_path, ".") == ["listen/achsmds1.lis", "listen/achsmds2.lis"]
+
+
+def test_a_dangling_link_in_an_excluded_folder_is_no_error(tmp_path: Path, monkeypatch) -> None:
+    """Before: exit 2, `cannot read archive/achsmds9.lis: a symbolic link to a file that does not exist`."""
+    project(tmp_path, "listen/achsmds1.lis")
+    (tmp_path / "archive").mkdir()
+    (tmp_path / "archive" / "achsmds9.lis").symlink_to("/nonexistent/achsmds9.lis")
+    (tmp_path / "achslint.toml").write_text('exclude = ["archive"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    result = run_cli("lint", ".", "--format", "concise", "--exit-zero")
+    assert result.returncode == 0, result.stderr
+
+
+def test_an_excluded_folder_is_not_searched(tmp_path: Path, monkeypatch) -> None:
+    """Before: the files of an excluded folder were looked at one by one, and what is wrong in there (a link
+    leading outside, a folder that cannot be read: exit 2) was reported."""
+    project(tmp_path / "proj", "listen/achsmds1.lis")
+    project(tmp_path / "outside", "achsmds1.lis")
+    (tmp_path / "proj" / "archive").mkdir()
+    (tmp_path / "proj" / "archive" / "elsewhere").symlink_to(tmp_path / "outside")
+    (tmp_path / "proj" / "achslint.toml").write_text('exclude = ["archive/*"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path / "proj")
+    result = run_cli("lint", ".", "--format", "concise", "--exit-zero")
+    assert result.returncode == 0, text(result.stderr)
+    assert "archive" not in text(result.stderr)
+
+
+def test_exclude_through_a_linked_working_folder(tmp_path: Path, monkeypatch) -> None:
+    project(tmp_path / "real", "listen/achsmds1.lis", "archive/achsmds1.lis")
+    (tmp_path / "real" / "achslint.toml").write_text('exclude = ["archive"]\n', encoding="utf-8")
+    (tmp_path / "link").symlink_to("real")
+    monkeypatch.chdir(tmp_path / "link")
+    assert listed(tmp_path / "link", ".") == ["listen/achsmds1.lis"]
+    assert listed(tmp_path, str(tmp_path / "link")) == ["link/listen/achsmds1.lis"]
