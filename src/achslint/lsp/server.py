@@ -1206,19 +1206,8 @@ async def definition(ls: AchslintServer, params: lsp.DefinitionParams) -> list[l
         parsed = await ls.run_on_worker(lambda: parse_text(copy.text, copy.name))
         snapshot = Snapshot(snapshot.version, copy.text, snapshot.result, parsed, startup=True)
 
-    def entries() -> list[StartupEntry]:
-        from ..core.decode import UnreadableInput
-        from ..machine.startup import read_startup
-
-        if document.path is None:  # not a file: no start-up list
-            return []
-        try:
-            startup = read_startup(document.path)
-        except (OSError, UnreadableInput):  # not saved yet, or unreadable on disk (its lint says why)
-            return []
-        single = [startup.default, startup.default_channel]
-        found = [entry for entry in single if entry is not None]
-        return found + startup.axes + startup.channels + startup.compensations + startup.others
+    def entries() -> list[StartupEntry]:  # as `achslint lint` resolves them (the configured CNC root)
+        return ls.session.startup_entries(document)
 
     return features.definition(document, snapshot, line, column, entries)
 

@@ -43,6 +43,7 @@ from ..linting.discovery import (
 from ..linting.linter import FileResult, FileSettings, file_settings, lint_file, lint_parsed
 from ..linting.machines import machine_findings
 from ..machine.resolved import Machine
+from ..machine.startup import StartupEntry
 from ..syntax.parser import ListFile, parse_bytes
 from ..syntax.xmlinput import single_list
 from .documents import Document
@@ -390,6 +391,21 @@ class Session:
         if real not in self._machines:
             self._machines[real] = self.finder.machines_of(path)
         return self._machines[real]
+
+    def startup_entries(self, document: Document) -> list[StartupEntry]:
+        """The entries of a start-up list as saved, resolved as `achslint lint` resolves them (against the CNC
+        root of its configuration's `cnc-root`, else the default): where go to definition leads. A discovery
+        of its own: the worker's may be in use meanwhile. Empty when the file cannot be read (not saved yet,
+        or unreadable: its lint says why)."""
+        if document.path is None:  # not a file: no start-up list
+            return []
+        try:
+            startup = Finder(self.settings.overrides, lenient=True).startup(document.path)
+        except (OSError, UnreadableInput):
+            return []
+        single = [startup.default, startup.default_channel]
+        found = [entry for entry in single if entry is not None]
+        return found + startup.axes + startup.channels + startup.compensations + startup.others
 
     def _config(self, path: Path) -> ResolvedConfig:
         try:
