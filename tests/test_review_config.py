@@ -113,3 +113,49 @@ def test_exclude_through_a_linked_working_folder(tmp_path: Path, monkeypatch) ->
     monkeypatch.chdir(tmp_path / "link")
     assert listed(tmp_path / "link", ".") == ["listen/achsmds1.lis"]
     assert listed(tmp_path, str(tmp_path / "link")) == ["link/listen/achsmds1.lis"]
+
+
+# -- --force-exclude: standard input, and a run whose named files are all excluded -----------------------
+
+
+def test_force_exclude_applies_to_standard_input_by_its_stdin_filename(tmp_path: Path, monkeypatch) -> None:
+    """Before: `lint - --stdin-filename archive/x.lis --force-exclude` linted the text (an editor's save hook
+    reported findings for a file the project excludes)."""
+    (tmp_path / "achslint.toml").write_text('exclude = ["archive"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    args = ("lint", "-", "--stdin-filename", "archive/achsmds1.lis", "--format", "concise")
+    result = run_cli(*args, "--force-exclude", stdin=AXIS.read_bytes())
+    assert result.returncode == 0, text(result.stderr)
+    assert "achsmds1.lis:" not in text(result.stdout)
+    assert run_cli(*args, "--exit-zero", stdin=AXIS.read_bytes()).stdout  # without it: linted
+    shown = run_cli(
+        "lint", "-", "--stdin-filename", "archive/achsmds1.lis", "--force-exclude", "--show-files"
+    )
+    assert text(shown.stdout).strip() == ""
+
+
+def test_named_files_all_force_excluded_say_so(tmp_path: Path, monkeypatch) -> None:
+    """Before: exit 2 `no axis list found in archive/achsmds1.lis (folders are searched for the include
+    patterns ...); check the path or --include`: the file was there, the configuration excluded it. Still
+    exit 2 (test_ruff_habits: a run that checks nothing fails), but the message says why."""
+    project(tmp_path, "archive/achsmds1.lis")
+    (tmp_path / "achslint.toml").write_text('exclude = ["archive"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    result = run_cli("lint", "archive/achsmds1.lis", "--force-exclude", "--format", "concise")
+    assert result.returncode == 2
+    message = text(result.stderr)
+    assert "no axis list found" in message and "--force-exclude" in message and "exclude" in message
+    assert "folders are searched" not in message
+    assert len(message.strip().splitlines()) == 1
+
+
+def test_force_excluded_standard_input_comes_back_unchanged_under_fix(tmp_path: Path, monkeypatch) -> None:
+    """`--fix -` prints the fixed list; for an excluded one it must print the list as it came, not nothing
+    (an editor replacing its buffer with the output would be left with an empty file)."""
+    (tmp_path / "achslint.toml").write_text('exclude = ["archive"]\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    data = AXIS.read_bytes()
+    args = ("lint", "-", "--stdin-filename", "archive/achsmds1.lis", "--fix", "--force-exclude")
+    result = run_cli(*args, stdin=data)
+    assert result.returncode == 0, text(result.stderr)
+    assert result.stdout == data if isinstance(result.stdout, bytes) else result.stdout.encode() == data

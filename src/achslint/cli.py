@@ -14,7 +14,7 @@ import functools
 import gc
 import os
 import sys
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from enum import Enum
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn, TextIO, get_args
@@ -361,7 +361,7 @@ def lint(
         _fail(str(exc))
     _tell(outcome.errors, outcome.notes, quiet)
     if not outcome.results and not outcome.skipped and not outcome.errors and not allow_empty:
-        _fail(_nothing_found(paths))
+        _fail(_nothing_found(paths, outcome.excluded))
     if add_noqa:  # as in ruff: what was added, on stderr; exit 0 unless a list could not be read or written
         if not quiet:
             typer.echo(shown.noqa_count(outcome.results), err=True)
@@ -525,9 +525,17 @@ def _docs_url(given: str | None, config_file: str | None) -> str | None:
         _fail(str(exc))
 
 
-def _nothing_found(paths: list[str]) -> str:
+def _nothing_found(paths: list[str], excluded: Sequence[str] = ()) -> str:
     """Why a run that checked nothing fails (a CI job pointed at the wrong folder must not pass)."""
     shown = ", ".join(paths)
+    if excluded:  # found, and left out on request: say so rather than send the user looking for them
+        left_out = ", ".join(excluded[:3]) + (f" and {len(excluded) - 3} more" if len(excluded) > 3 else "")
+        return (
+            f"no axis list found in {shown}: {left_out} "
+            f"{'is' if len(excluded) == 1 else 'are'} excluded (`exclude` of the configuration or "
+            "--extend-exclude, applied to named files by --force-exclude); pass --allow-empty when an "
+            "empty run is fine"
+        )
     return (
         f"no axis list found in {shown} (folders are searched for the `include` patterns, achsmds*.lis by "
         "default, and for XML exports holding <AchsMds> or <AX_MDS>); check the path or --include, "

@@ -97,6 +97,8 @@ class Discovery:
     reported: set[str] = field(default_factory=set)
     # start-up lists found in linted folders whose configuration names homing programs
     program_startups: list[Path] = field(default_factory=list)
+    # named paths (and standard input, by its --stdin-filename) --force-exclude left out on purpose
+    excluded: list[str] = field(default_factory=list)
     _seen: dict[object, tuple[list[Target], int]] = field(default_factory=dict)
 
     def add(self, target: Target, *, context: bool = False) -> None:
@@ -402,6 +404,9 @@ class Finder:
             if raw == "-":
                 name = self.stdin_filename or "<stdin>"
                 config = self.config_for(Path(name) if self.stdin_filename else Path.cwd())
+                if self.stdin_filename and self.force_exclude and self._excluded(config, Path(name)):
+                    found.excluded.append(raw)  # as ruff: the name the editor gives it is excluded
+                    continue
                 found.add(Target(name, None, config))
                 continue
             path = Path(raw)
@@ -413,6 +418,7 @@ class Finder:
                 continue
             problem = not_a_list_file(path)
             if problem is None and self.force_exclude and self._excluded(self.config_for(path), path):
+                found.excluded.append(raw)
                 continue
             if problem is not None:
                 found.errors.append(f"{raw}: {problem}")

@@ -96,6 +96,7 @@ class LintOutcome:
     errors: list[str]
     notes: list[str] = field(default_factory=list)  # files skipped on purpose (FIFOs, links leading outside)
     skipped: int = 0  # lists found and skipped on purpose (another kind of list, XML without an axis list)
+    excluded: list[str] = field(default_factory=list)  # named paths --force-exclude left out
 
     @property
     def failing(self) -> bool:
@@ -148,6 +149,9 @@ class LintRun:
             read += [path for startup in found.startups for path in startup_files(startup)]
             refuse_output_over_input(self.request.output, read)
         targets, errors = found.targets, found.errors
+        # standard input the editor names as an excluded file (--force-exclude): left out on purpose, as ruff
+        # does, never "no list found"; named files all excluded still make an empty run (exit 2)
+        skipped = found.excluded.count("-")
         jobs = self.request.jobs or os.cpu_count() or 1
         mode = (self.request.fix, self.request.unsafe_fixes, self.request.show_diff, self.request.add_noqa)
         kept = (False, False, False, False)  # lists the user did not name: checked, never rewritten
@@ -184,7 +188,11 @@ class LintRun:
         else:
             disk = list(_track(map(_lint_one, work), progress, len(work)))
         pairs: list[tuple[Target, FileResult]] = []
-        skipped = 0
+        if "-" in found.excluded and self.request.fix and not self.request.show_diff:
+            # `--fix -` prints the fixed list: an excluded one comes back as it went in (an editor that
+            # pipes its buffer through achslint must not get an empty one back)
+            name = self.request.stdin_filename or "<stdin>"
+            pairs.append((Target(name, None, ResolvedConfig(Settings())), _unchanged(name, stdin)))
         from_disk = iter(disk)
         for target in targets:
             if target.path is None:
@@ -214,7 +222,8 @@ class LintRun:
                 keep_source=self.request.keep_source,
             )
         )
-        return LintOutcome(results, errors, found.notes, skipped)
+        excluded = [path for path in found.excluded if path != "-"]
+        return LintOutcome(results, errors, found.notes, skipped, excluded)
 
     def _context(self, context: list[Target]) -> list[tuple[Target, FileResult]]:
         """Lint the neighbours of named lists for their machine summaries only (never fixed, never shown)."""
@@ -230,6 +239,11 @@ class LintRun:
             if not result.error and not result.note:
                 pairs.append((target, result))
         return pairs
+
+
+def _unchanged(name: str, stdin: BinaryIO | None) -> FileResult:
+    """The result for standard input left out by --force-exclude under --fix: its text, unchanged."""
+    return FileResult(name, [], fixed_data=stdin.read() if stdin is not None else b"")
 
 
 def _lint_one(item: WorkItem) -> FileResult:
