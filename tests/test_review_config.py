@@ -159,3 +159,57 @@ def test_force_excluded_standard_input_comes_back_unchanged_under_fix(tmp_path: 
     result = run_cli(*args, stdin=data)
     assert result.returncode == 0, text(result.stderr)
     assert result.stdout == data if isinstance(result.stdout, bytes) else result.stdout.encode() == data
+
+
+# -- configuration files that cannot be used --------------------------------------------------------------
+
+
+def test_a_pyproject_toml_that_cannot_be_read_is_an_error_not_the_defaults(
+    tmp_path: Path, monkeypatch
+) -> None:
+    """Before: a pyproject.toml achslint may not read (mode 600 of another user) was passed over and the
+    run used the built-in defaults (exit 0), where an unreadable achslint.toml, or a pyproject.toml that
+    is not valid TOML, stop the run: it may hold the project's [tool.achslint]."""
+    from achslint.core import files
+
+    project(tmp_path, "achsmds1.lis")
+    pyproject = tmp_path / "pyproject.toml"
+    pyproject.write_text('[tool.achslint]\nselect = ["LIS0"]\n', encoding="utf-8")
+    real = files.read_list
+
+    def refused(path, *args, **kwargs):
+        if Path(path).name == "pyproject.toml":
+            raise PermissionError(13, "Permission denied", str(path))
+        return real(path, *args, **kwargs)
+
+    monkeypatch.setattr(files, "read_list", refused)
+    monkeypatch.chdir(tmp_path)
+    result = run_cli("lint", ".", "--format", "concise")
+    assert result.returncode == 2
+    message = text(result.stderr).strip()
+    assert str(pyproject) in message and "permission denied" in message and len(message.splitlines()) == 1
+
+
+def test_a_machine_table_without_lists_is_a_configuration_error(tmp_path: Path, monkeypatch) -> None:
+    """Before: `[[machine]]` with no `lists` (or `name` alone) was taken and declared nothing (exit 0)."""
+    project(tmp_path, "listen/achsmds1.lis")
+    (tmp_path / "achslint.toml").write_text('[[machine]]\nname = "mill"\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    result = run_cli("lint", ".", "--format", "concise")
+    assert result.returncode == 2
+    message = text(result.stderr)
+    assert "achslint.toml" in message and "machine" in message and "lists" in message
+
+
+def test_extend_naming_a_pyproject_without_our_table_is_an_error(tmp_path: Path, monkeypatch) -> None:
+    """Before: `extend = "../pyproject.toml"` naming a pyproject.toml without [tool.achslint] (a typo of the
+    table's name, `[tool.achslnt]`) built on nothing, silently."""
+    project(tmp_path, "m/achsmds1.lis")
+    (tmp_path / ".git").mkdir()  # the repository the configuration may reach into
+    (tmp_path / "pyproject.toml").write_text('[tool.achslnt]\nselect = ["LIS0"]\n', encoding="utf-8")
+    (tmp_path / "m" / "achslint.toml").write_text('extend = "../pyproject.toml"\n', encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    result = run_cli("lint", "m", "--format", "concise")
+    assert result.returncode == 2
+    message = text(result.stderr)
+    assert "extend" in message and "[tool.achslint]" in message and "pyproject.toml" in message

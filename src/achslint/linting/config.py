@@ -117,6 +117,10 @@ class MachineTable:
     name: str | None = _key(None, min_length=1)  # how messages name it (default: its number in the file)
 
     def __post_init__(self) -> None:
+        if not self.lists:  # a table that names no list declares nothing: a mistake, never a machine
+            raise ValueError(
+                'a [[machine]] table needs `lists`, the patterns of its lists (lists = ["listen/achsmds*.lis"])'
+            )
         for pattern in self.lists:
             if not pattern.strip() or PurePosixPath(pattern).is_absolute() or Path(pattern).is_absolute():
                 raise ValueError(f"lists: {pattern!r} is not a pattern relative to the configuration file")
@@ -454,6 +458,11 @@ def _extended(path: Path, chain: tuple[Path, ...]) -> tuple[dict[str, Any], tupl
     if problem is not None:
         said = "does not exist" if problem in MISSING else f"is {problem}"
         raise ConfigError(f"configuration error in {path}: key `extend`: {base_name!r} ({base}) {said}")
+    if base.name == "pyproject.toml" and not _has_table(base):
+        raise ConfigError(
+            f"configuration error in {path}: key `extend`: {base_name!r} ({base}) has no [tool.achslint] "
+            "table to build on; add one, or name another configuration file"
+        )
     below, extends = _extended(base, (*chain, path))
     for key in _PATH_KEYS:
         if key in below:
@@ -568,8 +577,12 @@ def _table_in(pyproject: Path) -> bool:
     try:
         data = read_toml(pyproject, "configuration", ConfigError)
     except ConfigError as exc:
-        if str(exc).startswith("cannot read"):
+        if not os.path.lexists(pyproject):  # gone since it was found: no configuration here any more
             return False
+        if str(exc).startswith("cannot read"):
+            # it may hold the project's [tool.achslint]: linting with the defaults instead would pass
+            # silently what the project meant to fail (as for an unreadable achslint.toml)
+            raise ConfigError(f"{exc}; make it readable, or give the configuration with --config") from None
         raise
     tool = data.get("tool", {})
     return isinstance(tool, dict) and "achslint" in tool
