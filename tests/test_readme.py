@@ -57,8 +57,8 @@ SCENARIO_BLOCK = "start_position = 50.0"
 SKIPPED = {
     "python3 -m venv": "creates a virtual environment (the tests run in one)",
     "pip install": "installs packages from the network",
-    "pytest": "the test suite itself",
     "coverage run": "the test suite itself, under coverage (minutes)",
+    "coverage combine": "the coverage of the two runs above",
     "ruff check": "a check of the sources, run by .ci/run",
     "mypy": "a check of the sources, run by .ci/run",
 }
