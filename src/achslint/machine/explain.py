@@ -61,20 +61,37 @@ def _axis(axis: MachineAxis, machine: ChannelView, gear: int) -> dict[str, Any]:
     }
 
 
-def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]], dict[str, str]]:
-    """The program's blocks as the homing order, and for each axis where it is homed (in words)."""
+def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]], dict[str, str], str | None]:
+    """The program's blocks as the homing order, for each axis where it is homed (in words), and where the CNC
+    stops the program (None when it runs to its end).
+
+    The CNC stops at a block naming an axis the channel does not have (LIS602: nothing of that block runs) and
+    at the sequence step of a DISABLED axis (LIS604, P-ERR-50685: the steps before it have run); nothing is
+    homed from there on, as in the dry-run. An IGNORE_ABS_POS axis a G74 names is passed over, not homed
+    (P-AXIS-00299, LIS607)."""
     blocks: list[dict[str, Any]] = []
     homed_by: dict[str, str] = {}
+    stopped: str | None = None
     followers = machine.followers()
     for block in program.blocks:
         label = f"N{block.number}" if not isinstance(block, SkippedBlock) and block.number is not None else ""
         where = f"line {block.at.line}" + (f" ({label})" if label else "")
+        if isinstance(block, (HomingBlock, MoveBlock)) and stopped is None:
+            named = block.words if isinstance(block, HomingBlock) else block.targets
+            if any(word.name not in machine.axes for word in named):
+                stopped = where
         if isinstance(block, HomingBlock):
             groups = []
             for step, (number, words) in enumerate(block.groups(), 1):
                 names = [word.name for word in words]
                 groups.append({"sequence": number, "axes": names})
+                if stopped is None and any(_refuses_g74(machine.axes[name]) for name in names):
+                    stopped = f"{where}, step {step}"
+                if stopped is not None:
+                    continue
                 for name in names:
+                    if classify(machine.axes[name].resolved, commanded=True).definition.skipped_by_g74:
+                        continue  # passed over: its position comes from its absolute encoder
                     homed_by.setdefault(name, f"{where}, step {step}")
                     for axis in [*machine.axes.values(), *followers]:
                         if axis.gantry_master != name:
@@ -100,7 +117,12 @@ def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]]
             blocks.append(
                 {"line": block.at.line, "kind": "skipped", "text": block.text, "reason": block.reason}
             )
-    return blocks, homed_by
+    return blocks, homed_by, stopped
+
+
+def _refuses_g74(axis: MachineAxis) -> bool:
+    """Whether a G74 naming the axis ends with an error (homing DISABLED)."""
+    return classify(axis.resolved, commanded=True).definition.refuses_g74
 
 
 def explain_machine(machine: ChannelView, program: Program | None = None, gear: int = 0) -> dict[str, Any]:
@@ -118,7 +140,10 @@ def explain_machine(machine: ChannelView, program: Program | None = None, gear: 
         "program": None,
     }
     if program is not None:
-        blocks, homed_by = _order(program, machine)
+        blocks, homed_by, stopped = _order(program, machine)
+        named = {
+            word.name for block in program.blocks if isinstance(block, HomingBlock) for word in block.words
+        }
         rows = [*zip(axes, machine.axes.values(), strict=True)]
         others = zip(report["other_axes"], machine.other_axes, strict=True)
         rows += [(row, axis) for row, axis in others if axis.gantry_master is not None]  # moved by a master
@@ -127,6 +152,8 @@ def explain_machine(machine: ChannelView, program: Program | None = None, gear: 
                 row["homed"] = homed_by[axis.name]
             elif homed_from_start(axis):
                 row["homed"] = "not needed: absolute position from power-up"
+            elif stopped is not None and axis.name in named:
+                row["homed"] = f"not: the CNC stops the program at {stopped} first"
             else:
                 row["homed"] = "not by this program"
         report["program"] = {

@@ -50,6 +50,15 @@ _WORD = re.compile(rf"(?P<addr>[A-Za-z][A-Za-z_]*)(?P<value>{_NUMBER})|(?P<bare>
 _NOT_IN_NAME = re.compile(r"[^A-Za-z0-9_]")
 _EXTENDED_VALUE = re.compile(rf"=(?P<evalue>{_NUMBER})")
 _BLANKS = " \t\f\v"
+# A block number at the start of a block, with the blanks after it.
+_BLOCK_NUMBER = re.compile(r"[Nn]\+?[0-9]+[ \t\f\v]*")
+_LETTERS = re.compile(r"[A-Z_]*")
+
+
+def _letters(address: str) -> str:
+    """The letters an address starts with: `P` of the extended `P1`, the address itself otherwise."""
+    match = _LETTERS.match(address)
+    return match.group(0) if match else address
 
 
 @dataclass
@@ -186,7 +195,9 @@ class _Reader:
         if body.startswith("/"):
             self.skip(number, indent + 1, text, "an optional block (`/`): whether it runs depends on the CNC")
             return
-        if body.startswith(("#", "$", "%")):
+        # A control command may follow a block number (`N10 #MSG[...]`); it is passed over all the same.
+        numbered = _BLOCK_NUMBER.match(body)
+        if body.startswith(("#", "$", "%")) or (numbered and body[numbered.end() :].startswith(("#", "$"))):
             self.skip(number, indent + 1, text, "a control command or statement: not simulated")
             return
         words, junk = self.words(number, text)
@@ -239,7 +250,8 @@ class _Reader:
         # In a G74 block every other address names an axis (the spindle `S` too); in a move block the
         # spindle speed, tools and the like are not simulated.
         others = [w for w in words if w.address not in ("G", "F", "M")]
-        not_read = [] if 74 in codes else [w for w in others if w.address in NOT_AXES]
+        # `P1=2` (a parameter) and `S1=1000` (the speed of spindle S1) name no axis either.
+        not_read = [] if 74 in codes else [w for w in others if _letters(w.address) in NOT_AXES]
         location = self.at(number, first, len(text) + 1)
         if unreadable:
             if 74 in codes:  # its sequence numbers are still checked, for the report

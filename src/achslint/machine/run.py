@@ -1028,12 +1028,17 @@ class _Runner:
         end = t + duration
         if stop is not None:
             when, hit = stop
+            # Unhomed, no software limit guards the axis; homed, the switch lies inside its software limits.
+            why = (
+                "it is homed, and this limit switch lies inside its software limits"
+                if axes[hit].homed
+                else "it is not homed, so no software limit stops it first"
+            )
             self._fail(
                 index,
                 block.at,
                 hit,
-                f"{hit} reaches its limit switch during {text} (it is not homed, so no software limit "
-                "stops it first)",
+                f"{hit} reaches its limit switch during {text} ({why})",
                 when,
                 "limit switch reached during a move",
             )
