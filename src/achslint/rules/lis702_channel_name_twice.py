@@ -4,7 +4,8 @@ What
 A channel list that gives one name to two of its path axes
 (`gruppe[0].achse[j].bezeichnung`, P-CHAN-00006) or to two of its spindles
 (`spindel[i].bezeichnung`, P-CHAN-00007). Names are compared without regard
-to case, as NC programs write them.
+to case, as NC programs write them. A slot without a logical axis number (0
+or none written) is no axis of the channel, so its name is not compared.
 
 Why
 ---
@@ -77,6 +78,8 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     for slot in slots(written(ctx.settings)):
         if slot.name is None or not str(slot.name.value).strip():
             continue
+        if slot.logical_number is None:
+            continue  # an empty slot (log_achs_nr 0 or none): no axis, as LIS508, LIS701 and LIS703 count
         earlier = first.setdefault((slot.spindle, str(slot.name.value).upper()), slot)
         if earlier is slot or earlier.name is None:
             continue
