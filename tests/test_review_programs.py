@@ -103,3 +103,15 @@ def test_a_homed_axis_at_its_limit_switch_is_not_called_unhomed(portal):
     assert run.axes["Z"].homed
     assert run.failure is not None and run.failure.axis == "Z"
     assert "not homed" not in run.failure.reason
+
+
+# -- a parameter list given as the program -----------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["achsmds1.lis", "hochlauf.lis", "sda_mds1.lis"])
+def test_a_parameter_list_given_as_the_program_is_one_finding(portal, name):
+    # Every line of a list would be an LIS601 of its own (hundreds); one finding says what the file is.
+    data = (PORTAL.parent / name).read_bytes()
+    found = check_program(read_program(data, "p.nc"), portal)
+    assert [(d.line, d.code) for d in found] == [(1, "LIS601")]
+    assert "parameter list" in found[0].message

@@ -393,9 +393,30 @@ def read_program(data: bytes, name: str) -> Program:
         )
         return reader.program
     lines = split_lines(text)
+    if _is_parameter_list(lines):
+        reader.problem(
+            1,
+            1,
+            None,
+            "this is a parameter list (`name value` lines closed by `Ende`), not an NC program: give the "
+            "homing program (rfp.nc) here, and the start-up list as the machine",
+        )
+        return reader.program
     for number, line in enumerate(lines, 1):
         reader.line(number, line)
     return reader.program
+
+
+# A parameter-list line: a name with a `.` or an index (`kenngr.achs_typ`, `achs_mds[0]`), blanks, a value.
+_LIST_ENTRY = re.compile(r"[ \t]*[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\]|\.[A-Za-z_][A-Za-z0-9_]*)+[ \t]+\S")
+
+
+def _is_parameter_list(lines: list[str]) -> bool:
+    """Whether the text is a parameter list (an axis, channel or start-up list) rather than an NC program: a
+    line `Ende` ends it, and it has entries. Neither is an NC block (`Ende` has no number after its letters)."""
+    if not any(line.strip() == "Ende" for line in lines):
+        return False
+    return any(_LIST_ENTRY.match(line) for line in lines)
 
 
 def program_text(data: bytes) -> str | None:

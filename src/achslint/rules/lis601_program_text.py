@@ -4,8 +4,9 @@ What
 A homing program whose text the CNC cannot run as written: a comment opened
 with `(` and not closed on its line, `G74` without an axis, a homing order that
 is not a whole number from 1 up (`X0`, `Y-1`, `Z1.5`, `A99999`), an address
-without a number, a `G01` with no feed rate programmed before it, or a file that
-is not text at all.
+without a number, a `G01` with no feed rate programmed before it, a file that
+is not text at all, or a parameter list (an axis or start-up list) given in
+place of the program (one finding for the whole file).
 
 Why
 ---
