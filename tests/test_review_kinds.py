@@ -3,6 +3,8 @@ that gave a finding the CNC has no reason for (or missed one), with the reason i
 
 from __future__ import annotations
 
+import pytest
+
 from achslint.linting.linter import FileSettings, lint_file
 
 
@@ -28,3 +30,35 @@ def test_an_empty_slot_shares_no_name_with_an_axis() -> None:
         "achs_anzahl 2", "achs_anzahl 3"
     )
     assert codes(clash, "channel", ("LIS702",)) == [("LIS702", 6)]
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="params-chan.tsv types P-CHAN-00145 BOOLEAN while its own range text documents a value 2 (MCS "
+    "display for multistep transformations); the kind catalogues have no override table "
+    "(tools/build_kinds.py would need one, as tools/catalogue_overrides.toml is for the axis catalogue)",
+)
+def test_kin_trafo_display_2_is_a_documented_value() -> None:
+    # "0: MCS display function inactive, 1: active, 2: active (only for multistep transformation)"
+    assert codes("kin_trafo_display 2\n", "channel", ("LIS201", "LIS202")) == []
+
+
+AXES = "".join(
+    f"gruppe[0].achse[{i}].bezeichnung {name}\ngruppe[0].achse[{i}].log_achs_nr {i + 1}\n"
+    for i, name in enumerate("XYZ")
+)
+
+
+def pair(group: int, index: int, master: int, slave: int) -> str:
+    head = f"synchro_data.koppel_gruppe[{group}].paar[{index}]"
+    return f"{head}.log_achs_nr_master {master}\n{head}.log_achs_nr_slave {slave}\n"
+
+
+def test_coupling_groups_are_separate_coupling_specifications() -> None:
+    # koppel_gruppe[i] is one coupling specification, switched on as a whole; two groups may couple one
+    # slave to different masters (or the other way round) without the list contradicting itself
+    text = AXES + pair(0, 0, 1, 2) + pair(1, 0, 3, 2) + pair(2, 0, 2, 1)
+    assert codes(text, "channel", ("LIS706",)) == []
+    # within one group the pairs still have to hold together
+    assert codes(AXES + pair(0, 0, 1, 2) + pair(0, 1, 3, 2), "channel", ("LIS706",)) == [("LIS706", 10)]
+    assert codes(AXES + pair(1, 0, 1, 2) + pair(1, 1, 2, 1), "channel", ("LIS706",)) == [("LIS706", 10)]

@@ -6,8 +6,10 @@ master `log_achs_nr_master` P-CHAN-00037, slave `log_achs_nr_slave`
 P-CHAN-00038, kind `mode` P-CHAN-00061) that cannot all hold:
 
 * a pair couples an axis to itself;
-* a slave that an earlier pair already couples to another master;
-* pairs that close a circle (A leads B, B leads A; or longer);
+* a slave that an earlier pair of the same coupling group already couples to
+  another master;
+* pairs of one coupling group that close a circle (A leads B, B leads A; or
+  longer);
 * a pair whose `mode` says path axes (0) or spindles (1) while the channel
   list defines its master or slave as the other kind.
 
@@ -16,7 +18,9 @@ Why
 A coupled pair makes its slave follow its master in synchronous operation.
 An axis follows one master, and a master that in the end follows its own
 slave has no axis leading the group, so in each of the first three cases at
-least one pair is not what the machine does. `mode` tells the CNC whether the
+least one pair is not what the machine does. Each coupling group
+`koppel_gruppe[g]` is a coupling specification of its own, so two groups may
+couple one axis to different masters. `mode` tells the CNC whether the
 pair joins path axes of the axis group or spindles of the channel
 (P-CHAN-00061); a pair of the other kind of slot joins axes the mode does not
 describe. Which pair is meant only the machine builder knows, and the CNC's
@@ -87,6 +91,7 @@ _PAIRS = "synchro_data.koppel_gruppe[i].paar[i]."
 @dataclass(frozen=True)
 class _Pair:
     slot: str  # synchro_data.koppel_gruppe[0].paar[1]
+    group: int  # the coupling group (koppel_gruppe[g]) the pair belongs to
     master: int
     slave: int
     master_at: Setting
@@ -103,14 +108,17 @@ def _pairs(ctx: Context) -> list[_Pair]:
         if master_at is None or slave_at is None or not master or not slave:
             continue
         slot = "synchro_data.koppel_gruppe[{}].paar[{}]".format(*indices)
-        found.append(_Pair(slot, master, slave, master_at, slave_at, members.get("mode")))
+        found.append(_Pair(slot, indices[0], master, slave, master_at, slave_at, members.get("mode")))
     return found
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     pairs = _pairs(ctx)
-    master_of: dict[int, _Pair] = {}
+    # each coupling group is a coupling specification of its own (switched on as a whole): the masters, and
+    # so the circles, are compared within a group
+    masters: dict[int, dict[int, _Pair]] = {}
     for pair in pairs:
+        master_of = masters.setdefault(pair.group, {})
         if pair.master == pair.slave:
             yield _report(
                 ctx,
