@@ -3,8 +3,6 @@ that gave a finding the CNC has no reason for (or missed one), with the reason i
 
 from __future__ import annotations
 
-import pytest
-
 from achslint.linting.linter import FileSettings, lint_file
 
 
@@ -32,15 +30,13 @@ def test_an_empty_slot_shares_no_name_with_an_axis() -> None:
     assert codes(clash, "channel", ("LIS702",)) == [("LIS702", 6)]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="params-chan.tsv types P-CHAN-00145 BOOLEAN while its own range text documents a value 2 (MCS "
-    "display for multistep transformations); the kind catalogues have no override table "
-    "(tools/build_kinds.py would need one, as tools/catalogue_overrides.toml is for the axis catalogue)",
-)
 def test_kin_trafo_display_2_is_a_documented_value() -> None:
-    # "0: MCS display function inactive, 1: active, 2: active (only for multistep transformation)"
+    """params-chan.tsv types P-CHAN-00145 BOOLEAN, while its own range text documents a value 2 (display
+    active for multistep transformations only): LIS201 called it an error and offered to make it 1. The kind
+    catalogue's override (tools/build_kinds.py OVERRIDES) reads it as the text documents it: 0, 1, 2."""
     assert codes("kin_trafo_display 2\n", "channel", ("LIS201", "LIS202")) == []
+    assert codes("kin_trafo_display TRUE\n", "channel", ("LIS201", "LIS202", "LIS203")) == []
+    assert codes("kin_trafo_display 3\n", "channel", ("LIS201", "LIS202")) == [("LIS202", 1)]
 
 
 AXES = "".join(

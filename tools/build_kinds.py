@@ -159,6 +159,15 @@ def _plain_range(text: str) -> str:
     return _INDEXED_NAME.sub(r"\1", text)
 
 
+# Entries a table contradicts itself on, as its own text documents them (a documented value must not be
+# called an error). Parameter id -> the fields that replace those the row gives.
+OVERRIDES: dict[str, dict[str, object]] = {
+    # P-CHAN-00145 kin_trafo_display is typed BOOLEAN, yet its range text documents 2 as well: "2: MCS
+    # display function active (only for multistep transformation)"
+    "P-CHAN-00145": {"type": "UNS16", "min": 0, "max": 2, "range_text": "0 ... 2"},
+}
+
+
 def entry_of(row: dict[str, str], table: Path, line: int) -> dict[str, object]:
     """One catalogue entry (keys in the order of the axis catalogue's entries)."""
     pid, ptype = row["id"].strip(), row["type"].strip()
@@ -207,6 +216,7 @@ def entry_of(row: dict[str, str], table: Path, line: int) -> dict[str, object]:
     title = row["title"].strip()
     if title:
         entry["title"] = title
+    entry.update(OVERRIDES.get(pid, {}))
     return entry
 
 

@@ -121,7 +121,9 @@ def leaf_type(parameter: Parameter, flags: bool = False) -> tuple[str, dict[str,
         constraints = {key: bound for key, bound in (("ge", low), ("le", high)) if bound is not None}
         if kind == REAL:
             return "float", constraints
-        return ("Union[int, str]" if parameter.symbols else "int"), constraints
+        if parameter.symbols:  # a number or one of its symbols: pydantic cannot bound a symbol (LIS202 does)
+            return "Union[int, str]", {}
+        return "int", constraints
     if parameter.max_length:
         return "str", {"max_length": max(parameter.max_length, len(str(parameter.default or "")))}
     return "str", {}

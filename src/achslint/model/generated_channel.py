@@ -3,7 +3,7 @@ tools/gen_model.py from the chan catalogue: do not edit; run `python tools/build
 after changing the catalogue."""
 
 # ruff: noqa: E501
-from typing import ClassVar, List, Optional
+from typing import ClassVar, List, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -830,7 +830,7 @@ class ChannelParameters(ListBase):
     simu_output_wcs: bool = Field(default=False, description='P-CHAN-00121: Display format during machining simulation')
     hsc: Hsc = Field(default_factory=Hsc)
     suppress_cs_tracking_offset: bool = Field(default=False, description='P-CHAN-00144: Suppress a rotary CS offset in tracking mode')
-    kin_trafo_display: bool = Field(default=False, description='P-CHAN-00145: Activation of TCP display data')
+    kin_trafo_display: Union[int, str] = Field(default=0, description='P-CHAN-00145: Activation of TCP display data')
     parameter_change_during_execution: bool = Field(default=False, description='P-CHAN-00146: Adopt configuration lists when NC program is active')
     soft_limit_warning_axes: int = Field(default=0, description='P-CHAN-00147: Error reaction for software limit switch monitoring on command value side', ge=0, le=4294967295)
     multi_axes_in_block: bool = Field(default=False, description='P-CHAN-00148: Exclusivity of axis programming')
