@@ -132,13 +132,10 @@ def test_explain_text_writes_an_extended_axis_name_with_its_equals_sign():
     assert "Y2=5" in _block_words(block)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="homing/scenario.py `complete` assumes limit switches 10 beyond the software limits in the actual "
-    "frame, but the software limits hold in the homed frame: Z (pos_refpkt 395 mm, cam at +100 mm actual) "
-    "then has a switch at -110 mm actual, inside its limits, so `G01 Z0` after homing hits it",
-)
 def test_the_manuals_example_move_after_homing_runs_on_the_assumed_geometry(portal):
+    """Assumed limit switches lie beyond the software limits of the homed frame once an axis is homed: they
+    were placed 10 beyond them in actual values, so the portal's Z (reference position 395 mm) had a switch
+    at -110 mm actual, inside its software limits, and the manual's `G01 Z0` after homing hit it."""
     text = "N10 G74 Z1\nN15 G01 G90 Z200 F500\nN20 G74 X1 Y1\nN30 G01 X0 Y20 Z0 F1000\nN40 M30\n"
     run = run_machine(portal, read_program(text.encode(), "p.nc"), parse_machine_scenario({}, "scenario"))
     assert run.failure is None

@@ -183,6 +183,11 @@ def parse_input(data: object, where: str = "scenario") -> ScenarioInput:
         raise ScenarioError(f"{where}: " + "; ".join(problems).replace("\n", " ")) from None
 
 
+# Assumed limit switches lie this far beyond the software limits (mm or °), in the frame the software limits
+# hold in: the homed one. Until the homing gives that frame, the actual values are taken for it.
+SWITCH_MARGIN = 10.0
+
+
 def complete(
     given: ScenarioInput | None,
     *,
@@ -259,7 +264,7 @@ def complete(
     if modulo or "limit_switches" not in needs:
         limits = getattr(given, "limit_switches", None)  # none unless the scenario names them
     else:
-        limits = pick("limit_switches", (low - 10.0, high + 10.0))
+        limits = pick("limit_switches", (low - SWITCH_MARGIN, high + SWITCH_MARGIN))
     stop = (
         pick("fixed_stop", start + direction * 100.0)
         if "fixed_stop" in needs

@@ -50,7 +50,7 @@ from typing import Any
 from ..dryrun import DryRunRefused, finish, refusal
 from ..homing import VELOCITY, HomingStrategy, classify
 from ..homing.motion import Segment, Simulator, Trace, trapezoid
-from ..homing.scenario import Scenario, ScenarioError
+from ..homing.scenario import SWITCH_MARGIN, Scenario, ScenarioError
 from ..rules.lis507_gantry_master_chain import CODE as CHAIN_CODE
 from ..rules.lis507_gantry_master_chain import CouplingFault, circle_words, coupling_faults
 from .model import (
@@ -597,6 +597,20 @@ class _Runner:
         )
         return result
 
+    def _switches(self, name: str) -> tuple[float, float] | None:
+        """The limit switches of an axis in actual values. Switches the scenario names stay where it puts them;
+        assumed ones lie SWITCH_MARGIN beyond the software limits of the frame those hold in: the homed one once
+        the axis is homed (its offset moves them), the actual values before. (Placed in actual values only, the
+        switch of an axis whose reference point lies far from 0 fell inside its software limits after homing,
+        and the manual's own program hit it moving to Z0.)"""
+        prepared = self.plan.axes[name]
+        switches = prepared.scenario.limit_switches
+        offset = self.result.axes[name].offset
+        if switches is None or offset is None or "limit_switches" not in prepared.scenario.assumed:
+            return switches
+        low, high = prepared.soft_limits
+        return (low - SWITCH_MARGIN - offset, high + SWITCH_MARGIN - offset)
+
     def _fail(
         self,
         index: int,
@@ -991,7 +1005,7 @@ class _Runner:
         # A hardware limit switch (scenario) on the way stops the move: all axes brake.
         stop: tuple[float, str] | None = None
         for n, d in deltas.items():
-            switches = plan.axes[n].scenario.limit_switches
+            switches = self._switches(n)
             if switches is None or plan.axes[n].modulo:
                 continue
             room = (switches[1] - self.x[n]) if d > 0 else (self.x[n] - switches[0])
