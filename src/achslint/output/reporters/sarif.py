@@ -43,12 +43,13 @@ def _region(line: int, column: int, end_line: int, end_column: int) -> JsonObjec
     }
 
 
-def _fingerprint(d: Diagnostic) -> str:
-    """Stable across runs and line shifts: the rule, the file and what the finding is about."""
+def _fingerprint(d: Diagnostic, occurrence: int = 1) -> str:
+    """Stable across runs and line shifts: the rule, the file and what the finding is about, and which
+    occurrence of that combination in the file it is (code scanning merges results that share a
+    fingerprint into one alert). The first occurrence keeps the key it always had."""
     subject = d.parameter or d.message
-    return hashlib.sha256(f"{d.code}\0{d.path}\0{subject}".encode("utf-8", "backslashreplace")).hexdigest()[
-        :32
-    ]
+    key = f"{d.code}\0{d.path}\0{subject}" + (f"\0{occurrence}" if occurrence > 1 else "")
+    return hashlib.sha256(key.encode("utf-8", "backslashreplace")).hexdigest()[:32]
 
 
 def _rules(docs_url: str | None, chosen: Mapping[str, Rule] | None) -> list[JsonObject]:
@@ -80,8 +81,11 @@ def document(
     described = _rules(docs_url, rules)
     index = {rule["id"]: position for position, rule in enumerate(described)}
     sarif_results: list[JsonObject] = []
+    seen: dict[tuple[str, str, str], int] = {}
     for result in results:
         for d in result.diagnostics:
+            same = (d.code, d.path, d.parameter or d.message)
+            seen[same] = seen.get(same, 0) + 1
             entry: JsonObject = {
                 "ruleId": d.code,
                 "ruleIndex": index.get(d.code, -1),
@@ -100,7 +104,7 @@ def document(
                         ),
                     }
                 ],
-                "partialFingerprints": {"achslint/v1": _fingerprint(d)},
+                "partialFingerprints": {"achslint/v1": _fingerprint(d, seen[same])},
             }
             if d.related:
                 entry["relatedLocations"] = [
@@ -134,6 +138,8 @@ def document(
                         "rules": described,
                     }
                 },
+                # Our columns count characters; without this readers would take UTF-16 code units.
+                "columnKind": "unicodeCodePoints",
                 "invocations": [invocation],
                 "results": sarif_results,
             }

@@ -1,0 +1,65 @@
+"""Review of what achslint prints and returns: formats that disagree with each other or with their
+consumers, and library calls that accept what the command line refuses."""
+
+from __future__ import annotations
+
+import json
+
+from .conftest import FIXTURES
+
+LIS204_BAD = FIXTURES / "rules" / "LIS204" / "bad.lis"
+AXIS = FIXTURES / "lists" / "achsmds1.lis"
+
+
+def sarif_results(cli, *args: str) -> list[dict]:
+    result = cli("lint", *args, "--format", "sarif", "--exit-zero")
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)["runs"][0]["results"]
+
+
+def test_sarif_fingerprints_tell_repeated_findings_of_one_parameter_apart(cli, tmp_path):
+    """Four LIS204 (and three LIS005) findings on `kenngr.achs_mode` in one file had one fingerprint each:
+    code scanning takes results with the same partial fingerprint for one alert and shows only one."""
+    results = sarif_results(cli, str(LIS204_BAD))
+    prints = [r["partialFingerprints"]["achslint/v1"] for r in results]
+    assert len(results) == 7
+    assert len(set(prints)) == len(prints)
+    # Still stable when lines move: the same file with a comment line on top has the same fingerprints.
+    moved = tmp_path / "bad.lis"
+    moved.write_bytes(b"# a new first line\n" + LIS204_BAD.read_bytes())
+    again = sarif_results(cli, str(moved))
+    assert [r["partialFingerprints"]["achslint/v1"] for r in again] == [
+        r["partialFingerprints"]["achslint/v1"]
+        for r in sarif_results(cli, str(tmp_path / "bad.lis"))  # same path: fingerprints include it
+    ]
+    assert [r["locations"][0]["physicalLocation"]["region"]["startLine"] for r in again] == [
+        r["locations"][0]["physicalLocation"]["region"]["startLine"] + 1 for r in results
+    ]
+
+
+def test_sarif_first_fingerprint_of_a_kind_is_unchanged(cli, tmp_path):
+    """Telling repeats apart must not move the fingerprint of a finding that occurs once (existing alerts)."""
+    import hashlib
+
+    results = sarif_results(cli, str(LIS204_BAD))
+    first = results[0]
+    assert first["ruleId"] == "LIS204"
+    key = f"LIS204\0{LIS204_BAD}\0kenngr.achs_mode".encode()
+    assert first["partialFingerprints"]["achslint/v1"] == hashlib.sha256(key).hexdigest()[:32]
+
+
+def test_sarif_says_its_columns_count_code_points(cli, tmp_path):
+    """Columns count characters (code points); SARIF readers assume UTF-16 code units unless the run says
+    otherwise, which puts every column after a character beyond the BMP one too far."""
+    listed = tmp_path / "achsmds1.lis"
+    listed.write_bytes(
+        'kopf.achs_nr 1\nkopf.log_achs_name "X\U0001f600" trailing\nkenngr.achs_mode 0x1\n'
+        "kenngr.achs_typ 1\nEnde\n".encode()
+    )
+    document = json.loads(cli("lint", str(listed), "--format", "sarif").stdout)
+    run = document["runs"][0]
+    assert run["columnKind"] == "unicodeCodePoints"
+    concise = cli("lint", str(listed), "--format", "concise").stdout.decode()
+    column = int(concise.split(":")[2])
+    region = run["results"][0]["locations"][0]["physicalLocation"]["region"]
+    assert region["startColumn"] == column == 25
