@@ -4,6 +4,7 @@ consumers, and library calls that accept what the command line refuses."""
 from __future__ import annotations
 
 import json
+import xml.etree.ElementTree as ET
 
 from .conftest import FIXTURES
 
@@ -63,3 +64,17 @@ def test_sarif_says_its_columns_count_code_points(cli, tmp_path):
     column = int(concise.split(":")[2])
     region = run["results"][0]["locations"][0]["physicalLocation"]["region"]
     assert region["startColumn"] == column == 25
+
+
+def test_junit_totals_count_an_unreadable_file_as_an_error_not_a_failure(cli, tmp_path):
+    """The suite of a file that could not be read says errors=1 failures=0; the totals said failures=1 and
+    had no errors at all, so the report disagreed with itself."""
+    (tmp_path / "achsmds1.lis").write_bytes("kopf.achs_nr 1\nEnde\n".encode("utf-16"))
+    (tmp_path / "achsmds2.lis").write_bytes((FIXTURES / "lists" / "achsmds2.lis").read_bytes())
+    result = cli("lint", str(tmp_path), "--format", "junit")
+    assert result.returncode == 2
+    root = ET.fromstring(result.stdout.decode().split("\n", 1)[1])
+    suites = root.findall("testsuite")
+    for attribute in ("tests", "failures", "errors"):
+        assert int(root.get(attribute)) == sum(int(s.get(attribute)) for s in suites), attribute
+    assert root.get("errors") == "1" and root.get("failures") == "0"

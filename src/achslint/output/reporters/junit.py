@@ -20,7 +20,7 @@ if TYPE_CHECKING:
 
 def document(results: Sequence[LintResult]) -> ET.Element:
     root = ET.Element("testsuites", name="achslint")
-    total = failures = 0
+    total = failures = errors = 0
     for result in results:
         name = printable(result.name)  # XML 1.0 has no way to hold most control characters
         suite = ET.SubElement(root, "testsuite", name=name)
@@ -55,9 +55,13 @@ def document(results: Sequence[LintResult]) -> ET.Element:
         suite.set("failures", str(failed if not result.error else 0))
         suite.set("errors", "1" if result.error else "0")
         total += cases
-        failures += failed
+        if result.error:
+            errors += 1  # the suite counts it as an error, so the totals do too (not as a failure)
+        else:
+            failures += failed
     root.set("tests", str(total))
     root.set("failures", str(failures))
+    root.set("errors", str(errors))
     return root
 
 
