@@ -6,6 +6,10 @@ from __future__ import annotations
 import json
 import xml.etree.ElementTree as ET
 
+import pytest
+
+import achslint
+
 from .conftest import FIXTURES
 
 LIS204_BAD = FIXTURES / "rules" / "LIS204" / "bad.lis"
@@ -78,3 +82,31 @@ def test_junit_totals_count_an_unreadable_file_as_an_error_not_a_failure(cli, tm
     for attribute in ("tests", "failures", "errors"):
         assert int(root.get(attribute)) == sum(int(s.get(attribute)) for s in suites), attribute
     assert root.get("errors") == "1" and root.get("failures") == "0"
+
+
+@pytest.mark.parametrize("gear", [6, 9, -1])
+def test_explain_and_dry_run_refuse_a_gear_stage_that_does_not_exist(gear):
+    """`--gear` takes 0..5 on the command line; the library explained `getriebe[9]` from defaults as if it
+    existed, and gear -1 ended in a KeyError about a catalogue parameter."""
+    with pytest.raises(ValueError, match=r"gear.*0 to 5"):
+        achslint.explain(AXIS, gear=gear)
+    with pytest.raises(ValueError, match=r"gear.*0 to 5"):
+        achslint.dry_run(AXIS, gear=gear)
+
+
+def test_explain_and_dry_run_take_every_gear_stage():
+    for gear in range(6):
+        assert achslint.explain(AXIS, gear=gear)["gear"] == gear
+        assert achslint.dry_run(AXIS, gear=gear).trace.outcome == "homed"
+
+
+def test_lint_paths_of_a_folder_without_lists_is_an_error_as_on_the_command_line(cli, tmp_path):
+    """`achslint lint EMPTY` exits 2 (a CI job pointed at the wrong folder must not pass); the library
+    returned an empty list, which reads as `no findings`."""
+    (tmp_path / "notes.txt").write_text("nothing here\n")
+    assert cli("lint", str(tmp_path)).returncode == 2
+    with pytest.raises(achslint.LintFailed, match="no axis list found"):
+        achslint.lint_paths([tmp_path])
+    with pytest.raises(achslint.LintFailed, match="no axis list found"):
+        achslint.lint(tmp_path)
+    assert achslint.lint_paths([tmp_path], allow_empty=True) == []

@@ -64,8 +64,8 @@ def _as_bytes(source: Source) -> tuple[bytes, str]:
 
 
 class LintFailed(Exception):
-    """`lint_paths` could not lint some of the lists it found (unreadable, refused): `errors` says which and
-    why, one message each, as `achslint lint` prints them."""
+    """`lint_paths` could not lint some of the lists it found (unreadable, refused), or found none at all:
+    `errors` says which and why, one message each, as `achslint lint` prints them."""
 
     def __init__(self, errors: list[str]) -> None:
         super().__init__("; ".join(errors))
@@ -91,6 +91,19 @@ def _codes(values: str | Iterable[str] | None, argument: str) -> list[str]:
         raise ValueError(f"{argument}: {exc}") from None
 
 
+GEAR_STAGES = range(6)  # getriebe[0] .. getriebe[5], as the command line's --gear
+
+
+def _gear(gear: int) -> int:
+    """The gear stage asked for, or a ValueError: a stage the axis does not have would be explained (or
+    simulated) from defaults as if it existed."""
+    if isinstance(gear, bool) or not isinstance(gear, int):
+        raise TypeError(f"gear must be an int (a gear stage 0 to 5), not {type(gear).__name__}")
+    if gear not in GEAR_STAGES:
+        raise ValueError(f"gear {gear} does not exist: an axis has the gear stages 0 to 5 (getriebe[0..5])")
+    return gear
+
+
 def lint(
     source: Source,
     *,
@@ -101,7 +114,8 @@ def lint(
     """Diagnostics for one list (a path or bytes), with the built-in defaults and no config files.
 
     A folder or a start-up list (told by its name or content) is a machine: linted as `lint_paths` does,
-    with the configuration files found beside it, which is what `achslint lint PATH` reports."""
+    with the configuration files found beside it, which is what `achslint lint PATH` reports (a folder
+    without any list raises `LintFailed`, as the command exits 2)."""
     if not isinstance(source, (bytes, bytearray)) and not (isinstance(source, str) and "\n" in source):
         path = Path(source)
         if path.is_dir() or (path.is_file() and is_startup(path)):
@@ -117,12 +131,15 @@ def lint_paths(
     select: str | Iterable[str] | None = None,
     ignore: str | Iterable[str] | None = None,
     config: str | os.PathLike[str] | None = None,
+    allow_empty: bool = False,
 ) -> list[Diagnostic]:
     """What `achslint lint PATH...` reports: files, folders (searched) and start-up lists (their machines),
     with the configuration files found beside them (or `config` instead), in the command line's order.
 
     Raises `FileNotFoundError` for a path that does not exist, `ConfigError` for a bad configuration and
-    `LintFailed` when a list that was found cannot be read."""
+    `LintFailed` when a list that was found cannot be read, or when the paths hold no list at all (an
+    empty result would read as "no findings"; `allow_empty=True` returns `[]` instead, as
+    `--allow-empty`)."""
     if isinstance(paths, (str, bytes, os.PathLike)):  # a string would be taken letter by letter
         raise TypeError(
             f"lint_paths() takes a list of paths, not one {type(paths).__name__}: lint_paths([path])"
@@ -144,6 +161,17 @@ def lint_paths(
     errors = list(dict.fromkeys([*outcome.errors, *(r.error for r in outcome.results if r.error)]))
     if errors:
         raise LintFailed(errors)
+    if names and not outcome.results and not outcome.skipped and not allow_empty:
+        excluded = (
+            f" ({', '.join(outcome.excluded)} excluded by the configuration)" if outcome.excluded else ""
+        )
+        raise LintFailed(
+            [
+                f"no axis list found in {', '.join(names)}{excluded}: folders are searched for the "
+                "`include` patterns (achsmds*.lis by default) and for XML exports holding an axis list; "
+                "pass allow_empty=True when an empty result is fine"
+            ]
+        )
     return [d for result in outcome.results for d in result.diagnostics]
 
 
@@ -222,12 +250,16 @@ def dumps(model: ListBase) -> str:
 
 def explain(source: Source, *, gear: int = 0, defaults: Source | None = None) -> ListReport:
     """What `achslint explain FILE --format json` prints: strategy, phases, corrections, homing parameters.
-    A list of another kind (a channel or tool list) raises `UnreadableInput`, as the command refuses it."""
+    A list of another kind (a channel or tool list) raises `UnreadableInput`, as the command refuses it;
+    a gear stage outside 0..5 raises `ValueError`, as `--gear` does."""
     from .explanation import explain_list
 
     data, name = _as_bytes(source)
     return explain_list(
-        axis_list_only(data, name), name, gear, _as_bytes(defaults)[0] if defaults is not None else None
+        axis_list_only(data, name),
+        name,
+        _gear(gear),
+        _as_bytes(defaults)[0] if defaults is not None else None,
     )
 
 
@@ -237,6 +269,7 @@ def dry_run(source: Source, scenario: dict[str, Any] | None = None, *, gear: int
     from .dryrun import dry_run as simulate
     from .homing.scenario import parse_input
 
+    gear = _gear(gear)
     data, name = _as_bytes(source)
     return simulate(
         axis_list_only(data, name), name, parse_input(dict(scenario or {}), "scenario"), gear=gear
