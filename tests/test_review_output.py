@@ -110,3 +110,14 @@ def test_lint_paths_of_a_folder_without_lists_is_an_error_as_on_the_command_line
     with pytest.raises(achslint.LintFailed, match="no axis list found"):
         achslint.lint(tmp_path)
     assert achslint.lint_paths([tmp_path], allow_empty=True) == []
+
+
+def test_lint_of_an_nc_program_is_refused_as_on_the_command_line(cli):
+    """`achslint lint rfp.nc` exits 2 (a program is checked against a machine: --machine); the library
+    linted the program as an axis list: LIS001 for `%RFP.NC`, LIS101 for every block number."""
+    program = FIXTURES / "rules" / "LIS601" / "bad.nc"
+    assert cli("lint", str(program)).returncode == 2
+    with pytest.raises(achslint.LintFailed, match="NC program"):
+        achslint.lint(program)
+    with pytest.raises(achslint.LintFailed, match="NC program"):
+        achslint.lint(str(program))

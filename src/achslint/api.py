@@ -17,7 +17,7 @@ from .core.diagnostics import Diagnostic, Severity
 from .core.files import read_list
 from .fmt import FormatOutcome, FormatRequest, run_format
 from .homing.scenario import ScenarioError
-from .linting.config import ConfigError, Overrides, forget_cached, parse_codes
+from .linting.config import PROGRAM_SUFFIXES, ConfigError, Overrides, forget_cached, parse_codes
 from .linting.discovery import is_startup
 from .linting.linter import FileSettings, axis_list_only, findings, lint_file
 from .linting.run import LintOutcome, LintRequest, LintRun, OutputIsInput, run_lint
@@ -115,10 +115,11 @@ def lint(
 
     A folder or a start-up list (told by its name or content) is a machine: linted as `lint_paths` does,
     with the configuration files found beside it, which is what `achslint lint PATH` reports (a folder
-    without any list raises `LintFailed`, as the command exits 2)."""
+    without any list, or an NC program, raises `LintFailed`, as the command exits 2)."""
     if not isinstance(source, (bytes, bytearray)) and not (isinstance(source, str) and "\n" in source):
         path = Path(source)
-        if path.is_dir() or (path.is_file() and is_startup(path)):
+        program = path.name.lower().endswith(PROGRAM_SUFFIXES)  # refused there, as the command refuses it
+        if path.is_dir() or (path.is_file() and (program or is_startup(path))):
             return lint_paths([path], select=select, ignore=ignore)
     data, default_name = _as_bytes(source)
     settings = FileSettings.of(_codes(select, "select") or None, _codes(ignore, "ignore"))
