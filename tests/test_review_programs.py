@@ -120,16 +120,14 @@ def test_a_parameter_list_given_as_the_program_is_one_finding(portal, name):
 # -- outside this review's files ----------------------------------------------------------------------
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="output/explain.py `_block_words` writes a move target as name+value: `Y2=5` prints as `Y25` "
-    "(axis Y to 25); it should write `Y2=5` as machine/run.py `block_text` does",
-)
 def test_explain_text_writes_an_extended_axis_name_with_its_equals_sign():
     from achslint.output.explain import _block_words
 
+    """`Y2=5` printed as `Y25` (axis Y to 25), and large values lost digits (`:g`)."""
     block = {"kind": "move", "rapid": False, "feed_mm_min": 100.0, "absolute": True, "targets": {"Y2": 5.0}}
-    assert "Y2=5" in _block_words(block)
+    assert _block_words(block) == "G01 F100 G90 Y2=5"
+    block["targets"] = {"X": 1234567.5}
+    assert _block_words(block) == "G01 F100 G90 X1234567.5"
 
 
 def test_the_manuals_example_move_after_homing_runs_on_the_assumed_geometry(portal):

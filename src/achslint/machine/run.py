@@ -404,21 +404,21 @@ def block_text(block: HomingBlock | MoveBlock | SkippedBlock) -> str:
         return block.text
     number = f"N{block.number} " if block.number is not None else ""
     if isinstance(block, HomingBlock):
-        return f"{number}G74 " + " ".join(_address(w.name) + str(int(w.value)) for w in block.words)
+        return f"{number}G74 " + " ".join(address(w.name) + str(int(w.value)) for w in block.words)
     words = ["G00" if block.rapid else "G01", "G90" if block.absolute else "G91"]
-    words += [_address(w.name) + _programmed(w.value) for w in block.targets]
+    words += [address(w.name) + programmed(w.value) for w in block.targets]
     if not block.rapid and block.feed_mm_min is not None:
-        words.append(f"F{_programmed(block.feed_mm_min)}")
+        words.append(f"F{programmed(block.feed_mm_min)}")
     return number + " ".join(words)
 
 
-def _address(name: str) -> str:
+def address(name: str) -> str:
     """An axis address as the program must write it: an extended name (with digits, `A1`) takes `=` before
     its value (`A1=2`), so that the text reads back as the block it came from (not `A12`)."""
     return f"{name}=" if any(character.isdigit() for character in name) else name
 
 
-def _programmed(value: float) -> str:
+def programmed(value: float) -> str:
     """A number of the program as its shortest exact text, without exponent: `F0.00001` stays so (four
     decimals would show `F0`, a feed the block does not have)."""
     text = format(Decimal(repr(value)), "f")

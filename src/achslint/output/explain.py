@@ -215,10 +215,11 @@ def _block_words(block: dict[str, Any]) -> str:
         steps = "; then ".join(", ".join(group["axes"]) for group in block["groups"]) or "no axis"
         return f"G74 homes {steps}"
     if block["kind"] == "move":
-        targets = " ".join(f"{name}{value:g}" for name, value in block["targets"].items())
-        mode = (
-            "G00" if block["rapid"] else f"G01 F{block['feed_mm_min']:g}" if block["feed_mm_min"] else "G01"
-        )
+        from ..machine.run import address, programmed  # as the program writes them: `Y2=5`, not `Y25`
+
+        targets = " ".join(address(name) + programmed(value) for name, value in block["targets"].items())
+        feed = block["feed_mm_min"]
+        mode = "G00" if block["rapid"] else f"G01 F{programmed(feed)}" if feed else "G01"
         return f"{mode} {'G90' if block['absolute'] else 'G91'} {targets}"
     return f"not simulated — {block['reason']}"
 
