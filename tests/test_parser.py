@@ -145,3 +145,38 @@ def test_grammar_cache_is_not_used_in_a_folder_others_can_write(tmp_path):
     result = _probe(tmp_path)
     assert result.returncode == 0, result.stderr
     assert list(folder.iterdir()) == []
+
+
+def test_the_grammar_without_possessive_repeats_reads_every_line_alike():
+    """Python 3.10 reads the PATH terminal with plain repeats (`_without_possessive`): the same tokens for
+    every fixture line and for paths made to tempt backtracking (indices, members, hyphens, a trailing dot)."""
+    from lark import Lark
+
+    possessive = syntax._grammar_text()
+    plain = syntax._without_possessive(possessive)
+    path = [line for line in possessive.splitlines() if line.startswith("PATH.")]
+    plain_path = [line for line in plain.splitlines() if line.startswith("PATH.")]
+    assert "*+" in path[0] and "*+" not in plain_path[0] and "++" not in plain_path[0]
+    lexers = [
+        Lark(text, parser="lalr", lexer="contextual", maybe_placeholders=False)
+        for text in (possessive, plain)
+    ]
+    lines = {
+        line
+        for path in FIXTURES.glob("**/*.lis")
+        for line in path.read_bytes().decode("latin-1").splitlines()
+    }
+    lines |= {
+        "getriebe" + "[0]" * 50 + ".vb_reflow 1",
+        "a[0]x 1",
+        "a[0]. 1",
+        "a.b-c[12][3].d 1",
+        "a..b 1",
+        "a[ 1",
+        "a[0]] 1",
+        "_x[9].y[0] 2",
+        "x.[0] 1",
+    }
+    for line in sorted(lines):
+        tokens = [[(t.type, str(t)) for t in lexer.lex(line + "\n")] for lexer in lexers]
+        assert tokens[0] == tokens[1], line

@@ -128,9 +128,20 @@ def _grammar_text() -> str:
     here = Path(__file__).resolve().parent
     packaged = here / "grammars" / GRAMMAR_NAME
     if packaged.is_file():  # installed wheel: the grammar ships inside the package
-        return packaged.read_text(encoding="utf-8")
-    # Source checkout / editable install: the grammar lives at the repository root.
-    return (here.parents[2] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
+        text = packaged.read_text(encoding="utf-8")
+    else:  # source checkout / editable install: the grammar lives at the repository root
+        text = (here.parents[2] / "grammars" / GRAMMAR_NAME).read_text(encoding="utf-8")
+    return text if sys.version_info >= (3, 11) else _without_possessive(text)
+
+
+def _without_possessive(grammar: str) -> str:
+    """The grammar for Python 3.10, whose regular expressions have no possessive repeats: the PATH
+    terminal's `*+` / `++` as `*` / `+` (the same text matches: see the grammar)."""
+    lines = grammar.split("\n")
+    for index, line in enumerate(lines):
+        if line.startswith("PATH."):
+            lines[index] = line.replace("*+", "*").replace("++", "+")
+    return "\n".join(lines)
 
 
 # A value alternative reduced: (kind, blanks before the value, value text).
