@@ -155,6 +155,19 @@ def differ(comparison: Comparison) -> bool:
     )
 
 
-def diff_lists(a: bytes, a_name: str, b: bytes, b_name: str, defaults: bytes | None = None) -> DiffReport:
-    comparison = compare_axes(resolve_bytes(a, a_name, defaults), resolve_bytes(b, b_name, defaults))
+def diff_lists(
+    a: bytes,
+    a_name: str,
+    b: bytes,
+    b_name: str,
+    defaults: bytes | None = None,
+    *,
+    a_defaults: bytes | None = None,
+    b_defaults: bytes | None = None,
+) -> DiffReport:
+    """Two axis lists compared. `defaults`: the default list loaded under both; `a_defaults` / `b_defaults`:
+    one loaded under that list alone instead (the report's backup may come from another machine)."""
+    left = resolve_bytes(a, a_name, a_defaults if a_defaults is not None else defaults)
+    right = resolve_bytes(b, b_name, b_defaults if b_defaults is not None else defaults)
+    comparison = compare_axes(left, right)
     return {"version": 1, "a": a_name, "b": b_name, **comparison}

@@ -284,6 +284,18 @@ def _compare(report: CommissioningReport, request: ReportRequest, startup: Path 
         report.machine_diff = diff_machines(*machines)
         return
 
+    # Each list with the default list the CNC loads under it, as the report explains it: the current one's
+    # machine's, and the backup's own machine's when it has one, else (a list copied on its own) the
+    # current one's, the machine it would be loaded into.
     ours = read_axis_list(request.target, str(request.target))
     theirs = read_axis_list(request.against, str(request.against))
-    report.list_diff = diff_lists(theirs, str(request.against), ours, str(request.target))
+    our_defaults, _ = default_underneath(request.target)
+    their_defaults, _ = default_underneath(request.against)
+    report.list_diff = diff_lists(
+        theirs,
+        str(request.against),
+        ours,
+        str(request.target),
+        b_defaults=our_defaults,
+        a_defaults=their_defaults if their_defaults is not None else our_defaults,
+    )
