@@ -13,11 +13,23 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, TypedDict
 
 from .axis.resolved import CorrectionData, plain, resolve_bytes
-from .catalogue import AXIS_TYPE_NAMES, BOOL, INTEGER, REAL, SYMBOL, Parameter, Scalar, Value, catalogue
+from .catalogue import (
+    AXIS_TYPE_CODES,
+    AXIS_TYPE_NAMES,
+    BOOL,
+    INTEGER,
+    REAL,
+    SYMBOL,
+    Parameter,
+    Scalar,
+    Value,
+    catalogue,
+)
 from .catalogue.kinds import AXIS, AXIS_PREFIX, BY_PREFIX, CONTENT_KINDS, Kind
 from .catalogue.units import describe, to_human, unit_label
 from .homing import HOMING_PARAMETERS, classify, effect, homing_parameter_paths, strategies_reading
@@ -137,15 +149,33 @@ def range_words(info: RangeInfo) -> str:
     return ", ".join(words)
 
 
+def outside_range(info: RangeInfo, value: object) -> bool:
+    """Whether a number lies outside a checked range (the card names a default that LIS202 accepts there)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    low, high = info["min"], info["max"]
+    below = low is not None and (value <= low if info.get("min_exclusive", False) else value < low)
+    return below or (high is not None and value > high)
+
+
 def checked_range(parameter: Parameter) -> RangeInfo | None:
     """The bounds the range check (LIS202) applies to a parameter, None when it applies none."""
     low, high = parameter.limits
     if low is None and high is None:
         return None
+    if parameter.kind in (BOOL, INTEGER):  # "0 ... 1E+7" of an UNS32 is read as a float: show 10000000
+        low, high = (_whole(bound) for bound in (low, high))
     info: RangeInfo = {"min": low, "max": high}
-    if parameter.strict_positive_real and low == parameter.min and parameter.default != low:
-        info["min_exclusive"] = True  # LIS202: "must be greater than 0" (the default is always accepted)
+    if parameter.strict_positive_real and parameter.default != 0:
+        # LIS202 refuses every number up to 0 ("must be greater than 0") except the default itself, also
+        # when the default lies below 0 (-1 for "not set") and so widened `limits` down to it.
+        info["min"] = 0
+        info["min_exclusive"] = True
     return info
+
+
+def _whole(bound: float | None) -> float | None:
+    return int(bound) if isinstance(bound, float) and bound.is_integer() else bound
 
 
 class StrategyUse(TypedDict):
@@ -177,6 +207,7 @@ class ParameterCard(TypedDict):
     manual: str | None
     strategies: list[StrategyUse] | None
     rules: list[str]
+    errors: list[str] | None  # the CNC messages (P-ERR ids) the parameter's page and diagnosis name
 
 
 def _speed_words(value: float | None, axis_type: str) -> str:
@@ -327,11 +358,31 @@ def parameter_row(values: ResolvedAxis, strategy: HomingStrategy, path: str) -> 
 
 
 def strategies_using(parameter: Parameter) -> list[StrategyUse] | None:
-    """The registered strategies that read a homing parameter (title and example); None for other parameters."""
+    """The registered strategies that read a homing parameter (title and example); None for other parameters.
+    A strategy that runs only on axis types the parameter does not apply to is left out: `explain LIST`
+    marks the parameter ineffective there whatever its value (cam_direct_access under spindle homing)."""
     generic = parameter.path.replace("lr_hw[i]", "lr_hw[0]")
     if generic not in HOMING_PARAMETERS:
         return None
-    return [{"id": d.id, "title": d.title, "example": d.example} for d in strategies_reading(generic)]
+    return [
+        {"id": d.id, "title": d.title, "example": d.example}
+        for d in strategies_reading(generic)
+        if not parameter.axis_types or set(parameter.axis_types) & _axis_types_of(d.id, d.example)
+    ]
+
+
+@cache
+def _axis_types_of(strategy_id: str, example: str) -> frozenset[str]:
+    """The axis types ("T", "R", "S") for which a strategy's example list, with that axis type in place of
+    the one it sets, still selects the strategy: the flying spindle homings only for spindles, the cam
+    homings of linear and rotary axes not for a spindle (whose ref_ohne_rev 1 makes it fly)."""
+    lines = [line for line in example.splitlines() if line.split()[:1] != ["kenngr.achs_typ"]]
+    found = set()
+    for code, axis_type in AXIS_TYPE_CODES.items():
+        text = "\n".join([*lines, f"kenngr.achs_typ {code}", "Ende", ""])
+        if classify(resolve_bytes(text.encode(), "example.lis")).id == strategy_id:
+            found.add(axis_type)
+    return frozenset(found)
 
 
 def rules_checking(parameter: Parameter, kind: Kind = AXIS) -> list[str]:
@@ -430,4 +481,5 @@ def parameter_card(parameter: Parameter, kind: Kind = AXIS) -> ParameterCard:
         "manual": parameter.source or None,
         "strategies": strategies_using(parameter) if axis else None,
         "rules": rules_checking(parameter, kind),
+        "errors": list(parameter.errors) or None,
     }

@@ -98,19 +98,19 @@ def card_text(card: ParameterCard, screen: Screen) -> None:
     first: the kind of list it belongs to)."""
     from rich.text import Text
 
-    from ..explanation import range_words
+    from ..explanation import outside_range, range_words
 
     console = screen.console
     console.print(Text(f"{card['p_axis']}  {card['path']}", style="bold"))
     console.print(card["description"])
+    checked = card["checked_range"] and range_words(card["checked_range"])
+    if checked and card["checked_range"] and outside_range(card["checked_range"], card["default"]):
+        checked += f"; the default {card['default']} is accepted too"
     rows = [
         ("list", card["list"]),
         ("type", card["type"]),
         ("range (manual)", card["range"]),
-        (
-            "checked range",
-            card["checked_range"] and range_words(card["checked_range"]),
-        ),
+        ("checked range", checked),
         ("accepted values", card["accepted_values"] and ", ".join(map(str, card["accepted_values"]))),
         ("symbols", card["symbols"] and ", ".join(card["symbols"])),
         ("max length", card["max_length"]),
@@ -127,6 +127,7 @@ def card_text(card: ParameterCard, screen: Screen) -> None:
             and (", ".join(s["title"] for s in card["strategies"]) or "no homing strategy"),
         ),
         ("checked by", card["rules"] and ", ".join(card["rules"])),
+        ("CNC messages", card["errors"] and ", ".join(card["errors"])),
         ("manual title", card["manual_title"]),
         ("manual", card["manual"]),
     ]
