@@ -244,9 +244,22 @@ def test_the_json_shape(tmp_path: Path) -> None:
             "synchro_data.koppel_gruppe[0].paar[0].log_achs_nr_slave 2",
         ),
     )
+    for machine, length in ((a, "0x64"), (b, "120")):  # a tool data list on both, one length differs
+        startup = machine / "listen" / "hochlauf.lis"
+        startup.write_text(startup.read_text().replace("Ende", "werkz_data[0] ./listen/werkz_d1.lis\nEnde"))
+        (machine / "listen" / "werkz_d1.lis").write_text(f"wz[1].typ 1\nwz[1].laenge {length}\nEnde\n")
     code, report = _json(str(a), str(b))
     assert code == 1
-    assert _keys(report) == ["a", "axes", "b", "channels", "differ", "kind", "version"]
+    assert _keys(report) == ["a", "axes", "b", "channels", "differ", "kind", "lists", "version"]
+    startup_row, tools = report["lists"]
+    assert (startup_row["entry"], startup_row["kind"], startup_row["status"]) == (
+        "startup",
+        "startup",
+        "same",
+    )
+    assert _keys(tools) == ["a_list", "b_list", "changes", "entry", "kind", "status"]
+    assert (tools["entry"], tools["kind"], tools["status"]) == ("werkz_data[0]", "tools", "changed")
+    assert tools["changes"] == [{"parameter": "wz[1].laenge", "a": "0x64", "b": "120"}]
     assert (report["version"], report["kind"], report["differ"]) == (1, "machines", True)
     for side in (report["a"], report["b"]):
         assert _keys(side) == ["cnc_root", "default_channel_list", "default_list", "startup"]

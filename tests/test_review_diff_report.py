@@ -85,13 +85,6 @@ def _startup_with_tool_list(machine: Path) -> None:
     startup.write_text(text, encoding="ascii")
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="machinediff compares only axis and channel lists: a start-up entry of another kind (tool data, "
-    "zero offsets, achs_kw, rtconf ...) added, removed or with other values is no difference, so diff says "
-    "'load the same machine'; the fix adds a key to the machine JSON, which README and "
-    "tests/test_machine_diff.py::test_the_json_shape pin (not this reviewer's files)",
-)
 def test_machine_diff_reports_a_removed_tool_list(tmp_path: Path) -> None:
     a, b = _mill(tmp_path, "a"), _mill(tmp_path, "b")
     _startup_with_tool_list(a)

@@ -14,6 +14,11 @@ Each machine is read the way the CNC loads it (`machine.resolved.Machine`, with 
   unknown parameters. The homing strategy each side runs at power-up (`homing.classify`) is compared too.
 - each channel's names (axis group and spindles) are compared with the logical axis numbers they map to,
   and the channel's coupled pairs (`synchro_data.koppel_gruppe[g].paar[i]`).
+- every other list the CNC loads (tool data `werkz_data[i]`, zero offsets `nullp_data[i]`, axis compensation
+  `achs_kw[i]`, the real-time configuration `rtconf_lis` ...: `Startup.loaded_others` and
+  `loaded_compensations`), paired by its start-up entry, and the start-up list's own settings: the values
+  each writes before `Ende` (the last assignment of a name), numbers compared by value (`0x10` is `16`),
+  anything else as written, so comments, blanks and order make no difference.
 
 The report is plain data (`MachineDiffReport`, `achslint diff --format json`); output/diff.py renders it.
 Which entry and file each axis came from is shown but is no difference: the CNC goes by the axis's number.
@@ -99,6 +104,21 @@ class ChannelDiff(TypedDict):
     pairs: list[PairDiff]  # only the coupled pairs one side lacks
 
 
+class ValueChange(TypedDict):
+    parameter: str  # as the list writes it (its last assignment)
+    a: str | None  # None: the list does not write it
+    b: str | None
+
+
+class ListDiff(TypedDict):
+    entry: str  # the start-up entry that names the list (`werkz_data[0]`), or `startup` for its own settings
+    kind: str  # the list kind's id (`tool`, `zero`, `compensation`, ... `startup`)
+    status: Status
+    a_list: str | None
+    b_list: str | None
+    changes: list[ValueChange]  # only the values that differ
+
+
 class MachineDiffReport(TypedDict):
     """What `achslint diff --format json` prints for two machines (documented in the README)."""
 
@@ -109,6 +129,7 @@ class MachineDiffReport(TypedDict):
     differ: bool
     axes: list[AxisDiff]
     channels: list[ChannelDiff]
+    lists: list[ListDiff]
 
 
 # -- which start-up lists ------------------------------------------------------------------------------
@@ -328,6 +349,117 @@ def _channel_diff(
     }
 
 
+def _written(
+    data: bytes | None, name: str, skip: frozenset[str] = frozenset()
+) -> dict[str, tuple[str, object]]:
+    """What a list writes before `Ende`, by parameter name: (the value as written, what it compares as). The
+    last assignment of a name counts (the CNC takes it, LIS005). Whole numbers and reals compare by value,
+    anything else as written."""
+    from .syntax.numbers import parse_integer, parse_real
+    from .syntax.parser import HEX, INT, REAL, parse_bytes
+
+    if data is None:
+        return {}
+    values: dict[str, tuple[str, object]] = {}
+    for line in parse_bytes(data, name).assignments():
+        if not line.path or line.value is None or line.path in skip:
+            continue
+        value = line.value.strip()
+        key: object = value
+        if line.value_kind in (INT, HEX):
+            number = parse_integer(value)
+            key = number if isinstance(number, int) else value
+        elif line.value_kind == REAL:
+            real = parse_real(value)
+            key = real if isinstance(real, float) else value
+        values[line.path] = (value, key)
+    return values
+
+
+def _read(startup: Startup, path: Path | None) -> bytes | None:
+    """The bytes of a list the start-up list names, None when it is not there or cannot be read (its LIS504 /
+    LIS5xx finding says why)."""
+    if path is None:
+        return None
+    try:
+        return startup.reader(path)
+    except (OSError, ValueError):
+        return None
+
+
+def _list_diff(
+    entry: str,
+    kind: str,
+    a: tuple[str, bytes | None] | None,
+    b: tuple[str, bytes | None] | None,
+    skip: frozenset[str] = frozenset(),
+) -> ListDiff:
+    left = _written(a[1], a[0], skip) if a else {}
+    right = _written(b[1], b[0], skip) if b else {}
+    changes: list[ValueChange] = [
+        {
+            "parameter": name,
+            "a": left[name][0] if name in left else None,
+            "b": right[name][0] if name in right else None,
+        }
+        for name in [*left, *(name for name in right if name not in left)]
+        if (left.get(name) or (None, None))[1] != (right.get(name) or (None, None))[1]
+    ]
+    status: Status = "removed" if b is None else "added" if a is None else "changed" if changes else "same"
+    return {
+        "entry": entry,
+        "kind": kind,
+        "status": status,
+        "a_list": a[0] if a else None,
+        "b_list": b[0] if b else None,
+        "changes": changes,
+    }
+
+
+def _other_lists(startup: Startup) -> dict[str, tuple[str, str, bytes | None]]:
+    """The lists of other kinds the CNC loads, by start-up entry: (kind id, the list as shown, its bytes)."""
+    from .catalogue.kinds import entry_kind
+
+    found: dict[str, tuple[str, str, bytes | None]] = {}
+    for entry in [*startup.loaded_compensations(), *startup.loaded_others()]:
+        kind = entry_kind(entry.key)
+        shown = _shown_entry(entry.path) or entry.raw
+        found[entry.key] = (kind.id if kind is not None else "", shown, _read(startup, entry.path))
+    return found
+
+
+def _lists(first: Startup, second: Startup) -> list[ListDiff]:
+    """The start-up lists' own settings (not their entries), then every other list either machine loads."""
+    from .catalogue.kinds import STARTUP
+
+    entries = frozenset(
+        entry.key
+        for startup in (first, second)
+        for entry in [
+            *startup.axes,
+            *startup.channels,
+            *startup.compensations,
+            *startup.others,
+            *(e for e in (startup.default, startup.default_channel) if e is not None),
+        ]
+    )
+    rows = [
+        _list_diff(
+            "startup",
+            STARTUP.id,
+            (str(first.path), _read(first, first.path)),
+            (str(second.path), _read(second, second.path)),
+            entries,
+        )
+    ]
+    left, right = _other_lists(first), _other_lists(second)
+    for key in [*left, *(key for key in right if key not in left)]:
+        a, b = left.get(key), right.get(key)
+        kind = (a or b or ("", "", None))[0]
+        rows.append(_list_diff(key, kind, (a[1], a[2]) if a else None, (b[1], b[2]) if b else None))
+    return rows
+
+
 def _configured_root(startup: Path) -> Path | None:
     """The `cnc-root` of the configuration that applies to a start-up list (None: not set)."""
     from .linting.config import ConfigError, discover
@@ -351,12 +483,14 @@ def diff_machines(
         _channel_diff(number, first.channels.get(number), second.channels.get(number))
         for number in sorted(set(first.channels) | set(second.channels))
     ]
+    lists = _lists(first.startup, second.startup)
     return {
         "version": VERSION,
         "kind": "machines",
         "a": first.side(),
         "b": second.side(),
-        "differ": any(row["status"] != "same" for row in [*axes, *channels]),
+        "differ": any(row["status"] != "same" for row in [*axes, *channels, *lists]),
         "axes": axes,
         "channels": channels,
+        "lists": lists,
     }

@@ -15,7 +15,7 @@ from . import Screen, write_json
 
 if TYPE_CHECKING:
     from ..listdiff import Comparison, DiffReport, WrittenDifference
-    from ..machinediff import AxisDiff, AxisSide, ChannelDiff, ChannelName, MachineDiffReport
+    from ..machinediff import AxisDiff, AxisSide, ChannelDiff, ChannelName, ListDiff, MachineDiffReport
     from . import Registry
 
 WRITTEN_ONLY = "written differs, effective same"
@@ -128,6 +128,25 @@ def _channel_text(row: ChannelDiff, screen: Screen) -> None:
         )
 
 
+def list_title(row: ListDiff) -> str:
+    """How a list row is named: `the start-up list's own settings`, or `werkz_data[0] (tool data list)`."""
+    if row["entry"] == "startup":
+        return "the start-up list's own settings"
+    from ..catalogue.kinds import BY_ID
+
+    kind = BY_ID.get(row["kind"])
+    return f"{row['entry']} ({kind.name if kind is not None else 'list'})"
+
+
+def _list_text(row: ListDiff, screen: Screen) -> None:
+    lists = {"added": f"only in B ({row['b_list']})", "removed": f"only in A ({row['a_list']})"}
+    screen.echo(f"{list_title(row)}: {lists.get(row['status'], 'changed')}")
+    for change in row["changes"]:
+        a = "not written" if change["a"] is None else change["a"]
+        b = "not written" if change["b"] is None else change["b"]
+        screen.echo(f"    {change['parameter']}: {a} → {b}")
+
+
 def _count(number: int, one: str, many: str) -> str:
     return f"{number} {one if number == 1 else many}"
 
@@ -137,9 +156,11 @@ def machines_as_text(report: MachineDiffReport, screen: Screen) -> None:
     a, b = report["a"]["startup"], report["b"]["startup"]
     axes, channels = report["axes"], report["channels"]
     if not report["differ"]:
+        count = sum(row["entry"] != "startup" for row in report["lists"])
+        others = f", {_count(count, 'list of another kind', 'lists of other kinds')}" if count else ""
         screen.echo(
             f"no difference: {a} and {b} load the same machine ({_count(len(axes), 'axis', 'axes')}, "
-            f"{_count(len(channels), 'channel', 'channels')})"
+            f"{_count(len(channels), 'channel', 'channels')}{others})"
         )
         return
     screen.echo(f"A: {a} (CNC root {report['a']['cnc_root']})")
@@ -156,6 +177,9 @@ def machines_as_text(report: MachineDiffReport, screen: Screen) -> None:
     for channel in channels:
         if channel["status"] != "same":
             _channel_text(channel, screen)
+    for listed in report["lists"]:
+        if listed["status"] != "same":
+            _list_text(listed, screen)
 
 
 MACHINE_RENDERERS: Registry[MachineDiffReport] = {"text": machines_as_text, "json": write_json}

@@ -652,6 +652,19 @@ def _comparison(report: CommissioningReport) -> str:
                     f"<p>Coupled pair master {h(pair['master'])} / slave {h(pair['slave'])}: only in "
                     f"{h(pair['only_in'].upper())}</p>"
                 )
+        from .diff import list_title
+
+        for listed in found["lists"]:
+            if listed["status"] == "same":
+                continue
+            words = {"added": "only in B (new)", "removed": "only in A (gone)"}.get(listed["status"], "changed")
+            title = list_title(listed)
+            body.append(f"<h3>{h(title[0].upper() + title[1:])}: {h(words)}</h3>")
+            shown = [
+                (c["parameter"], *("not written" if v is None else v for v in (c["a"], c["b"])))
+                for c in listed["changes"]
+            ]
+            body.append(_table(("parameter", "A", "B"), shown))
     elif report.list_diff is not None:
         found_list = report.list_diff
         body.append(f"<p>A: {h(found_list['a'])} (the backup), B: {h(found_list['b'])} (this report)</p>")
