@@ -385,7 +385,7 @@ def test_drive_controlled_slave_without_its_master_is_judged_alone(tmp_path):
     assert "its own type counts" in rows[0][3]
 
 
-# --- item 6: a DISABLED axis named by G74 is refused (P-AXIS-00299, P-ERR-50685 / P-ERR-60313) -------------------
+# --- item 6: a DISABLED axis named by G74 is refused (P-AXIS-00299, P-ERR-50686 / P-ERR-60313) -------------------
 
 
 @pytest.mark.parametrize(
@@ -401,10 +401,10 @@ def test_dry_run_of_a_disabled_axis_says_the_cnc_refuses_g74(absolute, why):
     assert trace.outcome == "failed" and not trace.phases and trace.reference is None
     assert trace.failure == (
         "homing is DISABLED (kenngr.homing.homing_type): the CNC refuses a G74 that names this axis "
-        f"(P-ERR-50685 / P-ERR-60313); {why}"
+        f"(P-ERR-50686 / P-ERR-60313); {why}"
     )
     # explain says the same of G74 on this axis.
-    assert "P-ERR-50685 / P-ERR-60313" in explain_list(listed(text), "d.lis")["strategy"]["description"]
+    assert "P-ERR-50686 / P-ERR-60313" in explain_list(listed(text), "d.lis")["strategy"]["description"]
 
 
 def test_sweep_of_a_disabled_axis_counts_refusals_not_homed_runs():

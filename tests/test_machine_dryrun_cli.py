@@ -199,11 +199,11 @@ def test_disabled_axis_fails_with_exit_1(cli, tmp_path):
     document = json.loads(result.stdout)
     assert result.returncode == 1
     failure = document["failure"]
-    assert (failure["axis"], failure["code"], failure["line"]) == ("C", "P-ERR-50685", 3)
+    assert (failure["axis"], failure["code"], failure["line"]) == ("C", "P-ERR-50686", 3)
     assert [b["outcome"] for b in document["blocks"]] == ["done", "failed", "not_run"]
     assert {a["name"]: a["outcome"] for a in document["axes"]}["A"] == "not_run"
     text = cli("dry-run", str(PORTAL / "listen" / "hochlauf.lis"), "--program", str(program))
-    assert "FAILED at" in text.stdout.decode() and "P-ERR-50685" in text.stdout.decode()
+    assert "FAILED at" in text.stdout.decode() and "P-ERR-50686" in text.stdout.decode()
 
 
 @pytest.mark.parametrize(

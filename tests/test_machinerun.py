@@ -207,7 +207,7 @@ def test_disabled_axis_stops_the_program():
     run = run_machine(machine, program, scenario())
     # Z 0 -> 2.98 s, X 2.98 -> 5.96 s; the group of C starts at 5.96 s and ends the program there.
     failure = run.failure
-    assert failure is not None and failure.axis == "C" and failure.code == "P-ERR-50685"
+    assert failure is not None and failure.axis == "C" and failure.code == "P-ERR-50686"
     assert close(failure.time, 5.96) and failure.at.line == 2
     assert [b.outcome for b in run.blocks] == ["done", "failed", "not_run"]
     assert [g.outcome for g in run.blocks[1].groups] == ["done", "failed"]

@@ -112,13 +112,10 @@ def test_the_card_names_the_cnc_messages_of_the_parameter(cli) -> None:  # type:
     assert "  CNC messages     P-ERR-110148, P-ERR-110422" in lines
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="homing/strategies/disabled.py (and LIS604, machine/run.py) cite P-ERR-50685, which the SDK "
-    "message file gives to a synchronisation error; the 'homing disabled' message is P-ERR-50686 "
-    "(documented inconsistency D.40; LIS308 already cites 50686)",
-)
 def test_explain_of_a_disabled_axis_cites_the_homing_disabled_message() -> None:
+    """The P-AXIS-00299 page cites P-ERR-50685, which the SDK's message file gives to a synchronisation
+    error; its "homing disabled" message is P-ERR-50686 (inconsistency D.40: real files win; LIS308 cites
+    50686 too)."""
     text = b"kenngr.antr_typ 2\nkenngr.abs_pos_gueltig 1\nkenngr.homing.homing_type DISABLED\nEnde\n"
     report = explain_list(text, "achsmds1.lis")
     assert report["strategy"]["id"] == "disabled"

@@ -69,7 +69,7 @@ def test_explain_does_not_call_an_ignore_abs_pos_axis_homed_by_g74(portal):
 
 
 def test_explain_homes_nothing_at_or_after_the_block_where_the_cnc_stops(portal):
-    # C is DISABLED: the CNC stops the program at C (LIS604, P-ERR-50685); Y after it is never homed, and
+    # C is DISABLED: the CNC stops the program at C (LIS604, P-ERR-50686); Y after it is never homed, and
     # neither is C. X in the group before C is.
     text = "N10 G74 X1 C2 Y3\nN20 G74 Z1\nN30 M30\n"
     assert (1, 12, "LIS604") in codes(portal, text)

@@ -81,7 +81,7 @@ class StrategyDef:
     needs_zero_pulse: bool = False
     # What a G74 that names the axis does. `power_up_only`: the strategy describes only the axis at power-up
     # (an absolute encoder, §3.5 type IV); a G74 naming it runs the next strategy that matches
-    # (P-AXIS-00299 remark). `refuses_g74`: the G74 ends with an error (P-ERR-50685). `skipped_by_g74`: the
+    # (P-AXIS-00299 remark). `refuses_g74`: the G74 ends with an error (P-ERR-50686). `skipped_by_g74`: the
     # G74 leaves the axis standing while the other axes of its group move.
     power_up_only: bool = False
     refuses_g74: bool = False

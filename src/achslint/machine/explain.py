@@ -66,7 +66,7 @@ def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]]
     stops the program (None when it runs to its end).
 
     The CNC stops at a block naming an axis the channel does not have (LIS602: nothing of that block runs) and
-    at the sequence step of a DISABLED axis (LIS604, P-ERR-50685: the steps before it have run); nothing is
+    at the sequence step of a DISABLED axis (LIS604, P-ERR-50686: the steps before it have run); nothing is
     homed from there on, as in the dry-run. An IGNORE_ABS_POS axis a G74 names is passed over, not homed
     (P-AXIS-00299, LIS607)."""
     blocks: list[dict[str, Any]] = []

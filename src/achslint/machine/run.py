@@ -26,7 +26,7 @@ How the program runs (TF5200 homing manual §2.2, P-AXIS-00074, P-AXIS-00299):
   stops the program), but it moves with its master all the same, and a G74 of the master homes it too
   (after the master when its own homing is not suppressed).
 * An axis with homing type `IGNORE_ABS_POS` stands still while the others of its group move (the manual
-  warns that nothing then prevents a collision); one with `DISABLED` stops the program with P-ERR-50685.
+  warns that nothing then prevents a collision); one with `DISABLED` stops the program with P-ERR-50686.
   An axis with an absolute encoder and another homing type runs that homing type when G74 names it.
 * The first failure stops the program as the CNC does: the axes still moving brake with their own
   acceleration, and every later group and block is "not run".
@@ -66,7 +66,7 @@ from .model import (
 from .scenario import MachineScenario
 
 VERSION = 1
-DISABLED_ERROR = "P-ERR-50685"
+DISABLED_ERROR = "P-ERR-50686"
 COLLISION_NOTE = (
     "stands still (homing type IGNORE_ABS_POS) while the other axes of its group move: the CNC does not "
     "stop them, so make sure nothing can collide"

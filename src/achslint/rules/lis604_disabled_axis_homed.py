@@ -8,7 +8,7 @@ Why
 ---
 `DISABLED` means the axis must never be homed: it has an absolute encoder and
 its position is valid from power-up. The CNC answers a homing command for it
-with an error (P-ERR-50685 or P-ERR-60313) and the homing program stops there;
+with an error (P-ERR-50686 or P-ERR-60313) and the homing program stops there;
 the axes after it stay unhomed. `IGNORE_ABS_POS` is the setting for an absolute
 axis that may appear in G74 and is passed over without an error.
 
@@ -53,8 +53,10 @@ N20 M30
 
 Reference
 ---------
-P-AXIS-00299 (homing_type DISABLED: P-ERR-50685 / P-ERR-60313 when commanded;
-IGNORE_ABS_POS), P-AXIS-00014.
+P-AXIS-00299 (homing_type DISABLED: P-ERR-50686 / P-ERR-60313 when commanded;
+IGNORE_ABS_POS), P-AXIS-00014. The parameter page cites P-ERR-50685; the SDK's
+message file has the "homing disabled" text under 50686 (50685 is a
+synchronisation error), and the real file wins.
 """
 
 from __future__ import annotations
@@ -97,7 +99,7 @@ def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic
                 CODE,
                 word.at,
                 f"{word.name} must not be homed (kenngr.homing.homing_type DISABLED): the CNC stops the "
-                "program here with P-ERR-50685 / P-ERR-60313; leave it out of G74, or set IGNORE_ABS_POS "
+                "program here with P-ERR-50686 / P-ERR-60313; leave it out of G74, or set IGNORE_ABS_POS "
                 "if the program must name it",
                 Severity.ERROR,
                 related,

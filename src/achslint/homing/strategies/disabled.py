@@ -14,7 +14,7 @@ if TYPE_CHECKING:
 
 def _describe(axis: ResolvedAxis) -> str:
     text = (
-        "Homing is disabled: a G74 that names this axis ends with an error (P-ERR-50685 / P-ERR-60313). "
+        "Homing is disabled: a G74 that names this axis ends with an error (P-ERR-50686 / P-ERR-60313). "
         "The setting is meant for axes with an absolute measuring system."
     )
     if not axis.get("kenngr.abs_pos_gueltig"):
@@ -32,7 +32,7 @@ def _refused(setup: HomingSetup) -> str:
     )
     return (
         "homing is DISABLED (kenngr.homing.homing_type): the CNC refuses a G74 that names this axis "
-        f"(P-ERR-50685 / P-ERR-60313); {why}"
+        f"(P-ERR-50686 / P-ERR-60313); {why}"
     )
 
 
