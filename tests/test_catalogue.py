@@ -172,7 +172,8 @@ def test_symbols_and_kinds():
     assert cat.by_id["P-AXIS-00014"].kind == BOOL
     assert cat.by_id["P-AXIS-00219"].unit("R") == "0.001deg/s"
     assert cat.by_id["P-AXIS-00218"].index_bounds == ((0, 5),)
-    assert cat.by_id["P-AXIS-00355"].limits == (0, 31)
+    # 1..31 as the manual says; its default 0 (C.24) is accepted as such, not the values up to 1
+    assert cat.by_id["P-AXIS-00355"].limits == (1, 31) and cat.by_id["P-AXIS-00355"].outside_default == 0
 
 
 def test_drive_types_use_p_axis_00020_codes():

@@ -71,7 +71,7 @@ EXPECTED: dict[str, list[tuple[str, int, Severity, str]]] = {
         ("LIS101", 4, Severity.INFO, "did you mean `pzv_grp[1].achse[0].versatz`?"),
     ],
     "compensation": [
-        ("LIS202", 3, Severity.ERROR, "`kopf.achs_nr` = -1 is below the minimum 0"),
+        ("LIS202", 3, Severity.ERROR, "`kopf.achs_nr` = -1 is below the minimum 1"),
         ("LIS101", 6, Severity.INFO, "did you mean `kw.ssfk.interval`?"),
         ("LIS203", 8, Severity.ERROR, "`SQUARE` is not a value of `kw.crosscomp2.grid`"),
     ],

@@ -300,20 +300,24 @@ def test_each_kind_catalogue_loads_and_answers(table):
 @pytest.mark.parametrize(
     ("kind", "path", "bounds", "limits"),
     [
-        (STARTUP, "kanal_anzahl", (1, 12), (0, 12)),  # "1 - 12"; the default 0 is always accepted
-        (STARTUP, "zahl_mds", (1, 32), (0, 32)),  # "1 ... 32", default 0
+        (STARTUP, "kanal_anzahl", (1, 12), (1, 12)),  # "1 - 12"; the default 0 is accepted as such
+        (STARTUP, "zahl_mds", (1, 32), (1, 32)),  # "1 ... 32", default 0
         (STARTUP, "sercos_hochlauf", (-(2**15), 2**15 - 1), (-(2**15), 2**15 - 1)),  # "0 or .1": no bound
         (REALTIME, "cycle_time", (0, 2**32 - 1), (1, 2**32 - 1)),  # "0 < cycle_time < MAX(UNS32)", no default
-        (TOOLS, "wz[i].srk_lage", (0, 9), (0, 9)),  # "0 < srk_lage ≤ 9", default 0
+        (TOOLS, "wz[i].srk_lage", (0, 9), (1, 9)),  # "0 < srk_lage ≤ 9", default 0
         (CHANNEL, "gruppe[i].achs_anzahl", (0, 2**16 - 1), (0, 2**16 - 1)),  # "0 ... 32 (...)"
     ],
 )
 def test_range_texts_become_bounds_where_they_are_bounds(kind, path, bounds, limits):
     """`min`/`max` as the range text gives them (else the type's limits), and the limits the range check
-    applies with the axis catalogue's rules (a strict 0 is 1; the default is always accepted)."""
+    applies with the axis catalogue's rules (a strict 0 is 1; a default outside them is accepted itself)."""
     parameter = kind.catalogue().by_pattern[path]
     assert (parameter.min, parameter.max) == bounds
     assert parameter.limits == limits
+    low, high = limits
+    default = parameter.default if isinstance(parameter.default, int) else None
+    outside = default is not None and not low <= default <= high
+    assert parameter.outside_default == (default if outside else None)
 
 
 def test_units_symbols_and_lengths_come_through():

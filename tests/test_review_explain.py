@@ -54,15 +54,13 @@ def test_an_integer_parameter_has_integer_bounds() -> None:
     assert range_words(checked) == "0 .. 10000000"  # type: ignore[arg-type]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="catalogue.Parameter.limits widens a bound to an out-of-range default, so LIS202 accepts every "
-    "value between the default and the manual's bound (q_factor 0.5 although 1.0 <= q_factor); the fix "
-    "belongs in axis/analysis._check_range (accept the default itself, keep the manual's bounds)",
-)
 def test_lis202_refuses_a_value_between_the_default_and_the_manual_bound() -> None:
+    """`Parameter.limits` widened a bound to an out-of-range default, so LIS202 accepted every value between
+    the default and the manual's bound; now the default itself is accepted, and nothing between."""
     path = "lr_param.improved_position_control.stage[0].filter.q_factor"  # P-AXIS-00752: 1.0 <= x <= 10.0
     assert (2, "LIS202") in lint_codes("kenngr.antr_typ 1", f"{path} 0.5")
+    assert (2, "LIS202") not in lint_codes("kenngr.antr_typ 1", f"{path} -1")  # its default: not set
+    assert (2, "LIS202") not in lint_codes("kenngr.antr_typ 1", f"{path} 1.0")
 
 
 # --- homing strategies on the card -----------------------------------------------------------------

@@ -118,6 +118,12 @@ def leaf_type(parameter: Parameter, flags: bool = False) -> tuple[str, dict[str,
         return f"Literal[{', '.join(repr(s) for s in parameter.symbols)}]", {}
     if kind in (INTEGER, REAL):
         low, high = parameter.limits
+        default = parameter.outside_default  # a model holds it too (the list leaves the parameter unset)
+        if default is not None:
+            low, high = (
+                min(low, default) if low is not None else low,
+                max(high, default) if high is not None else high,
+            )
         constraints = {key: bound for key, bound in (("ge", low), ("le", high)) if bound is not None}
         if kind == REAL:
             return "float", constraints

@@ -167,8 +167,8 @@ def checked_range(parameter: Parameter) -> RangeInfo | None:
         low, high = (_whole(bound) for bound in (low, high))
     info: RangeInfo = {"min": low, "max": high}
     if parameter.strict_positive_real and parameter.default != 0:
-        # LIS202 refuses every number up to 0 ("must be greater than 0") except the default itself, also
-        # when the default lies below 0 (-1 for "not set") and so widened `limits` down to it.
+        # LIS202 refuses every number up to 0 ("must be greater than 0") except the default itself (-1 for
+        # "not set" and the like).
         info["min"] = 0
         info["min_exclusive"] = True
     return info

@@ -335,6 +335,8 @@ def _check_range(setting: Setting, parameter: Parameter, number: float, unit: st
         if number not in parameter.allowed and number != parameter.default:
             setting.add_problem(NotAccepted(number, tuple(parameter.allowed)))
         return
+    if number == parameter.outside_default:
+        return  # an out-of-range default that means "not set" (limits: the values between are not accepted)
     low, high = parameter.limits
     if parameter.strict_positive_real and number <= 0 and number != parameter.default:
         setting.add_problem(NotPositive(number, unit))

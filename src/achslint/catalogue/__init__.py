@@ -111,9 +111,10 @@ class Parameter:
 
         The manual's strict comparisons are unreliable (rendering lost many
         '≤'), so only `0 < x` (meaning "positive") and strict literal upper
-        bounds below the type limit are kept strict. The default value is
-        always accepted: several parameters use an out-of-range default such
-        as 0 or -1 to mean "not set".
+        bounds below the type limit are kept strict. The default value itself
+        is accepted by the range check (several parameters use an out-of-range
+        default such as 0 or -1 to mean "not set"), not the values between it
+        and the bound: `default_accepted` says whether it lies outside.
         """
         type_low, type_high = TYPE_LIMITS.get(self.type, (None, None))
         low: float | None = self.min if isinstance(self.min, (int, float)) else None
@@ -126,12 +127,19 @@ class Parameter:
         if type_low is not None and type_high is not None:
             low = type_low if low is None else max(low, type_low)
             high = type_high if high is None else min(high, type_high)
-        if isinstance(self.default, (int, float)) and not isinstance(self.default, bool):
-            if low is not None and self.default < low:
-                low = self.default
-            if high is not None and self.default > high:
-                high = self.default
         return low, high
+
+    @property
+    def outside_default(self) -> float | None:
+        """The built-in default when it is a number outside `limits` (accepted all the same: it means "not
+        set"), else None."""
+        default = self.default
+        if isinstance(default, bool) or not isinstance(default, (int, float)):
+            return None
+        low, high = self.limits
+        return (
+            default if (low is not None and default < low) or (high is not None and default > high) else None
+        )
 
     @property
     def strict_positive_real(self) -> bool:

@@ -657,7 +657,9 @@ def _comparison(report: CommissioningReport) -> str:
         for listed in found["lists"]:
             if listed["status"] == "same":
                 continue
-            words = {"added": "only in B (new)", "removed": "only in A (gone)"}.get(listed["status"], "changed")
+            words = {"added": "only in B (new)", "removed": "only in A (gone)"}.get(
+                listed["status"], "changed"
+            )
             title = list_title(listed)
             body.append(f"<h3>{h(title[0].upper() + title[1:])}: {h(words)}</h3>")
             shown = [
