@@ -498,10 +498,34 @@ class Simulator:
         t_detect = self.sample(ramp, distance, latched)
         segments, t_end, x_end = ramp.stop(t_detect)
         x_detect = x + s * ramp.distance_at(t_detect)
+        switch = self.switch_in_braking(x_detect, x_end, s)
+        if switch is not None:
+            # The event was seen, but the braking after it runs onto a hardware limit switch: the CNC stops
+            # homing with an error there, whatever was found (§2.3.1.1 and Fig. 1).
+            trace.phases.append(
+                PhaseRecord(name, direction_word(s), speed, x, x_end, t, t_end, LIMIT_SWITCH, segments)
+            )
+            trace.outcome = "failed"
+            trace.failure = (
+                f"{name}: {ended_by} at {number(x_detect)} {self.unit}, then the limit switch at {number(switch)} "
+                f"{self.unit} was reached while braking (braking distance {number(abs(x_end - x_detect))} "
+                f"{self.unit})"
+            )
+            return x_end, t_end, None
         trace.phases.append(
             PhaseRecord(name, direction_word(s), speed, x, x_end, t, t_end, ended_by, segments)
         )
         return x_end, t_end, x_detect
+
+    def switch_in_braking(self, x_detect: float, x_end: float, s: int) -> float | None:
+        """The limit switch that lies within the braking travel from x_detect to x_end (direction s), if any."""
+        switches = self.scenario.limit_switches
+        if switches is None:
+            return None
+        switch = switches[1] if s > 0 else switches[0]
+        if s * (x_end - switch) > 1e-9 and s * (switch - x_detect) >= 0:
+            return switch
+        return None
 
     def edge_move(
         self,
