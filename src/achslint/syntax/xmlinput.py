@@ -211,6 +211,8 @@ def root_element(data: bytes) -> str:
     return match.group(1) if match else "?"
 
 
+_BOMS = (b"\xef\xbb\xbf", b"\xff\xfe", b"\xfe\xff")
+_UTF32_BOMS = (b"\xff\xfe\x00\x00", b"\x00\x00\xfe\xff")
 _DECLARATION = re.compile(rb'(?:\xef\xbb\xbf)?<\?xml[^>]*encoding\s*=\s*["\']([A-Za-z0-9_.-]+)["\']')
 _SURROGATE = re.compile("[\ud800-\udfff]")
 
@@ -245,9 +247,10 @@ def _local(name: str) -> str:
 class _Collector(ContentHandler):
     """Gathers the axis lists while expat reads the file once."""
 
-    def __init__(self, locator: ExpatParser) -> None:
+    def __init__(self, locator: ExpatParser, bom: bool = False) -> None:
         super().__init__()
         self.locator = locator
+        self.bom = bom  # the file starts with a byte-order mark, which expat counts as a column of line 1
         self.twincat: list[EmbeddedList] = []
         # ISG lists: the list, its lines, and the XML (line, column) of each line (the list's line_map)
         self.isg: list[tuple[EmbeddedList, list[str], list[tuple[int, int]]]] = []
@@ -269,7 +272,8 @@ class _Collector(ContentHandler):
         self.in_item: dict[int, list[tuple[list[EmbeddedList], Fields]]] = {}
 
     def _here(self) -> tuple[int, int]:
-        return self.locator.getLineNumber(), (self.locator.getColumnNumber() or 0) + 1
+        line = self.locator.getLineNumber()
+        return line, _column(line, self.locator.getColumnNumber(), self.bom)
 
     def startElement(self, name: str, attrs: AttributesImpl) -> None:
         self.elements += 1
@@ -379,7 +383,7 @@ def _parse(data: bytes, name: str) -> _Collector:
     from defusedxml.expatreader import create_parser
 
     parser = create_parser(forbid_dtd=True)
-    collector = _Collector(parser)
+    collector = _Collector(parser, data.startswith(_BOMS))
     parser.setContentHandler(collector)
     try:
         parser.feed(data)
@@ -394,7 +398,7 @@ def _parse(data: bytes, name: str) -> _Collector:
             "load external content"
         ) from None
     except SAXException as exc:
-        raise UnreadableInput(f"{name} is not well-formed XML: {exc.getMessage()}{_where(exc)}") from None
+        raise UnreadableInput(_not_well_formed(exc, data, name)) from None
     except (LookupError, ValueError):  # after the defusedxml errors, which are ValueErrors too
         if collector.elements:  # raised by our own handler, not by the encoding: a bug, not the file
             raise
@@ -416,9 +420,46 @@ def _parse(data: bytes, name: str) -> _Collector:
     return collector
 
 
-def _where(exc: SAXException) -> str:
+def _column(line: int, column: int | None, bom: bool) -> int:
+    """The 1-based column of expat's 0-based one, without the byte-order mark it counts on line 1."""
+    return (column or 0) + (0 if line == 1 and bom else 1)
+
+
+def _not_well_formed(exc: SAXException, data: bytes, name: str) -> str:
+    """One line for XML expat stops reading: the file, what is wrong, the column, what to do, the line."""
     line = getattr(exc, "getLineNumber", lambda: None)()
-    return f" (line {line})" if line else ""
+    column = getattr(exc, "getColumnNumber", lambda: None)()
+    where = (
+        f" at column {_column(line, column, data.startswith(_BOMS))}" if line and column is not None else ""
+    )
+    if data.startswith(_UTF32_BOMS):
+        advice = "it is saved as UTF-32, which achslint cannot read XML in; save it as UTF-8"
+    elif _undeclared_non_utf8(data):
+        advice = (
+            "its bytes are not UTF-8, which XML without an encoding declaration must be: declare the "
+            'encoding it is saved in (<?xml version="1.0" encoding="ISO-8859-1"?> for Latin-1) or save it '
+            "as UTF-8"
+        )
+    else:
+        advice = "correct the XML there or export the file again from TwinCAT"
+    return f"{name} is not well-formed XML: {exc.getMessage()}{where}; {advice}" + (
+        f" (line {line})" if line else ""
+    )
+
+
+def _undeclared_non_utf8(data: bytes) -> bool:
+    """Whether an XML file expat reads as UTF-8 (no UTF-16 byte-order mark, no other encoding declared)
+    holds bytes that are no UTF-8."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        return False
+    declared = (declared_encoding(data) or "utf-8").lower().replace("_", "-")
+    if declared not in ("utf-8", "utf8"):
+        return False
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError:
+        return True
+    return False
 
 
 def extract(data: bytes, name: str) -> list[EmbeddedList]:
