@@ -83,33 +83,18 @@ ONE_LINE = (
 )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="api.explain/api.dry_run hand the raw XML to axis_list_only instead of the embedded list "
-    "(api.py should read XML through xmlinput.single_list, as axis.source.read_one_list does)",
-)
 def test_api_explain_reads_the_list_inside_xml(tmp_path):
     path = tmp_path / "axis.xml"
     path.write_bytes(ONE_LINE)
     assert api.explain(Path(path))["axis"]["drive_type"] == 1
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="api.explain parses the XML text as a list: its source lines are XML lines (31), where "
-    "`achslint explain` gives the embedded list's (8); the two should agree",
-)
 def test_api_and_cli_explain_agree_on_an_xml_export(cli):
     path = Path(__file__).parent.parent / "fixtures" / "machines" / "twincat_export" / "Axis_X.xti"
     shown = json.loads(cli("explain", str(path), "--format", "json").stdout)
     assert api.explain(path)["parameters"] == shown["parameters"]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="api.explain of an XML file with two axes reads both lists' lines as one list instead of "
-    "refusing it as `achslint explain` does (xmlinput.single_list)",
-)
 def test_api_explain_refuses_two_axes_in_one_xml(tmp_path):
     axis = "<IsgAxisDef><AchsMds><![CDATA[kopf.achs_nr {0}\nkopf.log_achs_name A{0}\nEnde\n]]></AchsMds></IsgAxisDef>\n"
     path = tmp_path / "p.tsproj"
@@ -129,3 +114,15 @@ def test_xml_bytes_without_a_name_are_read_as_xml():
         Path(__file__).parent.parent / "fixtures" / "machines" / "twincat_export" / "Axis_X.xti"
     ).read_bytes()
     assert [d.code for d in api.lint(data)] == [d.code for d in api.lint(data, name="Axis_X.xti")]
+
+
+def test_api_load_of_an_xml_export_keeps_the_findings_of_the_file(tmp_path):
+    """`achslint.load` of an XML export builds the model from its one list and keeps the findings
+    `achslint lint` gives the file (at its XML lines); read as list text under the XML name, the lint failed
+    and the model came with no findings at all."""
+    path = tmp_path / "axis.xml"
+    path.write_bytes(ONE_LINE.replace(b"kenngr.ref_richt 1", b"kenngr.ref_richt 7"))
+    model = api.load(Path(path))
+    assert model.kenngr.antr_typ == 1
+    found = [(d.code, d.line) for d in model.findings]
+    assert found == [(d.code, d.line) for d in api.lint(Path(path))] and ("LIS201", 1) in found

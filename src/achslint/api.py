@@ -189,6 +189,19 @@ def lint_text(
     return findings(text_bytes(text), filename, settings)
 
 
+def _one_axis_list(data: bytes, name: str) -> bytes:
+    """The one axis list `data` holds, as `explain FILE` reads it: an XML export's only list (through the
+    one XML parser: `xmlinput.single_list`, which refuses DTDs, entities and files of several axes), and
+    any list checked to be an axis list (`axis_list_only`)."""
+    from .core.files import is_xml
+
+    if is_xml(name):
+        from .syntax.xmlinput import single_list
+
+        data = single_list(data, name)
+    return axis_list_only(data, name)
+
+
 def load(source: Source, *, defaults: Source | None = None, strict: bool = False) -> AxisParameters:
     """The typed model of a list (a path or bytes) on top of an optional default list.
 
@@ -200,9 +213,9 @@ def load(source: Source, *, defaults: Source | None = None, strict: bool = False
     from .model import build_model, rule_errors
 
     data, name = _as_bytes(source)
-    data = axis_list_only(data, name)
+    listed = _one_axis_list(data, name)  # the findings are the file's (of an XML export: at its lines)
     default_data = _as_bytes(defaults) if defaults is not None else None
-    return _finish(build_model(data, name, default_data), data, name, default_data, strict, rule_errors)
+    return _finish(build_model(listed, name, default_data), data, name, default_data, strict, rule_errors)
 
 
 def _finish(
@@ -257,7 +270,7 @@ def explain(source: Source, *, gear: int = 0, defaults: Source | None = None) ->
 
     data, name = _as_bytes(source)
     return explain_list(
-        axis_list_only(data, name),
+        _one_axis_list(data, name),
         name,
         _gear(gear),
         _as_bytes(defaults)[0] if defaults is not None else None,
@@ -273,7 +286,7 @@ def dry_run(source: Source, scenario: dict[str, Any] | None = None, *, gear: int
     gear = _gear(gear)
     data, name = _as_bytes(source)
     return simulate(
-        axis_list_only(data, name), name, parse_input(dict(scenario or {}), "scenario"), gear=gear
+        _one_axis_list(data, name), name, parse_input(dict(scenario or {}), "scenario"), gear=gear
     )
 
 
