@@ -247,7 +247,13 @@ def build_list_model(data: bytes, name: str, kind: str) -> ListBase:
     """The typed model of a channel or start-up list (`kind`; KeyError for a kind without a model): every
     value its kind's catalogue knows and the linter reads without a problem (a value with one keeps its
     default: the list's findings say why), where it came from, and the names the catalogue does not know
-    (or indices beyond `MAX_INDEX`) as written. Raises UnreadableInput for bytes that are no list."""
+    (or indices beyond `MAX_INDEX`) as written. Raises UnreadableInput for bytes that are no list and
+    TypeError for text (`text_bytes` makes the bytes of a text)."""
+    if not isinstance(data, (bytes, bytearray)):
+        raise TypeError(
+            f"build_list_model() takes the bytes of a list, not {type(data).__name__}: "
+            "open(path, 'rb').read(), or text.encode() for a str"
+        )
     model = list_model(kind)
     cat = BY_ID[kind].catalogue()
     assert cat is not None  # a kind with a model has a catalogue

@@ -12,6 +12,7 @@ What that needs sits here too, below the generated classes: how a canonical path
 from __future__ import annotations
 
 import keyword
+import math
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
@@ -205,10 +206,17 @@ def _rule_findings(text: str) -> list[Diagnostic]:
 
 def dumps(model: ListBase) -> str:
     """The model as a list of its kind in canonical layout: every value that differs from the CNC's default,
-    then `Ende`."""
+    then `Ende`. Raises TypeError for anything but a list model, and ValueError for a value no list can hold
+    (a line break, a quote in a value that needs quotes, a number that is not finite): written some other
+    way, it would read back as another value, or as other assignments."""
+    if not isinstance(model, ListBase):
+        raise TypeError(
+            f"dumps() takes a list model (from load, loads or build_list_model), not {type(model).__name__}"
+        )
     cat = type(model).catalogue()
     lines = [
-        f"{path:<47} {_written(value, symbols)}".rstrip() for path, value, symbols in _changed(model, "", cat)
+        f"{path:<47} {_written(value, symbols, path)}".rstrip()
+        for path, value, symbols in _changed(model, "", cat)
     ]
     return "\n".join([*lines, "Ende", ""])
 
@@ -236,12 +244,30 @@ def _elements(path: str, value: Any) -> Iterator[tuple[str, Any]]:
         yield from _elements(f"{path}[{index}]", item)
 
 
-def _written(value: Any, symbols: bool = False) -> str:
-    """A value as the list writes it; symbols bare, OR-combined flags (`REPORT | PRINT`) too."""
+# A bare word the parser reads as a reference to another parameter (grammars/achsmds.lark: REFERENCE).
+_REFERENCE = re.compile(r"P-AXIS-[0-9]+(?:\.[0-9]+)?")
+
+
+def _written(value: Any, symbols: bool = False, path: str = "value") -> str:
+    """A value as the list writes it; symbols bare, OR-combined flags (`REPORT | PRINT`) too. A string is
+    quoted where it would not read back bare: blanks, `(`, a leading `#`, a reference's spelling."""
     if isinstance(value, bool):
         return "1" if value else "0"
     if isinstance(value, float):
+        if not math.isfinite(value):
+            raise ValueError(
+                f"{path}: {value!r} cannot be written in a list (the CNC reads finite numbers only)"
+            )
         return repr(value)
-    if isinstance(value, str) and not symbols and (not value or any(c in value for c in ' \t"(')):
-        return '"' + value.replace('"', "") + '"' if value else ""
-    return str(value)
+    text = str(value)
+    if "\n" in text or "\r" in text:
+        raise ValueError(f"{path}: {text!r} cannot be written in a list (a line break ends the assignment)")
+    if not isinstance(value, str) or symbols or not text:
+        return text
+    if not (any(c in text for c in ' \t"(') or text.startswith("#") or _REFERENCE.fullmatch(text)):
+        return text
+    if '"' not in text:
+        return f'"{text}"'
+    if not any(c in text for c in " \t(") and not text.startswith(('"', "#")):
+        return text  # a quote inside a word: the word is read as it stands
+    raise ValueError(f"{path}: {text!r} cannot be written in a list (a quoted value cannot hold a quote)")
