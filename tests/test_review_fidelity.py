@@ -7,6 +7,10 @@ pulses every 5 mm with one at -102.5, pos_refpkt -950 mm.
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
+from .conftest import run_cli
 from .engine_scene import approx, run
 
 
@@ -49,3 +53,25 @@ def test_a_limit_switch_just_beyond_the_braking_distance_is_not_reached():
     trace = run(limit_switches=(-102.65, 1010.0), start_position=-101.0)
     assert trace.outcome == "homed"
     assert approx(trace.final_position, -950.1)
+
+
+def test_the_assumed_fixed_stop_lies_where_the_axis_searches_it(tmp_path):
+    """TORQ homing gives up after torq_max_distance (TF5200 homing §2.3.3.4.6; the manual's example: 20 mm),
+    so a fixed stop assumed 100 mm away made that example fail on the assumed geometry ("torq_max_distance
+    travelled without a stop"). The assumed stop lies between torq_min_distance and torq_max_distance (halfway
+    when 100 mm is not), and stays 100 mm away when that lies between them."""
+    from achslint.homing.scenario import fixed_stop_distance
+
+    assert fixed_stop_distance(0.0, 20.0) == 10.0
+    assert fixed_stop_distance(5.0, 0.0) == 100.0 and fixed_stop_distance(0.0, 300.0) == 100.0
+    assert fixed_stop_distance(150.0, 0.0) == 160.0 and fixed_stop_distance(150.0, 250.0) == 200.0
+    text = (
+        (Path(__file__).parent.parent / "fixtures" / "manual" / "torq_sercos.lis")
+        .read_text(encoding="latin-1")
+        .replace("Ende", "getriebe[0].homing.torq_move_velocity 2000\nEnde")
+    )
+    path = tmp_path / "achsmds1.lis"
+    path.write_text(text, encoding="latin-1")
+    run = json.loads(run_cli("dry-run", str(path), "--format", "json").stdout)
+    assert run["scenario"]["fixed_stop"] == 10.0 and "fixed_stop" in run["scenario"]["assumed"]
+    assert run["outcome"] == "homed", run.get("failure")

@@ -9,7 +9,14 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from ..axis.drives import SERCOS
-from .scenario import Scenario, ScenarioError, complete, fitted_cams
+from .scenario import (
+    DEFAULT_STOP_DISTANCE,
+    Scenario,
+    ScenarioError,
+    complete,
+    fitted_cams,
+    fixed_stop_distance,
+)
 
 if TYPE_CHECKING:
     from ..axis.resolved import ResolvedAxis
@@ -218,6 +225,16 @@ class HomingStrategy:
         turning = given.start_velocity if given is not None and setup.spindle else None
         direction = (1 if turning > 0 else -1) if turning else self.direction  # endless rotation: its way
 
+        needs = self.geometry(given)
+        stop_distance = DEFAULT_STOP_DISTANCE
+        if "fixed_stop" in needs:
+            from .motion import POSITION
+
+            stop_distance = fixed_stop_distance(
+                setup.axis.number("kenngr.homing.torq_min_distance") * POSITION,
+                setup.axis.number("kenngr.homing.torq_max_distance") * POSITION,
+            )
+
         def build(cam_place: tuple[float, float] | None = None) -> Scenario:
             return complete(
                 given,
@@ -231,7 +248,8 @@ class HomingStrategy:
                 spindle=setup.spindle,
                 armed_on_exit=self.definition.arms_on_cam_exit,
                 cam_place=cam_place,
-                needs=self.geometry(given),
+                needs=needs,
+                stop_distance=stop_distance,
             )
 
         scenario = build()

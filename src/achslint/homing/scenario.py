@@ -186,6 +186,22 @@ def parse_input(data: object, where: str = "scenario") -> ScenarioInput:
 # Assumed limit switches lie this far beyond the software limits (mm or °), in the frame the software limits
 # hold in: the homed one. Until the homing gives that frame, the actual values are taken for it.
 SWITCH_MARGIN = 10.0
+# The assumed fixed stop lies this far from the start in the homing direction (mm or °), unless the axis
+# searches it over a shorter way (`fixed_stop_distance`).
+DEFAULT_STOP_DISTANCE = 100.0
+
+
+def fixed_stop_distance(least: float, most: float) -> float:
+    """Where to assume the fixed stop of an axis that arms the stop detection after `least` and gives up after
+    `most` (torq_min_distance, torq_max_distance; 0: no limit): DEFAULT_STOP_DISTANCE where that lies between
+    them, else halfway between them (beyond `least` when there is no `most`). An assumed stop beyond
+    torq_max_distance made the manual's own example list fail on the assumed geometry. Distances that leave
+    no room (`most` not beyond `least`, LIS304) keep the default."""
+    if least < DEFAULT_STOP_DISTANCE and (most <= 0 or most >= DEFAULT_STOP_DISTANCE):
+        return DEFAULT_STOP_DISTANCE
+    if most <= 0:
+        return least + SWITCH_MARGIN
+    return (least + most) / 2 if most > least else DEFAULT_STOP_DISTANCE
 
 
 def complete(
@@ -202,6 +218,7 @@ def complete(
     armed_on_exit: bool = False,
     cam_place: tuple[float, float] | None = None,
     needs: frozenset[str] = GEOMETRY_NEEDS,
+    stop_distance: float = DEFAULT_STOP_DISTANCE,
 ) -> Scenario:
     """Fill what the scenario (a ScenarioInput, or None) leaves open with the documented default geometry.
 
@@ -266,7 +283,7 @@ def complete(
     else:
         limits = pick("limit_switches", (low - SWITCH_MARGIN, high + SWITCH_MARGIN))
     stop = (
-        pick("fixed_stop", start + direction * 100.0)
+        pick("fixed_stop", start + direction * stop_distance)
         if "fixed_stop" in needs
         else getattr(given, "fixed_stop", None)
     )
