@@ -103,13 +103,9 @@ def test_api_explain_refuses_two_axes_in_one_xml(tmp_path):
         api.explain(Path(path))
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="XML given without a name (api.lint(bytes), `achslint lint -` without --stdin-filename) is read as "
-    "list text: one LIS001 per XML line; lint_file could tell XML by its content (`<?xml`, or `<` first after "
-    "a byte-order mark and white space) as it tells a start-up list",
-)
 def test_xml_bytes_without_a_name_are_read_as_xml():
+    """XML given without a file name (the API's bytes, standard input without --stdin-filename) was read as
+    list text: one LIS001 per XML line. Its content tells it: `<` first."""
     data = (
         Path(__file__).parent.parent / "fixtures" / "machines" / "twincat_export" / "Axis_X.xti"
     ).read_bytes()

@@ -116,7 +116,7 @@ def lint_file(
     settings = settings or FileSettings()
     try:
         default_file = default_list(defaults) if defaults is not None else None
-        if is_xml(name):
+        if is_xml(name) or (name in UNNAMED and _xml_content(data)):
             return _check_xml(data, name, settings, default_file)
         file = parse_bytes(data, name)
     except UnreadableInput as exc:
@@ -127,6 +127,27 @@ def lint_file(
     if not kind.has_catalogue:
         return FileResult(name, [], note=_skip_note(kind, name))
     return _check_file(file, name, settings, default_file=default_file, kind=kind)
+
+
+# The names of bytes that came without a file name (the API's bytes and text, standard input without
+# --stdin-filename): their content tells whether they are XML.
+UNNAMED = ("<bytes>", "<string>", "<stdin>", "-")
+
+
+def _xml_content(data: bytes) -> bool:
+    """Whether bytes without a file name are XML: `<` first, after a byte-order mark (UTF-8 or UTF-16) and
+    white space. No list starts so (a list line starts with a name, `#` or `(`)."""
+    for mark, encoding in (
+        (b"\xef\xbb\xbf", "utf-8"),
+        (b"\xff\xfe", "utf-16-le"),
+        (b"\xfe\xff", "utf-16-be"),
+    ):
+        if data.startswith(mark):
+            text = data[len(mark) : len(mark) + 400].decode(encoding, "ignore")
+            break
+    else:
+        text = data[:200].decode("latin-1")
+    return text.lstrip().startswith("<")
 
 
 @lru_cache(maxsize=4)
