@@ -154,13 +154,10 @@ def test_build_list_model_takes_bytes():
         build_list_model(b"Ende\n", "x.lis", "tools")  # no model for tool lists, as documented
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="dumps leaves out the names the catalogue does not know (test_kind_models.py asserts that), so "
-    "loads(dumps(m)) == m, as the README promises, fails for a lenient model with unknown names and "
-    "drops settings the CNC knows but the catalogue does not (interpolator.parameter of the SDK list)",
-)
 def test_unknown_names_survive_dumps():
+    """dumps left out the names the catalogue does not know, so `loads(dumps(m)) == m` failed for a lenient
+    model that has some, and a setting the CNC knows but the table lacks (the SDK start-up list's
+    `interpolator.parameter`) was lost."""
     path = FIXTURES / "vendor" / "isg_sdk_hochlauf.lis"
     model = build_list_model(path.read_bytes(), path.name, "startup")
     assert model.unknown

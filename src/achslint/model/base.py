@@ -206,9 +206,10 @@ def _rule_findings(text: str) -> list[Diagnostic]:
 
 def dumps(model: ListBase) -> str:
     """The model as a list of its kind in canonical layout: every value that differs from the CNC's default,
-    then `Ende`. Raises TypeError for anything but a list model, and ValueError for a value no list can hold
-    (a line break, a quote in a value that needs quotes, a number that is not finite): written some other
-    way, it would read back as another value, or as other assignments."""
+    then the names the catalogue does not know as the list wrote them (`unknown`: a setting the CNC may know
+    all the same), then `Ende`. Raises TypeError for anything but a list model, and ValueError for a value no
+    list can hold (a line break, a quote in a value that needs quotes, a number that is not finite): written
+    some other way, it would read back as another value, or as other assignments."""
     if not isinstance(model, ListBase):
         raise TypeError(
             f"dumps() takes a list model (from load, loads or build_list_model), not {type(model).__name__}"
@@ -218,6 +219,10 @@ def dumps(model: ListBase) -> str:
         f"{path:<47} {_written(value, symbols, path)}".rstrip()
         for path, value, symbols in _changed(model, "", cat)
     ]
+    for path, raw in model.unknown.items():
+        if "\n" in path or "\r" in path or "\n" in raw or "\r" in raw:
+            raise ValueError(f"{path!r}: a name or value with a line break cannot be written to a list")
+        lines.append(f"{path:<47} {raw}".rstrip())
     return "\n".join([*lines, "Ende", ""])
 
 
