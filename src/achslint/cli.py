@@ -12,7 +12,9 @@ import contextlib
 import copy
 import functools
 import gc
+import math
 import os
+import re
 import sys
 from collections.abc import Callable, Iterable, Sequence
 from enum import Enum
@@ -281,7 +283,12 @@ def lint(
         help="Start-up list (hochlauf.lis) of the machine the NC programs among PATH (rfp.nc) are checked against (LIS6xx).",
     ),
     channel: int = typer.Option(
-        1, "--channel", min=1, max=12, help="With --machine: the channel whose axis names the programs use."
+        1,
+        "--channel",
+        metavar="N",
+        min=1,
+        max=12,
+        help="With --machine: the channel whose axis names the programs use.",
     ),
     follow_startup: bool = typer.Option(
         False,
@@ -309,6 +316,12 @@ def lint(
     from .output import OutputFailed
     from .output import lint as shown
 
+    for option, number in (
+        ("--cycle-time-ms", cycle_time_ms),
+        ("--repeatability-tolerance-um", repeatability_tolerance_um),
+    ):
+        if number is not None and not math.isfinite(number):  # (nan passes click's range check)
+            _fail(f"{option} {number}: give a finite number")
     try:
         overrides = Overrides(
             select=_codes(select, "--select") or None,
@@ -324,10 +337,11 @@ def lint(
         )
     except UsageError as exc:
         _fail(str(exc))
+    fixing = {"fix" if fix or not show_diff else "diff": fix or show_diff}  # the one the user typed
     fix = fix or show_diff  # as in ruff: --diff shows what --fix would do
     if unsafe_fixes and not fix:
         _fail("--unsafe-fixes goes with --fix or --diff")
-    _one_mode(fix=fix, add_noqa=add_noqa, show_files=show_files, show_settings=show_settings, watch=watch)
+    _one_mode(**fixing, add_noqa=add_noqa, show_files=show_files, show_settings=show_settings, watch=watch)
     if (add_noqa or watch) and "-" in paths:
         _fail(f"{'--add-noqa' if add_noqa else '--watch'} reads files: it cannot take standard input (-)")
     fmt = output_format.value if output_format else _default_format(sys.stdout)
@@ -360,6 +374,8 @@ def lint(
     except (ConfigError, OutputIsInput) as exc:
         _fail(str(exc))
     _tell(outcome.errors, outcome.notes, quiet)
+    if machine is not None and not any("--machine" in error for error in outcome.errors):
+        _machine_readable(machine)  # read only for the programs among PATH: without them, checked here
     if not outcome.results and not outcome.skipped and not outcome.errors and not allow_empty:
         _fail(_nothing_found(paths, outcome.excluded))
     if add_noqa:  # as in ruff: what was added, on stderr; exit 0 unless a list could not be read or written
@@ -381,6 +397,15 @@ def lint(
     if outcome.errors:
         raise typer.Exit(EXIT_ERROR)
     raise typer.Exit(EXIT_FINDINGS if outcome.failing and not exit_zero else EXIT_OK)
+
+
+def _machine_readable(machine: str) -> None:
+    """Exit 2 when --machine names no file achslint can read (a mistyped name must not pass unseen)."""
+    from .core.files import not_a_list_file
+
+    problem = not_a_list_file(Path(machine), what="a start-up list")
+    if problem is not None:
+        _fail(f"--machine {machine}: {problem}; give the start-up list (hochlauf.lis) of the machine")
 
 
 def _one_mode(**modes: bool) -> None:
@@ -555,7 +580,9 @@ def _tell(errors: list[str], notes: list[str], quiet: bool) -> None:
 @app.command()
 def fmt(
     paths: list[str] = typer.Argument(
-        ..., help="Files, directories (searched recursively) or - (formatted to standard output)."
+        ...,
+        metavar="PATH...",
+        help="Files, directories (searched recursively) or - (formatted to standard output).",
     ),
     check: bool = typer.Option(
         False, "--check", help="Change nothing; exit 1 when a file would be reformatted."
@@ -564,10 +591,10 @@ def fmt(
         False, "--diff", help="Print the changes as a unified diff instead of writing them."
     ),
     config: str | None = typer.Option(
-        None, "--config", help="Use this configuration file instead of searching for one."
+        None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."
     ),
     stdin_filename: str | None = typer.Option(
-        None, "--stdin-filename", help="Name used for input read from -."
+        None, "--stdin-filename", metavar="NAME", help="Name used for input read from -."
     ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors."),
     allow_empty: bool = typer.Option(
@@ -638,7 +665,7 @@ def rules(
 
 
 @app.command()
-def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> None:
+def rule(code: str = typer.Argument(..., metavar="CODE", help="Rule code, e.g. LIS202.")) -> None:
     """Show the documentation of one rule."""
     from .docs import rule_text
     from .rules import registry
@@ -647,7 +674,7 @@ def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> Non
     if found is None:
         from .rules.codes import code_hint
 
-        _fail(f"unknown rule code {code!r}; {code_hint(code)}")
+        _fail(f"unknown rule code '{code}'; {code_hint(code)}")
     typer.echo(rule_text(found))
 
 
@@ -655,6 +682,7 @@ def rule(code: str = typer.Argument(..., help="Rule code, e.g. LIS202.")) -> Non
 def explain(
     target: str = typer.Argument(
         ...,
+        metavar="TARGET",
         help="An axis list, a start-up list (the machine), a channel list (the machine, with that channel's "
         "names), or a parameter of any list: name, alias or id (vb_reflow, getriebe[0].vb_reflow, "
         "P-AXIS-00218, P-CHAN-00036).",
@@ -668,13 +696,20 @@ def explain(
     output_format: ExplainOutput = typer.Option(
         ExplainOutput.text, "--format", "--output-format", help="text, json or markdown."
     ),
-    gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing speeds are shown."),
+    gear: int = typer.Option(
+        0, "--gear", metavar="N", min=0, max=5, help="Gear stage whose homing speeds are shown."
+    ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
     program: str | None = typer.Option(
         None, "--program", metavar="NC", help="With a start-up list: show the homing order of this program."
     ),
     channel: int = typer.Option(
-        1, "--channel", min=1, max=12, help="With a start-up list: the channel whose axis names are shown."
+        1,
+        "--channel",
+        metavar="N",
+        min=1,
+        max=12,
+        help="With a start-up list: the channel whose axis names are shown.",
     ),
     cnc_root: str | None = typer.Option(
         None,
@@ -714,9 +749,17 @@ def explain(
         listed = data if data is not None else _one_list(path, target)  # (which says why it cannot be read)
         axis_report = explain_list(listed, target, gear, defaults, under)
         shown.LIST[output_format.value](axis_report, screen)
+    elif kind is None and _names_a_file(target):  # no parameter is spelt like a path: the file is missing
+        _fail(f"{target}: {problem}")
     else:
         found = _parameter(target, kind.value if kind is not None else None)
         shown.PARAMETER[output_format.value](parameter_card(found.parameter, found.kind), screen)
+
+
+def _names_a_file(target: str) -> bool:
+    """Whether `explain`'s argument is spelt as a file (a folder in it, or the ending of a list, a program or an
+    export), which no parameter name is."""
+    return any(mark in target for mark in "/\\") or target.lower().endswith((".lis", ".nc", ".xml", ".toml"))
 
 
 def _parameter(target: str, kind_id: str | None) -> "Found":
@@ -729,7 +772,7 @@ def _parameter(target: str, kind_id: str | None) -> "Found":
     found = find_parameters(target, kind)
     if len(found) > 1:
         kinds = ", ".join(f"{hit.kind.id} ({hit.parameter.id})" for hit in found)
-        _fail(f"{target!r} is a parameter of several kinds of list: {kinds}; choose one with --kind")
+        _fail(f"'{target}' is a parameter of several kinds of list: {kinds}; choose one with --kind")
     if not found:
         cat = (kind or AXIS).catalogue()
         suggestions = cat.suggest(target) if cat is not None else []
@@ -737,7 +780,7 @@ def _parameter(target: str, kind_id: str | None) -> "Found":
             suggestions = _members_like(target, cat)
         hint = "; did you mean " + ", ".join(f"`{s}`" for s in suggestions) + "?" if suggestions else ""
         where = f"of a {kind.name}" if kind is not None else "(--kind looks in another kind of list)"
-        _fail(f"{target!r} is neither a file nor a known parameter {where}{hint}")
+        _fail(f"'{target}' is neither a file nor a known parameter {where}{hint}")
     return found[0]
 
 
@@ -832,60 +875,128 @@ def _pair(text: str | None, name: str) -> tuple[float, float] | None:
     return (low, high)
 
 
+# The dry-run options that give a value of the scenario: its key, and the option that sets it.
+_SCENARIO_OPTIONS = {
+    "start_position": "--start",
+    "cam": "--cam",
+    "zero_pulse_period": "--zero-pulse-period",
+    "zero_pulse_phase": "--zero-pulse-phase",
+    "hardware_latch": "--latch",
+    "cycle_time_ms": "--cycle-time-ms",
+    "limit_switches": "--limit-switches",
+    "fixed_stop": "--fixed-stop",
+    "cam_jitter": "--cam-jitter",
+}
+
+
+def _option_at_fault(options: dict[str, Any], message: str) -> str:
+    """A scenario failure caused by the command line, told by the option that gave the bad value (the
+    scenario's checks name its keys, which the user never typed); any other failure as it is."""
+    from .homing.scenario import ScenarioError, parse_input
+
+    if not message.startswith("command-line scenario: "):
+        return message
+    for key, value in options.items():
+        if value is None:
+            continue
+        try:
+            parse_input({key: value}, "")
+        except ScenarioError as exc:
+            told = re.sub(r"^`[\w.]+`: ", "", str(exc).removeprefix(": ")).replace(
+                f"{key} must be", "must be"
+            )
+            told = told.replace("Input should be", "should be").replace("Value should be", "should be")
+            parts = value if isinstance(value, tuple) else (value,)
+            shown = ",".join(str(part) if isinstance(part, bool) else f"{part:g}" for part in parts)
+            return f"{_SCENARIO_OPTIONS[key]} {shown}: {told}"
+    return message
+
+
 @app.command("dry-run")
 def dry_run_command(
-    file: str = typer.Argument(..., help="The axis list to simulate."),
+    file: str = typer.Argument(
+        ...,
+        metavar="FILE",
+        help="The axis list to simulate; with --program, the start-up list (hochlauf.lis) of the machine.",
+    ),
     scenario: str | None = typer.Option(
-        None, "--scenario", help="Scenario TOML (human units: mm or degrees, seconds)."
+        None, "--scenario", metavar="FILE", help="Scenario TOML (human units: mm or degrees, seconds)."
     ),
     output_format: ExplainFormat = typer.Option(
         ExplainFormat.text, "--format", "--output-format", help="text or json."
     ),
-    gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing parameters are used."),
-    start: float | None = typer.Option(None, "--start", help="Start position (overrides the scenario)."),
-    cam: str | None = typer.Option(None, "--cam", help="Reference cam zone FROM,TO."),
+    gear: int = typer.Option(
+        0, "--gear", metavar="N", min=0, max=5, help="Gear stage whose homing parameters are used."
+    ),
+    start: float | None = typer.Option(
+        None, "--start", metavar="POS", help="Start position in mm or degrees (overrides the scenario)."
+    ),
+    cam: str | None = typer.Option(
+        None, "--cam", metavar="FROM,TO", help="Reference cam zone in mm or degrees, e.g. -300,-250."
+    ),
     zero_pulse_period: float | None = typer.Option(
-        None, "--zero-pulse-period", help="Travel per encoder revolution."
+        None,
+        "--zero-pulse-period",
+        metavar="LENGTH",
+        help="Travel per encoder revolution (distance between zero pulses) in mm or degrees.",
     ),
     zero_pulse_phase: float | None = typer.Option(
-        None, "--zero-pulse-phase", help="Position of one zero pulse."
+        None, "--zero-pulse-phase", metavar="POS", help="Position of one zero pulse in mm or degrees."
     ),
     latch: bool | None = typer.Option(
         None, "--latch/--no-latch", help="Whether a hardware latch captures the zero pulse."
     ),
     cycle_time_ms: float | None = typer.Option(
-        None, "--cycle-time-ms", help="CNC cycle time in ms (default: the configuration's cycle-time-us)."
+        None,
+        "--cycle-time-ms",
+        metavar="MS",
+        min=CYCLE_TIME_US[0] / 1000,
+        max=CYCLE_TIME_US[1] / 1000,
+        help="CNC cycle time in ms (default: cycle-time-ms of the configuration, else 1).",
     ),
     limit_switches: str | None = typer.Option(
-        None, "--limit-switches", help="Hardware limit switch positions NEG,POS."
+        None,
+        "--limit-switches",
+        metavar="NEG,POS",
+        help="Hardware limit switch positions in mm or degrees, e.g. -510,510.",
     ),
     fixed_stop: float | None = typer.Option(
-        None, "--fixed-stop", help="Position of the mechanical stop (TORQ)."
+        None, "--fixed-stop", metavar="POS", help="Position of the mechanical stop (TORQ) in mm or degrees."
     ),
     cam_jitter: float | None = typer.Option(
-        None, "--cam-jitter", help="Spread of the cam edge, for --sweep and LIS405."
+        None,
+        "--cam-jitter",
+        metavar="LENGTH",
+        help="Spread of the cam edge in mm or degrees, for --sweep and LIS405.",
     ),
     sweep_runs: int = typer.Option(
         0,
         "--sweep",
+        metavar="N",
         min=0,
         max=1_000_000,
         help="Simulate N start positions and cam jitters and report the outcomes and the spread.",
     ),
     allow_failures: bool = typer.Option(False, "--allow-failures", help="Exit 0 even when sweep runs fail."),
     plot: str | None = typer.Option(
-        None, "--plot", help="Write position and velocity over time to a PNG or SVG file."
+        None, "--plot", metavar="FILE", help="Write position and velocity over time to a PNG or SVG file."
     ),
     config: str | None = typer.Option(
         None,
         "--config",
-        help="Use this configuration file (its scenario table and cycle-time-us) instead of searching for one.",
+        metavar="FILE",
+        help="Use this configuration file (its scenario table and cycle time) instead of searching for one.",
     ),
     color: Color = typer.Option(Color.auto, "--color", help="Colour the text output."),
     program: str | None = typer.Option(
-        None, "--program", help="Homing program (rfp.nc) to run over the whole machine of a start-up list."
+        None,
+        "--program",
+        metavar="NC",
+        help="Homing program (rfp.nc) to run over the whole machine of a start-up list.",
     ),
-    channel: int = typer.Option(1, "--channel", min=1, help="Channel whose axis names the program uses."),
+    channel: int = typer.Option(
+        1, "--channel", metavar="N", min=1, max=12, help="Channel whose axis names the program uses."
+    ),
 ) -> None:
     """Simulate the configured homing before a real axis moves."""
     if plot:
@@ -933,7 +1044,9 @@ def dry_run_command(
         given, cycle_time_us = scenario_input(
             Path(file), Path(scenario) if scenario else None, options, Path(config) if config else None
         )
-    except (ScenarioError, UsageError, UnreadableInput) as exc:
+    except ScenarioError as exc:
+        _fail(_option_at_fault(options, str(exc)))
+    except (UsageError, UnreadableInput) as exc:
         _fail(str(exc))
     except OSError as exc:
         _fail(f"cannot read {scenario}: {reason(exc)}")
@@ -1005,10 +1118,12 @@ def _machine_dry_run(
 
 @app.command("diff")
 def diff_command(
-    a: str = typer.Argument(..., help="First list, or start-up list (or a folder holding one)."),
-    b: str = typer.Argument(..., help="Second list, or start-up list (or a folder holding one)."),
+    a: str = typer.Argument(..., metavar="A", help="First list, or start-up list (or a folder holding one)."),
+    b: str = typer.Argument(
+        ..., metavar="B", help="Second list, or start-up list (or a folder holding one)."
+    ),
     defaults: str | None = typer.Option(
-        None, "--defaults", help="Default axis list loaded under both lists."
+        None, "--defaults", metavar="FILE", help="Default axis list loaded under both lists."
     ),
     output_format: ExplainFormat = typer.Option(
         ExplainFormat.text, "--format", "--output-format", help="text or json."
@@ -1064,7 +1179,10 @@ def report(
         None, "--program", metavar="NC", help="Homing program (rfp.nc) run over the machine: the timeline."
     ),
     scenario: str | None = typer.Option(
-        None, "--scenario", help="Scenario TOML: per axis (\\[axes.NAME]) for a machine, as dry-run reads it."
+        None,
+        "--scenario",
+        metavar="FILE",
+        help="Scenario TOML: per axis (\\[axes.NAME]) for a machine, as dry-run reads it.",
     ),
     against: str | None = typer.Option(
         None,
@@ -1085,9 +1203,11 @@ def report(
         None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."
     ),
     channel: int = typer.Option(
-        1, "--channel", min=1, max=12, help="The channel whose axis names are shown."
+        1, "--channel", metavar="N", min=1, max=12, help="The channel whose axis names are shown."
     ),
-    gear: int = typer.Option(0, "--gear", min=0, max=5, help="Gear stage whose homing parameters are shown."),
+    gear: int = typer.Option(
+        0, "--gear", metavar="N", min=0, max=5, help="Gear stage whose homing parameters are shown."
+    ),
     docs_url: str | None = typer.Option(
         None, "--docs-url", metavar="URL", help="Address of the rule documentation the findings link to."
     ),
@@ -1135,9 +1255,9 @@ def report(
 @app.command("config")
 def config_command(
     show: bool = typer.Option(False, "--show", help="Print the resolved settings."),
-    path: str = typer.Argument(".", help="File or folder whose configuration is shown."),
+    path: str = typer.Argument(".", metavar="PATH", help="File or folder whose configuration is shown."),
     config: str | None = typer.Option(
-        None, "--config", help="Use this configuration file instead of searching for one."
+        None, "--config", metavar="FILE", help="Use this configuration file instead of searching for one."
     ),
 ) -> None:
     """Show the configuration that applies to a path."""
@@ -1146,6 +1266,8 @@ def config_command(
 
     if not show:
         _fail("nothing to do; use `achslint config --show [PATH]`")
+    if config is None and not os.path.lexists(path):  # the defaults of a path that is not there would mislead
+        _fail(f"{path}: no such file or directory")
     try:
         resolved = load_file(Path(config)) if config else discover(Path(path))
     except ConfigError as exc:
@@ -1166,8 +1288,9 @@ class SchemaKind(str, Enum):  # the kinds of list with a typed model (achslint.m
 
 @app.command()
 def server() -> None:
-    """Run the language server for editors on standard input/output (needs the lsp extra: in the achslint
-    checkout, `pip install '.\\[lsp]'`)."""
+    """Run the language server for editors on standard input/output (needs the lsp extra: `pip install '.\\[lsp]'`).
+
+    The extra is installed from the achslint checkout."""
     from .lsp import MISSING, available
 
     if not available():
@@ -1192,8 +1315,9 @@ def schema(
         show_default=False,
     ),
 ) -> None:
-    """Print a JSON Schema: of the parameter model of axis, channel or start-up lists, or of the lint JSON
-    output."""
+    """Print a JSON Schema: of the parameter model of axis, channel or start-up lists, or of lint's JSON.
+
+    Without options: the model of axis lists."""
     from .output import write_json
 
     if output == SchemaOutput.lint:
@@ -1231,7 +1355,7 @@ def main(argv: list[str] | None = None) -> int:
         _say("interrupted")
         return 130
     except typer.TyperException as exc:
-        return _usage_error(exc)
+        return _usage_error(exc, args)
     except Exception as exc:
         if "--debug" in args:
             raise
@@ -1293,16 +1417,47 @@ def run() -> NoReturn:
     sys.exit(code)
 
 
-def _usage_error(exc: Any) -> int:  # a click usage error (typer vendors click: no stable type to name)
+def _usage_error(exc: Any, args: Sequence[str] = ()) -> int:  # a click usage error (typer vendors click)
     """A click/typer usage error as one line: `achslint: error: <what> (see `achslint lint --help`)`."""
     context = getattr(exc, "ctx", None)
     if type(exc).__name__ == "NoArgsIsHelpError":  # `achslint` alone: the help is the answer
         typer.echo(exc.format_message(), err=True)
         return EXIT_ERROR
-    message = " ".join(exc.format_message().split()).rstrip(".")
-    hint = f" (see `{context.command_path} --help`)" if context is not None else " (see `achslint --help`)"
-    _say(f"error: {message[:1].lower()}{message[1:]}{hint}")
+    message = _plain_words(exc, context)
+    if context is not None:
+        where = context.command_path
+    else:  # (an option without its value is told before the command has a context)
+        where = f"achslint {args[0]}" if args and args[0] in _command_names() else "achslint"
+    _say(f"error: {message[:1].lower()}{message[1:]}{' (see `' + where + ' --help`)'}")
     return getattr(exc, "exit_code", EXIT_ERROR)
+
+
+# click's words for a value of the wrong type, and what a user reads instead (the type names are the code's)
+_TYPE_WORDS = {
+    "is not a valid int range": "is not a whole number",
+    "is not a valid integer": "is not a whole number",
+    "is not a valid float range": "is not a number",
+    "is not a valid float": "is not a number",
+}
+
+
+def _plain_words(exc: Any, context: Any) -> str:
+    """The message of a click usage error on one line, with the type names of the code in plain words and a
+    mistyped option's closest options as a did-you-mean (one name per option, not each of its spellings)."""
+    possibilities = getattr(exc, "possibilities", None)
+    option = getattr(exc, "option_name", None)
+    if possibilities and option:
+        spellings = [param.opts for param in context.command.params] if context is not None else []
+        closest: list[str] = []
+        for name in possibilities:
+            same = next((opts for opts in spellings if name in opts), [name])
+            if not any(known in same for known in closest):
+                closest.append(name)
+        return f"no such option: {option}; did you mean {' or '.join(closest[:3])}?"
+    message = " ".join(exc.format_message().split()).rstrip(".")
+    for words, plain in _TYPE_WORDS.items():
+        message = message.replace(words, plain)
+    return message
 
 
 def _tolerant_streams() -> None:
