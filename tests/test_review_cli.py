@@ -153,3 +153,25 @@ def test_dry_run_help_gives_units_and_the_start_up_list():
     for option in ("--start", "--cam ", "--zero-pulse-period", "--fixed-stop", "--cam-jitter"):
         described = text.split(option, 1)[1][:200]
         assert "mm or degrees" in described or "mm or °" in described, option
+
+
+def test_every_option_of_every_command_is_in_the_readme():
+    """Each option a command takes (hidden old spellings aside) is named in the README."""
+    import typer
+
+    from achslint.cli import app
+
+    from .conftest import ROOT
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    missing = [
+        f"{name} {option}"
+        for name, command in typer.main.get_command(app).commands.items()
+        for param in command.params
+        if not getattr(param, "hidden", False)
+        for option in [*param.opts, *param.secondary_opts]
+        if option.startswith("--")
+        and option != "--help"
+        and not re.search(re.escape(option) + r"(?![\w-])", readme)
+    ]
+    assert not missing, missing
