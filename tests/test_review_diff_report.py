@@ -9,8 +9,6 @@ import json
 import shutil
 from pathlib import Path
 
-import pytest
-
 from achslint.output.report import as_html
 from achslint.report import ReportRequest, build_report
 
@@ -100,13 +98,8 @@ def test_machine_diff_reports_a_removed_tool_list(tmp_path: Path) -> None:
     assert report["differ"] is True
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="cli.diff_command passes the --defaults file's bytes without its name to listdiff.diff_lists, and "
-    "axis.resolved.resolve_bytes names every default list 'default list': the source reads 'default list "
-    "line 1 (default list)' instead of naming the file (fix: a defaults_name argument through both)",
-)
 def test_list_diff_names_the_default_list_a_value_comes_from(tmp_path: Path) -> None:
+    """The source of a value from `--defaults D` read "default list line 1 (default list)"; it names D."""
     defaults = tmp_path / "defs.lis"
     defaults.write_bytes(b"getriebe[0].kv 2000\r\nEnde\r\n")
     a = FIXTURES / "lists" / "achsmds1.lis"

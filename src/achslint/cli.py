@@ -1160,7 +1160,14 @@ def diff_command(
     except (MachineDiffError, MachineError, UsageError) as exc:
         _fail(str(exc))
     contents = [_one_list(Path(name), name) for name in (a, b, *([defaults] if defaults else []))]
-    report = diff_lists(contents[0], a, contents[1], b, contents[2] if defaults else None)
+    report = diff_lists(
+        contents[0],
+        a,
+        contents[1],
+        b,
+        contents[2] if defaults else None,
+        defaults_name=defaults or "default list",
+    )
     RENDERERS[output_format.value](report, _screen(color))
     raise typer.Exit(EXIT_FINDINGS if differ(report) else EXIT_OK)
 

@@ -164,10 +164,12 @@ def diff_lists(
     *,
     a_defaults: bytes | None = None,
     b_defaults: bytes | None = None,
+    defaults_name: str = "default list",
 ) -> DiffReport:
-    """Two axis lists compared. `defaults`: the default list loaded under both; `a_defaults` / `b_defaults`:
-    one loaded under that list alone instead (the report's backup may come from another machine)."""
-    left = resolve_bytes(a, a_name, a_defaults if a_defaults is not None else defaults)
-    right = resolve_bytes(b, b_name, b_defaults if b_defaults is not None else defaults)
+    """Two axis lists compared. `defaults`: the default list loaded under both (`defaults_name`: its name, in
+    the sources of its values); `a_defaults` / `b_defaults`: one loaded under that list alone instead (the
+    report's backup may come from another machine)."""
+    left = resolve_bytes(a, a_name, a_defaults if a_defaults is not None else defaults, defaults_name)
+    right = resolve_bytes(b, b_name, b_defaults if b_defaults is not None else defaults, defaults_name)
     comparison = compare_axes(left, right)
     return {"version": 1, "a": a_name, "b": b_name, **comparison}

@@ -253,7 +253,10 @@ class ResolvedAxis:
         )
 
 
-def resolve_bytes(data: bytes, name: str, defaults: bytes | None = None) -> ResolvedAxis:
-    """The resolved axis of a list's bytes, with an optional default list underneath."""
-    default_analysis = analyse(parse_bytes(defaults, "default list")) if defaults is not None else None
+def resolve_bytes(
+    data: bytes, name: str, defaults: bytes | None = None, defaults_name: str = "default list"
+) -> ResolvedAxis:
+    """The resolved axis of a list's bytes, with an optional default list (named `defaults_name` where a value
+    comes from it) underneath."""
+    default_analysis = analyse(parse_bytes(defaults, defaults_name)) if defaults is not None else None
     return ResolvedAxis(analyse(parse_bytes(data, name)), default_analysis)
