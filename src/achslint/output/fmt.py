@@ -3,6 +3,8 @@ then one summary line."""
 
 from __future__ import annotations
 
+import codecs
+import sys
 from collections.abc import Sequence
 from typing import Protocol
 
@@ -44,9 +46,28 @@ def write_results(outcome: Formatting, mode: str, quiet: bool, screen: Screen) -
         if result.output is not None:
             screen.write_bytes(result.output)
         elif result.diff:
-            screen.echo(result.diff, newline=False)
+            _write_diff(result.diff, screen)
         elif result.changed and not quiet and (result.written or mode == "check"):
             screen.echo(printable(f"{'would reformat' if mode == 'check' else 'reformatted'} {result.name}"))
+
+
+def _write_diff(diff: str, screen: Screen) -> None:
+    """A diff as it is, as `lint --fix --diff` writes one: not through `echo`, which drops the escape sequences
+    a list may hold when standard output is no terminal (the diff would then not show what fmt writes)."""
+    stream = screen.file or sys.stdout
+    if not hasattr(stream, "buffer"):
+        stream.write(diff)
+        return
+    encoding = getattr(stream, "encoding", None) or "utf-8"
+    if codecs.lookup(encoding).name == "ascii":  # a misconfigured locale: UTF-8, as echo writes then
+        encoding = "utf-8"
+    try:
+        data = diff.encode(
+            encoding, "surrogateescape"
+        )  # (a file name's bytes that are not UTF-8 as they were)
+    except UnicodeEncodeError:
+        data = diff.encode(encoding, "replace")
+    screen.write_bytes(data)
 
 
 def summary(outcome: Formatting, mode: str, quiet: bool) -> str | None:
