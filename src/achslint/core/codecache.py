@@ -20,6 +20,7 @@ import contextlib
 import dataclasses
 import marshal
 import os
+import stat
 import sys
 from types import CodeType
 from typing import Any
@@ -117,7 +118,12 @@ def _read(path: str) -> dict[str, bytes]:
     """The texts and their code's bytes in the file; empty when it is missing, too large or not what this
     module writes."""
     try:
-        with open(path, "rb") as stream:
+        # Opened without blocking, and read only when it is a regular file: a FIFO (or a link to a device) put
+        # in its place must not make every run hang (or read without end).
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+        with os.fdopen(fd, "rb") as stream:
+            if not stat.S_ISREG(os.fstat(stream.fileno()).st_mode):
+                return {}
             data = stream.read(MAX_BYTES + 1)
         table = marshal.loads(data) if len(data) <= MAX_BYTES else None
     except (OSError, EOFError, ValueError, TypeError):

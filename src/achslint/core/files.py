@@ -368,6 +368,10 @@ def write_output(path: Path, data: bytes) -> None:
         info: os.stat_result | None = os.stat(path)
     except FileNotFoundError:
         info = None
+        # A new file: its folder must exist as the system walks the path. `real_path` drops `missing/..` by
+        # the letters, so `-o missing/../achsmds1.lis` would have replaced the input that `same_file` (which
+        # asks the system) did not recognise: refused here as the shell's `>` refuses it.
+        os.stat(os.path.dirname(path) or os.curdir)
     # `/dev/stdout` stands for what the shell opened, maybe a file `>>` appends to: appended to, never cut
     if any(_at_or_below(Path(os.path.abspath(path)), Path(root)) for root in KERNEL_FILE_SYSTEMS):
         _write_plainly(path, data, "ab")
