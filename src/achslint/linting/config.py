@@ -391,7 +391,22 @@ def _table(path: Path) -> dict[str, Any]:
             )
     known = {item.name for item in fields(Settings)}
     keys = {file_key(key) if key in known else key: value for key, value in data.items()}
+    _fmt_columns(path, keys.get("fmt"))
     return _cycle_time_in_ms(path, keys)
+
+
+def _fmt_columns(path: Path, table: object) -> None:
+    """The [fmt] table's columns are whole numbers as written: `true` and `"30"` are refused here (the
+    settings' validation would take them for 1 and 30)."""
+    if not isinstance(table, dict):
+        return
+    for key in ("value-column", "comment-column"):
+        value = table.get(key)
+        if value is not None and type(value) is not int:
+            raise ConfigError(
+                f"configuration error in {path}: key `fmt.{key}`: {value!r} is not a column number; write a "
+                f"whole number from 1 to {MAX_COLUMN} (value-column = 40)"
+            )
 
 
 def _cycle_time_in_ms(path: Path, keys: dict[str, Any]) -> dict[str, Any]:
