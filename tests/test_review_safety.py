@@ -1,5 +1,5 @@
 """Review of the safety promises: writes only where the user said, reads only inside the project, never
-lose what the user wrote, never hang. Each test is a way one of them was broken (or still is: xfail)."""
+lose what the user wrote, never hang. Each test is a way one of them was broken."""
 
 from __future__ import annotations
 
@@ -125,12 +125,6 @@ def test_a_hostile_code_cache_only_means_compiling_again(tmp_path: Path) -> None
         assert namespace["f"](1) == 2  # type: ignore[operator]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="syntax/parser.py `_cache_file` takes a relative XDG_CACHE_HOME as it is (codecache.private_folder "
-    "ignores it, as the XDG spec says): the grammar cache lands in the working directory. Fix: use "
-    "codecache.private_folder() there.",
-)
 def test_a_relative_xdg_cache_home_puts_no_grammar_cache_in_the_working_directory(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -143,12 +137,6 @@ def test_a_relative_xdg_cache_home_puts_no_grammar_cache_in_the_working_director
     assert not (tmp_path / "relative-cache").exists()
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="lsp/features.py `rules_document` writes rules-<version>.md below XDG_CACHE_HOME taken as it is (a "
-    "relative one is the server's working directory, the workspace) and in a folder it never checks is "
-    "private. Fix: use codecache.private_folder(), return None when it gives None.",
-)
 def test_the_language_server_writes_no_rule_documentation_into_the_working_directory(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -167,13 +155,6 @@ def test_the_language_server_writes_no_rule_documentation_into_the_working_direc
 
 @needs_fifo
 @pytest.mark.slow
-@pytest.mark.xfail(
-    strict=True,
-    raises=subprocess.TimeoutExpired,
-    reason="syntax/parser.py hands its grammar cache file to Lark, which opens it blocking and reads it whole: "
-    "a FIFO there hangs every run (a link to /dev/zero reads until memory runs out). Fix: pass the cache only "
-    "when os.lstat says it is a regular file (or missing), as codecache._read checks.",
-)
 def test_a_fifo_in_place_of_the_grammar_cache_does_not_hang_a_run(tmp_path: Path) -> None:
     cache = tmp_path / "cache"
     script = (
@@ -198,14 +179,6 @@ def test_a_fifo_in_place_of_the_grammar_cache_does_not_hang_a_run(tmp_path: Path
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(
-    strict=True,
-    reason="linting/watch.py stamps every file below a folder named, the report too: `lint . --watch -o "
-    "report.txt` (or `> report.txt` in the folder) wakes itself with each report it writes and lints again "
-    "without end (18,000 lines in 25 s). Fix: leave the file --output-file writes (cli._watch knows it) out "
-    "of Watcher.files, or stamp only the files the run reads (lists, start-up lists, configurations) and the "
-    "folder listings for new lists.",
-)
 def test_watch_is_not_woken_by_the_report_it_writes(tmp_path: Path) -> None:
     shutil.copy(FIXTURE, tmp_path / "achsmds1.lis")
     process = subprocess.Popen(

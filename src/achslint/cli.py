@@ -367,7 +367,11 @@ def lint(
     if show_files or show_settings:
         _show(request, show_files, fmt)
     if watch:
-        _watch(request, lambda: _lint_once(request, fmt, color, docs_url, config, quiet, silent, statistics))
+        _watch(
+            request,
+            lambda: _lint_once(request, fmt, color, docs_url, config, quiet, silent, statistics),
+            output_file,
+        )
     try:
         with shown.progress(quiet) as progress:
             outcome = run_lint(request, stdin=sys.stdin.buffer if "-" in paths else None, progress=progress)
@@ -497,16 +501,19 @@ def _lint_once(
     sys.stdout.flush()
 
 
-def _watch(request: "LintRequest", lint_once: "Callable[[], None]") -> NoReturn:
+def _watch(
+    request: "LintRequest", lint_once: "Callable[[], None]", output_file: str | None = None
+) -> NoReturn:
     """--watch: lint, then again whenever a file of the run (a list, a configuration, a start-up list, a
-    folder named) changes, until interrupted (Ctrl-C: exit 130)."""
+    folder named) changes, until interrupted (Ctrl-C: exit 130); the report it writes itself is no change."""
     from .linting.watch import Watcher
 
-    watcher = Watcher(request.paths, request.config_file)
+    lint_once()  # (first: the output file exists then, and the watcher knows it for its own)
+    watcher = Watcher(request.paths, request.config_file, written=[output_file] if output_file else None)
     while True:
-        lint_once()
         _say("watching for changes (Ctrl-C to stop)")
         watcher.wait()
+        lint_once()
 
 
 def _patterns(values: list[str] | None) -> list[str] | None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import stat
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -23,10 +24,25 @@ Stamp = tuple[int, int]  # (modification time in ns, size)
 
 
 class Watcher:
-    def __init__(self, paths: list[str], config_file: str | None = None, interval: float = INTERVAL) -> None:
+    def __init__(
+        self,
+        paths: list[str],
+        config_file: str | None = None,
+        interval: float = INTERVAL,
+        written: list[str] | None = None,
+    ) -> None:
         self.paths = [Path(p) for p in paths if p != "-"]
         self.config_file = Path(config_file) if config_file else None
         self.interval = interval
+        # What the run itself writes (its --output-file, the file standard output goes to) wakes no run: the
+        # report written into the folder watched made it lint again without end.
+        self.own: set[tuple[int, int]] = set()
+        places: list[str | int] = [*(written or []), 1]
+        for where in places:
+            with contextlib.suppress(OSError, ValueError):
+                info = os.stat(where)
+                if stat.S_ISREG(info.st_mode):
+                    self.own.add((info.st_dev, info.st_ino))
         self.seen = self.snapshot()
 
     def files(self) -> Iterator[Path]:
@@ -58,6 +74,8 @@ class Watcher:
             try:
                 info = os.stat(path)
             except (OSError, ValueError):
+                continue
+            if (info.st_dev, info.st_ino) in self.own:
                 continue
             stamps[str(path)] = (info.st_mtime_ns, info.st_size)
         return stamps

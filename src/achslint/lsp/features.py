@@ -81,15 +81,23 @@ def rules_document() -> str | None:
     if checkout.is_file():
         return checkout.as_uri()
     from .. import __version__
+    from ..core.codecache import private_folder
     from ..docs import rules_markdown
 
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    target = Path(base) / "achslint" / f"rules-{__version__}.md"
+    folder = private_folder()  # the user's own cache folder (a relative XDG_CACHE_HOME is ignored), or none
+    if folder is None:
+        return None
+    target = Path(folder) / f"rules-{__version__}.md"
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
         text = rules_markdown()
+        if target.is_symlink() or (target.exists() and not target.is_file()):
+            return None  # a link or a FIFO where the copy belongs: never written through, never read
         if not target.is_file() or target.read_text(encoding="utf-8") != text:
-            target.write_text(text, encoding="utf-8")
+            temporary = target.with_name(f"{target.name}.{os.getpid()}.tmp")
+            handle = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)  # never through a link
+            with os.fdopen(handle, "w", encoding="utf-8") as stream:
+                stream.write(text)
+            os.replace(temporary, target)
     except OSError:
         return None
     return target.as_uri()

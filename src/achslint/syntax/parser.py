@@ -242,25 +242,31 @@ class _Builder:
 
 
 def _cache_file(grammar: str) -> str | bool:
-    """Where Lark may keep its analysed grammar: a private per-user folder, else no cache.
+    """Where Lark may keep its analysed grammar: a regular file (or none yet) in the private per-user cache
+    folder (`codecache.private_folder`: a relative XDG_CACHE_HOME is ignored), else no cache.
 
-    Lark's cache is a pickle, so it is only kept in a folder that belongs to the
-    user and that no one else can write to (not a shared temporary folder).
+    Lark's cache is a pickle, so it is only kept in a folder that belongs to the user and that no one else
+    can write to (not a shared temporary folder); and Lark opens it blocking and reads it whole, so a FIFO or
+    a link to a device there (which would hang or exhaust every run) is no cache.
     """
     import hashlib
     import os
+    import stat
 
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    folder = os.path.join(base, "achslint")
-    try:
-        os.makedirs(folder, mode=0o700, exist_ok=True)
-        info = os.stat(folder)
-        if (hasattr(os, "getuid") and info.st_uid != os.getuid()) or info.st_mode & 0o022:
-            return False
-    except OSError:
+    from ..core.codecache import private_folder
+
+    folder = private_folder()
+    if folder is None:
         return False
     digest = hashlib.sha256(grammar.encode("utf-8")).hexdigest()[:16]
-    return os.path.join(folder, f"grammar-{digest}.lark-cache")
+    path = os.path.join(folder, f"grammar-{digest}.lark-cache")
+    try:
+        info = os.lstat(path)
+    except FileNotFoundError:
+        return path  # Lark writes it
+    except OSError:
+        return False
+    return path if stat.S_ISREG(info.st_mode) else False
 
 
 @lru_cache(maxsize=1)
