@@ -38,7 +38,7 @@ STRATEGY = StrategyDef(
     ),
     parameters={
         **{k: v for k, v in SEQUENCE.items() if k != "getriebe[i].vb_reflow"},
-        **CAM,
+        **{k: v for k, v in CAM.items() if k != "lr_hw[0].move_from_cam_max_dist"},
         **CAM_EDGE,
         "getriebe[i].vb_refmax": Use("speed towards the cam, at which its edge is taken (§3.5)"),
     },

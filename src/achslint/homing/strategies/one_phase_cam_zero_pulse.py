@@ -59,7 +59,7 @@ STRATEGY = StrategyDef(
     ),
     parameters={
         **SEQUENCE,
-        **CAM,
+        **{k: v for k, v in CAM.items() if k != "lr_hw[0].move_from_cam_max_dist"},
         **ZERO_PULSE,
         **CAM_AND_ZERO_PULSE,
         "getriebe[i].vb_refmax": Use("speed towards the cam (§3.5; assumed for the approach)"),

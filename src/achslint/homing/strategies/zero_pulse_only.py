@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ..base import Phase, StrategyDef
+from ..base import Phase, StrategyDef, Use
 from ..parameters import SEQUENCE, ZERO_PULSE
 from ..sequences import zero_pulse
 from . import _sequence
@@ -34,7 +34,14 @@ STRATEGY = StrategyDef(
         "There is no reference cam: the axis moves at vb_reflow in the homing direction and takes the first zero "
         "pulse as the reference (§2.3.3.3); the pulse must occur only once in the travel range to be unique."
     ),
-    parameters={**SEQUENCE, **ZERO_PULSE},
+    parameters={
+        **SEQUENCE,
+        **ZERO_PULSE,
+        "lr_hw[0].zero_pulse_search_max_dist": Use(
+            "bounds the zero-pulse search, counted from the start (without a cam the zero-pulse logic is armed at "
+            "once)"
+        ),
+    },
     example="kenngr.antr_typ 1\nkenngr.ref_ohne_nocken 1\nkenngr.ref_ohne_rev 1\n",
     phases=_phases,
     manual_type="II",
