@@ -3,6 +3,7 @@ manual: every statement must hold for the axis under its resolved configuration 
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -69,3 +70,20 @@ def test_one_phase_homing_does_not_bound_a_move_off_the_cam(strategy: str) -> No
     row = _rows(report)["lr_hw[0].move_from_cam_max_dist"]
     assert row["effective"] is False, row["reason"]
     assert any("move_from_cam_max_dist" in message for message in _codes(*lines).get("LIS401", []))
+
+
+def test_fixed_stop_without_retraction_distance_describes_no_retraction() -> None:
+    # §2.3.3.4.1: after the stop is detected the axis moves away by the retraction distance (P-AXIS-00348);
+    # with 0 there is no such move, and the dry-run runs one phase only: explain must not describe a second.
+    good = Path(__file__).parent.parent / "fixtures" / "rules" / "LIS306" / "good.lis"
+    lines = [
+        line
+        for line in good.read_bytes().decode("latin-1").splitlines()
+        if "retraction" not in line and line.strip() != "Ende"
+    ]
+    report = _explain(*lines)
+    assert report["strategy"]["id"] == "fixed_stop"
+    assert _rows(report)["kenngr.homing.torq_retraction_distance"]["value"] == 0
+    run = achslint.dry_run(("\n".join(lines) + "\nEnde\n").encode())
+    assert [phase["name"] for phase in report["phases"]] == [phase.name for phase in run.trace.phases]
+    assert all("retract" not in phase["name"] for phase in report["phases"])

@@ -32,15 +32,28 @@ def _phases(setup: HomingSetup) -> list[Phase]:
     retraction = setup.axis.get("kenngr.homing.torq_retraction_distance")
     unit = setup.axis.parameter("kenngr.homing.torq_retraction_distance").unit(setup.axis_type)
     missing = "" if speed else "torq_move_velocity is not set (0): the axis does not move (LIS315)"
-    return [
-        Phase(
-            "to the fixed stop",
-            direction,
-            path,
-            speed,
-            "the stop is detected (armed after torq_min_distance; homing aborts after torq_max_distance)",
-            missing,
+    # No retraction distance: the axis stays at the stop and there is no second move (§2.3.3.4.1); a gantry
+    # slave retracts by its master's distance (§2.3.3.4.5), which its own list does not show.
+    stays = not retraction and _not_gantry_slave(setup.axis)
+    approach = Phase(
+        "to the fixed stop",
+        direction,
+        path,
+        speed,
+        "the stop is detected (armed after torq_min_distance; homing aborts after torq_max_distance)",
+        "; ".join(
+            note
+            for note in (
+                missing,
+                "torq_retraction_distance is 0: no retraction, the axis stays at the stop" * stays,
+            )
+            if note
         ),
+    )
+    if stays:
+        return [approach]
+    return [
+        approach,
         Phase(
             "retract from the stop",
             opposite(direction),
