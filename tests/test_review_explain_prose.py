@@ -87,3 +87,22 @@ def test_fixed_stop_without_retraction_distance_describes_no_retraction() -> Non
     run = achslint.dry_run(("\n".join(lines) + "\nEnde\n").encode())
     assert [phase["name"] for phase in report["phases"]] == [phase.name for phase in run.trace.phases]
     assert all("retract" not in phase["name"] for phase in report["phases"])
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="homing/parameters.py EVERYWHERE calls antr.reference_check.* effective on every drive type; "
+    "reference monitoring works on SERCOS only (§2.5.1, P-ERR-110548): give both Use entries when=SERCOS",
+)
+def test_reference_monitoring_has_no_effect_on_a_drive_other_than_sercos() -> None:
+    # §2.5.1: reference monitoring is possible only for the SERCOS drive type; on any other the CNC reports
+    # ID 110548 and (LIS310) uses an empty element name, so neither parameter takes effect.
+    lines = (
+        "kenngr.antr_typ 1",
+        "antr.reference_check.element_name S-0-0135",
+        "antr.reference_check.bit_nr 6",
+    )
+    assert "LIS310" in _codes(*lines)
+    rows = _rows(_explain(*lines))
+    assert rows["antr.reference_check.element_name"]["effective"] is False
+    assert rows["antr.reference_check.bit_nr"]["effective"] is False
