@@ -92,7 +92,9 @@ def test_fixed_stop_without_retraction_distance_describes_no_retraction() -> Non
 @pytest.mark.xfail(
     strict=True,
     reason="homing/parameters.py EVERYWHERE calls antr.reference_check.* effective on every drive type; "
-    "reference monitoring works on SERCOS only (§2.5.1, P-ERR-110548): give both Use entries when=SERCOS",
+    "reference monitoring works on SERCOS only (§2.5.1, P-ERR-110548). Giving both Use entries when=SERCOS "
+    "is not enough: LIS401 then replaces LIS310's correction finding and the invariants (one finding per "
+    "parameter) fail; explain should show the CNC's correction (the name emptied) instead",
 )
 def test_reference_monitoring_has_no_effect_on_a_drive_other_than_sercos() -> None:
     # §2.5.1: reference monitoring is possible only for the SERCOS drive type; on any other the CNC reports
