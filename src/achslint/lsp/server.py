@@ -74,6 +74,7 @@ DRAIN_WAIT = 5.0  # seconds the server waits for running requests when the clien
 IDLE_COLLECTION = 2.0  # seconds without a message before the server collects garbage (see run())
 COLLECT_AFTER_LINTS = 200  # ... or after this many lints without such a pause
 PIPE_SIZE = 1 << 20  # bytes the pipe to the client holds, where the system allows it (`wide_pipe`)
+SHOWN_PROBLEMS = 5  # problems of the editor's settings named in the one message that tells them
 IN_FLIGHT = 64  # messages read but not yet handled; the reader waits beyond that (a flood cannot fill memory)
 _DOCUMENT_SYNC = (lsp.TEXT_DOCUMENT_DID_OPEN, lsp.TEXT_DOCUMENT_DID_CHANGE, lsp.TEXT_DOCUMENT_DID_CLOSE)
 
@@ -113,6 +114,12 @@ class _Unreadable:
 
 
 class _Protocol(LanguageServerProtocol):
+    def _handle_cancel_notification(self, msg_id: Any) -> None:
+        # A request answered already (or unknown) is no news: the protocol lets the client cancel one whose answer
+        # is on its way, and editors do while typing; pygls logs a warning line for each.
+        if msg_id in self._request_futures:
+            super()._handle_cancel_notification(msg_id)
+
     def _send_response(
         self, msg_id: Any, result: Any | None = None, error: lsp.ResponseError | None = None
     ) -> None:
@@ -913,17 +920,35 @@ def _take_settings(ls: AchslintServer, raw: object) -> None:
     """Use the editor's settings; codes that pick no rule are told to the user (and not used)."""
     ls.session.settings = ClientSettings.from_dict(raw)
     ls.session.settings_changed()
-    for problem in ls.session.settings.problems:
-        ls.window_show_message(lsp.ShowMessageParams(lsp.MessageType.Warning, problem))
+    problems = ls.session.settings.problems
+    if problems:  # one message, however many codes are wrong (each its own pop-up would bury the editor)
+        shown = problems[:SHOWN_PROBLEMS]
+        more = len(problems) - len(shown)
+        text = "; ".join(shown) + (f"; and {more} more" if more else "")
+        ls.window_show_message(lsp.ShowMessageParams(lsp.MessageType.Warning, text))
 
 
 def _path(uri: str) -> Path | None:
+    """The file a document's URI names on this system; None (the document is checked as an unsaved buffer)
+    when it names none: another scheme, a NUL (file:///a%00b), or a path that is not absolute here. On POSIX a
+    Windows drive (file:///C:/x) or a URI without its slashes (file:x) would be a path relative to the
+    server's working folder, and a remote host (file://server/share) `//server/...`: files outside the
+    workspace, read as the document's own."""
+    if not uri.startswith("file:"):
+        return None
+    if os.name != "nt" and uri.startswith("file://"):
+        host, _, rest = uri[len("file://") :].partition("/")
+        if host.lower() == "localhost":  # file://localhost/p is file:///p (RFC 8089)
+            uri = "file:///" + rest
+        elif host:
+            return None
     try:
         path = to_fs_path(uri)
     except Exception:
         return None
-    # A NUL (file:///a%00b) names no file: the document is checked as an unsaved buffer.
-    return Path(path) if path and uri.startswith("file:") and "\0" not in path else None
+    if not path or "\0" in path or not Path(path).is_absolute():
+        return None
+    return Path(path)
 
 
 @feature(lsp.INITIALIZE)

@@ -86,19 +86,42 @@ class ClientSettings:
                     problems.append(f"achslint.{key}: {exc}")
             return chosen
 
+        def switch(key: str, value: object) -> bool:
+            """A yes/no setting: a boolean, a number, or the words true/false; anything else is off (and told:
+            `bool("false")` would be on)."""
+            if isinstance(value, (bool, int)):
+                return bool(value)
+            word = value.strip().lower() if isinstance(value, str) else None
+            if word in ("true", "1", "on", "yes"):
+                return True
+            if word not in ("false", "0", "off", ""):
+                problems.append(f"achslint.{key}: true or false, not {_shown(value)}; left off")
+            return False
+
         debounce = raw.get("debounceMs", raw.get("debounce_ms", 0))
+        hints_key = "inlayHints" if "inlayHints" in raw else "inlay_hints"
         return cls(
             select=codes("select") or None,
             extend_select=codes("extendSelect") or codes("extend_select") or [],
             ignore=codes("ignore") or [],
-            inlay_hints=bool(raw.get("inlayHints", raw.get("inlay_hints", False))),
-            debounce_ms=debounce if isinstance(debounce, int) and 0 <= debounce <= 5000 else 0,
+            inlay_hints=switch(hints_key, raw.get(hints_key, False)),
+            debounce_ms=(
+                debounce
+                if isinstance(debounce, int) and not isinstance(debounce, bool) and 0 <= debounce <= 5000
+                else 0
+            ),
             problems=problems,
         )
 
     @property
     def overrides(self) -> Overrides:
         return Overrides(select=self.select, extend_select=list(self.extend_select), ignore=list(self.ignore))
+
+
+def _shown(value: object) -> str:
+    """A setting's value as the user wrote it, shortened for a message."""
+    text = repr(value)
+    return text if len(text) <= 40 else text[:40] + "..."
 
 
 @dataclass
