@@ -212,3 +212,19 @@ def test_the_package_keeps_naming_the_registry_function_once_the_strategies_are_
 
     classify(resolve_bytes(b"kenngr.antr_typ 1\nEnde\n", "x.lis"))  # loads every module of homing/strategies/
     assert achslint.homing.strategies is registry.strategies
+
+
+def test_every_strategy_s_example_is_a_list_the_cnc_runs():
+    """The examples `explain PARAM --format json` publishes are lists the CNC loads without an error: the
+    fixed-stop one lacked its TORQUE_LIMIT drive ident (LIS328: the CNC stops the homing), the spindles'
+    the MODULO bit (LIS327: the CNC corrects the mode)."""
+    from achslint.core.diagnostics import Severity
+    from achslint.homing import strategies
+    from achslint.linting.linter import FileSettings, lint_file
+
+    for definition in strategies():
+        found = lint_file(
+            (definition.example + "Ende\n").encode(), "achsmds1.lis", FileSettings(keep_source=False)
+        )
+        errors = [d.code for d in found.diagnostics if d.severity is Severity.ERROR]
+        assert errors == [], (definition.id, errors)

@@ -102,6 +102,9 @@ STRATEGY = StrategyDef(
         "kenngr.antr_typ 2\nkenngr.homing.homing_type TORQ\nkenngr.homing.torq_homing_dir POSITIVE\n"
         "kenngr.homing.torq_max_distance 200000\nkenngr.homing.torq_detect_time 25000\n"
         "getriebe[0].homing.torq_move_velocity 2000\ngetriebe[0].homing.torq_move_acceleration 50\n"
+        # the drive's torque limit, written while homing (without it the CNC stops the homing: LIS328)
+        "antr.fixed_stop.drive_ident[0].id TORQUE_LIMIT\nantr.fixed_stop.drive_ident[0].commu ACYCLIC\n"
+        "antr.fixed_stop.drive_ident[0].wr_ident S_0_0092\n"
     ),
     phases=_phases,
     unused="fixed-stop homing uses only its own torq_* parameters",

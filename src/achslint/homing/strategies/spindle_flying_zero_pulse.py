@@ -43,7 +43,7 @@ STRATEGY = StrategyDef(
             "bounds the zero-pulse search, counted from the start (without a cam the zero-pulse logic is armed at once)"
         ),
     },
-    example="kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 1\n",
+    example="kenngr.antr_typ 1\nkenngr.achs_typ 4\nkenngr.achs_mode 0x4\nkenngr.ref_ohne_rev 1\nkenngr.ref_ohne_nocken 1\n",
     phases=_phases,
     with_zero_pulse=True,
     one_phase=True,
