@@ -1117,15 +1117,31 @@ def start_range(scenario: Scenario) -> tuple[float, float]:
 
 
 def sweep(plan: MachinePlan, runs: int, seed: int = 1) -> dict[str, Any]:
-    """Run the program from `runs` random start positions (every axis drawn from its own range) and cam
-    jitters; report the spread of the total time and which axis fails how often, and why."""
+    """Run the program from `runs` random start positions (every axis drawn from its own range, a gantry
+    slave kept at its scenario distance from its master) and cam jitters; report the spread of the total
+    time and which axis fails how often, and why."""
     rng = random.Random(seed)
-    ranges = {name: start_range(prepared.scenario) for name, prepared in plan.axes.items()}
+    # A gantry slave is bolted to its master: it starts at the scenario's distance from wherever the master
+    # starts (drawn on its own, the two could start a metre apart, which no gantry can).
+    apart = {
+        slave: plan.axes[slave].scenario.start_position - plan.axes[master].scenario.start_position
+        for slave, master in plan.master.items()
+        if slave in plan.axes and master in plan.axes and master not in plan.master
+    }
+    drawn = {
+        name: start_range(prepared.scenario) for name, prepared in plan.axes.items() if name not in apart
+    }
+    ranges: dict[str, tuple[float, float]] = {}
+    for name in plan.axes:
+        low, high = drawn[plan.master[name]] if name in apart else drawn[name]
+        gap = apart.get(name, 0.0)
+        ranges[name] = (low + gap, high + gap)
     jitters = {name: prepared.scenario.cam_jitter for name, prepared in plan.axes.items()}
     times: list[float] = []
     failures: Counter[tuple[str, str]] = Counter()
     for _ in range(runs):
-        starts = {name: rng.uniform(low, high) for name, (low, high) in ranges.items()}
+        starts = {name: rng.uniform(low, high) for name, (low, high) in drawn.items()}
+        starts.update({slave: starts[plan.master[slave]] + gap for slave, gap in apart.items()})
         shifts = {name: rng.uniform(-j, j) for name, j in jitters.items() if j}
         result = plan.run(starts, shifts)
         if result.failure is None:

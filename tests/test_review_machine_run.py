@@ -1,0 +1,37 @@
+"""Review of the machine dry-run (scenario, gantry, groups, sweeps): each test failed before its fix."""
+
+from __future__ import annotations
+
+from achslint.machine.model import Program
+from achslint.machine.run import MachinePlan, sweep
+
+from .test_machinerun import LINEAR, PROGRAM, g74, make_axis, make_machine, scenario
+
+
+def test_a_sweep_starts_a_gantry_slave_where_its_master_puts_it() -> None:
+    # Y2 is coupled to Y: the two cannot start 1,000 mm apart. A sweep draws the master's start and keeps
+    # the slave at the scenario's distance from it (here 7 mm), as the mechanics do.
+    slave = LINEAR + "kenngr.gantry_ax_nr 2\nkenngr.gantry_slave_no_homing 0\n"
+    machine = make_machine(
+        make_axis("Y", 2, LINEAR), make_axis("Y2", 3, slave, gantry_master="Y"), pairs=[("Y", "Y2")]
+    )
+    program = Program(PROGRAM, [g74(1, 10, ("Y", 1), ("Y2", 1))])
+    plan = MachinePlan(
+        machine,
+        program,
+        scenario({"Y": {"start_position": 10.0}, "Y2": {"start_position": 17.0}}),
+    )
+    seen: list[tuple[float, float]] = []
+    run = plan.run
+
+    def recording(starts=None, cam_shifts=None):  # type: ignore[no-untyped-def]
+        seen.append((starts["Y"], starts["Y2"]))
+        return run(starts, cam_shifts)
+
+    plan.run = recording  # type: ignore[method-assign]
+    summary = sweep(plan, 20, seed=5)
+    assert len(seen) == 20
+    assert all(abs((y2 - y) - 7.0) < 1e-9 for y, y2 in seen), seen[:3]
+    low, high = summary["start_ranges"]["Y"]
+    assert summary["start_ranges"]["Y2"] == [low + 7.0, high + 7.0]
+    assert sweep(plan, 20, seed=5) == summary  # the same seed, the same statistics
