@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import pytest
+
+from achslint.homing.scenario import ScenarioError
 from achslint.machine.model import Program
-from achslint.machine.run import MachinePlan, sweep
+from achslint.machine.run import MachinePlan, run_machine, sweep
+from achslint.machine.scenario import parse_machine_scenario
 
 from .test_machinerun import LINEAR, PROGRAM, g74, make_axis, make_machine, scenario
 
@@ -35,3 +39,14 @@ def test_a_sweep_starts_a_gantry_slave_where_its_master_puts_it() -> None:
     low, high = summary["start_ranges"]["Y"]
     assert summary["start_ranges"]["Y2"] == [low + 7.0, high + 7.0]
     assert sweep(plan, 20, seed=5) == summary  # the same seed, the same statistics
+
+
+def test_a_machine_wide_key_an_axis_cannot_take_names_the_axis() -> None:
+    # start_velocity is for spindles; written at the top of the file it reaches every axis, and the
+    # refusal must say which one (there is no [axes.X] table to point at).
+    machine = make_machine(make_axis("X", 1, LINEAR))
+    program = Program(PROGRAM, [g74(1, 10, ("X", 1))])
+    given = parse_machine_scenario({"start_velocity": 5.0}, "machine.toml")
+    with pytest.raises(ScenarioError, match=r"machine\.toml: .*\bX\b.*`start_velocity`") as caught:
+        run_machine(machine, program, given)
+    assert "[axes.X]" in str(caught.value)  # where to give it instead

@@ -214,7 +214,13 @@ class _Axis:
         self.strategy = classify(values, commanded=True)  # what a G74 that names the axis runs
         setup = self.strategy.setup
         given = scenario.given(axis.name)
-        where = scenario.table(axis.name) if axis.name in scenario.axes else scenario.where
+        # Without a table of its own the axis took the machine-wide keys: say which axis refused them, and
+        # where a key for this axis alone goes.
+        where = (
+            scenario.table(axis.name)
+            if axis.name in scenario.axes
+            else f"{scenario.where}: axis {axis.name} (the machine-wide keys; [axes.{axis.name}] overrides them)"
+        )
         try:
             self.scenario = self.strategy.default_scenario(given, cycle_time_us, name=axis.name)
         except ScenarioError as exc:
