@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from achslint.homing.scenario import ScenarioError
+from achslint.machine.build import build_machine, rename
 from achslint.machine.model import Program
 from achslint.machine.run import MachinePlan, run_machine, sweep
 from achslint.machine.scenario import parse_machine_scenario
@@ -50,3 +53,19 @@ def test_a_machine_wide_key_an_axis_cannot_take_names_the_axis() -> None:
     with pytest.raises(ScenarioError, match=r"machine\.toml: .*\bX\b.*`start_velocity`") as caught:
         run_machine(machine, program, given)
     assert "[axes.X]" in str(caught.value)  # where to give it instead
+
+
+def test_names_that_take_another_axis_s_own_name_are_refused(tmp_path: Path) -> None:
+    # [names] Y = 1 names axis 1 Y, but axis 2's list calls it Y: the second axis silently vanished from
+    # the machine (not listed, not simulated). The clash is refused, naming both.
+    (tmp_path / "hochlauf.lis").write_text(
+        "zahl_mds 2\nachs_mds[0] ./x.lis\nachs_mds[1] ./y.lis\nEnde\n", encoding="latin-1"
+    )
+    (tmp_path / "x.lis").write_text("kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n")
+    (tmp_path / "y.lis").write_text("kopf.achs_nr 2\nkopf.log_achs_name Y\nEnde\n")
+    machine = build_machine(tmp_path / "hochlauf.lis")
+    with pytest.raises(ValueError, match=r"machine\.toml: \[names\] Y = 1.*axis 2"):
+        rename(machine, {"Y": 1}, "machine.toml")
+    swapped = build_machine(tmp_path / "hochlauf.lis")
+    rename(swapped, {"Y": 1, "X": 2}, "machine.toml")  # naming both is fine
+    assert {n: a.logical_number for n, a in swapped.axes.items()} == {"Y": 1, "X": 2}

@@ -279,6 +279,18 @@ def rename(machine: ChannelView, names: dict[str, int], where: str) -> None:
             raise ValueError(
                 f"{where}: [names] {name} = {number}: the machine has no axis {number} (it has {known})"
             )
+    # An axis [names] leaves alone keeps its kopf.log_achs_name: a name given to another axis would take it
+    # (the axis dropped out of the machine without a word), so the clash is refused.
+    named = set(names.values())
+    for axis in everyone:
+        if axis.logical_number not in named and axis.name.upper() in names:
+            number = names[axis.name.upper()]
+            shown = f" ({axis.list_path})" if axis.list_path is not None else ""
+            raise ValueError(
+                f"{where}: [names] {axis.name.upper()} = {number}: axis {axis.logical_number}{shown} goes by "
+                f"{axis.name} (its kopf.log_achs_name), which [names] gives axis {number}; give axis "
+                f"{axis.logical_number} a name in [names] too"
+            )
     old_to_new: dict[str, str] = {}
     # a gantry slave coupled outside the names stays there unless [names] names it
     followers = {id(axis) for axis in machine.followers()}
