@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -12,6 +13,7 @@ from achslint.machine.model import Program
 from achslint.machine.run import MachinePlan, run_machine, sweep
 from achslint.machine.scenario import parse_machine_scenario
 
+from .conftest import run_cli
 from .test_machinerun import LINEAR, PROGRAM, g74, make_axis, make_machine, scenario
 
 
@@ -69,3 +71,21 @@ def test_names_that_take_another_axis_s_own_name_are_refused(tmp_path: Path) -> 
     swapped = build_machine(tmp_path / "hochlauf.lis")
     rename(swapped, {"Y": 1, "X": 2}, "machine.toml")  # naming both is fine
     assert {n: a.logical_number for n, a in swapped.axes.items()} == {"Y": 1, "X": 2}
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="output/machine.py does not show ChannelView.notes (explain does): an axis left out of the "
+    "machine (a second axis list with the same kopf.log_achs_name, a coupled pair without a partner) is "
+    "not mentioned by the dry-run",
+)
+def test_the_dry_run_says_which_axis_lists_the_machine_left_out(tmp_path: Path) -> None:
+    (tmp_path / "hochlauf.lis").write_text("zahl_mds 2\nachs_mds[0] ./x.lis\nachs_mds[1] ./y.lis\nEnde\n")
+    (tmp_path / "x.lis").write_text("kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n")
+    (tmp_path / "y.lis").write_text("kopf.achs_nr 2\nkopf.log_achs_name X\nEnde\n")  # the same name
+    (tmp_path / "rfp.nc").write_text("%RFP.NC\nN10 G74 X1\n")
+    args = ["dry-run", str(tmp_path / "hochlauf.lis"), "--program", str(tmp_path / "rfp.nc")]
+    text = run_cli(*args).stdout.decode()
+    data = json.loads(run_cli(*args, "--format", "json").stdout)
+    said = text + json.dumps(data)
+    assert "y.lis" in text and "only the first axis goes by it" in said
