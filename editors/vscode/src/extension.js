@@ -5,9 +5,10 @@
 "use strict";
 
 const vscode = require("vscode");
-const { LanguageClient, State } = require("vscode-languageclient/node");
+const { CloseAction, ErrorAction, LanguageClient, State } = require("vscode-languageclient/node");
 
 let client;
+let watcher; // the running client's file watcher, disposed with it
 
 function settings() {
   return vscode.workspace.getConfiguration("achslint");
@@ -68,10 +69,47 @@ function adopt(document) {
   }
 }
 
+// What the client does when the server ends or its connection fails. A server that never got going
+// (`achslint` missing, installed without its lsp extra, a wrong interpreter) ends the same way each time:
+// it is not started again, and the start's failure says so once. One that ran is started again up to
+// RESTARTS times within RESTART_WINDOW_MS, then left stopped with a message saying how to start it.
+const RESTARTS = 4;
+const RESTART_WINDOW_MS = 3 * 60 * 1000;
+
+function errorHandler(ran, now = Date.now) {
+  const ends = [];
+  return {
+    error: (_error, _message, count) => ({
+      action: count !== undefined && count <= 3 ? ErrorAction.Continue : ErrorAction.Shutdown,
+    }),
+    closed: () => {
+      if (!ran()) {
+        return { action: CloseAction.DoNotRestart, handled: true };
+      }
+      const time = now();
+      ends.push(time);
+      while (ends.length && time - ends[0] > RESTART_WINDOW_MS) {
+        ends.shift();
+      }
+      if (ends.length > RESTARTS) {
+        return {
+          action: CloseAction.DoNotRestart,
+          message:
+            `achslint: the language server stopped ${ends.length} times within 3 minutes and is not started ` +
+            `again (its output: the "achslint" output channel). Run "achslint: Restart the language server" ` +
+            `once it is fixed.`,
+        };
+      }
+      return { action: CloseAction.Restart };
+    },
+  };
+}
+
 async function start(context) {
-  const watcher = vscode.workspace.createFileSystemWatcher(watchedFiles());
+  watcher = vscode.workspace.createFileSystemWatcher(watchedFiles());
   context.subscriptions.push(watcher);
-  client = new LanguageClient(
+  let ran = false;
+  const started = new LanguageClient(
     "achslint",
     "achslint",
     serverOptions(),
@@ -79,24 +117,48 @@ async function start(context) {
       documentSelector: documentSelector(),
       initializationOptions: initializationOptions(),
       synchronize: { configurationSection: "achslint", fileEvents: watcher },
+      errorHandler: errorHandler(() => ran),
+      // a failed start is told once, below, with what to do (not also as the bare error of `initialize`)
+      initializationFailedHandler: () => false,
     },
   );
+  client = started;
   try {
-    await client.start();
+    await started.start();
+    ran = true;
   } catch (error) {
     const how = settings().get("interpreter") ? "achslint.interpreter" : "achslint.path";
-    vscode.window.showErrorMessage(
-      `achslint: the language server did not start (${error.message || error}). ` +
-        `Install it with pip install 'achslint[lsp]' or set ${how}.`,
-    );
+    // not awaited: the notification stays until it is closed, and activation must not wait for that
+    vscode.window
+      .showErrorMessage(
+        `achslint: the language server did not start (${error.message || error}). ` +
+          `Install it with pip install 'achslint[lsp]' or set ${how}; the "achslint" output channel ` +
+          `shows what the server said.`,
+        "Show output",
+      )
+      .then((choice) => choice && started.outputChannel.show(true));
+  }
+}
+
+// Stop a language client: one still starting is waited for (the language client refuses to stop it), one
+// whose start failed has nothing to stop.
+async function stopClient(given) {
+  if (given && given.state === State.Starting) {
+    await given.start().catch(() => undefined);
+  }
+  if (given && given.state === State.Running) {
+    await given.stop();
   }
 }
 
 async function stop() {
-  if (client && client.state !== State.Stopped) {
-    await client.stop();
-  }
+  const stopping = client;
   client = undefined;
+  await stopClient(stopping);
+  if (watcher) {
+    watcher.dispose();
+    watcher = undefined;
+  }
 }
 
 async function activate(context) {
@@ -121,4 +183,16 @@ function deactivate() {
   return stop();
 }
 
-module.exports = { activate, deactivate, serverOptions, documentSelector, watchedFiles, initializationOptions };
+module.exports = {
+  activate,
+  deactivate,
+  serverOptions,
+  documentSelector,
+  watchedFiles,
+  initializationOptions,
+  errorHandler,
+  stopClient,
+  CloseAction,
+  ErrorAction,
+  State,
+};

@@ -114,3 +114,63 @@ test("the server gets the settings package.json declares, debounceMs 0 unless se
   }
   assert.equal(loadBundle(fakeVscode({ debounceMs: 150 })).extension.initializationOptions().debounceMs, 150);
 });
+
+// When the server ends: one that never answered `initialize` (achslint not installed, or without its lsp
+// extra, a wrong interpreter) is not started again and again (each start ending the same way, with a pop-up
+// each), and one that ran is restarted a few times, then left stopped with a message that says what to do.
+test("a server that never started is not restarted; one that keeps crashing is restarted a few times", () => {
+  const { errorHandler, CloseAction, ErrorAction } = loadBundle(fakeVscode()).extension;
+  let ran = false;
+  let clock = 0;
+  const handler = errorHandler(() => ran, () => clock);
+  const early = handler.closed();
+  assert.equal(early.action, CloseAction.DoNotRestart);
+  assert.equal(early.handled, true, "the start's own failure message says it once");
+  ran = true;
+  const actions = [];
+  for (let i = 0; i < 6; i += 1) {
+    clock += 1000;
+    actions.push(handler.closed());
+  }
+  assert.deepEqual(actions.map((a) => a.action), [2, 2, 2, 2, 1, 1].map((n) => (n === 2 ? CloseAction.Restart : CloseAction.DoNotRestart)));
+  assert.match(actions[4].message, /achslint: Restart the language server/);
+  clock += 10 * 60 * 1000; // long after: a crash now is a new one
+  assert.equal(handler.closed().action, CloseAction.Restart);
+  assert.equal(handler.error(new Error("x"), undefined, 1).action, ErrorAction.Continue);
+  assert.equal(handler.error(new Error("x"), undefined, 5).action, ErrorAction.Shutdown);
+});
+
+// A client still starting cannot be stopped (the language client throws): the restart command and a changed
+// achslint.path wait for the start to end first, and a client whose start failed is not stopped.
+test("stopping a client waits for its start and leaves a failed one alone", async () => {
+  const { stopClient, State } = loadBundle(fakeVscode()).extension;
+  const calls = [];
+  // A client in `state` whose start (when asked while it is starting) ends in `after`; stop() throws unless
+  // it runs, as the language client's does.
+  function fakeClient(state, after) {
+    const client = {
+      state,
+      start: async () => {
+        calls.push("start");
+        client.state = after;
+        if (after !== State.Running) {
+          throw new Error("the server ended before it answered initialize");
+        }
+      },
+      stop: async () => {
+        if (client.state !== State.Running) {
+          throw new Error(`Client is not running and can't be stopped. It's current state is: ${client.state}`);
+        }
+        calls.push("stop");
+      },
+    };
+    return client;
+  }
+  await stopClient(fakeClient(State.Starting, State.Running));
+  assert.deepEqual(calls, ["start", "stop"]);
+  calls.length = 0;
+  await stopClient(fakeClient(State.Starting, State.Stopped)); // the start failed meanwhile
+  await stopClient(fakeClient(State.Stopped, State.Stopped));
+  assert.deepEqual(calls, ["start"]);
+  await stopClient(undefined);
+});
