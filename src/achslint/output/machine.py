@@ -151,6 +151,7 @@ def machine_json(run: MachineRun, sweep: dict[str, Any] | None = None) -> dict[s
             "column": failure.at.column,
         },
         "warnings": run.warnings,
+        "notes": list(getattr(machine, "notes", [])),  # what the machine left out or assumed (as explain)
     }
     if sweep is not None:
         document["sweep"] = sweep
@@ -200,6 +201,8 @@ def render_machine(run: MachineRun, console: Console) -> None:
         Text(f"Machine {where}" + (f", channel {channel}" if channel else ""), style="bold")
         + Text(f" — program {run.program.name}, cycle {_num(run.cycle_time * 1000)} ms")
     )
+    for note in getattr(machine, "notes", []):  # what the machine left out or assumed, as explain says it
+        console.print(Text("note: ", style="yellow") + Text(note))
     assumed = sorted(
         {
             name
