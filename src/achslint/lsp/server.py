@@ -1019,10 +1019,23 @@ def did_close(ls: AchslintServer, params: lsp.DidCloseTextDocumentParams) -> Non
 @feature(lsp.WORKSPACE_DID_CHANGE_CONFIGURATION)
 @guarded()
 def did_change_configuration(ls: AchslintServer, params: lsp.DidChangeConfigurationParams) -> None:
+    hints = ls.session.settings.inlay_hints
     if isinstance(params.settings, dict) and params.settings:
         _take_settings(ls, params.settings)
     ls.forget_disk()
     ls.lint_all()
+    if ls.session.settings.inlay_hints != hints and _inlay_refresh(ls):
+        # the editor keeps the hints it has (none, or the old ones) until it is asked to fetch them again
+        ls.workspace_inlay_hint_refresh(None)
+
+
+def _inlay_refresh(ls: AchslintServer) -> bool:
+    """Whether the client takes `workspace/inlayHint/refresh` (its workspace capability says so)."""
+    try:
+        hints = ls.client_capabilities.workspace.inlay_hint  # type: ignore[union-attr]
+    except AttributeError:
+        return False
+    return bool(hints is not None and hints.refresh_support)
 
 
 @feature(lsp.WORKSPACE_DID_CHANGE_WATCHED_FILES)
