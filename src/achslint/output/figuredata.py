@@ -90,6 +90,12 @@ def soft_limits_in_trace_frame(trace: Trace) -> tuple[float, float] | None:
     return low - offset, high - offset
 
 
+def _reads_zero_pulses(trace: Trace) -> bool:
+    """Whether the run looked for encoder zero pulses: a simulated drive's "pulse" is a distance
+    (rpf_weg_bis_nip), so its scenario's pulses are not the machine's and the JSON leaves them out."""
+    return trace.strategy.with_zero_pulse and "zero_pulse" in trace.scenario.uses
+
+
 def pulse_marks(period: float, phase_at: float, low: float, high: float) -> list[float]:
     """The zero pulses between low and high; none when there would be more than MAX_PULSE_MARKS."""
     first, last = math.ceil((low - phase_at) / period), math.floor((high - phase_at) / period)
@@ -202,7 +208,7 @@ def trace_figure(trace: Trace) -> TraceFigure:
             every = " every revolution" if revolution else ""
             keys.append(Key(f"reference cam [{fmt(lo)}, {fmt(hi)}]{every}", CAM_COLOUR, "patch", alpha=0.3))
     pulses: list[float] = []
-    if trace.strategy.with_zero_pulse and scenario.zero_pulse_period > 0:
+    if _reads_zero_pulses(trace) and scenario.zero_pulse_period > 0:
         period = scenario.zero_pulse_period
         pulses = pulse_marks(period, scenario.zero_pulse_phase, y_low, y_high)
         if pulses:
@@ -311,7 +317,7 @@ def _zoom(trace: Trace, event: Event) -> Zoom:
                     positions.append(segment.position(t))
     scenario = trace.scenario
     pulses: list[float] = []
-    if trace.strategy.with_zero_pulse and scenario.zero_pulse_period > 0 and positions:
+    if _reads_zero_pulses(trace) and scenario.zero_pulse_period > 0 and positions:
         pulses = pulse_marks(
             scenario.zero_pulse_period, scenario.zero_pulse_phase, min(positions), max(positions)
         )

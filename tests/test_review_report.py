@@ -1,0 +1,36 @@
+"""Review of `achslint report`: what the page shows must be what `lint`, `explain` and `dry-run` say.
+
+Each case builds the report as `achslint report` does (`build_report`, `as_html`) and compares it with the
+documents of the commands it summarises (`trace_json`, the `dry-run --format json` document)."""
+
+from __future__ import annotations
+
+from achslint.output.dryrun import trace_json
+from achslint.output.report import as_html
+from achslint.report import ReportRequest, build_report
+
+from .conftest import FIXTURES, ROOT
+
+EXAMPLE = ROOT / "docs" / "dry-run" / "machine"
+
+
+def _axis_part(page: str, name: str) -> str:
+    start = page.index(f'data-axis="{name}"')
+    return page[start : page.index("</section>", start)]
+
+
+def test_a_simulated_drive_s_figure_draws_no_zero_pulses_the_run_does_not_read() -> None:
+    """A simulated drive references at rpf_weg_bis_nip, not on an encoder's zero pulse: its dry-run reads no
+    zero pulses (JSON `zero_pulse_period` null), yet the figure drew the default scenario's pulses "every
+    5 mm" as if they were the machine's."""
+    listed = FIXTURES / "machines" / "sdk" / "listen" / "achsmds2.lis"  # antr_typ 4: simulation
+    report = build_report(ReportRequest(listed))
+    section = report.axes[0]
+    assert section.dry_run is not None
+    document = trace_json(section.dry_run)
+    assert document["scenario"]["zero_pulse_period"] is None and document["phases"]
+    page = as_html(report)
+    figure = _axis_part(page, section.name)
+    assert "<svg" in figure
+    assert "-zero_pulses" not in figure
+    assert "zero pulses (every" not in figure
