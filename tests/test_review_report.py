@@ -5,6 +5,8 @@ documents of the commands it summarises (`trace_json`, the `dry-run --format jso
 
 from __future__ import annotations
 
+import re
+
 from achslint.output.dryrun import trace_json
 from achslint.output.report import as_html
 from achslint.report import ReportRequest, build_report
@@ -34,3 +36,23 @@ def test_a_simulated_drive_s_figure_draws_no_zero_pulses_the_run_does_not_read()
     assert "<svg" in figure
     assert "-zero_pulses" not in figure
     assert "zero pulses (every" not in figure
+
+
+def test_an_axis_s_homing_time_is_one_number_on_the_page() -> None:
+    """The summary's dry-run column and the axis's outcome line give its homing time from one value: A of the
+    example machine homes in 6.3025 s (`dry-run --format json`), which the summary showed as 6.302 s (the
+    float below it) and the axis page as 6.303 s."""
+    report = build_report(ReportRequest(EXAMPLE / "listen" / "hochlauf.lis"))
+    page = as_html(report)
+    summary = page[page.index('<section id="summary"') : page.index("</section>")]
+    for number, section in enumerate(report.axes, 1):
+        if section.dry_run is None or not section.dry_run.trace.phases:
+            continue
+        total = trace_json(section.dry_run)["total_time"]
+        row = re.search(rf'<a href="#axis-{number}">.*?</tr>', summary)
+        assert row is not None
+        in_summary = re.search(r"homed in ([\d.]+) s", row.group(0))
+        in_section = re.search(r"\(homed frame\); ([\d.]+) s</p>", _axis_part(page, section.name))
+        assert in_summary is not None and in_section is not None
+        assert in_summary.group(1) == in_section.group(1), (section.name, total)
+        assert abs(float(in_summary.group(1)) - total) <= 0.0005 + 1e-12, (section.name, total)

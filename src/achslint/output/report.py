@@ -113,9 +113,11 @@ def _num(value: float | None, digits: int = 4) -> _Raw:
 
 
 def _number(value: float | None, digits: int = 4) -> str:
+    """A number as the page shows it. Rounded to 9 decimals first, as `--format json` rounds, so that a
+    value read from the run (6.30249999…) and the same value read from its JSON document (6.3025) show alike."""
     if value is None:
         return ""
-    text = f"{value:.{digits}f}".rstrip("0").rstrip(".")
+    text = f"{round(value, 9):.{digits}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
 
 
