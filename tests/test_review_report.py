@@ -6,10 +6,14 @@ documents of the commands it summarises (`trace_json`, the `dry-run --format jso
 from __future__ import annotations
 
 import re
+import shutil
+from pathlib import Path
+
+import pytest
 
 from achslint.output.dryrun import trace_json
-from achslint.output.report import as_html
-from achslint.report import ReportRequest, build_report
+from achslint.output.report import as_html, as_markdown
+from achslint.report import ReportFailed, ReportRequest, build_report
 
 from .conftest import FIXTURES, ROOT
 
@@ -56,3 +60,40 @@ def test_an_axis_s_homing_time_is_one_number_on_the_page() -> None:
         assert in_summary is not None and in_section is not None
         assert in_summary.group(1) == in_section.group(1), (section.name, total)
         assert abs(float(in_summary.group(1)) - total) <= 0.0005 + 1e-12, (section.name, total)
+
+
+def _example(tmp_path: Path) -> Path:
+    target = tmp_path / "machine"
+    shutil.copytree(EXAMPLE, target)
+    return target
+
+
+def test_an_axis_whose_dry_run_is_refused_is_refused_in_the_summary(tmp_path: Path) -> None:
+    """`dry-run` refuses TORQ homing on a conventional drive (LIS306, exit 2: the CNC does not run it); the
+    summary called that "not simulated", the words of a mode the simulator does not cover (exit 0)."""
+    machine = _example(tmp_path)
+    listed = machine / "listen" / "achsmds2.lis"
+    listed.write_bytes(
+        listed.read_bytes().replace(b"homing_type                 CNC_CONTROLLED", b"homing_type TORQ")
+    )
+    report = build_report(ReportRequest(machine / "listen" / "hochlauf.lis"))
+    y = next(section for section in report.axes if section.name == "Y")
+    assert y.dry_run is None and y.refused is not None and "dry-run refused" in y.refused
+    page = as_html(report)
+    row = re.search(r'<a href="#axis-2">Y</a>.*?</tr>', page)
+    assert row is not None
+    assert "not simulated" not in row.group(0) and "refused" in row.group(0)
+    assert "| Y | 2 | linear | homing to a fixed stop (TORQ) | refused |" in as_markdown(report)
+
+
+def test_a_scenario_table_of_no_axis_of_the_machine_is_refused_without_a_program_too(tmp_path: Path) -> None:
+    """`dry-run --program` refuses `[axes.Q]` on a machine without Q (a misspelt name would leave the axis it
+    meant on assumed geometry); the report without a program took the file and ignored the table."""
+    machine = _example(tmp_path)
+    scenario = machine / "machine.toml"
+    scenario.write_text(scenario.read_text() + "\n[axes.Q]\nstart_position = 1.0\n")
+    for program in (machine / "rfp.nc", None):
+        with pytest.raises(ReportFailed, match=r"\[axes\.Q\]: the machine has no axis Q"):
+            build_report(
+                ReportRequest(machine / "listen" / "hochlauf.lis", program=program, scenario=scenario)
+            )

@@ -75,6 +75,7 @@ class AxisSection:
     dry_run: DryRun | None = None  # without a program: the axis's configured homing on its own
     program_run: AxisRun | None = None  # with a program: what the program did with the axis
     refused: str | None = None  # why there is no dry-run of the axis
+    dry_run_refused: bool = False  # `dry-run` refuses it (the CNC does not run this homing), exit 2
 
 
 @dataclass
@@ -157,6 +158,8 @@ def _machine_report(request: ReportRequest, startup: Path) -> CommissioningRepor
             rename(view, given.names, given.where)
         except ValueError as exc:
             raise ScenarioError(str(exc)) from None
+        # as `dry-run --program` does: an [axes.NAME] table must name an axis of the machine
+        given.check_names([*view.axes, *(axis.name for axis in view.other_axes)])
     explained = explain_machine(view, run.program if run is not None else None, request.gear)
     axes = [*view.axes.values(), *view.other_axes]
     sections = [_section(axis, request.gear, startup) for axis in axes]
@@ -216,6 +219,7 @@ def _axis_dry_run(
         )
     except DryRunRefused as exc:
         section.refused = str(exc)
+        section.dry_run_refused = True
 
 
 def _lists(startup: Path, cnc_root: Path | None) -> list[ListFile]:
@@ -259,6 +263,7 @@ def _axis_report(request: ReportRequest) -> CommissioningReport:
         )
     except DryRunRefused as exc:
         section.refused = str(exc)
+        section.dry_run_refused = True
     return CommissioningReport(
         target=str(path),
         machine=None,

@@ -249,7 +249,7 @@ def _outcome(section: AxisSection) -> str:
         return trace.outcome.replace("_", " ") + (
             f" in {_number(trace.total_time, 3)} s" if trace.phases else ""
         )
-    return "not simulated"
+    return "refused" if section.dry_run_refused else "not simulated"
 
 
 # --- one axis -------------------------------------------------------------------------------------
