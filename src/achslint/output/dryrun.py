@@ -145,8 +145,9 @@ def trace_json(run: DryRun) -> dict[str, Any]:
 
 
 def number_text(value: float, digits: int = 4, fixed: bool = False) -> str:
-    """A number for the text output: `digits` decimals (trailing zeros dropped unless `fixed`, for columns)."""
-    text = f"{value:.{digits}f}"
+    """A number for the text output: `digits` decimals (trailing zeros dropped unless `fixed`, for columns).
+    Rounded to 9 decimals first, as `--format json` and the report round: 6.30249999… shows as 6.3025 does."""
+    text = f"{round(value, 9):.{digits}f}"
     if text.startswith("-") and float(text) == 0:
         text = text[1:]
     return text if fixed or "." not in text else text.rstrip("0").rstrip(".")
