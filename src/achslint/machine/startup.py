@@ -156,6 +156,35 @@ def _entry_path(raw: str) -> Path:
     return Path(text)
 
 
+# A name only Windows can look up: a drive letter (`C:\TwinCAT\...`, `C:listen\...`) or a network share
+# (`\\server\share\...`). Elsewhere it would be read as a folder `C:` below the CNC root.
+_WINDOWS_ABSOLUTE = re.compile(r"[A-Za-z]:|\\\\[^\\]")
+
+
+def _case_folded(target: Path, root: Path) -> Path | None:
+    """The file `target` names below `root` when its name differs in case only, as Windows (where the CNC
+    runs) finds it: each folder and the file looked up without regard to case, the exactly written name
+    first; None when there is no such file."""
+    try:
+        parts = target.relative_to(root).parts
+    except ValueError:
+        return None
+    found = root
+    for part in parts:
+        if (found / part).exists():
+            found = found / part
+            continue
+        try:
+            names = sorted(os.listdir(found))
+        except OSError:
+            return None
+        same = [name for name in names if name.casefold() == part.casefold()]
+        if not same:
+            return None
+        found = found / same[0]
+    return found
+
+
 LISTS_FOLDER = "listen"  # where the CNC keeps its lists, below its working directory
 
 
@@ -174,14 +203,23 @@ def default_cnc_root(startup: Path) -> Path:
 
 def _resolve(
     raw: str, root: Path, root_origin: str, scope: Scope | None
-) -> tuple[Path | None, str | None, Path]:
+) -> tuple[Path | None, str | None, Path | None]:
     """(file, None, looked) for an entry achslint reads, (None, why, looked) for one it refuses, and
-    (None, None, looked) when it is missing.
+    (None, None, looked) when it is missing; `looked` is None for a name it cannot look up at all.
+
+    A name that differs from the file's in upper and lower case only finds the file, as on Windows.
 
     The file, with every symbolic link followed, must lie under the CNC root or under a path the user
     gave: a start-up list cannot make achslint read (and show) `/proc/self/environ`, `../../secret.lis`
     or a link inside the machine folder that leads elsewhere.
     """
+    if os.sep == "/" and _WINDOWS_ABSOLUTE.match(raw.strip().strip('"')):
+        return (
+            None,
+            "it is an absolute Windows name, which achslint cannot look up on this computer; write it "
+            "relative to the CNC root (`./listen/…`) to have the list checked",
+            None,
+        )
     target = Path(os.path.normpath(root / _entry_path(raw)))
     # Where the entry leads is checked before anything is looked up there: not even whether a file
     # outside the root exists shows in a finding.
@@ -190,6 +228,8 @@ def _resolve(
         what = "it is a symbolic link that leads outside" if linked else "it lies outside"
         return None, f"{what} the CNC root {root} ({root_origin})", target
     problem = not_a_list_file(target)
+    if problem in MISSING and (folded := _case_folded(target, root)) is not None:
+        return _resolve(str(folded), root, root_origin, scope)  # checked again: where it leads, what it is
     if problem in MISSING:
         return None, None, target
     if problem is not None:

@@ -7,9 +7,13 @@ Relative names are resolved the way the CNC resolves them: against its working
 directory, the CNC root. Set it with `--cnc-root DIR` or `cnc-root` in the
 configuration; otherwise it is the start-up list's folder, or the folder above
 `listen/` when the start-up list lies in `listen/` or one folder below it (the
-SDK keeps `./listen/…` names in `listen/hochlauf.lis`). The message names the
-file looked for and the root. An entry whose file, links followed, lies outside
-the CNC root is not read: a warning says why. An entry that names the start-up
+SDK keeps `./listen/…` names in `listen/hochlauf.lis`). Backslashes separate
+folders, and a name that differs from the file's in upper and lower case only
+finds the file, as on Windows, where the CNC runs. The message names the file
+looked for and the root. An entry whose file, links followed, lies outside
+the CNC root is not read, nor one written as an absolute Windows name
+(`C:\\TwinCAT\\…`, which achslint cannot look up): a warning says why, for a
+list of any kind. An entry that names the start-up
 list itself is an error too: it gives no list. So is a default list or a
 channel list that exists but cannot be read as a list (UTF-16, binary, not
 readable); an axis list like that is reported on the axis list itself. A list
@@ -72,7 +76,7 @@ from ..core.files import same_file
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
-    from ..machine.startup import Startup
+    from ..machine.startup import Startup, StartupEntry
 
 CODE = "LIS504"
 NAME = "missing-list"
@@ -101,20 +105,12 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
                     f"{_KINDS[entry.key.split('[')[0]]}: name the list file, or remove the entry",
                 )
             elif entry.refused:
-                severity, message = (
-                    Severity.WARNING,
-                    f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {entry.refused}; "
-                    + (
-                        "set --cnc-root or name the list (or its folder) on the command line to check it"
-                        if "outside the CNC root" in entry.refused
-                        else "name a regular list file there"
-                    ),
-                )
+                severity, message = Severity.WARNING, _not_read(startup, entry, entry.refused)
             elif entry.path is None:
                 severity, message = (
                     Severity.ERROR,
                     f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
-                    f"(the CNC root is {startup.root_origin}); the CNC aborts the start-up when a list "
+                    f"(the CNC root is {_root(startup)}); the CNC aborts the start-up when a list "
                     "is missing",
                 )
             elif id(entry) in not_linted and (why := unreadable(entry.path)) is not None:
@@ -138,8 +134,8 @@ def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
     channel lists only, hence a warning."""
     # beyond the counts, or beyond what any count reaches: never read (LIS516, LIS522)
     for entry in [*startup.loaded_compensations(), *startup.loaded_others()]:
-        if entry.path is not None or entry.refused:
-            continue  # there (its own lint checks it), or refused (the warning above says why)
+        if entry.path is not None:
+            continue  # there: its own lint checks it
         kind = entry_kind(entry.key)
         what = kind.name if kind is not None else "list"
         end = entry.column + len(entry.raw)
@@ -151,7 +147,26 @@ def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
             end,
             CODE,
             Severity.WARNING,
-            f"`{entry.key}` names the {what} `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
-            f"(the CNC root is {startup.root_origin}); the CNC cannot load it — correct the entry, add the "
-            "list, or remove the entry",
+            _not_read(startup, entry, entry.refused)
+            if entry.refused
+            else f"`{entry.key}` names the {what} `{entry.raw}`, which does not exist: looked for "
+            f"`{entry.looked}` (the CNC root is {_root(startup)}); the CNC cannot load it — correct the entry, "
+            "add the list, or remove the entry",
         )
+
+
+def _not_read(startup: Startup, entry: StartupEntry, why: str) -> str:
+    """The warning for an entry achslint does not read (outside the CNC root, a FIFO, a Windows drive name)."""
+    if "outside the CNC root" in why:
+        remedy = "set --cnc-root or name the list (or its folder) on the command line to check it"
+    elif "relative to the CNC root" in why:  # a Windows name: the reason says what to do
+        remedy = f"the CNC root is {_root(startup)}"
+    else:
+        remedy = "name a regular list file there"
+    return f"`{entry.key}` names `{entry.raw}`, which achslint does not read: {why}; {remedy}"
+
+
+def _root(startup: Startup) -> str:
+    """The CNC root the entries were resolved against, and how it was chosen: `/cnc (the folder above
+    `listen/`; --cnc-root sets another)`."""
+    return f"{startup.root} ({startup.root_origin})" if startup.root is not None else startup.root_origin

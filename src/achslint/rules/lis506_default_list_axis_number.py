@@ -2,7 +2,7 @@
 What
 ----
 A default axis list (a list named `default*mds*.lis`, like the
-`default_mds.lis` a start-up list loads as `default_sda_mds`) that gives a
+`default_mds.lis` a start-up list loads as `default_achs_mds`) that gives a
 logical axis number `kopf.achs_nr` other than 0.
 
 Why

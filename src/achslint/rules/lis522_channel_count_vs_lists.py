@@ -115,6 +115,8 @@ PER_CHANNEL = {
 
 
 def _channels(count: int) -> str:
+    if count <= 0:
+        return "no channel"
     return "the first channel (index 0) only" if count == 1 else f"channels 0 … {count - 1}"
 
 
