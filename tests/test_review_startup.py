@@ -93,15 +93,7 @@ def test_a_missing_list_names_the_cnc_root_itself(tmp_path):
         assert f"the CNC root is {root} (" in finding["message"], finding["message"]
 
 
-# --- counts out of range are LIS202's ---------------------------------------------------------------------
-
-
-def test_a_negative_count_is_left_to_lis202(tmp_path):
-    startup = machine(
-        tmp_path,
-        "zahl_mds -1\n" + AXES + "achs_mds[0] ./listen/achsmds1.lis\nachs_mds[1] ./listen/achsmds2.lis\n",
-    )
-    assert codes(lint(startup, "LIS202,LIS516,LIS517")) == [(1, "LIS202", "error")]
+# --- counts ----------------------------------------------------------------------------------------------
 
 
 def test_kanal_anzahl_0_is_told_it_configures_no_channel(tmp_path):
@@ -133,3 +125,17 @@ def test_a_list_of_another_kind_achslint_does_not_read_is_told_so(tmp_path):
     assert sorted(found) == [5, 6, 8]
     assert all(d["severity"] == "warning" and "does not read" in d["message"] for d in found.values())
     assert "outside the CNC root" in found[5]["message"] and "Windows" in found[8]["message"]
+
+
+def test_offsets_of_a_channel_beyond_kanal_anzahl_are_not_compared_with_its_channel_list(tmp_path):
+    """LIS522 says the lists of channel index 1 are never loaded with kanal_anzahl 1; LIS521 must not go on
+    to say which of their offsets belong to no axis of that channel."""
+    bad = FIXTURES / "rules" / "LIS521" / "bad"
+    folder = tmp_path / "m"
+    shutil.copytree(bad, folder)
+    text = (folder / "hochlauf.lis").read_text()
+    text = text.replace("sda_mds[0]               ./sda_mds1.lis", "sda_mds[1]               ./sda_mds1.lis")
+    text = text.replace("nullp_data[0]", "nullp_data[1]").replace("pzv_data[0]", "pzv_data[1]")
+    (folder / "hochlauf.lis").write_text(text)
+    found = lint(folder / "hochlauf.lis", "LIS521,LIS522")
+    assert {d["code"] for d in found} == {"LIS522"}

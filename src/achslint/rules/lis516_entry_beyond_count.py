@@ -109,8 +109,8 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             count = startup.counts.get(count_key)
             if count is None:
                 continue  # no count written (TwinCAT writes both): nothing to compare the entries with
-            if count.value is None or count.value < 0:
-                continue  # not a number, or below any count (LIS202): the start-up list's own finding
+            if count.value is None:
+                continue  # not a number: the start-up list's own finding
             for entry in entries:
                 if index(entry) < count.value:
                     continue

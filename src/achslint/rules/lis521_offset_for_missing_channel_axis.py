@@ -107,9 +107,9 @@ OFFSET_LISTS: dict[str, tuple[str, Kind, str]] = {
 
 
 def _channel_entry(machine: Machine, channel: int) -> StartupEntry | None:
-    """The entry `sda_mds[channel]` (the later one when two name it)."""
+    """The entry `sda_mds[channel]` (the later one when two name it) of a channel `kanal_anzahl` counts."""
     startup = machine.startup
-    entries = [entry for entry in startup.channels if index(entry) == channel] if startup else []
+    entries = [entry for entry in startup.loaded_channels() if index(entry) == channel] if startup else []
     return entries[-1] if entries else None
 
 
@@ -131,7 +131,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
     startup = machine.startup
     if startup is None:
         return
-    for entry in startup.others:
+    for entry in startup.loaded_others():  # a channel beyond kanal_anzahl: never loaded (LIS522)
         pattern, _ = path_pattern(entry.key)
         if pattern not in OFFSET_LISTS or entry.path is None:
             continue
