@@ -41,7 +41,14 @@ def unit_label(unit: str | None) -> str:
     return _UNITS.get(unit, (unit, 1.0, unit))[0]
 
 
-def _number(value: float) -> str:
+# Significant digits: a value in list units and its exact decimal conversion keep all that a float
+# holds (1234.5678 mm, not 1235 mm); derived everyday forms (m/min, rpm) are approximations.
+_EXACT = 12
+_ABOUT = 4
+
+
+def _number(value: float, significant: int = _EXACT) -> str:
+    """`value` in plain decimal notation (never `6e-05`), at most `significant` significant digits."""
     number = as_float(value)
     if number is None:  # an integer too large for a float, or inf / nan from elsewhere
         if isinstance(value, int) and not isinstance(value, bool):
@@ -49,7 +56,15 @@ def _number(value: float) -> str:
         return str(value)
     if number.is_integer() and abs(number) < 1e15:
         return str(int(number))
-    return f"{number:.4g}" if abs(number) < 1e6 else f"{number:.6g}"
+    if number == 0:
+        return "0"
+    exponent = math.floor(math.log10(abs(number)))
+    if not -12 <= exponent < 15:  # far outside what a list holds: plain notation would be unreadable
+        return f"{number:.{significant}g}"
+    text = f"{number:.{max(significant - 1 - exponent, 0)}f}"
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
 
 
 def to_human(value: object, unit: str | None) -> str | None:
@@ -63,9 +78,9 @@ def to_human(value: object, unit: str | None) -> str | None:
     converted = number * factor
     text = f"{_number(converted)} {human}"
     if human == "mm/s":
-        text += f" = {_number(converted * 60 / 1000)} m/min"
+        text += f" = {_number(converted * 60 / 1000, _ABOUT)} m/min"
     elif human == "°/s":
-        text += f" = {_number(converted / 6)} rpm"
+        text += f" = {_number(converted / 6, _ABOUT)} rpm"
     elif human == "ms" and abs(converted) >= 1000:
         text = f"{_number(converted / 1000)} s"
     return text

@@ -53,6 +53,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
+from ..catalogue.units import describe
+
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
     from .context import Context
@@ -71,6 +73,7 @@ PARAMETERS = (
 SUMMARY = "Homing path monitoring on a linear axis or shorter than the modulo range"
 
 DIST = "kenngr.homing_max_movement_dist"
+DEGREES = "0.0001deg"  # the list unit of DIST and the modulo limits on rotary axes and spindles
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
@@ -102,16 +105,16 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: {ctx.show(DIST)} is shorter than two modulo ranges plus the zero-pulse shift "
-                f"(2 × ({ctx.show(upper)} - {ctx.show(lower)}) + {ctx.show(shift)} = {need}): the spindle may turn "
+                f"(2 × ({ctx.show(upper)} - {ctx.show(lower)}) + {ctx.show(shift)} = {describe(need, DEGREES)}): the spindle may turn "
                 "up to a revolution to the cam edge and, after the shift, up to another revolution to its zero "
-                f"pulse (§2.3.2.1, §2.6), so homing could abort with P-ERR-70394; use at least {need}",
+                f"pulse (§2.3.2.1, §2.6), so homing could abort with P-ERR-70394; use at least {describe(need, None)}",
                 [DIST, upper, lower, shift],
             )
         elif limit < span:
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: {ctx.show(DIST)} is shorter than the modulo range ({ctx.show(upper)} - "
-                f"{ctx.show(lower)} = {span}); homing may need a full revolution and would abort with P-ERR-70394; "
-                f"use at least {span}",
+                f"{ctx.show(lower)} = {describe(span, DEGREES)}); homing may need a full revolution and would abort "
+                f"with P-ERR-70394; use at least {describe(span, None)}",
                 [DIST, upper, lower],
             )

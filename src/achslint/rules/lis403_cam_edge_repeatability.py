@@ -75,7 +75,9 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     tolerance = (
         ctx.options.repeatability_tolerance_deg * 1000 if rotary else ctx.options.repeatability_tolerance_um
     )
-    unit, speed_unit = ("0.001°", "0.001deg/s") if rotary else ("µm", "um/s")
+    speed_unit = "0.001deg/s" if rotary else "um/s"
+    # Shown in µm on a linear axis and in degrees on a rotary one (`0.1°`, never `100 0.001°`).
+    scale, unit = (1e-3, "°") if rotary else (1.0, " µm")
     for gear in sorted(set(values.gear_stages_set(member)) | {0}):
         path = f"getriebe[{gear}].{member}"
         if not ctx.effective(path):
@@ -86,7 +88,8 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.cross(
                 CODE,
                 f"gear stage {gear}: referencing on the cam edge without zero pulse repeats only to about "
-                f"{spread:g} {unit} ({ctx.show(path)} × {cycle} µs cycle), more than the tolerance {tolerance:g} {unit}; "
+                f"{spread * scale:g}{unit} ({ctx.show(path)} × {cycle / 1000:g} ms cycle), more than the tolerance "
+                f"{tolerance * scale:g}{unit}; "
                 f"{member} ≤ {describe(best, speed_unit)} meets it, or reference on the zero pulse",
                 [path, "kenngr.homing_without_zero_pulse"],
             )
