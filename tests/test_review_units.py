@@ -84,3 +84,18 @@ def test_lis309_spindle_sum_has_its_unit(tmp_path: Path) -> None:
     [message] = _messages(_as_axis_type("LIS309", 4, tmp_path), "LIS309")
     assert "= 7200000)" not in message
     assert "7200000 [0.0001°] (= 720 °)" in message
+
+
+# -- dry-run (not this review's files: kept as a strict xfail) -----------------------------------------
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="dry-run's text writes degrees as `deg` (header, phase table, reference line) where lint, explain "
+    "and diff write `°`; the fix is in dryrun.py / homing/setup.py's display unit, not in units.py",
+)
+def test_dry_run_writes_degrees_as_lint_does(cli, tmp_path: Path) -> None:
+    path = _as_axis_type("LIS403", 2, tmp_path)
+    text = cli("dry-run", str(path)).stdout.decode()
+    assert "83.333" in text  # the same speed lint and explain show (83.333 °/s)
+    assert " deg" not in text and "°" in text
