@@ -82,6 +82,8 @@ def _relative(message: str, base: Path) -> str:
     """The message with the fixture folder's own location left out, so snapshots do not depend on the clone."""
     for prefix in (str(base.resolve()), str(base), str(base.resolve().relative_to(ROOT))):
         message = message.replace(prefix + "/", "")
+    for prefix in (str(base.resolve()), str(base)):  # the folder itself (a CNC root): `.`
+        message = message.replace(prefix, ".")
     return message
 
 

@@ -171,12 +171,12 @@ def _case_folded(target: Path, root: Path) -> Path | None:
         return None
     found = root
     for part in parts:
-        if (found / part).exists():
-            found = found / part
-            continue
         try:
+            if (found / part).exists():
+                found = found / part
+                continue
             names = sorted(os.listdir(found))
-        except OSError:
+        except (OSError, ValueError):  # a name too long for the file system, a NUL, a folder not readable
             return None
         same = [name for name in names if name.casefold() == part.casefold()]
         if not same:

@@ -110,8 +110,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
                 severity, message = (
                     Severity.ERROR,
                     f"`{entry.key}` names `{entry.raw}`, which does not exist: looked for `{entry.looked}` "
-                    f"(the CNC root is {_root(startup)}); the CNC aborts the start-up when a list "
-                    "is missing",
+                    f"(the CNC root is {startup.root_origin}); the CNC aborts the start-up when a list is missing",
                 )
             elif id(entry) in not_linted and (why := unreadable(entry.path)) is not None:
                 severity, message = (
@@ -150,7 +149,7 @@ def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
             _not_read(startup, entry, entry.refused)
             if entry.refused
             else f"`{entry.key}` names the {what} `{entry.raw}`, which does not exist: looked for "
-            f"`{entry.looked}` (the CNC root is {_root(startup)}); the CNC cannot load it — correct the entry, "
+            f"`{entry.looked}` (the CNC root is {startup.root_origin}); the CNC cannot load it — correct the entry, "
             "add the list, or remove the entry",
         )
 
