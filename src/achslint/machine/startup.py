@@ -321,6 +321,21 @@ def summary(values: ResolvedAxis) -> Summary:
     }
 
 
+def at_entry(
+    code: str,
+    startup: Path,
+    entry: StartupEntry,
+    severity: Severity,
+    message: str,
+    related: tuple[Related, ...] = (),
+) -> Diagnostic:
+    """A machine-rule finding on a start-up list entry: its value, the name of the list it names."""
+    end = entry.column + len(entry.raw)
+    return Diagnostic(
+        str(startup), entry.line, entry.column, entry.line, end, code, severity, message, related=related
+    )
+
+
 def diagnostic(
     code: str,
     member: Member,

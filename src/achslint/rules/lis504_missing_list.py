@@ -73,6 +73,7 @@ from ..catalogue.kinds import entry_kind
 from ..core.decode import unreadable
 from ..core.diagnostics import Diagnostic, Severity
 from ..core.files import same_file
+from ..machine.startup import at_entry
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -120,10 +121,7 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
                 )
             else:
                 continue
-            end = entry.column + len(entry.raw)
-            yield Diagnostic(
-                str(startup.path), entry.line, entry.column, entry.line, end, CODE, severity, message
-            )
+            yield at_entry(CODE, startup.path, entry, severity, message)
         yield from _other_kinds(startup)
 
 
@@ -137,14 +135,10 @@ def _other_kinds(startup: Startup) -> Iterator[Diagnostic]:
             continue  # there: its own lint checks it
         kind = entry_kind(entry.key)
         what = kind.name if kind is not None else "list"
-        end = entry.column + len(entry.raw)
-        yield Diagnostic(
-            str(startup.path),
-            entry.line,
-            entry.column,
-            entry.line,
-            end,
+        yield at_entry(
             CODE,
+            startup.path,
+            entry,
             Severity.WARNING,
             _not_read(startup, entry, entry.refused)
             if entry.refused

@@ -62,6 +62,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import at_entry
 from ._crosslist import COUNTED, MAX_ENTRIES, index
 
 if TYPE_CHECKING:
@@ -84,18 +85,7 @@ def _span(key: str, count: int) -> str:
 
 
 def _at(startup: Startup, entry: StartupEntry, message: str, related: tuple[Related, ...] = ()) -> Diagnostic:
-    end = entry.column + len(entry.raw)
-    return Diagnostic(
-        str(startup.path),
-        entry.line,
-        entry.column,
-        entry.line,
-        end,
-        CODE,
-        Severity.WARNING,
-        message,
-        related=related,
-    )
+    return at_entry(CODE, startup.path, entry, Severity.WARNING, message, related)
 
 
 def check_machine(machine: Machine) -> Iterator[Diagnostic]:

@@ -69,6 +69,7 @@ from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ..core.files import same_file
+from ..machine.startup import at_entry
 
 if TYPE_CHECKING:
     from ..machine.resolved import Machine
@@ -104,18 +105,13 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
                     "the entry and lower zahl_mds"
                 )
             shown = f"`{entry.raw}`" if entry.raw == earlier.raw else f"`{entry.raw}` (`{earlier.raw}`)"
-            yield Diagnostic(
-                str(startup.path),
-                entry.line,
-                entry.column,
-                entry.line,
-                entry.column + len(entry.raw),
+            yield at_entry(
                 CODE,
+                startup.path,
+                entry,
                 Severity.ERROR,
                 f"`{entry.key}` names {shown}, the file `{earlier.key}` names, {consequence}",
-                related=(
-                    Related(str(startup.path), earlier.line, earlier.column, earlier.key, "named first"),
-                ),
+                (Related(str(startup.path), earlier.line, earlier.column, earlier.key, "named first"),),
             )
 
 

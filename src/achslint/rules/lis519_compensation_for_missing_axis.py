@@ -86,6 +86,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..core.diagnostics import Diagnostic, Related, Severity
+from ..machine.startup import at_entry
 from ._crosslist import by_number, every_axis_list_read
 from ._kindvalues import at_setting, compensation_assignments, whole
 
@@ -110,13 +111,10 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
         if found.unusable:
             continue  # written, but not a usable number: the start-up list's own finding (LIS202)
         if assignment is None:
-            yield Diagnostic(
-                name,
-                entry.line,
-                entry.column,
-                entry.line,
-                entry.column + len(entry.raw),
+            yield at_entry(
                 CODE,
+                startup.path,
+                entry,
                 Severity.WARNING,
                 f"`{entry.key}` names the axis compensation list `{entry.raw}`, but the start-up list does not "
                 f"assign it to an axis: `{key}` is not written, so no axis uses the list; add `{key}` with "

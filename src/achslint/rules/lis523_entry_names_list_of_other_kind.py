@@ -88,7 +88,7 @@ from ..catalogue.kinds import ENTRY_KINDS, Kind, content_kind, entry_kind
 from ..core.decode import UnreadableInput
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ..core.files import same_file
-from ..machine.startup import entry_index
+from ..machine.startup import at_entry, entry_index
 from ..syntax.parser import parse_bytes
 
 if TYPE_CHECKING:
@@ -122,16 +122,13 @@ def check_machine(machine: Machine) -> Iterator[Diagnostic]:
             shown = _content(machine, entry, named)
             if shown is None or shown.prefix == named.prefix:
                 continue  # unclear, or the kind named (a default list reads like the list it lies under)
-            yield Diagnostic(
-                str(startup.path),
-                entry.line,
-                entry.column,
-                entry.line,
-                entry.column + len(entry.raw),
+            yield at_entry(
                 CODE,
+                startup.path,
+                entry,
                 Severity.WARNING,
                 _message(entry, named, shown),
-                related=(Related(str(entry.path), 1, 1, None, f"the {shown.name}"),),
+                (Related(str(entry.path), 1, 1, None, f"the {shown.name}"),),
             )
 
 
