@@ -35,6 +35,17 @@ def _achslint(
 # -- -o through a folder that does not exist ----------------------------------------------------------------
 
 
+def _python(script: str, cache: Path, timeout: float) -> subprocess.CompletedProcess[str]:
+    """`script` in a fresh interpreter whose per-user cache folder lies in `cache`."""
+    return subprocess.run(
+        [sys.executable, "-c", script],
+        env={**os.environ, "XDG_CACHE_HOME": str(cache)},
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+    )
+
+
 def test_output_through_a_missing_folder_is_not_written_over_the_file_the_letters_reach(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -86,13 +97,7 @@ def test_a_fifo_in_place_of_the_code_cache_does_not_hang_a_run(tmp_path: Path) -
         "c = codecache.CodeCache(codecache.cache_path(folder))\n"
         "print(len(c.stored))\n"
     )
-    done = subprocess.run(
-        [sys.executable, "-c", script],
-        env={**os.environ, "XDG_CACHE_HOME": str(cache)},
-        capture_output=True,
-        text=True,
-        timeout=20,
-    )
+    done = _python(script, cache, timeout=20)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "0"
 
@@ -165,13 +170,7 @@ def test_a_fifo_in_place_of_the_grammar_cache_does_not_hang_a_run(tmp_path: Path
         "parser.parser()\n"
         "print('parsed')\n"
     )
-    done = subprocess.run(
-        [sys.executable, "-c", script],
-        env={**os.environ, "XDG_CACHE_HOME": str(cache)},
-        capture_output=True,
-        text=True,
-        timeout=8,
-    )
+    done = _python(script, cache, timeout=8)
     assert done.stdout.strip() == "parsed", done.stderr
 
 
