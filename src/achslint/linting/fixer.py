@@ -39,6 +39,9 @@ class FixOutcome:
     data: bytes  # the fixed bytes (the input when nothing changed)
     fixed: int  # number of diagnostics fixed
     result: FileResult  # diagnostics of the fixed bytes
+    # (code, line, column) of the findings of the input whose fix its lint called safe and the behaviour test
+    # refused (what a plain lint shows as unsafe)
+    refused: frozenset[tuple[str, int, int]] = frozenset()
 
 
 def _offsets(text: str) -> list[int]:
@@ -224,11 +227,19 @@ def fix_bytes(
     the findings of a fixing run are those a plain lint of the fixed list reports."""
     fixed = 0
     result = lint_file(data, name, settings, defaults)
+    safe = {id(d) for d in result.diagnostics if d.fix is not None and d.fix.applicability == "safe"}
+    refused: frozenset[tuple[str, int, int]] = frozenset()
     checked = False  # whether `result`'s safe fixes have had the behaviour test
-    for _ in range(MAX_ROUNDS):
+    for round_ in range(MAX_ROUNDS):
         if result.error:
             break
         check_fixes(data, name, settings, result, defaults)
+        if round_ == 0:
+            refused = frozenset(
+                (d.code, d.line, d.column)
+                for d in result.diagnostics
+                if id(d) in safe and d.fix is not None and d.fix.applicability != "safe"
+            )
         checked = True
         allowed = {"safe", "unsafe"} if unsafe else {"safe"}
         fixes = [d.fix for d in result.diagnostics if d.fix is not None and d.fix.applicability in allowed]
@@ -244,4 +255,4 @@ def fix_bytes(
         checked = False
     if not result.error and not checked:
         check_fixes(data, name, settings, result, defaults)
-    return FixOutcome(data, fixed, result)
+    return FixOutcome(data, fixed, result, refused)

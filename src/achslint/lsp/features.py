@@ -944,7 +944,7 @@ def code_actions(
     refused: Set[tuple[str, int, int]] = frozenset(),
 ) -> list[lsp.CodeAction]:
     """The quick fixes, noqa actions and fix-all for the findings in `request`. `refused`: (code, line,
-    column) of the findings whose fix the lint calls safe and `--fix` refuses (`Session.unsafe_fixes`):
+    column) of the findings whose fix the lint calls safe and `--fix` refuses (`Session.fix_all`):
     offered as unsafe, as `achslint lint` shows them."""
     start_line, end_line = request.start.line + 1, request.end.line + 1
 

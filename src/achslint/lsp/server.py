@@ -152,7 +152,7 @@ class AchslintServer(LanguageServer):
         self._timers: dict[str, asyncio.TimerHandle] = {}
         self._waiting: dict[str, list[tuple[int, asyncio.Future[Analysis | None]]]] = {}
         self._to_lint: Latest[tuple[Document, int]] = Latest()
-        # fix-all edits and the fixes --fix refuses (`Session.unsafe_fixes`), by generation
+        # fix-all edits and the fixes --fix refuses (`Session.fix_all`), by generation
         self._fixes: dict[str, tuple[int, list[lsp.TextEdit], set[tuple[str, int, int]]]] = {}
         self.formats: dict[str, tuple[int, RawResult]] = {}  # formatting edits by generation
         self._outlines: dict[str, Outline] = {}  # each document's outline, line by line (on the worker)
@@ -796,11 +796,8 @@ class AchslintServer(LanguageServer):
         document, session = analysis.document, self.session
 
         def edits() -> tuple[list[lsp.TextEdit], set[tuple[str, int, int]]]:
-            fixed = session.fixed_text(document)
-            return (
-                features.diff_edits(document, fixed) if fixed is not None else [],
-                session.unsafe_fixes(document),
-            )
+            fixed, refused = session.fix_all(document)
+            return (features.diff_edits(document, fixed) if fixed is not None else [], set(refused))
 
         found, refused = await self.run_on_worker(edits)
         if uri in self.documents:

@@ -234,35 +234,26 @@ class Session:
         settings.keep_context = True
         return settings
 
-    def fixed_text(self, document: Document) -> str | None:
-        """The document's text with every safe fix applied, as `achslint lint --fix` would write it; None
-        when no fix applies."""
+    def fix_all(self, document: Document) -> tuple[str | None, frozenset[tuple[str, int, int]]]:
+        """What `achslint lint --fix` makes of the document: its text with every safe fix applied (None when
+        no fix applies), and (code, line, column) of the findings whose fix the lint calls safe but `--fix`
+        refuses because it changes what the list does (`fixer.check_fixes`), so that a quick fix is offered
+        as safe exactly when the command line calls it safe. One lint and one behaviour test for both."""
         from ..linting.fixer import fix_bytes
 
         settings, underneath = self._fix_settings(document)
         outcome = fix_bytes(text_bytes(document.body), document.name, settings, defaults=underneath)
-        if not outcome.fixed:
-            return None
-        return ("\ufeff" if document.bom else "") + outcome.data.decode("utf-8")
+        text = ("\ufeff" if document.bom else "") + outcome.data.decode("utf-8") if outcome.fixed else None
+        return text, outcome.refused
 
-    def unsafe_fixes(self, document: Document) -> set[tuple[str, int, int]]:
-        """(code, line, column) of the findings whose fix the lint calls safe but `achslint lint` does not: the
-        fixes `--fix` refuses because they change what the list does (`fixer.check_fixes`), so that a quick fix
-        is offered as safe exactly when the command line calls it safe."""
-        from ..linting.fixer import check_fixes
+    def fixed_text(self, document: Document) -> str | None:
+        """The document's text with every safe fix applied, as `achslint lint --fix` would write it; None
+        when no fix applies."""
+        return self.fix_all(document)[0]
 
-        settings, underneath = self._fix_settings(document)
-        data = text_bytes(document.body)
-        result = lint_file(data, document.name, settings, underneath)
-        safe = {id(d) for d in result.diagnostics if d.fix is not None and d.fix.applicability == "safe"}
-        if result.error or not safe:
-            return set()
-        check_fixes(data, document.name, settings, result, underneath)
-        return {
-            (d.code, d.line, d.column)
-            for d in result.diagnostics
-            if id(d) in safe and d.fix is not None and d.fix.applicability != "safe"
-        }
+    def unsafe_fixes(self, document: Document) -> frozenset[tuple[str, int, int]]:
+        """The findings whose fix the lint calls safe but `--fix` refuses (see `fix_all`)."""
+        return self.fix_all(document)[1]
 
     def _fix_settings(self, document: Document) -> tuple[FileSettings, bytes | None]:
         """The settings and the list underneath for fixing the document, as `achslint lint --fix` has them:
