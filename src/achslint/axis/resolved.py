@@ -107,16 +107,36 @@ class ResolvedAxis:
         self.catalogue = cat or catalogue()
         self.analysis = analysis
         self._values: dict[str, Value | Reference] = {}
+        # The assignment that won per path, and those of the default list. An `Origin` is made when first
+        # asked for (few are): making one per assignment was most of the cost of building the axis.
+        self._assigned: dict[str, Setting] = {}
+        self._from_defaults: dict[str, Setting] = {}
+        self._default_name = defaults.file.name if defaults else None
+        self._list_name = analysis.file.name
         self._origins: dict[str, Origin] = {}
         self._stages: dict[str, set[int]] | None = None
         self._corrected: dict[str, Correction] = {}
-        layers = [(defaults, "default list"), (analysis, "list")] if defaults else [(analysis, "list")]
-        for layer, kind in layers:
-            for setting in layer.settings:
+        # Answers of `get` and `written` per path, and the axis, drive and homing type: the rules and the
+        # homing strategies ask the same few values over and over. A correction changes what they answer,
+        # so `correct` forgets them all.
+        self._used: dict[str, Value | None] = {}
+        self._written: dict[str, Value | None] = {}
+        self._axis_type: str | None = None
+        self._drive_type: int | None = None
+        self._homing_type: str | None = None
+        values, assigned = self._values, self._assigned
+        if defaults:
+            for setting in defaults.settings:
                 path = setting.canonical  # not None for known settings
                 if path is not None and not setting.problems and setting.value is not None:
-                    self._values[path] = setting.value
-                    self._origins[path] = Origin(kind, setting, layer.file.name)
+                    values[path] = setting.value
+                    assigned[path] = setting
+            self._from_defaults = dict(assigned)
+        for setting in analysis.settings:
+            path = setting.canonical
+            if path is not None and not setting.problems and setting.value is not None:
+                values[path] = setting.value
+                assigned[path] = setting
         apply(self)
 
     # -- lookups ---------------------------------------------------------------------------
@@ -129,10 +149,12 @@ class ResolvedAxis:
 
     def get(self, path: str) -> Value | None:
         """The value the CNC uses (typed): corrected, references followed, the default when unset."""
+        used = self._used
+        if path in used:
+            return used[path]
         correction = self._corrected.get(path)
-        if correction is not None:
-            return correction.used
-        return self.written(path)
+        value = used[path] = correction.used if correction is not None else self.written(path)
+        return value
 
     def number(self, path: str) -> float:
         """The value the CNC uses of a numeric parameter (see `numeric`)."""
@@ -144,12 +166,21 @@ class ResolvedAxis:
 
     def written(self, path: str, _depth: int = 0) -> Value | None:
         """The value before the CNC's corrections (references followed, the default when unset)."""
+        if _depth:  # a step along a chain of references: its answer depends on the depth (cycles)
+            return self._written_now(path, _depth)
+        written = self._written
+        if path in written:
+            return written[path]
+        value = written[path] = self._written_now(path, 0)
+        return value
+
+    def _written_now(self, path: str, depth: int) -> Value | None:
         value = self._values.get(path)
+        if value is None:
+            return self.parameter(path).typed_default
         if isinstance(value, Reference):
-            return self._follow(path, value, _depth)
-        if value is not None:
-            return value
-        return self.parameter(path).typed_default
+            return self._follow(path, value, depth)
+        return value
 
     def referenced(self, path: str, reference: Reference) -> str:
         """The canonical concrete path a reference written at `path` points to (`P-AXIS-00212.0`)."""
@@ -174,29 +205,41 @@ class ResolvedAxis:
         return correction.used if correction is not None else self.written(concrete, depth + 1)
 
     def origin(self, path: str) -> Origin:
-        return self._origins.get(path, DEFAULT_ORIGIN)
+        made = self._origins.get(path)
+        if made is None:
+            setting = self._assigned.get(path)
+            if setting is None:
+                return DEFAULT_ORIGIN
+            if self._from_defaults.get(path) is setting:
+                made = Origin("default list", setting, self._default_name)
+            else:
+                made = Origin("list", setting, self._list_name)
+            self._origins[path] = made
+        return made
 
     def setting(self, path: str) -> Setting | None:
         """The assignment that produced the value, if it was set in a list."""
-        return self._origins.get(path, DEFAULT_ORIGIN).setting
+        return self._assigned.get(path)
 
     def is_set(self, path: str) -> bool:
-        return path in self._origins
+        return path in self._assigned
 
     def in_list(self, path: str) -> Setting | None:
         """The assignment in the axis list itself (not the default list), if any."""
-        origin = self._origins.get(path)
-        return origin.setting if origin and origin.kind == "list" else None
+        setting = self._assigned.get(path)
+        return None if setting is None or self._from_defaults.get(path) is setting else setting
 
     def set_paths(self) -> list[str]:
         """Canonical paths assigned in the list or the default list."""
-        return list(self._origins)
+        return list(self._assigned)
 
     def gear_stages_set(self, *members: str) -> list[int]:
         """Gear stages (0..5) in which any of the given `getriebe[i].…` members is set."""
         if self._stages is None:
             self._stages = {}
-            for path in self._origins:
+            for path in self._assigned:
+                if not path.startswith("getriebe["):  # the pattern below begins with it: cheap to skip
+                    continue
                 pattern, indices = path_pattern(path)
                 if pattern.startswith("getriebe[i].") and indices:
                     self._stages.setdefault(pattern[len("getriebe[i].") :], set()).add(indices[0])
@@ -209,6 +252,9 @@ class ResolvedAxis:
     def correct(self, path: str, used: Value, error: str, reason: str) -> None:
         """Record a load-time correction of the CNC (called by `corrections.apply`)."""
         self._corrected[path] = Correction(path, self.written(path), used, error, reason, self.origin(path))
+        self._used.clear()  # what was worked out before may have read the value corrected now
+        self._written.clear()
+        self._axis_type = self._drive_type = self._homing_type = None
 
     @property
     def corrections(self) -> list[Correction]:
@@ -221,13 +267,21 @@ class ResolvedAxis:
     @property
     def axis_type(self) -> str:
         """ "T" (linear), "R" (rotary) or "S" (spindle); the CNC assumes linear when unset."""
-        value = self.get("kenngr.achs_typ")  # a symbol (ACHSTYP_ROTATOR)
-        code = self.parameter("kenngr.achs_typ").symbol_codes.get(value) if isinstance(value, str) else value
-        return AXIS_TYPE_CODES.get(code, "T") if isinstance(code, int) else "T"
+        known = self._axis_type
+        if known is None:
+            value = self.get("kenngr.achs_typ")  # a symbol (ACHSTYP_ROTATOR)
+            code = (
+                self.parameter("kenngr.achs_typ").symbol_codes.get(value) if isinstance(value, str) else value
+            )
+            known = self._axis_type = AXIS_TYPE_CODES.get(code, "T") if isinstance(code, int) else "T"
+        return known
 
     @property
     def drive_type(self) -> int:
-        return int(self.number("kenngr.antr_typ"))
+        known = self._drive_type
+        if known is None:
+            known = self._drive_type = int(self.number("kenngr.antr_typ"))
+        return known
 
     @property
     def drive_type_known(self) -> bool:
@@ -240,10 +294,15 @@ class ResolvedAxis:
     @property
     def homing_type(self) -> str:
         """The homing type in force: as set (after corrections), or the drive type's default (P-AXIS-00299 table)."""
-        value = self.get("kenngr.homing.homing_type")
-        if value is None or value == "DRIVE_DEFAULT":
-            return default_homing_type(self.drive_type)
-        return str(value)  # a symbol
+        known = self._homing_type
+        if known is None:
+            value = self.get("kenngr.homing.homing_type")
+            if value is None or value == "DRIVE_DEFAULT":
+                known = default_homing_type(self.drive_type)
+            else:
+                known = str(value)  # a symbol
+            self._homing_type = known
+        return known
 
     @property
     def homing_type_is_default(self) -> bool:
