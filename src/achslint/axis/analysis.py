@@ -123,32 +123,41 @@ class Analysis:
 
 
 _COMMENT_STARTS = ("#", "/*", ";")
+_NO_VALUE_STARTS = (*_COMMENT_STARTS, "(")  # what a comment in the place of the value begins with
 _ARRAY_NAME = re.compile(r"(\w+)\[i\]")
 _WRITTEN_INDEX = re.compile(r"\[[0-9]+\]")
 
+
+_REAL = syntax.REAL
+_NUMBERS = (syntax.INT, syntax.HEX, syntax.REAL)
 
 PAUSE_EVERY = 512  # settings between two pause points (well under a millisecond of work)
 
 
 def analyse(file: syntax.ListFile, cat: Catalogue | None = None) -> Analysis:
     cat = cat or catalogue()
-    settings = []
+    resolve = cat.resolve
+    settings: list[Setting] = []
+    add = settings.append
     for count, line in enumerate(file.assignments(), 1):
-        if line.path_ok and line.path is not None:  # an assignment always has a path
-            settings.append(Setting(line, cat.resolve(line.path)))
+        path = line.path
+        if line.path_ok and path is not None:  # an assignment always has a path
+            add(Setting(line, resolve(path)))
         if not count % PAUSE_EVERY:
             pause()  # the language server's worker gives way to the editor here (core.pause)
     analysis = Analysis(file, settings)
-    if _describes_axes(cat):
+    axes = _describes_axes(cat)
+    if axes:
         _axis_and_drive(analysis, cat)
     for count, setting in enumerate(settings, 1):
         if not count % PAUSE_EVERY:
             pause()
         resolution = setting.resolution
-        if setting.known and resolution is not None:  # known: resolved, and not by a misspelling
-            _check_indices(setting, resolution)
+        if setting.canonical is not None and resolution is not None:  # known: not by a misspelling
+            if not resolution.in_bounds and resolution.alias is None:
+                _check_indices(setting, resolution)
             if not setting.problems:
-                _check_value(setting, resolution.parameter, analysis, cat)
+                _check_value(setting, resolution.parameter, analysis, cat, axes)
     return analysis
 
 
@@ -179,18 +188,24 @@ def _check_indices(setting: Setting, resolution: Resolution) -> None:
         )
 
 
-def _last_int(settings: list[Setting], parameter_id: str) -> int | None:
-    value = None
+def _last_ints(settings: list[Setting], parameter_ids: tuple[str, ...]) -> dict[str, int]:
+    """The integer each of the parameters is set to last, by id (one walk through the list for all)."""
+    values: dict[str, int] = {}
     for setting in settings:
-        parameter = setting.parameter
-        if setting.known and parameter is not None and parameter.id == parameter_id:
-            number = _as_int(setting.line)
-            written = setting.line.value
-            if isinstance(number, int):
-                value = number
-            elif setting.line.value_kind == syntax.SYMBOL and written in parameter.symbol_codes:
-                value = parameter.symbol_codes[written]
-    return value
+        resolution = setting.resolution
+        if setting.canonical is None or resolution is None:  # unknown or misspelt
+            continue
+        parameter = resolution.parameter
+        if parameter.id not in parameter_ids:
+            continue
+        line = setting.line
+        number = _as_int(line)
+        written = line.value
+        if isinstance(number, int):
+            values[parameter.id] = number
+        elif line.value_kind == syntax.SYMBOL and written in parameter.symbol_codes:
+            values[parameter.id] = parameter.symbol_codes[written]
+    return values
 
 
 def _describes_axes(cat: Catalogue) -> bool:
@@ -199,11 +214,12 @@ def _describes_axes(cat: Catalogue) -> bool:
 
 
 def _axis_and_drive(analysis: Analysis, cat: Catalogue) -> None:
-    axis_code = _last_int(analysis.settings, "P-AXIS-00018")
+    last = _last_ints(analysis.settings, ("P-AXIS-00018", "P-AXIS-00020"))
+    axis_code = last.get("P-AXIS-00018")
     if axis_code in AXIS_TYPE_CODES:
         analysis.axis_type = AXIS_TYPE_CODES[axis_code]
         analysis.axis_type_known = True
-    drive = _last_int(analysis.settings, "P-AXIS-00020")
+    drive = last.get("P-AXIS-00020")
     # An invalid drive type is reported by the range check; nothing is inferred from it.
     analysis.drive_type = drive if drive in cat.by_id["P-AXIS-00020"].allowed else None
 
@@ -220,17 +236,32 @@ def _as_int(line: syntax.Line) -> int | NumberProblem | None:
 def comment_in_value_position(line: syntax.Line) -> bool:
     """True when the 'value' is really the start of a comment (`name   # text`)."""
     value = line.value or ""
-    return line.value_kind in (syntax.SYMBOL, syntax.BAD_STRING) and value.startswith((*_COMMENT_STARTS, "("))
+    return line.value_kind in (syntax.SYMBOL, syntax.BAD_STRING) and value.startswith(_NO_VALUE_STARTS)
 
 
-def _check_value(setting: Setting, parameter: Parameter, analysis: Analysis, cat: Catalogue) -> None:
+def _check_value(
+    setting: Setting, parameter: Parameter, analysis: Analysis, cat: Catalogue, axes: bool
+) -> None:
+    """Convert the value of a known assignment, or record why it cannot be (`axes`: the catalogue is the
+    axis catalogue, `_describes_axes`)."""
     line = setting.line
     kind = parameter.kind
-    add_problem = setting.add_problem
     value_kind = line.value_kind
     text = line.value or ""
-    unit = parameter.unit(analysis.axis_type)
 
+    # A number for a number or a flag first (most assignments): none of the checks below concerns it.
+    if value_kind in _NUMBERS:
+        if kind == INTEGER and value_kind != _REAL:
+            _check_integer(setting, parameter, text, value_kind, analysis.axis_type)
+            return
+        if kind == REAL:
+            _check_real(setting, parameter, text, value_kind, analysis.axis_type)
+            return
+        if kind == BOOL:
+            _check_bool(setting, parameter, text, value_kind)
+            return
+
+    add_problem = setting.add_problem
     if value_kind == syntax.BAD_STRING:
         return  # a syntax error, reported with the line
     if value_kind == syntax.REFERENCE:
@@ -243,23 +274,23 @@ def _check_value(setting: Setting, parameter: Parameter, analysis: Analysis, cat
             return
         add_problem(MissingValue())
         return
-    if comment_in_value_position(line):
+    if value_kind == syntax.SYMBOL and text.startswith(_NO_VALUE_STARTS):  # comment_in_value_position
         if kind in (STRING, SYMBOL):
             add_problem(CommentReadAsValue((line.value or "") + line.sep2 + (line.rest or "")))
         else:
             add_problem(MissingValue(text))
         return
 
-    flags = combined_flags(line) if kind == SYMBOL and not _describes_axes(cat) else None
+    flags = combined_flags(line) if kind == SYMBOL and not axes else None
     if flags is not None:
         _check_flags(setting, parameter, flags)
         return
     if kind == BOOL:
         _check_bool(setting, parameter, text, value_kind)
     elif kind == INTEGER:
-        _check_integer(setting, parameter, text, value_kind, unit)
+        _check_integer(setting, parameter, text, value_kind, analysis.axis_type)
     elif kind == REAL:
-        _check_real(setting, parameter, text, value_kind, unit)
+        _check_real(setting, parameter, text, value_kind, analysis.axis_type)
     elif kind == SYMBOL:
         _check_symbol(setting, parameter, text, value_kind)
     else:
@@ -294,7 +325,7 @@ def _check_bool(setting: Setting, parameter: Parameter, text: str, value_kind: s
 
 
 def _check_integer(
-    setting: Setting, parameter: Parameter, text: str, value_kind: str, unit: str | None
+    setting: Setting, parameter: Parameter, text: str, value_kind: str, axis_type: str
 ) -> None:
     if value_kind in (syntax.INT, syntax.HEX):
         number = parse_int(text) if value_kind == syntax.INT else parse_hex(text)
@@ -302,7 +333,7 @@ def _check_integer(
             setting.add_problem(UnusableNumber(text, number))
             return
         setting.value = number
-        _check_range(setting, parameter, number, unit)
+        _check_range(setting, parameter, number, axis_type)
         return
     if value_kind == syntax.SYMBOL and parameter.symbols:
         if text in parameter.symbols:
@@ -318,19 +349,20 @@ def _check_integer(
     setting.add_problem(TextForNumber(text))
 
 
-def _check_real(setting: Setting, parameter: Parameter, text: str, value_kind: str, unit: str | None) -> None:
+def _check_real(setting: Setting, parameter: Parameter, text: str, value_kind: str, axis_type: str) -> None:
     if value_kind in (syntax.INT, syntax.HEX, syntax.REAL):
         number = parse_real(text)
         if isinstance(number, NumberProblem):
             setting.add_problem(UnusableNumber(text, number))
             return
         setting.value = number
-        _check_range(setting, parameter, number, unit)
+        _check_range(setting, parameter, number, axis_type)
         return
     setting.add_problem(TextForNumber(text))
 
 
-def _check_range(setting: Setting, parameter: Parameter, number: float, unit: str | None) -> None:
+def _check_range(setting: Setting, parameter: Parameter, number: float, axis_type: str) -> None:
+    """A number inside the parameter's accepted codes or range (`axis_type` gives the unit of a finding)."""
     if parameter.allowed:
         if number not in parameter.allowed and number != parameter.default:
             setting.add_problem(NotAccepted(number, tuple(parameter.allowed)))
@@ -339,12 +371,12 @@ def _check_range(setting: Setting, parameter: Parameter, number: float, unit: st
         return  # an out-of-range default that means "not set" (limits: the values between are not accepted)
     low, high = parameter.limits
     if parameter.strict_positive_real and number <= 0 and number != parameter.default:
-        setting.add_problem(NotPositive(number, unit))
+        setting.add_problem(NotPositive(number, parameter.unit(axis_type)))
         return
     if low is not None and number < low:
-        setting.add_problem(OutOfRange(number, low, None, unit))
+        setting.add_problem(OutOfRange(number, low, None, parameter.unit(axis_type)))
     elif high is not None and number > high:
-        setting.add_problem(OutOfRange(number, None, high, unit))
+        setting.add_problem(OutOfRange(number, None, high, parameter.unit(axis_type)))
 
 
 def _check_symbol(setting: Setting, parameter: Parameter, text: str, value_kind: str) -> None:

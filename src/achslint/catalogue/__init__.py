@@ -129,7 +129,7 @@ class Parameter:
             high = type_high if high is None else min(high, type_high)
         return low, high
 
-    @property
+    @cached_property
     def outside_default(self) -> float | None:
         """The built-in default when it is a number outside `limits` (accepted all the same: it means "not
         set"), else None."""
@@ -141,7 +141,7 @@ class Parameter:
             default if (low is not None and default < low) or (high is not None and default > high) else None
         )
 
-    @property
+    @cached_property
     def strict_positive_real(self) -> bool:
         return self.kind == REAL and self.min == 0 and self.min_strict
 
