@@ -62,6 +62,8 @@ def _too_long(digits: str, limit: int) -> NumberProblem | None:
 
 def parse_int(text: str) -> int | NumberProblem:
     """A signed decimal integer (`-2025000`)."""
+    if len(text) <= MAX_DIGITS and text.isascii() and text.isdigit():  # most are: no pattern, no count
+        return int(text)
     if not _DECIMAL.fullmatch(text):
         return NumberProblem("syntax")
     return _too_long(text.lstrip("+-"), MAX_DIGITS) or int(text)
