@@ -290,11 +290,14 @@ class Catalogue:
 
     def resolve(self, path: str) -> Resolution | None:
         """The parameter a written path refers to (canonical name or alias), if any."""
-        if path not in self._resolved:
-            if len(self._resolved) > 1 << 16:
-                self._resolved.clear()  # bounded: pathological inputs with endless distinct names
-            self._resolved[path] = self._resolve(path)
-        return self._resolved[path]
+        try:
+            return self._resolved[path]  # one lookup for the paths seen before: nearly every call
+        except KeyError:
+            pass
+        if len(self._resolved) > 1 << 16:
+            self._resolved.clear()  # bounded: pathological inputs with endless distinct names
+        found = self._resolved[path] = self._resolve(path)
+        return found
 
     def _resolve(self, path: str) -> Resolution | None:
         pattern, indices = path_pattern(path)
