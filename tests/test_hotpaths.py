@@ -7,6 +7,8 @@ the shortcut against it, so a shortcut that drifts from the rule fails here befo
 
 from __future__ import annotations
 
+import enum
+import json
 import re
 
 import pytest
@@ -16,10 +18,11 @@ from hypothesis import strategies as st
 from achslint.axis.analysis import analyse
 from achslint.axis.resolved import ResolvedAxis, resolve_bytes
 from achslint.catalogue import catalogue
+from achslint.core.display import indented_json
 from achslint.syntax.numbers import MAX_DIGITS, NumberProblem, parse_int
 from achslint.syntax.parser import parse_bytes
 
-from .conftest import FIXTURES, examples
+from .conftest import FIXTURES, examples, run_cli
 
 # -- parse_int -----------------------------------------------------------------------------------------------
 
@@ -150,3 +153,129 @@ def test_numbers_are_read_as_their_parameter_wants(line, value, facts):
     if value is not None:
         assert setting.value == value and type(setting.value) is type(value)
     assert [type(fact).__name__ for fact in setting.problems] == facts
+
+
+# -- JSON written with an indent ---------------------------------------------------------------------------
+
+
+def _standard(document: object, allow_nan: bool = True) -> str:
+    return json.dumps(document, ensure_ascii=False, indent=2, allow_nan=allow_nan)
+
+
+def _same_as_standard(document: object, allow_nan: bool = True) -> None:
+    """indented_json writes what json.dumps writes, or raises what it raises."""
+    try:
+        expected = _standard(document, allow_nan)
+    except Exception as exc:  # whatever json.dumps raises, indented_json must raise too
+        with pytest.raises(type(exc)) as raised:
+            indented_json(document, allow_nan=allow_nan)
+        assert str(raised.value) == str(exc)
+        return
+    assert indented_json(document, allow_nan=allow_nan) == expected
+
+
+class _Code(enum.IntEnum):
+    ONE = 1
+
+
+class _Name(str, enum.Enum):
+    AXIS = "axis"
+
+
+class _Dict(dict):
+    pass
+
+
+class _List(list):
+    pass
+
+
+_scalars = (
+    st.none()
+    | st.booleans()
+    | st.integers(min_value=-(10**30), max_value=10**30)
+    | st.floats(allow_nan=True, allow_infinity=True)
+    | st.text(max_size=12)
+    | st.sampled_from(["", "\x1b[2J", "a\nb", '"', "\\", "\u202e", "\ud800", "ü€😀", "\x00", "\u2028"])
+    | st.sampled_from([_Code.ONE, _Name.AXIS, -0.0, 1e300, 2**70])
+)
+_keys = st.text(max_size=6) | st.integers(-5, 5) | st.floats(allow_nan=True) | st.booleans() | st.none()
+_documents = st.recursive(
+    _scalars,
+    lambda inner: (
+        st.lists(inner, max_size=4)
+        | st.lists(inner, max_size=3).map(tuple)
+        | st.lists(inner, max_size=3).map(_List)
+        | st.dictionaries(_keys, inner, max_size=4)
+        | st.dictionaries(st.text(max_size=4), inner, max_size=3).map(_Dict)
+    ),
+    max_leaves=30,
+)
+
+
+@settings(max_examples=examples(2000, 300), deadline=None)
+@given(_documents, st.booleans())
+def test_indented_json_is_json_dumps_for_any_document(document, allow_nan):
+    _same_as_standard(document, allow_nan)
+
+
+@pytest.mark.parametrize(
+    "document",
+    [
+        {},
+        [],
+        (),
+        "text",
+        5,
+        None,
+        {"a": {}, "b": [], "c": [{}], "d": [[[]]]},
+        {"nan": float("nan"), "inf": [float("inf"), -float("inf")]},
+        {1.5: "float key", True: "bool key", None: "null key", 7: "int key"},
+        {"set": {1, 2}},  # no JSON form: the same TypeError
+        {(1, 2): "tuple key"},  # no JSON key: the same TypeError
+        [object()],
+    ],
+)
+@pytest.mark.parametrize("allow_nan", [True, False])
+def test_indented_json_is_json_dumps_for_the_edge_cases(document, allow_nan):
+    _same_as_standard(document, allow_nan)
+
+
+def test_indented_json_refuses_a_cycle_as_json_dumps_does():
+    cycle: list = []
+    cycle.append(cycle)
+    _same_as_standard(cycle)
+    _same_as_standard({"a": cycle})
+
+
+def test_the_json_documents_of_the_commands_are_written_as_json_dumps_writes_them(monkeypatch, tmp_path):
+    """Every document the commands print as JSON, checked against json.dumps as it is written."""
+    from achslint.core import display
+
+    written = display.indented_json
+    seen: list[object] = []
+
+    def checked(document: object, *, allow_nan: bool = True) -> str:
+        seen.append(document)
+        text = written(document, allow_nan=allow_nan)
+        assert text == _standard(document, allow_nan)
+        return text
+
+    monkeypatch.setattr(display, "indented_json", checked)
+    rules = FIXTURES / "rules"
+    some = [str(path) for path in sorted(rules.glob("LIS2*/bad.lis"))]
+    homing = str(FIXTURES / "homing" / "tr_ref_linear.lis")
+    commands = [
+        *(["lint", "--format", fmt, *some] for fmt in ("json", "sarif", "gitlab", "rdjson")),
+        ["lint", "--format", "json", str(FIXTURES / "machines")],
+        ["explain", "--format", "json", homing],
+        ["explain", "--format", "json", "kenngr.homing.homing_type"],
+        ["dry-run", "--format", "json", homing],
+        ["diff", "--format", "json", homing, str(FIXTURES / "homing" / "tr_ref_trapezoid.lis")],
+        ["rules", "--format", "json"],
+        ["schema"],
+    ]
+    for args in commands:
+        result = run_cli(*args)
+        assert result.stdout.lstrip().startswith((b"{", b"[")), (args, result.stderr)
+    assert len(seen) >= len(commands)
