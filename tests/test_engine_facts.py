@@ -21,8 +21,8 @@ from achslint.rules import lis405_zero_pulse_near_cam_edge as lis405
 from achslint.rules.context import Context
 from achslint.syntax.parser import parse_bytes
 
-from .conftest import source_tree
 from .engine_scene import SCENE, listed
+from .source_nodes import nodes
 
 HOMING = Path(__file__).resolve().parents[1] / "src" / "achslint" / "homing"
 
@@ -106,7 +106,7 @@ def test_the_simulation_builds_no_rule_message() -> None:
     """No `warn` call under homing/ names a rule: what a rule reports is a fact the rule words."""
     found = []
     for path in sorted(HOMING.rglob("*.py")):
-        for node in ast.walk(source_tree(path)):
+        for node in nodes(path):
             if (
                 isinstance(node, ast.Call)
                 and isinstance(node.func, ast.Attribute)

@@ -19,7 +19,8 @@ from achslint.machine.resolved import Machine
 from achslint.rules import Scope, registry
 from achslint.syntax.parser import parse_text
 
-from .conftest import FIXTURES, ROOT, run_cli, source_tree
+from .conftest import FIXTURES, ROOT, run_cli
+from .source_nodes import nodes
 
 PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
 
@@ -184,8 +185,7 @@ def test_only_the_engine_calls_rule_checks() -> None:
     """No module outside the engine runs rules itself: `Rule.checker` is read in linting/engine.py only."""
     callers = []
     for path in sorted((ROOT / "src" / "achslint").rglob("*.py")):
-        tree = source_tree(path)
-        if any(isinstance(n, ast.Attribute) and n.attr == "checker" for n in ast.walk(tree)):
+        if any(isinstance(n, ast.Attribute) and n.attr == "checker" for n in nodes(path)):
             callers.append(path.relative_to(ROOT / "src" / "achslint").as_posix())
     assert callers == ["linting/engine.py"]
 

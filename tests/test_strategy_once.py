@@ -9,6 +9,7 @@ is needed, yet a G74 naming the axis runs its homing type, P-AXIS-00299 remark).
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -22,12 +23,13 @@ from achslint.machine.build import build_machine
 from achslint.machine.explain import explain_machine
 from achslint.machine.model import ChannelView, MachineAxis
 from achslint.machine.program import read_program
-from achslint.machine.run import run_machine
+from achslint.machine.run import MachineRun, run_machine
 from achslint.machine.scenario import MachineScenario
 from achslint.rules.context import Context
 from achslint.syntax.parser import parse_bytes
 
-from .conftest import FIXTURES, run_cli, source_tree
+from .conftest import FIXTURES, run_cli
+from .source_nodes import nodes as source_nodes
 
 
 @dataclass(frozen=True)
@@ -50,14 +52,20 @@ def _dry_run_strategy(data: bytes, name: str, defaults: bytes | None) -> str:
         return prepare(data, name, defaults=defaults).strategy.id
 
 
-def _named(axis: MachineAxis, machine: ChannelView, program: bytes) -> Named:
-    """What every product names for `axis`, the machine run with `program` (a G74 block)."""
+def _machine_side(machine: ChannelView, program: bytes) -> tuple[dict, MachineRun]:
+    """The machine's explanation and its run of `program` (a G74 block): the same for each of its axes, so
+    worked out once per machine."""
+    return explain_machine(machine), run_machine(machine, read_program(program, "rfp.nc"), MachineScenario())
+
+
+def _named(axis: MachineAxis, machine_side: tuple[dict, MachineRun]) -> Named:
+    """What every product names for `axis`; `machine_side` is `_machine_side` of its machine."""
     name = str(axis.list_path or "axis.lis")
     report = explain_list(axis.data, name, defaults=axis.defaults)
     default_file = parse_bytes(axis.defaults, "default list") if axis.defaults is not None else None
     context = Context(name, parse_bytes(axis.data, name), default_file=default_file)
-    row = next(r for r in explain_machine(machine)["axes"] if r["name"] == axis.name)
-    run = run_machine(machine, read_program(program, "rfp.nc"), MachineScenario())
+    explained, run = machine_side
+    row = next(r for r in explained["axes"] if r["name"] == axis.name)
     return Named(
         explain=report["strategy"]["id"],
         lint=context.strategy.id,
@@ -93,7 +101,7 @@ def test_every_fixture_list_has_one_strategy_at_power_up_and_one_for_g74() -> No
     seen: set[tuple[str, str]] = set()
     for path in LISTS:
         axis, machine = _alone(path)
-        named = _named(axis, machine, b"N10 G74 X1\nM30\n")
+        named = _named(axis, _machine_side(machine, b"N10 G74 X1\nM30\n"))
         _check(named)
         seen.add((named.explain, named.machine_run))
     # The fixtures reach an absolute axis that a G74 still homes, and the ones whose G74 does what they say.
@@ -106,8 +114,9 @@ def test_every_axis_of_every_fixture_machine_has_one_strategy(startup: Path) -> 
     machine = build_machine(startup)
     assert machine.axes
     program = ("N10 G74 " + " ".join(f"{name}1" for name in machine.axes) + "\nM30\n").encode()
+    machine_side = _machine_side(machine, program)
     for axis in machine.axes.values():
-        _check(_named(axis, machine, program))
+        _check(_named(axis, machine_side))
 
 
 ABSOLUTE = b"kenngr.antr_typ 1\nkenngr.abs_pos_gueltig 1\nkenngr.ref_ohne_rev 1\nEnde\n"
@@ -154,7 +163,7 @@ def test_a_g74_runs_what_the_axis_does_at_power_up_unless_that_is_an_absolute_en
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "achslint"
 
 
-def _strategy_id_tests(tree: ast.AST, ids: set[str]) -> list[int]:
+def _strategy_id_tests(nodes: Iterable[ast.AST], ids: set[str]) -> list[int]:
     """Lines that compare a strategy's `id`: `x.id == "fixed_stop"`, `x.id in ("disabled", ...)`,
     `x.id.startswith("spindle")`, or any `.id` compared with a registered strategy id."""
 
@@ -168,7 +177,7 @@ def _strategy_id_tests(tree: ast.AST, ids: set[str]) -> list[int]:
         return bool(constants) and all(value in ids for value in constants)
 
     found = []
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, ast.Compare):
             operands = [node.left, *node.comparators]
             if any(names_id(o) for o in operands) and any(strategy_ids(o) for o in operands):
@@ -190,7 +199,7 @@ def test_nothing_outside_the_homing_package_dispatches_on_a_strategy_id() -> Non
     for path in sorted(PACKAGE.rglob("*.py")):
         if "homing" in path.relative_to(PACKAGE).parts:
             continue
-        for line in _strategy_id_tests(source_tree(path), ids):
+        for line in _strategy_id_tests(source_nodes(path), ids):
             found.append(f"{path.relative_to(PACKAGE)}:{line}")
     assert not found, found
 
@@ -203,7 +212,11 @@ def test_the_id_walk_sees_equality_membership_and_prefix_tests() -> None:
         'd = parameter.id == "P-AXIS-00015"\n'  # a parameter id, not a strategy's
         'e = {"id": strategy.id}\n'  # reporting the id is fine
     )
-    assert _strategy_id_tests(ast.parse(source), {"fixed_stop", "disabled", "absolute"}) == [1, 2, 3]
+    assert _strategy_id_tests(ast.walk(ast.parse(source)), {"fixed_stop", "disabled", "absolute"}) == [
+        1,
+        2,
+        3,
+    ]
 
 
 def test_the_package_keeps_naming_the_registry_function_once_the_strategies_are_loaded() -> None:
