@@ -116,18 +116,31 @@ def test_example_triggers_the_rule(rule, tmp_path):
         )
 
 
+@pytest.fixture(scope="module")
+def use_instead(tmp_path_factory):
+    """The findings of each rule's *Use instead*, worked out once for the two tests that read them."""
+    found: dict[str, list[list[Diagnostic]]] = {}
+
+    def of(rule: Rule) -> list[list[Diagnostic]]:
+        if rule.code not in found:
+            found[rule.code] = findings(rule, "Use instead", tmp_path_factory.mktemp(rule.code))
+        return found[rule.code]
+
+    return of
+
+
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
-def test_use_instead_does_not_trigger_the_rule(rule, tmp_path):
-    for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
+def test_use_instead_does_not_trigger_the_rule(rule, use_instead):
+    for number, found in enumerate(use_instead(rule), 1):
         assert rule.code not in {d.code for d in found}, (
             f"{rule.code}: case {number} of its Use instead triggers it"
         )
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
-def test_use_instead_is_a_correct_list(rule, tmp_path):
+def test_use_instead_is_a_correct_list(rule, use_instead):
     """What the docs recommend draws no error or warning from any rule (snippets may leave out `Ende`)."""
-    for number, found in enumerate(findings(rule, "Use instead", tmp_path), 1):
+    for number, found in enumerate(use_instead(rule), 1):
         serious = [
             f"{d.code} {d.message}" for d in found if d.severity is not Severity.INFO and d.code != "LIS002"
         ]

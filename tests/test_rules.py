@@ -41,15 +41,17 @@ def test_bad_fixture_matches_its_snapshot(rule_dir):
     """Every finding of the rule on `bad.*` — position, end, severity, message, related locations and the
     fix as a diff — is exactly what `bad.snap` holds (`python tools/update_snapshots.py CODE` rewrites it)."""
     snapshots = _snapshots()
+    # The snapshot is its header line, then what the rule reports (nothing after the header: no finding);
+    # read from it rather than linted once more for the check that there is something.
+    rendered = snapshots.render(rule_dir)
+    found = rendered.partition("\n")[2]
     if snapshots.is_dry_run_rule(rule_dir):
-        assert snapshots.dry_run_warnings(rule_dir), (
-            f"{rule_dir.name}: the dry-run of the bad fixture must report it"
-        )
+        assert found, f"{rule_dir.name}: the dry-run of the bad fixture must report it"
     else:
-        assert snapshots.findings(rule_dir), f"{rule_dir.name}: the bad fixture must trigger the rule"
+        assert found, f"{rule_dir.name}: the bad fixture must trigger the rule"
     snap = rule_dir / "bad.snap"
     assert snap.exists(), f"no {snap}: run python tools/update_snapshots.py {rule_dir.name}"
-    assert snapshots.render(rule_dir) == snap.read_text(encoding="utf-8"), (
+    assert rendered == snap.read_text(encoding="utf-8"), (
         f"{rule_dir.name} changed: run python tools/update_snapshots.py {rule_dir.name} and review the diff"
     )
 
