@@ -54,6 +54,8 @@ def test_safe_fixes_over_every_fixture_keep_behaviour_and_add_no_finding(path):
     if before.error:
         return
     outcome = fix_bytes(data, path.name)
+    if outcome.data == data:
+        return  # nothing fixed (most fixtures): the same bytes lint and behave as `before` says
     after = lint_file(outcome.data, path.name)
     assert after.error is None
     new = Counter((d.code, d.parameter) for d in after.diagnostics) - Counter(
