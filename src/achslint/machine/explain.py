@@ -15,7 +15,7 @@ from typing import Any
 from ..catalogue import AXIS_TYPE_NAMES
 from ..homing import classify
 from ..linting.program import check_program
-from ..rules.programcontext import homed_from_start, homes_with_master
+from ..rules.programcontext import g74_words, homed_from_start, homes_with_master, named_words
 from .model import ChannelView, HomingBlock, MachineAxis, MoveBlock, Program, SkippedBlock
 
 VERSION = 1
@@ -61,45 +61,64 @@ def _axis(axis: MachineAxis, machine: ChannelView, gear: int) -> dict[str, Any]:
     }
 
 
-def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]], dict[str, str], str | None]:
-    """The program's blocks as the homing order, for each axis where it is homed (in words), and where the CNC
-    stops the program (None when it runs to its end).
+def _order(
+    program: Program, machine: ChannelView
+) -> tuple[list[dict[str, Any]], dict[str, str], str | None, SkippedBlock | None]:
+    """The program's blocks as the homing order, for each axis where it is homed (in words), where the CNC
+    stops the program (None when it runs to its end), and the first block the reader does not follow.
 
     The CNC stops at a block naming an axis the channel does not have (LIS602: nothing of that block runs) and
     at the sequence step of a DISABLED axis (LIS604, P-ERR-50686: the steps before it have run); nothing is
     homed from there on, as in the dry-run. An IGNORE_ABS_POS axis a G74 names is passed over, not homed
-    (P-AXIS-00299, LIS607)."""
+    (P-AXIS-00299, LIS607). After a block the reader does not follow (a subroutine call, `$IF`, `$GOTO`, …)
+    a later G74 homes its axes only perhaps: whether the program gets there is not known (as in LIS606)."""
     blocks: list[dict[str, Any]] = []
     homed_by: dict[str, str] = {}
     stopped: str | None = None
+    halted = False  # a block that stops the program, perhaps after a part not followed
+    unfollowed: SkippedBlock | None = None
     followers = machine.followers()
+
+    def home(name: str, at: str) -> None:
+        def said(where: str) -> str:
+            if unfollowed is None:
+                return where
+            return f"perhaps: {where} (the program is not followed past {_shown(unfollowed)})"
+
+        if classify(machine.axes[name].resolved, commanded=True).definition.skipped_by_g74:
+            return  # passed over: its position comes from its absolute encoder
+        homed_by.setdefault(name, said(at))
+        for axis in [*machine.axes.values(), *followers]:
+            if axis.gantry_master != name:
+                continue
+            if homes_with_master(axis):
+                homed_by.setdefault(axis.name, said(f"{at}, with its master {name}"))
+            elif axis.name not in machine.axes:  # outside the channel: its own homing follows
+                homed_by.setdefault(axis.name, said(f"{at}, after its master {name}"))
+
+    def stop(where: str) -> None:
+        nonlocal stopped, halted
+        if not halted and unfollowed is None:
+            stopped = where
+        halted = True
+
     for block in program.blocks:
         label = f"N{block.number}" if not isinstance(block, SkippedBlock) and block.number is not None else ""
         where = f"line {block.at.line}" + (f" ({label})" if label else "")
-        if isinstance(block, (HomingBlock, MoveBlock)) and stopped is None:
-            named = block.words if isinstance(block, HomingBlock) else block.targets
-            if any(word.name not in machine.axes for word in named):
-                stopped = where
+        named = named_words(block)
+        if any(word.name not in machine.axes for word in named):
+            stop(where)
         if isinstance(block, HomingBlock):
             groups = []
             for step, (number, words) in enumerate(block.groups(), 1):
                 names = [word.name for word in words]
                 groups.append({"sequence": number, "axes": names})
-                if stopped is None and any(_refuses_g74(machine.axes[name]) for name in names):
-                    stopped = f"{where}, step {step}"
-                if stopped is not None:
+                if not halted and any(_refuses_g74(machine.axes[name]) for name in names):
+                    stop(f"{where}, step {step}")
+                if halted:
                     continue
                 for name in names:
-                    if classify(machine.axes[name].resolved, commanded=True).definition.skipped_by_g74:
-                        continue  # passed over: its position comes from its absolute encoder
-                    homed_by.setdefault(name, f"{where}, step {step}")
-                    for axis in [*machine.axes.values(), *followers]:
-                        if axis.gantry_master != name:
-                            continue
-                        if homes_with_master(axis):
-                            homed_by.setdefault(axis.name, f"{where}, step {step}, with its master {name}")
-                        elif axis.name not in machine.axes:  # outside the channel: its own homing follows
-                            homed_by.setdefault(axis.name, f"{where}, step {step}, after its master {name}")
+                    home(name, f"{where}, step {step}")
             blocks.append({"line": block.at.line, "number": block.number, "kind": "homing", "groups": groups})
         elif isinstance(block, MoveBlock):
             blocks.append(
@@ -114,10 +133,24 @@ def _order(program: Program, machine: ChannelView) -> tuple[list[dict[str, Any]]
                 }
             )
         else:
+            if block.homes and not halted:  # a G74 whose order is computed: it homes its axes all the same
+                if any(_refuses_g74(machine.axes[word.name]) for word in block.homes):
+                    stop(where)
+                else:
+                    for word in block.homes:
+                        home(word.name, f"{where}, in an order computed when the program runs")
+            if block.unfollowed and unfollowed is None:
+                unfollowed = block
             blocks.append(
                 {"line": block.at.line, "kind": "skipped", "text": block.text, "reason": block.reason}
             )
-    return blocks, homed_by, stopped
+    return blocks, homed_by, stopped, unfollowed
+
+
+def _shown(block: SkippedBlock) -> str:
+    """A block the reader does not follow, as the homing order names it: line 6: `N45 LL SUB`."""
+    text = block.text if len(block.text) <= 40 else f"{block.text[:37]}…"
+    return f"line {block.at.line}: `{text}`"
 
 
 def _refuses_g74(axis: MachineAxis) -> bool:
@@ -140,10 +173,10 @@ def explain_machine(machine: ChannelView, program: Program | None = None, gear: 
         "program": None,
     }
     if program is not None:
-        blocks, homed_by, stopped = _order(program, machine)
-        named = {
-            word.name for block in program.blocks if isinstance(block, HomingBlock) for word in block.words
-        }
+        blocks, homed_by, stopped, unfollowed = _order(program, machine)
+        named = {word.name for words in g74_words(program) for word in words}
+        # After a call any axis may be homed; after a branch or jump only one that some G74 homes.
+        anything = any(isinstance(b, SkippedBlock) and b.unfollowed == "any" for b in program.blocks)
         rows = [*zip(axes, machine.axes.values(), strict=True)]
         others = zip(report["other_axes"], machine.other_axes, strict=True)
         rows += [(row, axis) for row, axis in others if axis.gantry_master is not None]  # moved by a master
@@ -154,12 +187,18 @@ def explain_machine(machine: ChannelView, program: Program | None = None, gear: 
                 row["homed"] = "not needed: absolute position from power-up"
             elif stopped is not None and axis.name in named:
                 row["homed"] = f"not: the CNC stops the program at {stopped} first"
+            elif unfollowed is not None and (anything or axis.name in named or axis.gantry_master in named):
+                row["homed"] = f"not known: the program is not followed past {_shown(unfollowed)}"
             else:
                 row["homed"] = "not by this program"
         report["program"] = {
             "name": program.name,
             "blocks": blocks,
             "end_line": program.end.line if program.end else None,
+            # the first block the reader does not follow (a call, `$IF`, …), from which on the order is not known
+            "unfollowed": None
+            if unfollowed is None
+            else {"line": unfollowed.at.line, "text": unfollowed.text, "reason": unfollowed.reason},
             "findings": [
                 {
                     "line": d.line,

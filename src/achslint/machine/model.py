@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Literal
 
 from ..axis.resolved import ResolvedAxis
 
@@ -114,12 +115,45 @@ class MoveBlock:
 
 
 @dataclass(frozen=True)
+class NamedAxis:
+    """An axis address of a block the reader passes over, by name: `X[P1*2]` in a move to a computed position,
+    `X1` and `Y[P2]` in a G74 whose homing order is computed."""
+
+    name: str  # upper case
+    written: str  # the word as written (shortened), for messages
+    at: Location
+
+
+# How much of the program's course a block leaves unknown (SkippedBlock.unfollowed); after each of them no
+# modal value (G00/G01, G90/G91, F) is known:
+# "any": it may run any NC code (a subroutine or macro call, a computed G code, an optional `/` block), so
+#   after it any axis may be homed;
+# "flow": it loops or jumps (`$FOR`, `$WHILE`, `$GOTO`, …), so the blocks of the program may run in another
+#   order, more than once or not at all;
+# "branch": it may pass blocks after it by (`$IF`, `$ELSE`, `$SWITCH`, a computed M code that may end the
+#   program): those may not run, but nothing runs twice or before a block written above it.
+Unfollowed = Literal["any", "flow", "branch"]
+
+
+@dataclass(frozen=True)
 class SkippedBlock:
-    """A block the dry-run does not simulate (listed with its line; nothing is guessed)."""
+    """A block the dry-run does not simulate (listed with its line; nothing is guessed).
+
+    Some of them still matter to the program's findings: a G74 whose homing order is computed homes the axes
+    it names (`homes`), a move to a computed position moves its axes (`moves`), and after a block the reader
+    does not follow (`unfollowed`) it no longer knows which axes are homed."""
 
     at: Location
     text: str
     reason: str
+    homes: tuple[NamedAxis, ...] = ()
+    moves: tuple[NamedAxis, ...] = ()
+    unfollowed: Unfollowed | None = None
+
+    @property
+    def opaque(self) -> bool:
+        """Whether the machine's state after this block is not known to the reader (the dry-run stops here)."""
+        return bool(self.homes or self.moves or self.unfollowed)
 
 
 @dataclass(frozen=True)

@@ -30,6 +30,9 @@ How the program runs (TF5200 homing manual §2.2, P-AXIS-00074, P-AXIS-00299):
   An axis with an absolute encoder and another homing type runs that homing type when G74 names it.
 * The first failure stops the program as the CNC does: the axes still moving brake with their own
   acceleration, and every later group and block is "not run".
+* The run follows the program only as far as the reader knows what it does to the axes: at a subroutine or
+  macro call, a control statement (`$IF`, `$GOTO`, …), a G74 whose homing order or a move whose position
+  is computed, it stops, says so (a note at that line), and every block from there on is "not simulated".
 
 `run_machine` runs it once; `MachinePlan` prepares the axes once and runs them many times (`sweep`).
 The JSON document of a run is described in docs/dry-run/machine.md.
@@ -584,6 +587,9 @@ class _Runner:
                 t = self._move(index, block, t)
             else:
                 record.outcome, record.end_time, record.note = "not_simulated", t, block.reason
+                if block.opaque:  # what it does to the axes is not known: the run cannot go on from here
+                    self._unfollowed(index, block)
+                    break
                 continue
             record.end_time = t
             if result.failure is not None:
@@ -595,13 +601,31 @@ class _Runner:
                 for name in record.axes:
                     axis = result.axes.get(name)
                     if axis is not None and axis.outcome == "not_commanded":
-                        axis.outcome = "not_run"
+                        axis.outcome = "not_simulated" if record.outcome == "not_simulated" else "not_run"
         for name, axis in result.axes.items():
             axis.position = self.x[name]
         result.total_time = max(
             [t] + [p.end_time for axis in result.axes.values() for p in axis.phases if p.kind != "still"]
         )
         return result
+
+    def _unfollowed(self, index: int, block: SkippedBlock) -> None:
+        """The run stops following the program at a block whose effect on the axes the reader does not know
+        (a subroutine call, a branch, a computed position or homing order): this block and every later one
+        are not simulated, and the run says so."""
+        note = f"not simulated: the run stops following the program at line {block.at.line}"
+        for record in self.result.blocks[index + 1 :]:
+            record.outcome, record.note = "not_simulated", note
+        if block.unfollowed == "any":  # it may command any axis
+            for axis in self.result.axes.values():
+                if axis.outcome == "not_commanded":
+                    axis.outcome = "not_simulated"
+        self.result.warn(
+            None,
+            f"the run stops following the program here ({block.reason}): this block and every block after it "
+            "are not simulated",
+            block.at,
+        )
 
     def _switches(self, name: str) -> tuple[float, float] | None:
         """The limit switches of an axis in actual values. Switches the scenario names stay where it puts them;
@@ -1106,7 +1130,7 @@ def _names(block: HomingBlock | MoveBlock | SkippedBlock) -> list[str]:
         return [w.name.upper() for w in block.words]
     if isinstance(block, MoveBlock):
         return [w.name.upper() for w in block.targets]
-    return []
+    return [w.name.upper() for w in block.homes + block.moves]
 
 
 # --- sweeps -------------------------------------------------------------------------------------

@@ -75,19 +75,12 @@ SUMMARY = "Program names an axis the machine does not have"
 
 
 def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
-    from ..machine.model import HomingBlock, MoveBlock
-    from .programcontext import diagnostic
+    from .programcontext import diagnostic, named_words
 
     names = sorted(machine.axes)
     slaves = {axis.name: axis.gantry_master for axis in machine.followers()}
     for block in program.blocks:
-        if isinstance(block, HomingBlock):
-            words = block.words
-        elif isinstance(block, MoveBlock):
-            words = block.targets
-        else:
-            continue
-        for word in words:
+        for word in named_words(block):  # a G74 or move whose values are computed names its axes too
             if word.name in machine.axes:
                 continue
             where = f"channel {machine.channel}" if machine.channel_list else "the machine"

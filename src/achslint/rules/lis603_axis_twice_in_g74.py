@@ -57,7 +57,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Related, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import AxisWord, ChannelView, Program
+    from ..machine.model import AxisWord, ChannelView, NamedAxis, Program
 
 CODE = "LIS603"
 NAME = "axis-twice-in-g74"
@@ -66,23 +66,28 @@ SUMMARY = "G74 names the same axis twice"
 
 
 def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
-    from .programcontext import diagnostic, homing_blocks
+    from ..machine.model import AxisWord
+    from .programcontext import diagnostic, g74_words
 
-    for block in homing_blocks(program):
-        first: dict[str, AxisWord] = {}
-        for word in block.words:
+    for words in g74_words(program):  # a G74 whose homing order is computed names its axes too
+        first: dict[str, AxisWord | NamedAxis] = {}
+        for word in words:
             earlier = first.setdefault(word.name, word)
             if earlier is word:
                 continue
-            same = int(earlier.value) == int(word.value)
+            orders = (
+                (int(earlier.value), int(word.value))
+                if isinstance(earlier, AxisWord) and isinstance(word, AxisWord)
+                else None
+            )
             yield diagnostic(
                 CODE,
                 word.at,
                 f"{word.name} is named a second time in this G74 block"
                 + (
                     ""
-                    if same
-                    else f", with homing order {int(word.value)} after {int(earlier.value)}: name it once"
+                    if orders is None or orders[0] == orders[1]
+                    else f", with homing order {orders[1]} after {orders[0]}: name it once"
                 ),
                 Severity.ERROR,
                 (Related(earlier.at.path, earlier.at.line, earlier.at.column, None, "first named here"),),

@@ -76,10 +76,10 @@ SUMMARY = "G74 commands an axis whose homing is DISABLED"
 
 
 def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
-    from .programcontext import diagnostic, homing_blocks
+    from .programcontext import diagnostic, g74_words
 
-    for block in homing_blocks(program):
-        for word in block.words:
+    for words in g74_words(program):  # a G74 whose homing order is computed names its axes too
+        for word in words:
             axis = machine.axes.get(word.name)
             if axis is None or axis.resolved.homing_type != "DISABLED":
                 continue

@@ -73,7 +73,7 @@ from typing import TYPE_CHECKING
 from ..core.diagnostics import Diagnostic, Severity
 
 if TYPE_CHECKING:
-    from ..machine.model import ChannelView, Program
+    from ..machine.model import AxisWord, ChannelView, NamedAxis, Program
 
 CODE = "LIS605"
 NAME = "gantry-slave-alone"
@@ -82,26 +82,31 @@ SUMMARY = "Gantry slave homed before its master"
 
 
 def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
-    from ..machine.model import HomingBlock
+    from ..machine.model import HomingBlock, SkippedBlock
     from .programcontext import defined, diagnostic, steps
 
     for step in steps(program, machine):
         block = step.block
-        if not isinstance(block, HomingBlock):
+        words: list[tuple[AxisWord | NamedAxis, int | None]]
+        if isinstance(block, HomingBlock):
+            words = [(word, int(word.value)) for word in block.words]
+        elif isinstance(block, SkippedBlock) and block.homes:  # an order computed when the program runs
+            words = [(word, None) for word in block.homes]
+        else:
             continue
-        order = {word.name: int(word.value) for word in reversed(block.words)}
-        for word in block.words:
+        order = {word.name: value for word, value in reversed(words)}
+        for word, value in words:
             axis = machine.axes.get(word.name)
             master = axis.gantry_master if axis is not None else None
-            if axis is None or master is None or master in step.homed:
+            if axis is None or master is None or not step.unhomed(master):
                 continue
-            if master in order and order[master] <= int(word.value):
-                continue
+            # Homed together with its master or after it; with a computed order the order is not known.
             if master in order:
-                why = (
-                    f"in this block it homes at step {int(word.value)}, before its master {master} "
-                    f"(step {order[master]})"
-                )
+                step_of_master = order[master]
+                if value is None or step_of_master is None or step_of_master <= value:
+                    continue
+            if master in order:
+                why = f"in this block it homes at step {value}, before its master {master} (step {order[master]})"
             else:
                 why = f"its master {master} is not homed before it"
             yield diagnostic(

@@ -74,21 +74,27 @@ SUMMARY = "Move of an axis that is not homed yet"
 
 
 def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
-    from ..machine.model import MoveBlock
+    from ..machine.model import MoveBlock, SkippedBlock
     from .programcontext import diagnostic, steps
 
     for step in steps(program, machine):
         block = step.block
-        if not isinstance(block, MoveBlock):
+        if isinstance(block, MoveBlock):
+            moves = [
+                (word.name, word.at, f"{'to' if block.absolute else 'by'} {word.value:g}")
+                for word in block.targets
+            ]
+        elif isinstance(block, SkippedBlock):  # a move the reader does not simulate (a computed position)
+            moves = [(word.name, word.at, f"({word.written})") for word in block.moves]
+        else:
             continue
-        for word in block.targets:
-            if word.name not in machine.axes or word.name in step.homed:
+        for name, at, how in moves:
+            if name not in machine.axes or not step.unhomed(name):
                 continue
-            kind = "to" if block.absolute else "by"
             yield diagnostic(
                 CODE,
-                word.at,
-                f"{word.name} is not homed yet when this block moves it {kind} {word.value:g}: its position "
+                at,
+                f"{name} is not homed yet when this block moves it {how}: its position "
                 "is not known and its software limits are not monitored; home it in an earlier G74 block",
                 Severity.WARNING,
             )

@@ -76,10 +76,10 @@ _STILL = ("IGNORE_ABS_POS", "DISABLED")
 
 
 def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic]:
-    from .programcontext import diagnostic, homing_blocks
+    from .programcontext import diagnostic, g74_words
 
-    for block in homing_blocks(program):
-        named = [(word, machine.axes.get(word.name)) for word in block.words]
+    for words in g74_words(program):  # a G74 whose homing order is computed names its axes too
+        named = [(word, machine.axes.get(word.name)) for word in words]
         moving = sorted(
             {axis.name for _, axis in named if axis is not None and axis.resolved.homing_type not in _STILL}
         )

@@ -12,7 +12,17 @@ from dataclasses import dataclass
 
 from ..core.diagnostics import Diagnostic, Related, Severity
 from ..homing.registry import classify
-from ..machine.model import ChannelView, HomingBlock, Location, MachineAxis, MoveBlock, Program
+from ..machine.model import (
+    AxisWord,
+    ChannelView,
+    HomingBlock,
+    Location,
+    MachineAxis,
+    MoveBlock,
+    NamedAxis,
+    Program,
+    SkippedBlock,
+)
 
 
 def diagnostic(
@@ -44,6 +54,25 @@ def homing_blocks(program: Program) -> Iterator[HomingBlock]:
     return (block for block in program.blocks if isinstance(block, HomingBlock))
 
 
+def g74_words(program: Program) -> Iterator[tuple[AxisWord | NamedAxis, ...]]:
+    """The axis words of every G74 block, in order: those whose homing order the reader knows (`AxisWord`)
+    and those of a G74 whose order is computed when the program runs (`NamedAxis`)."""
+    for block in program.blocks:
+        if isinstance(block, HomingBlock):
+            yield block.words
+        elif isinstance(block, SkippedBlock) and block.homes:
+            yield block.homes
+
+
+def named_words(block: HomingBlock | MoveBlock | SkippedBlock) -> tuple[AxisWord | NamedAxis, ...]:
+    """The axis words a block homes or moves (none for a block that does neither)."""
+    if isinstance(block, HomingBlock):
+        return block.words
+    if isinstance(block, MoveBlock):
+        return block.targets
+    return block.homes + block.moves
+
+
 # -- the homing state before each block ---------------------------------------------------------------
 
 
@@ -67,26 +96,52 @@ def homed_by_g74(axis: MachineAxis) -> bool:
 class Step:
     """A block of the program with the axes homed before it runs."""
 
-    block: HomingBlock | MoveBlock
+    block: HomingBlock | MoveBlock | SkippedBlock  # skipped: a G74 or move whose values are computed
     homed: frozenset[str]
+    # Axes that a part of the program the reader does not follow (a subroutine call, a branch) may have
+    # homed before the block, besides `homed`.
+    maybe: frozenset[str] = frozenset()
+
+    def unhomed(self, name: str) -> bool:
+        """Whether the axis is not homed before the block, whatever the parts not followed did: only then
+        may a finding say it is not homed."""
+        return name not in self.homed and name not in self.maybe
 
 
 def steps(program: Program, machine: ChannelView) -> Iterator[Step]:
-    """The homing and move blocks in order, each with the names of the axes homed before it.
+    """The blocks that home or move axes, in order, each with the names of the axes homed before it.
 
-    A G74 block homes the machine axes it names (DISABLED axes excepted: the CNC stops there), and with a
-    master its slaves whose own homing is suppressed. Skipped blocks change nothing.
+    A G74 block homes the machine axes it names (DISABLED axes excepted: the CNC stops there), whether its
+    homing order is written or computed, and with a master its slaves whose own homing is suppressed.
+    Other skipped blocks change nothing, except those the reader does not follow: after a call (or a block
+    that may run any NC code) every axis may be homed; after a loop or jump every axis some G74 of the
+    program names may be. A branch (`$IF`) changes nothing here: the blocks after it may be passed by, so
+    what they home is counted as homed, and an axis no G74 above homes is not homed on any way through.
     """
     homed = {name for name, axis in machine.axes.items() if homed_from_start(axis)}
+    maybe: set[str] = set()
+    named: set[str] | None = None  # the axes some G74 of the program names (found once)
     for block in program.blocks:
-        if not isinstance(block, (HomingBlock, MoveBlock)):
+        if isinstance(block, SkippedBlock):
+            if block.unfollowed == "any":
+                maybe.update(machine.axes)
+            elif block.unfollowed == "flow":
+                if named is None:
+                    named = {word.name for words in g74_words(program) for word in words}
+                maybe.update(named)
+            if block.unfollowed:
+                for slave in machine.axes.values():
+                    if homes_with_master(slave) and slave.gantry_master in maybe:
+                        maybe.add(slave.name)
+            if not (block.homes or block.moves):
+                continue
+        yield Step(block, frozenset(homed), frozenset(maybe - homed))
+        if isinstance(block, MoveBlock) or not (isinstance(block, HomingBlock) or block.homes):
             continue
-        yield Step(block, frozenset(homed))
-        if isinstance(block, HomingBlock):
-            for word in block.words:
-                axis = machine.axes.get(word.name)
-                if axis is not None and homed_by_g74(axis):
-                    homed.add(axis.name)
-            for axis in machine.axes.values():
-                if homes_with_master(axis) and axis.gantry_master in homed:
-                    homed.add(axis.name)
+        for word in block.words if isinstance(block, HomingBlock) else block.homes:
+            axis = machine.axes.get(word.name)
+            if axis is not None and homed_by_g74(axis):
+                homed.add(axis.name)
+        for axis in machine.axes.values():
+            if homes_with_master(axis) and axis.gantry_master in homed:
+                homed.add(axis.name)
