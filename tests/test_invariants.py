@@ -159,5 +159,7 @@ def test_generated_lists_reach_every_strategy():
 def test_fixtures_and_bundled_lists_never_contradict_themselves():
     paths = sorted(FIXTURES.glob("**/*.lis"))
     assert len(paths) > 90
-    for path in paths:
-        assert_consistent(path.read_bytes())
+    # The checks see a list's bytes only (named t.lis): a list the fixtures hold more than once (the axis
+    # lists machines share, 111 of 427) is checked once.
+    for data in dict.fromkeys(path.read_bytes() for path in paths):
+        assert_consistent(data)
