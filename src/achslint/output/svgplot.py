@@ -193,11 +193,15 @@ def _path(xs: Sequence[float], ys: Sequence[float], sx: _Scale, sy: _Scale, colu
             parts.append(_straight([(_n(x), _n(y)) for x, y in points]))
             run.clear()
 
+    # `sx(x)` and `sy(y)` written out (the same arithmetic): a figure has hundreds of thousands of points
+    x_low, x_start, x_factor = sx.low, sx.start, sx.factor
+    y_low, y_start, y_factor = sy.low, sy.start, sy.factor
+    finite, add = math.isfinite, run.append
     for x, y in zip(xs, ys, strict=True):
-        if not (math.isfinite(x) and math.isfinite(y)):
-            flush()
+        if finite(x) and finite(y):
+            add((x_start + (x - x_low) * x_factor, y_start + (y - y_low) * y_factor))
         else:
-            run.append((sx(x), sy(y)))
+            flush()
     flush()
     return "".join(parts)
 
