@@ -13,8 +13,9 @@ from achslint.fmt import FmtOptions, LiveFormat, format_bytes, format_file
 from achslint.syntax import parser as syntax
 
 from .conftest import FIXTURES, examples
+from .fixture_lists import distinct_lists
 
-FIXTURE_LISTS = sorted(FIXTURES.rglob("*.lis"))
+FIXTURE_LISTS = distinct_lists()  # a copy of a list (same bytes and name) would repeat the same test
 PATHS = [
     "kopf.achs_nr",
     "getriebe[0].vb_reflow",

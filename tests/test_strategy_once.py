@@ -29,6 +29,7 @@ from achslint.rules.context import Context
 from achslint.syntax.parser import parse_bytes
 
 from .conftest import FIXTURES, run_cli
+from .fixture_lists import distinct
 from .source_nodes import nodes as source_nodes
 
 
@@ -101,10 +102,7 @@ def test_every_fixture_list_has_one_strategy_at_power_up_and_one_for_g74() -> No
     seen: set[tuple[str, str]] = set()
     # What the products name depends on a list's bytes and file name (a default list by its name): a list
     # the fixtures hold more than once under one name (the axis lists machines share) is looked at once.
-    first: dict[tuple[bytes, str], Path] = {}
-    for path in LISTS:
-        first.setdefault((path.read_bytes(), path.name), path)
-    for path in first.values():
+    for path in distinct(LISTS):
         axis, machine = _alone(path)
         named = _named(axis, _machine_side(machine, b"N10 G74 X1\nM30\n"))
         _check(named)
