@@ -4,6 +4,7 @@ resolved axis) never run on it, and a name the kind's partial catalogue lacks is
 
 from __future__ import annotations
 
+import functools
 import json
 import shutil
 from pathlib import Path
@@ -265,8 +266,10 @@ def lint_from(data: bytes, kind: str) -> tuple[list[tuple[str, int, Severity, st
 # --- any catalogue path with an in-range value: no LIS1/LIS2 finding --------------------------------------
 
 
+@functools.cache
 def _value(parameter: Parameter) -> st.SearchStrategy[str]:
-    """Values the parameter accepts, as a list writes them."""
+    """Values the parameter accepts, as a list writes them (one strategy per parameter, built and checked by
+    hypothesis once rather than at every draw)."""
     kind = parameter.kind
     if kind == BOOL:
         return st.sampled_from(["0", "1"])
