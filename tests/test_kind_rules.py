@@ -4,7 +4,6 @@ resolved axis) never run on it, and a name the kind's partial catalogue lacks is
 
 from __future__ import annotations
 
-import functools
 import json
 import shutil
 from pathlib import Path
@@ -266,10 +265,21 @@ def lint_from(data: bytes, kind: str) -> tuple[list[tuple[str, int, Severity, st
 # --- any catalogue path with an in-range value: no LIS1/LIS2 finding --------------------------------------
 
 
-@functools.cache
+# (parameter, its strategy) by the parameter's identity (a Parameter holds dictionaries: it has no hash).
+_VALUES: dict[int, tuple[Parameter, st.SearchStrategy[str]]] = {}
+
+
 def _value(parameter: Parameter) -> st.SearchStrategy[str]:
-    """Values the parameter accepts, as a list writes them (one strategy per parameter, built and checked by
-    hypothesis once rather than at every draw)."""
+    """`_values_of(parameter)`, made once per parameter: hypothesis builds and checks a strategy at its first
+    draw, which a new strategy at every draw repeated."""
+    kept = _VALUES.get(id(parameter))
+    if kept is None:
+        kept = _VALUES[id(parameter)] = (parameter, _values_of(parameter))
+    return kept[1]
+
+
+def _values_of(parameter: Parameter) -> st.SearchStrategy[str]:
+    """Values the parameter accepts, as a list writes them."""
     kind = parameter.kind
     if kind == BOOL:
         return st.sampled_from(["0", "1"])
