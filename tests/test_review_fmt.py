@@ -14,11 +14,13 @@ from achslint.fmt import FmtOptions, LiveFormat, format_bytes, format_file
 from achslint.syntax import parser as syntax
 
 from .conftest import FIXTURES, THOROUGH
+from .fixture_lists import distinct
 
 LISTS = sorted(path for path in FIXTURES.rglob("*") if path.suffix.lower() == ".lis")
 # Every fixture list in its eleven variants and four settings takes about 9 s: the default run takes every
-# tenth list (the same ones each time), `ACHSLINT_THOROUGH=1` all of them, as the property tests do.
-SWEPT = LISTS if THOROUGH else LISTS[::10]
+# tenth list (the same ones each time), `ACHSLINT_THOROUGH=1` all of them, as the property tests do; a copy
+# of a list taken already (same bytes and name) is left out.
+SWEPT = distinct(LISTS if THOROUGH else LISTS[::10])
 OPTIONS = [
     None,
     FmtOptions(align_values="right"),
