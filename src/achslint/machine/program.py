@@ -800,14 +800,13 @@ class _Reader:
         if computed:  # the block moves its axes, to positions known only when the program runs
             why = f"{', '.join(w.written for w in computed)}: a computed position is not simulated"
         elif modal.motion is None:
-            self.program.blocks.append(
-                SkippedBlock(
-                    location,
-                    text,
-                    f"an axis position without G00 or G01 programmed before it: the motion mode in force{lost} "
-                    "is not known",
-                )
+            why = (
+                f"an axis position: the motion mode (G00/G01) in force{lost} is not known"
+                if lost
+                else "an axis position without G00 or G01 programmed before it: the motion mode in force "
+                "is not known"
             )
+            self.program.blocks.append(SkippedBlock(location, text, why))
             return
         elif modal.absolute is None:
             why = f"whether G90 or G91 is in force{lost} is not known"
