@@ -4,7 +4,10 @@ What
 A `G74` block homes a gantry slave (an axis list with `kenngr.gantry_ax_nr`, or
 a slave of a coupled pair in the channel list) while its master is not homed
 before it: the master is neither in an earlier G74 block nor earlier (or
-together with it) in the same block.
+together with it) in the same block. In a G74 whose homing order is computed
+(`G74 Y2=[P1] Y[P2]`) only a master missing from the block counts; after a
+subroutine call, a loop or a jump that achslint does not follow, a master that
+part may have homed is not reported (as in LIS606).
 
 Only a slave the program may name counts: on a machine without a channel list
 (each axis goes by its `kopf.log_achs_name`), or a slave the channel list names

@@ -2,7 +2,12 @@
 What
 ----
 A move block (`G00` / `G01`) commands an axis that no earlier `G74` block has
-homed, and whose position is not known from an absolute encoder either.
+homed, and whose position is not known from an absolute encoder either. A move
+to a computed position (`Z[P1]`) counts too. After a part of the program that
+achslint does not follow, an axis that part may have homed is not reported: a
+subroutine or macro call may home any axis, a loop or a jump (`$FOR`, `$GOTO`)
+may run any G74 of the program first; a branch (`$IF`) homes nothing that no
+G74 above the move names.
 
 Why
 ---
