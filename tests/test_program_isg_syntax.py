@@ -316,6 +316,9 @@ def test_the_dry_run_stops_at_a_computed_position(portal):
     assert [b.outcome for b in run.blocks] == ["done", "not_simulated", "not_simulated"]
     assert run.blocks[1].axes == ["Z"]
     assert run.axes["X"].outcome == "not_simulated" and run.axes["A"].outcome == "not_commanded"
+    # a call after the place the run stops may command any axis: none is "not commanded" then
+    called = dry_run(portal, text + "N40 LL SUB\n")
+    assert called.axes["A"].outcome == "not_simulated" and called.axes["Z"].outcome == "homed"
 
 
 # -- properties ------------------------------------------------------------------------------------------

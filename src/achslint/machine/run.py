@@ -616,7 +616,8 @@ class _Runner:
         note = f"not simulated: the run stops following the program at line {block.at.line}"
         for record in self.result.blocks[index + 1 :]:
             record.outcome, record.note = "not_simulated", note
-        if block.unfollowed == "any":  # it may command any axis
+        later = self.plan.program.blocks[index:]
+        if any(isinstance(b, SkippedBlock) and b.unfollowed == "any" for b in later):  # may command any axis
             for axis in self.result.axes.values():
                 if axis.outcome == "not_commanded":
                     axis.outcome = "not_simulated"
