@@ -87,17 +87,11 @@ def test_blocks_after_the_program_end_are_not_read():
     assert program.end.line == 2
 
 
-def test_unterminated_comment():
-    program = read_program(b"N10 G74 Z1 (home the quill\n", "p.nc")
-    assert messages(program) == [
-        (
-            1,
-            12,
-            "the comment opened here is not closed with `)` on this line; the rest of the line is read as a "
-            "comment",
-        )
-    ]
-    assert [w.name for w in program.blocks[0].words] == ["Z"]
+def test_a_comment_left_open_runs_to_the_end_of_its_block():
+    # The ISG decoder ends a comment at the end of the block: `(` without `)` is no defect.
+    program = read_program(b"N10 G74 Z1 (home the quill\nN20 G74 X1 (then ( Y2 as well\nN30 G74 Y2\n", "p.nc")
+    assert messages(program) == []
+    assert [[w.name for w in block.words] for block in program.blocks] == [["Z"], ["X"], ["Y"]]
 
 
 def test_g74_without_axes():

@@ -1,10 +1,10 @@
 """A homing program (`rfp.nc`) read as far as the machine dry-run and LIS6xx need it.
 
-Read: the `%` header line, `N` numbers, comments (`( … )`, nested, and `;` to the end of the line), `G74`
+Read: the `%` header line, `N` numbers, comments (`( … )`, nested, `(` left open and `;`, both to the end of the line), `G74`
 with axis words whose values give the homing order, straight moves `G00`/`G01` with `G90`/`G91` and `F`
 (mm/min; the modal state is carried from block to block), and the program end `M30`/`M02`. Every other
 block becomes a `SkippedBlock` with the reason: nothing the reader does not understand is guessed.
-Defects of the text (an unterminated comment, an unclosed `[`, `G74` without axes, a sequence number that
+Defects of the text (an unclosed `[`, `G74` without axes, a sequence number that
 is not a whole number from 1 up) become `ProgramProblem`s with line and column. The reader never raises:
 random bytes give problems, not a traceback.
 
@@ -365,13 +365,8 @@ class _Reader:
                         close = index + 1
                         break
             if close < 0:
-                self.problem(
-                    number,
-                    position + 1,
-                    n + 1,
-                    "the comment opened here is not closed with `)` on this line; "
-                    "the rest of the line is read as a comment",
-                )
+                # The end of the block ends a comment too (ISG programming manual, "Structure of NC
+                # programs": a comment left open runs to the end of its block), so this is no defect.
                 return parts
             start = position = close
         if start < position:

@@ -1,8 +1,8 @@
 """
 What
 ----
-A homing program whose text the CNC cannot run as written: a comment opened
-with `(` and not closed on its line, `G74` without an axis, a homing order that
+A homing program whose text the CNC cannot run as written: `G74` without an
+axis, a homing order that
 is not a whole number from 1 up (`X0`, `Y-1`, `Z1.5`, `A99999`), an address
 without a value, a `[` without its `]` (`X[P1*2`) or brackets with nothing in
 them (`X[]`), an assignment with nothing after `=` (`P1 =`), a call that names
@@ -16,7 +16,8 @@ it: values computed in brackets (`X[-2*P1+3]`, `X P1*SIN[P2*30]`, `Y2=[P1]`),
 parameters and variables (`P1 = P2 + P3 * [P4 - 1]`, `PP1 = 50`,
 `V.P.NAME = 5`), macros (`"NAME" = "5 * 12"`), subroutine calls (`L name`,
 `LL name`, local subroutines `%L name`), control statements (`$IF`, `$FOR`,
-`$GOTO`, …), `#` commands and nested comments. The dry-run and `explain` pass
+`$GOTO`, …), `#` commands, nested comments and a comment left open with `(`
+(it runs to the end of its block). The dry-run and `explain` pass
 over such blocks and say why; after a call or a control statement they no
 longer claim which axes are homed (nor does LIS606).
 
