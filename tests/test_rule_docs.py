@@ -16,6 +16,7 @@ A section is turned into input from its ``` code blocks:
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -49,8 +50,9 @@ def file_name(block: str) -> str | None:
     return None if match is None else match.group("lis") or match.group("nc") or match.group("xml")
 
 
-def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
-    """What achslint reports for each case (a list, or a machine) that one section of a rule's docstring shows."""
+def findings(rule: Rule, title: str, folder: Callable[[], Path]) -> list[list[Diagnostic]]:
+    """What achslint reports for each case (a list, or a machine) that one section of a rule's docstring shows;
+    `folder()` makes the empty folder a machine is written to (most rules show lists only: none is made)."""
     blocks = code_blocks(rule, title)
     prefix = EXAMPLE_PREFIX.get(rule.code, "") if title == "Example" else ""
     names = [file_name(block) for block in blocks]
@@ -65,6 +67,7 @@ def findings(rule: Rule, title: str, tmp_path: Path) -> list[list[Diagnostic]]:
     if title == "Use instead":  # the same machine as the Example, with the files shown here changed
         example = code_blocks(rule, "Example")
         files = {**{file_name(block): block for block in example if file_name(block)}, **files}
+    tmp_path = folder()
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="latin-1" if name.endswith(".lis") else "utf-8")
     startup = sorted(tmp_path.glob("hochlauf*.lis"))
@@ -109,8 +112,8 @@ def dry_run_findings(rule: Rule, blocks: list[str], names: list[str | None]) -> 
 
 
 @pytest.mark.parametrize("rule", RULES, ids=[rule.code for rule in RULES])
-def test_example_triggers_the_rule(rule, tmp_path):
-    for number, found in enumerate(findings(rule, "Example", tmp_path), 1):
+def test_example_triggers_the_rule(rule, tmp_path_factory):
+    for number, found in enumerate(findings(rule, "Example", lambda: tmp_path_factory.mktemp(rule.code)), 1):
         assert rule.code in {d.code for d in found}, (
             f"{rule.code}: case {number} of its Example does not trigger it"
         )
@@ -123,7 +126,7 @@ def use_instead(tmp_path_factory):
 
     def of(rule: Rule) -> list[list[Diagnostic]]:
         if rule.code not in found:
-            found[rule.code] = findings(rule, "Use instead", tmp_path_factory.mktemp(rule.code))
+            found[rule.code] = findings(rule, "Use instead", lambda: tmp_path_factory.mktemp(rule.code))
         return found[rule.code]
 
     return of
