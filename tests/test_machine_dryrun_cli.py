@@ -229,7 +229,7 @@ def test_bad_machine_scenario_is_exit_2(cli, tmp_path, scenario, expected):
 
 def test_refusals_are_exit_2(cli, tmp_path):
     broken = tmp_path / "rfp.nc"
-    broken.write_text("N10 G74 Z1 (never closed\n")
+    broken.write_text("N10 G74 Z[P1\n")  # a `[` never closed
     result = cli("dry-run", STARTUP, "--program", str(broken))
     assert result.returncode == 2 and "rfp.nc:1:" in result.stderr.decode()
     missing = cli("dry-run", STARTUP, "--program", str(tmp_path / "none.nc"))
