@@ -16,7 +16,6 @@ from achslint.model import axis_model, build_list_model, dumps
 from achslint.syntax.parser import parse_bytes
 
 from .conftest import FIXTURES, THOROUGH
-from .fixture_lists import distinct
 
 MODEL_KINDS = {"axis": "axis", "default_axis": "axis", "channel": "channel", "default_channel": "channel"}
 MODEL_KINDS["startup"] = "startup"
@@ -24,8 +23,8 @@ MODEL_KINDS["startup"] = "startup"
 
 def _fixture_models(step: int = 1):
     """(path, kind, model) of every `step`-th fixture list of a kind with a model, read as the library reads
-    it; a copy of one of them (same bytes and name) only once."""
-    for path in distinct(sorted(FIXTURES.rglob("*.lis"))[::step]):
+    it."""
+    for path in sorted(FIXTURES.rglob("*.lis"))[::step]:
         data = read_list(path)
         kind = MODEL_KINDS.get(list_kind(parse_bytes(data, str(path)), str(path)).id)
         if kind == "axis":
