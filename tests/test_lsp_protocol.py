@@ -263,6 +263,29 @@ def test_the_end_of_the_stream_inside_a_body_ends_the_reading() -> None:
     assert found[0] == BODY and isinstance(found[1], Skipped) and len(found) == 2
 
 
+class Chunks:
+    """A raw stream that gives one chunk per read (as a pipe gives what one write put in it)."""
+
+    def __init__(self, *chunks: bytes) -> None:
+        self._chunks = list(chunks)
+
+    def read(self, size: int = -1) -> bytes:
+        return self._chunks.pop(0) if self._chunks else b""
+
+
+def test_the_reader_tells_before_each_read_that_what_it_gave_is_all_there_is() -> None:
+    half = len(frame(BODY)) // 2
+    events: list[object] = []
+    reader = FrameReader(
+        Chunks(frame(BODY) + frame(BODY), frame(BODY)[:half], frame(BODY)[half:]),  # type: ignore[arg-type]
+        waiting=lambda: events.append("wait"),
+    )
+    while (item := reader.next()) is not None:
+        events.append(item)
+    # two messages of one read, told together; a message split over two reads, told once it is whole
+    assert events == ["wait", BODY, BODY, "wait", "wait", BODY, "wait"]
+
+
 # -- the server on the wire ------------------------------------------------------------------------------
 
 
@@ -362,6 +385,46 @@ def test_a_hover_is_answered_while_a_slow_lint_runs(inprocess: InProcess, tmp_pa
     assert "kopf.achs_nr" in answer["result"]["contents"]["value"]  # from the analysis of version 1
     assert took < 5.0  # loose: the lint never ends on its own; benchmarks/lsp.py measures the real figure
     inprocess.diagnostics(uri, 2)
+
+
+def test_the_messages_of_one_read_reach_the_loop_together(inprocess: InProcess, tmp_path: Path) -> None:
+    """An edit and the request sent right behind it are handed over in one go: woken for the edit alone, the
+    loop took the processor from the reader before it had parsed the request."""
+    server = inprocess.server
+    batches: list[list[str]] = []
+    receive_all = server._receive_all
+
+    def counted(items: list[object]) -> None:
+        batches.append([item.get("method", "") for item in items if isinstance(item, dict)])
+        receive_all(items)
+
+    server._receive_all = counted  # type: ignore[method-assign]
+    uri = (tmp_path / "achsmds1.lis").as_uri()
+    inprocess.send(opened(uri, LIST))
+    inprocess.diagnostics(uri, 1)
+    inprocess.send(changed(uri, LIST.replace("1\n", "2\n", 1), 2), hover(12, uri, 0, 2))  # one write
+    assert "kopf.achs_nr" in inprocess.answer(12)["result"]["contents"]["value"]
+    assert batches == [["textDocument/didOpen"], ["textDocument/didChange", "textDocument/hover"]]
+
+
+def test_each_answer_gives_the_editor_a_turn_to_read_it(
+    inprocess: InProcess, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from achslint.lsp import worker
+
+    monkeypatch.setattr(worker, "ANSWER_TURN", 0.5)
+    uri = (tmp_path / "achsmds1.lis").as_uri()
+    inprocess.send(opened(uri, LIST))
+    inprocess.diagnostics(uri, 1)
+    time.sleep(0.6)  # (the turns of the answers before)
+    gate = inprocess.server._gate
+    assert not gate.busy
+    inprocess.send(hover(13, uri, 0, 2))
+    inprocess.answer(13)
+    time.sleep(0.1)  # the loop waits for messages again, nothing is unread: the editor's turn
+    assert gate.busy
+    time.sleep(0.5)
+    assert not gate.busy
 
 
 def test_a_lint_of_an_older_text_is_not_published(inprocess: InProcess, tmp_path: Path) -> None:

@@ -5,6 +5,7 @@ loop has work (`worker.Gate`), and inside `superseded_when` a pause point ends t
 from __future__ import annotations
 
 import asyncio
+import io
 import os
 import threading
 import time
@@ -222,3 +223,73 @@ def test_the_axis_analysis_gives_way_every_few_hundred_settings():
     assert len(calls) == 8  # 4 in resolving the paths, 4 in checking the values
     analyse(file)
     assert len(calls) == 8  # no hook, no pause
+
+
+def test_bytes_waiting_unread_in_the_input_hold_the_worker(gate: Gate):
+    """The worker gives way as soon as the editor's bytes arrive, before the reader thread (which may wait for a
+    processor meanwhile) has read them; not at the end of the input, nor once the gate stops watching."""
+    read, write = os.pipe()
+    stream = open(read, "rb", buffering=0)  # noqa: SIM115 - closed below
+    work = Worker(gate=gate)
+    try:
+        gate.watch(stream)
+        assert not gate.busy
+        os.write(write, b"Content-Length: 2\r\n\r\n{}")
+        time.sleep(2 * worker_module.UNREAD_LOOK)  # (the pause points look at the input that often)
+        assert gate.busy
+        future = work.submit(lambda: "ran")
+        time.sleep(0.1)
+        assert not future.done()
+        assert stream.read(100)  # the reader takes them
+        assert future.result(timeout=5) == "ran"
+        assert not gate.busy
+        os.write(write, b"more")
+        gate.watch(None)
+        assert not gate.busy
+        gate.watch(stream)
+        assert stream.read(100) == b"more"
+        os.close(write)  # the end of the input: readable for ever, and no work of the loop's
+        write = -1
+        time.sleep(2 * worker_module.UNREAD_LOOK)
+        assert not gate.busy
+        gate.watch(io.BytesIO(b"not a file"))  # nothing to watch
+        assert not gate.busy
+    finally:
+        work.stop()
+        stream.close()
+        if write >= 0:
+            os.close(write)
+
+
+def test_the_worker_waits_a_moment_after_an_answer(gate: Gate, monkeypatch):
+    """The editor's turn to read an answer: the worker keeps off the processor meanwhile."""
+    monkeypatch.setattr(worker_module, "ANSWER_TURN", 0.2)
+    work = Worker(gate=gate)
+    try:
+        gate.answered()
+        started = time.perf_counter()
+        assert gate.busy
+        waited = work.submit(lambda: time.perf_counter() - started).result(timeout=5)
+        assert waited >= 0.15
+        assert not gate.busy
+        gate.loop(True)
+        gate.answered()  # answered while the loop is busy: the turn follows when the loop gets idle
+        future = work.submit(time.perf_counter)
+        time.sleep(0.3)
+        assert not future.done()
+        idle = time.perf_counter()
+        gate.loop(False)
+        assert future.result(timeout=5) - idle < 0.15  # what was left of the turn, not a whole pause limit
+    finally:
+        work.stop()
+
+
+def test_the_worker_thread_runs_as_batch_work_where_the_system_has_it():
+    if not hasattr(os, "SCHED_BATCH"):
+        pytest.skip("no SCHED_BATCH on this system")
+    work = Worker()
+    try:
+        assert work.submit(lambda: os.sched_getscheduler(0)).result(timeout=5) == os.SCHED_BATCH
+    finally:
+        work.stop()
+    assert os.sched_getscheduler(0) != os.SCHED_BATCH  # the thread that made the worker is left as it was

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import re
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import BinaryIO
 
@@ -43,14 +44,18 @@ class Skipped:
 
 class FrameReader:
     """Reads message bodies from a binary stream (buffered, or raw as `open(fd, "rb", buffering=0)`): `next()`
-    gives bytes, a `Skipped`, or None at the end.
+    gives bytes, a `Skipped`, or None at the end. `waiting` is called whenever the reader is about to read from
+    the stream (and may wait for it): the messages given before it are all that had arrived.
 
     Problems in a row are told together, in one `Skipped` before the next message (or at the end), so
     a stream of noise costs one log line, not one per byte."""
 
-    def __init__(self, stream: BinaryIO, limit: int = MAX_CONTENT_LENGTH) -> None:
+    def __init__(
+        self, stream: BinaryIO, limit: int = MAX_CONTENT_LENGTH, waiting: Callable[[], None] | None = None
+    ) -> None:
         self._stream = stream
         self._limit = limit
+        self._waiting = waiting  # called before each read: what was read so far is all there is
         self._buffer = bytearray()
         self._ended = False
         self._pending: bytes | None = None  # a body that waits while the problems before it are told
@@ -63,6 +68,8 @@ class FrameReader:
         """Read what is available (at least one byte); False at the end of the stream."""
         if self._ended:
             return False
+        if self._waiting is not None:
+            self._waiting()
         read1 = getattr(self._stream, "read1", None)  # buffered: what is there; raw streams' read does that
         chunk = read1(_CHUNK) if read1 is not None else self._stream.read(_CHUNK)
         if not chunk:

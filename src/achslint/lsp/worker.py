@@ -11,21 +11,27 @@ text to lint, it does not queue a second lint.
 The message loop goes first. Python runs one thread at a time: a lint that runs while the loop
 answers a hover takes turns with it, and the hover waits. So the worker stops at its pause points
 (before each rule, `engine.pause_between_rules`, and every few thousand lines of a parse) while
-the loop has work (`Gate`: a message read and not yet handled, or the loop not waiting in its
-selector), and a lint whose text was edited meanwhile ends there (`Superseded`): the newer text is
-linted next. This module does not import pygls.
+the loop has work (`Gate`: bytes from the editor not read yet, a message read and not yet handled,
+or the loop not waiting in its selector) and for a moment after each answer (the editor's turn to
+read it), and a lint whose text was edited meanwhile ends there (`Superseded`): the newer text is
+linted next. The processors count as much as the interpreter: on a machine with two of them and
+other work, a thread woken to read a request or an answer waited milliseconds for one while the
+lint ran; hence the wait for unread bytes, the editor's turn, and a worker that runs as batch work
+(`background`). This module does not import pygls.
 """
 
 from __future__ import annotations
 
 import contextlib
+import os
+import select
 import selectors
 import threading
 import time
 from collections import deque
 from collections.abc import Callable, Iterator
 from concurrent.futures import Future
-from typing import Any, Generic, TypeVar
+from typing import Any, BinaryIO, Generic, TypeVar
 
 from ..linting import engine
 
@@ -34,6 +40,9 @@ _Item = TypeVar("_Item")
 
 
 PAUSE_LIMIT = 0.05  # seconds one pause waits at most
+UNREAD_LOOK = 0.0002  # seconds between two looks at the editor's input from the pause points
+UNREAD_CHECK = 0.0005  # seconds between two looks while the worker waits for bytes there to be read
+ANSWER_TURN = 0.002  # seconds the worker waits after an answer, the editor reading it (`Gate.answered`)
 JOB_PAUSES = 1.0  # seconds one job gives way at most: a loop kept busy (a flood of messages) never starves it
 
 
@@ -44,17 +53,65 @@ class Superseded(BaseException):
 
 
 class Gate:
-    """Whether the message loop has work to do: messages read and not yet handled, or the loop busy
-    (not waiting in its selector: `WatchedSelector` tells)."""
+    """Whether the message loop has work to do: bytes from the editor not read yet (`watch`), messages read and
+    not yet handled, or the loop busy (not waiting in its selector: `WatchedSelector` tells); and, for
+    `ANSWER_TURN` after an answer, the editor reading it."""
 
     def __init__(self) -> None:
         self._changed = threading.Condition()
         self._frames = 0
         self._loop_busy = False
+        self._turn_ends = 0.0  # (time.monotonic) the editor's turn to read an answer lasts until then
+        self._input: Any = None  # a select.poll on the editor's input, when it can be watched
+        self._next_look = 0.0  # (time.monotonic) when `busy` looks at the input again
+        self._last_look = False  # what it saw the last time
 
     @property
     def busy(self) -> bool:
-        return self._frames > 0 or self._loop_busy
+        if self._frames > 0 or self._loop_busy:
+            return True
+        now = time.monotonic()
+        return now < self._turn_ends or self._unread(now)
+
+    def watch(self, stream: BinaryIO | None) -> None:
+        """Count bytes waiting in `stream` (the editor's input; None: no longer) as the loop's work. The reader
+        thread, woken by them, may wait for a processor while the worker holds one; the worker gives way as soon
+        as they arrive, not only once the reader has read them."""
+        self._input, self._next_look, self._last_look = None, 0.0, False
+        poll = getattr(select, "poll", None)  # (not on Windows: nothing is watched there)
+        if stream is None or poll is None:
+            return
+        try:
+            fd = stream.fileno()
+            poller = poll()
+            poller.register(fd, select.POLLIN)
+        except (AttributeError, OSError, ValueError):  # not a file (tests), or closed
+            return
+        self._input = poller
+
+    def _unread(self, now: float | None = None) -> bool:
+        """Whether bytes wait in the editor's input; with `now`, looked at once per `UNREAD_LOOK` at most (a
+        lint of 50,000 lines passes 50,000 pause points: a system call at each would slow it down), the last
+        look's answer meanwhile."""
+        poller = self._input
+        if poller is None:
+            return False
+        if now is not None:
+            if now < self._next_look:
+                return self._last_look
+            self._next_look = now + UNREAD_LOOK
+        try:
+            found = any(events & select.POLLIN for _, events in poller.poll(0))
+        except (OSError, ValueError, RuntimeError):  # (RuntimeError: polled on two threads at once)
+            found = False
+        self._last_look = found
+        return found
+
+    def answered(self) -> None:
+        """An answer went out (the loop): the worker keeps off the processor for a moment, which the editor
+        needs to read it. Resumed at once, the lint left the editor (on a machine with two processors and
+        some other work) waiting milliseconds for one."""
+        self._turn_ends = time.monotonic() + ANSWER_TURN
 
     def read(self) -> None:
         """A message was read (the reader thread)."""
@@ -69,7 +126,7 @@ class Gate:
     def loop(self, busy: bool) -> None:
         with self._changed:
             self._loop_busy = busy
-            if not self.busy:
+            if not busy and not self._frames:  # (during the editor's turn too: the worker waits for its end)
                 self._changed.notify_all()
 
     def wait(self) -> float:
@@ -77,8 +134,20 @@ class Gate:
         if not self.busy:
             return 0.0
         started = time.monotonic()
+        limit = started + PAUSE_LIMIT
         with self._changed:
-            self._changed.wait_for(lambda: not self.busy, PAUSE_LIMIT)
+            while True:
+                now = time.monotonic()
+                if now >= limit:
+                    break
+                if self._frames > 0 or self._loop_busy:
+                    self._changed.wait(limit - now)
+                elif self._unread():  # (the reader has yet to take them: looked at again shortly)
+                    self._changed.wait(min(UNREAD_CHECK, limit - now))
+                elif now < self._turn_ends:
+                    self._changed.wait(min(self._turn_ends, limit) - now)
+                else:
+                    break
         return time.monotonic() - started
 
 
@@ -97,6 +166,19 @@ class WatchedSelector(selectors.DefaultSelector):
             return super().select(timeout)
         finally:
             self._gate.loop(True)
+
+
+def background() -> None:
+    """Tell the system that the calling thread does batch work (Linux: SCHED_BATCH; elsewhere nothing changes).
+
+    Its share of the processor stays the same; only, waking up, it no longer takes the processor from a thread
+    that runs: the message loop about to answer, or the editor reading the answer. On a busy machine each such
+    take-over cost that thread milliseconds."""
+    policy = getattr(os, "SCHED_BATCH", None)
+    if policy is None or not hasattr(os, "sched_setscheduler"):
+        return
+    with contextlib.suppress(OSError):  # (a system that refuses: the thread stays as it was)
+        os.sched_setscheduler(0, policy, os.sched_param(0))
 
 
 class Worker:
@@ -154,6 +236,7 @@ class Worker:
             self._thread.join(timeout)
 
     def _run(self) -> None:
+        background()
         engine.pause_between_rules(self._pause)
         while True:
             with self._ready:
