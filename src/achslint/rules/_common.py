@@ -41,7 +41,7 @@ def value_facts(
     finding reaches from the fact's start to the end of the line. `skip(fact, setting)` leaves out facts
     another rule judges.
     """
-    for setting, parameter, _ in known_settings(ctx.settings):  # facts are only made for known parameters
+    for setting, parameter in ctx.with_facts:  # the known settings with facts: most settings have none
         for fact in setting.problems:
             if not isinstance(fact, kinds) or (skip is not None and skip(fact, setting)):
                 continue

@@ -13,7 +13,7 @@ from functools import cached_property
 from typing import TYPE_CHECKING
 
 from ..axis.analysis import Analysis, Setting, analyse
-from ..catalogue import Catalogue, catalogue
+from ..catalogue import Catalogue, Parameter, catalogue
 from ..catalogue.kinds import AXIS, AXIS_PREFIX, Kind
 from ..core.diagnostics import Diagnostic, Fix, Related, Severity
 from ..syntax import parser as syntax
@@ -87,6 +87,28 @@ class Context:
     @property
     def settings(self) -> list[Setting]:
         return self.analysis.settings
+
+    @cached_property
+    def known(self) -> list[tuple[Setting, Parameter, str]]:
+        """The assignments of catalogue parameters (not misspelt), each with its parameter and canonical
+        path, in list order: walked once for the rules that look at every known setting."""
+        return [
+            (setting, resolution.parameter, canonical)
+            for setting in self.analysis.settings
+            if (canonical := setting.canonical) is not None and (resolution := setting.resolution) is not None
+        ]
+
+    @cached_property
+    def with_facts(self) -> list[tuple[Setting, Parameter]]:
+        """The known assignments the conversion stage recorded a fact (a problem) about, each with its
+        parameter, in list order: the value rules (`_common.value_facts`) look at these only."""
+        return [
+            (setting, resolution.parameter)
+            for setting in self.analysis.settings
+            if setting.problems
+            and setting.canonical is not None
+            and (resolution := setting.resolution) is not None
+        ]
 
     @cached_property
     def default_settings(self) -> list[Setting]:

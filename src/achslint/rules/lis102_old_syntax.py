@@ -35,7 +35,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ._common import known_settings, replace_path_fix
+from ._common import replace_path_fix
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -48,7 +48,7 @@ SUMMARY = "Old parameter name (still accepted)"
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
-    for setting, parameter, canonical in known_settings(ctx.settings):
+    for setting, parameter, canonical in ctx.known:
         if setting.spelling == "old":
             line = setting.line
             start, end = ctx.path_span(line)

@@ -45,7 +45,6 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..catalogue import AXIS_TYPE_NAMES
-from ._common import known_settings
 
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
@@ -60,14 +59,24 @@ SUMMARY = "Parameter has no effect for this drive type or axis type"
 _DEFINING = {"P-AXIS-00018", "P-AXIS-00020"}
 # Wrong axis type reported at error by another rule: the CNC does not support it (LIS316).
 _REPORTED_ELSEWHERE = {"P-AXIS-00074"}
+_NEVER = frozenset(_DEFINING | _REPORTED_ELSEWHERE)
 
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     analysis = ctx.analysis
     drive = analysis.drive_type
+    axis_type = analysis.axis_type if analysis.axis_type_known else None
     names = ctx.catalogue.drive_type_names
-    for setting, parameter, canonical in known_settings(ctx.settings):
-        if setting.problems or parameter.id in _DEFINING | _REPORTED_ELSEWHERE:
+    for setting, parameter, canonical in ctx.known:
+        # Whether the parameter misses the drive type or the axis type comes first: it is a look at the
+        # parameter's metadata, and false for almost every setting of a list.
+        drive_group = parameter.drive_group
+        wrong_drive = drive is not None and bool(drive_group) and drive not in drive_group
+        if not wrong_drive and (
+            axis_type is None or not parameter.axis_types or axis_type in parameter.axis_types
+        ):
+            continue
+        if setting.problems or parameter.id in _NEVER:
             continue  # a rejected value is reported by the value rules
         if ctx.values.correction(canonical) is not None:
             continue  # the CNC corrects it at load: the rule reporting the correction says more
@@ -75,8 +84,8 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
             continue  # writing the default changes nothing, effective or not
         line = setting.line
         start, end = ctx.path_span(line)
-        if drive is not None and parameter.drive_group and drive not in parameter.drive_group:
-            wanted = ", ".join(names.get(code, str(code)) for code in parameter.drive_group)
+        if drive is not None and wrong_drive:
+            wanted = ", ".join(names.get(code, str(code)) for code in drive_group)
             yield ctx.report(
                 CODE,
                 line,
@@ -86,11 +95,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
                 end_column=end,
                 setting=setting,
             )
-        elif (
-            analysis.axis_type_known
-            and parameter.axis_types
-            and analysis.axis_type not in parameter.axis_types
-        ):
+        else:
             wanted = ", ".join(AXIS_TYPE_NAMES[a] for a in parameter.axis_types)
             yield ctx.report(
                 CODE,

@@ -41,8 +41,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from ._common import known_settings
-
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
     from .context import Context
@@ -60,8 +58,12 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
     known = 0
     for bit in bits:
         known |= bit
-    for setting, parameter, _ in known_settings(ctx.settings):
-        if parameter.id != "P-AXIS-00015" or not isinstance(setting.value, int):
+    achs_mode = ctx.catalogue.by_id.get("P-AXIS-00015")
+    if achs_mode is None:
+        return
+    # the parameter has no index: its assignments are those of its path (old names included)
+    for setting in ctx.analysis.by_canonical().get(achs_mode.path, ()):
+        if not isinstance(setting.value, int):
             continue
         value = setting.value
         problems = []
