@@ -1,20 +1,28 @@
-"""The rules' shared walks take shortcuts; each test here works the answer out the long way and compares.
+"""The rules' shared walks and the parse by line take shortcuts; each test here works the answer out the long
+way and compares.
 
 A rule context lists the known settings once (`Context.known`) and the ones with value facts once
 (`Context.with_facts`), so that the value rules no longer walk every setting of a list each; LIS204 looks up
 the assignments of `kenngr.achs_mode` by their path. The tests state which settings each must hold and
 check the shortcut against a walk of every setting, on every distinct fixture list and on generated lists.
+The parse by line splits a text at LF or CRLF, or with `str.splitlines`, where it can instead of by the
+pattern of line breaks: the lines and breaks must be the pattern's.
 """
 
 from __future__ import annotations
 
+import itertools
 import random
+import re
+from dataclasses import fields
+from operator import attrgetter
 
 import pytest
 
 from achslint.catalogue import catalogue, fill_indices
 from achslint.linting.linter import FileSettings, lint_file
 from achslint.rules.context import Context
+from achslint.syntax import parser as syntax
 from achslint.syntax.parser import parse_text
 
 from .conftest import FIXTURES
@@ -144,3 +152,48 @@ def test_achs_mode_set_twice_is_judged_twice() -> None:
     text = "kenngr.achs_mode 0x5\nkenngr.achs_typ 1\nkenngr.achs_mode 0x7\nEnde\n"
     found = [d for d in api.lint_text(text, filename="achsmds1.lis") if d.code == "LIS204"]
     assert [d.line for d in found] == [1, 3]
+
+
+# -- the parse by line: splitting a text into its lines ----------------------------------------------------
+
+
+def _lines_by_the_pattern(text: str) -> tuple[list[str], list[str]]:
+    """The lines and their breaks as the parser numbers them: only CR, LF and CRLF end a line, and a text
+    ending with a break (or an empty one) has an empty last line."""
+    raw = re.findall(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+", text)
+    if not raw or raw[-1].endswith(("\n", "\r")):
+        raw.append("")
+    bodies = [line.rstrip("\r\n") for line in raw]
+    return bodies, [line[len(body) :] for line, body in zip(raw, bodies, strict=True)]
+
+
+def _split(text: str) -> tuple[list[str], list[str]]:
+    bodies, breaks = syntax._bodies(text)
+    if isinstance(breaks, str):  # one break after every line but the last
+        breaks = [breaks] * (len(bodies) - 1) + [""]
+    return bodies, breaks
+
+
+@pytest.mark.parametrize("alphabet", ["a\r\n", "\r\n\x0b", "a\r\n\u2028", "\r\n\x85\x1c"])
+def test_every_short_text_splits_into_the_parsers_lines(alphabet: str) -> None:
+    """Every text of up to six characters of CR, LF and a letter or a character `str.splitlines` breaks at."""
+    for length in range(7):
+        for letters in itertools.product(alphabet, repeat=length):
+            text = "".join(letters)
+            assert _split(text) == _lines_by_the_pattern(text), repr(text)
+
+
+@pytest.mark.parametrize("newline", ["\n", "\r\n", "\r"])
+def test_a_list_with_one_kind_of_break_splits_at_it(newline: str) -> None:
+    text = newline.join(["kopf.achs_nr 1", "", "  # note", "Ende", ""])
+    bodies, breaks = syntax._bodies(text)
+    assert (bodies, breaks) == (["kopf.achs_nr 1", "", "  # note", "Ende", ""], newline)
+    assert _split(text) == _lines_by_the_pattern(text)
+
+
+def test_the_kept_fields_are_those_of_a_line_before_its_break_and_number() -> None:
+    names = [f.name for f in fields(syntax.Line)]
+    assert names[-2:] == ["newline", "number"]  # a parse appends the two to the kept fields
+    assert len(syntax._Head.__args__) == len(names) - 2
+    line = syntax.parse_text("kopf.achs_nr 1\r\nEnde").lines[0]
+    assert (*syntax._LineParses._head(line), line.newline, line.number) == attrgetter(*names)(line)

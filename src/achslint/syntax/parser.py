@@ -329,6 +329,10 @@ class _RecentParses:
 _recent = _RecentParses()
 
 
+# The fields of a `Line` before its line break and number, as `_LineParses` keeps them (`_LineParses._head`).
+_Head = tuple[str, str, str | None, bool, str, str | None, str | None, str, str | None, str | None]
+
+
 class _LineParses:
     """The lines parsed before, by their text, so that a text sharing most of its lines with earlier ones
     costs a Lark parse of its new lines only: a list after a fix or an edit, the same settings in many
@@ -349,42 +353,35 @@ class _LineParses:
     _head = attrgetter(*(f.name for f in fields(Line) if f.name not in ("newline", "number")))
 
     def __init__(self) -> None:
-        self._kept: dict[str, tuple[Any, ...]] = {}
+        self._kept: dict[str, _Head] = {}
         self._total = 0
         self._lock = threading.Lock()  # the language server parses on more than one thread
 
     def lines(self, text: str) -> list[Line]:
         if len(text) > self.text_limit:
             return self._parse(text)
-        raw = _LINE.findall(text)
-        if not raw or raw[-1].endswith(("\n", "\r")):
-            raw.append("")  # the parser reads an empty last line after a final line break
-        bodies = [line.rstrip("\r\n") for line in raw]
-        kept = self._kept
-        heads: dict[str, tuple[Any, ...]] = {}
-        missing: list[str] = []
-        for body in dict.fromkeys(bodies):
-            head = kept.get(body)
-            if head is None:
-                missing.append(body)
-            else:
-                heads[body] = head
-        if not heads:  # no line seen before: the whole text parsed as it is
+        bodies, breaks = _bodies(text)
+        kept = self._kept  # (entries are only ever added to this dict: `_keep` replaces a full one)
+        distinct = dict.fromkeys(bodies)
+        missing = [body for body in distinct if body not in kept]
+        if len(missing) == len(distinct):  # no line seen before: the whole text parsed as it is
             parsed = self._parse(text)
             self._keep({body: self._head(line) for body, line in zip(bodies, parsed, strict=True)})
             return parsed
+        heads: dict[str, _Head] = kept
         if missing:
             parsed = cast("list[Line]", parser().parse("\n".join(missing)))
             new = {body: self._head(line) for body, line in zip(missing, parsed, strict=True)}
-            heads.update(new)
             self._keep(new)
-        lines: list[Line] = []
-        for number, (line, body) in enumerate(zip(raw, bodies, strict=True), 1):
-            made = Line(*heads[body])
-            made.newline = _intern(line[len(body) :])
-            made.number = number
-            lines.append(made)
-        return lines
+            heads = {body: kept[body] if body in kept else new[body] for body in distinct}
+        if isinstance(breaks, str):  # every line ends with that break, the last one with none
+            lines = [Line(*heads[body], breaks, number) for number, body in enumerate(bodies, 1)]
+            lines[-1].newline = ""
+            return lines
+        return [
+            Line(*heads[body], newline, number)
+            for number, (body, newline) in enumerate(zip(bodies, breaks, strict=True), 1)
+        ]
 
     @staticmethod
     def _parse(text: str) -> list[Line]:
@@ -394,7 +391,7 @@ class _LineParses:
             line.number = number
         return parsed
 
-    def _keep(self, new: dict[str, tuple[Any, ...]]) -> None:
+    def _keep(self, new: dict[str, _Head]) -> None:
         kept = {body: head for body, head in new.items() if len(body) <= self.line_limit}
         size = sum(map(len, kept))
         with self._lock:
@@ -406,6 +403,39 @@ class _LineParses:
 
 
 _by_line = _LineParses()
+_CRLF = _intern("\r\n")
+
+
+def _bodies(text: str) -> tuple[list[str], str | list[str]]:
+    """The lines of `text` as the parser reads them, without their line breaks, and those breaks: one string
+    when every line but the last ends with it (the last one has none), else the break of each line. A text
+    ending with a line break ends with an empty line, as the parser reads one there.
+
+    A text without CR is split at LF. One with CR is split by `str.splitlines` when it holds none of the
+    other characters that method breaks at (`split_lines`), and the lengths tell whether every break is a
+    CRLF or every one a lone CR; a text with several kinds of break, or with such a character, is split by
+    the pattern of line breaks, several times slower."""
+    if "\r" not in text:
+        return text.split("\n"), "\n"
+    if not any(other in text for other in _OTHER_BREAKS[: 5 if text.isascii() else None]):
+        bodies = text.splitlines()
+        if not text or text[-1] in "\r\n":
+            bodies.append("")  # the parser reads an empty last line after a final line break
+        breaks = len(bodies) - 1
+        long_breaks = len(text) - sum(map(len, bodies)) - breaks  # the CRLFs: two characters, the others one
+        if long_breaks == breaks:
+            return bodies, _CRLF
+        if not long_breaks and "\n" not in text:
+            return bodies, "\r"
+    raw = _LINE.findall(text)
+    if not raw or raw[-1].endswith(("\n", "\r")):
+        raw.append("")
+    bodies = [line.rstrip("\r\n") for line in raw]
+    return bodies, [_intern(line[len(body) :]) for line, body in zip(raw, bodies, strict=True)]
+
+
+# What `str.splitlines` breaks at besides CR and LF: the five ASCII ones first (an ASCII text holds no other).
+_OTHER_BREAKS = "\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029"
 
 
 def _parsed_lines(text: str) -> list[Line]:
