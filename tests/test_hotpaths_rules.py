@@ -197,3 +197,28 @@ def test_the_kept_fields_are_those_of_a_line_before_its_break_and_number() -> No
     assert len(syntax._Head.__args__) == len(names) - 2
     line = syntax.parse_text("kopf.achs_nr 1\r\nEnde").lines[0]
     assert (*syntax._LineParses._head(line), line.newline, line.number) == attrgetter(*names)(line)
+
+
+# -- the default list underneath: analysed once per context ------------------------------------------------
+
+
+def test_the_default_list_is_analysed_once_for_the_axis_and_the_rules(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from achslint.rules import context
+
+    calls: list[str] = []
+    analyse = context.analyse
+
+    def counting(file: syntax.ListFile, cat: object = None) -> object:
+        calls.append(file.name)
+        return analyse(file, cat)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(context, "analyse", counting)
+    defaults = parse_text("getriebe[0].vb_reflow 1000\nkenngr.ref_richt 1\nEnde\n", "default_mds.lis")
+    ctx = Context("achsmds1.lis", parse_text("kopf.achs_nr 1\nEnde\n", "achsmds1.lis"), default_file=defaults)
+    assert ctx.values.number("getriebe[0].vb_reflow") == 1000  # the default list's value, under the list's
+    assert [s.canonical for s in ctx.default_settings] == ["getriebe[0].vb_reflow", "kenngr.ref_richt"]
+    assert ctx.values.origin("getriebe[0].vb_reflow").setting is ctx.default_settings[0]  # the one analysis
+    assert calls == ["achsmds1.lis", "default_mds.lis"]
+    assert Context("achsmds1.lis", parse_text("Ende\n", "achsmds1.lis")).default_settings == []

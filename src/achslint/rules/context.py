@@ -64,8 +64,7 @@ class Context:
         if not self.axis_list:  # a rule that judges an axis declared a kind that is none
             raise TypeError(f"{self.name} is a {self.kind_name}, not an axis list: it has no resolved axis")
 
-        defaults = analyse(self.default_file, self.catalogue) if self.default_file is not None else None
-        return ResolvedAxis(self.analysis, defaults, cat=self.catalogue)
+        return ResolvedAxis(self.analysis, self.default_analysis, cat=self.catalogue)
 
     @cached_property
     def strategy(self) -> HomingStrategy:
@@ -111,11 +110,16 @@ class Context:
         ]
 
     @cached_property
+    def default_analysis(self) -> Analysis | None:
+        """The default list underneath analysed against the list's catalogue (None without one): once, for
+        the resolved axis and the rules that read its settings alike."""
+        return analyse(self.default_file, self.catalogue) if self.default_file is not None else None
+
+    @cached_property
     def default_settings(self) -> list[Setting]:
         """The assignments of the default list underneath (none without one), against the list's catalogue."""
-        if self.default_file is None:
-            return []
-        return analyse(self.default_file, self.catalogue).settings
+        defaults = self.default_analysis
+        return defaults.settings if defaults is not None else []
 
     @cached_property
     def newline(self) -> str:
