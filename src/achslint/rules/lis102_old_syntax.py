@@ -49,7 +49,8 @@ SUMMARY = "Old parameter name (still accepted)"
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     for setting, parameter, canonical in ctx.known:
-        if setting.spelling == "old":
+        alias = setting.resolution.alias if setting.resolution is not None else None
+        if alias is not None and alias.kind == "old":  # written with its old name (`Setting.spelling`)
             line = setting.line
             start, end = ctx.path_span(line)
             yield ctx.report(
