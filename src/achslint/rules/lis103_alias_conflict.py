@@ -50,6 +50,8 @@ SUMMARY = "Parameter and its old name set with different values"
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     for canonical, group in ctx.analysis.by_canonical().items():
+        if len(group) < 2:
+            continue  # set once, under one name: nearly every parameter of a list
         spellings = {s.spelling for s in group}
         if "old" not in spellings or len(spellings) < 2:
             continue
