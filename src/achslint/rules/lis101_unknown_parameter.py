@@ -210,7 +210,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
         yield from _check_other_kind(ctx)
         return
     for setting in ctx.settings:
-        if setting.known or syntax.is_misspelt_end(setting.line):
+        if setting.canonical is not None or syntax.is_misspelt_end(setting.line):  # known (Setting.known)
             continue
         message, suggestion, applicability = _diagnose(ctx, setting)
         line = setting.line
@@ -225,7 +225,7 @@ def _check_other_kind(ctx: Context) -> Iterator[Diagnostic]:
     shown = content_kind(ctx.file)
     other = shown.catalogue() if shown is not None and shown.prefix != ctx.kind.prefix else None
     for setting in ctx.settings:
-        if setting.known or syntax.is_misspelt_end(setting.line):
+        if setting.canonical is not None or syntax.is_misspelt_end(setting.line):  # known (Setting.known)
             continue
         parameter = other.resolve(setting.line.path or "") if other is not None else None
         if shown is not None and parameter is not None:
