@@ -180,3 +180,18 @@ def test_the_grammar_without_possessive_repeats_reads_every_line_alike():
     for line in sorted(lines):
         tokens = [[(t.type, str(t)) for t in lexer.lex(line + "\n")] for lexer in lexers]
         assert tokens[0] == tokens[1], line
+
+
+def test_split_lines_breaks_only_where_the_parser_does():
+    # Every text of up to four characters over line breaks, the characters only str.splitlines breaks at, and
+    # ordinary ones: the quick way (str.splitlines on a text without the latter) and the pattern agree.
+    import itertools
+
+    alphabet = ["a", "\r", "\n", "\x0b", "\x0c", "\x1c", "\x1e", "\x85", "\u2028", "\u2029", "é"]
+    for length in range(5):
+        for letters in itertools.product(alphabet, repeat=length):
+            text = "".join(letters)
+            kept = syntax._LINE.findall(text)
+            assert syntax.split_lines(text, keepends=True) == kept, repr(text)
+            assert syntax.split_lines(text) == [line.rstrip("\r\n") for line in kept], repr(text)
+    assert syntax.split_lines("a\x0bb\r\nc\u2028d") == ["a\x0bb", "c\u2028d"]
