@@ -412,19 +412,28 @@ def test_each_answer_gives_the_editor_a_turn_to_read_it(
 ) -> None:
     from achslint.lsp import worker
 
-    monkeypatch.setattr(worker, "ANSWER_TURN", 0.5)
+    monkeypatch.setattr(worker, "ANSWER_TURN", 0.25)
     uri = (tmp_path / "achsmds1.lis").as_uri()
     inprocess.send(opened(uri, LIST))
     inprocess.diagnostics(uri, 1)
-    time.sleep(0.6)  # (the turns of the answers before)
     gate = inprocess.server._gate
-    assert not gate.busy
+
+    def idle_after() -> float:
+        """Seconds until the gate is idle (the turns of the answers before end), at most 5."""
+        started = time.monotonic()
+        while gate.busy and time.monotonic() - started < 5:
+            time.sleep(0.005)
+        assert not gate.busy
+        return time.monotonic() - started
+
+    idle_after()
     inprocess.send(hover(13, uri, 0, 2))
     inprocess.answer(13)
-    time.sleep(0.1)  # the loop waits for messages again, nothing is unread: the editor's turn
+    answered = time.monotonic()
+    time.sleep(0.03)  # the loop waits for messages again, nothing is unread: the editor's turn
     assert gate.busy
-    time.sleep(0.5)
-    assert not gate.busy
+    idle_after()
+    assert time.monotonic() - answered >= 0.2  # the whole turn, not the loop's own idling
 
 
 def test_a_lint_of_an_older_text_is_not_published(inprocess: InProcess, tmp_path: Path) -> None:
