@@ -293,3 +293,17 @@ def test_the_worker_thread_runs_as_batch_work_where_the_system_has_it():
     finally:
         work.stop()
     assert os.sched_getscheduler(0) != os.SCHED_BATCH  # the thread that made the worker is left as it was
+
+
+def test_stopping_ends_a_job_at_its_next_pause_point():
+    """The server's exit: a lint held at its pause points (the loop is busy shutting down) ends there, instead of
+    waiting out all its pauses (1 s) before the worker can be joined."""
+    gate = Gate()  # (each pause waits PAUSE_LIMIT at most, as in the server)
+    work = Worker(gate=gate)
+    gate.loop(True)
+    future = work.submit(lambda: [engine.pause() for _ in range(1000)])
+    time.sleep(0.05)
+    started = time.perf_counter()
+    work.stop(timeout=5)
+    assert time.perf_counter() - started < 0.5
+    assert future.cancelled() or isinstance(future.exception(timeout=1), Superseded)

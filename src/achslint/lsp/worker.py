@@ -203,6 +203,8 @@ class Worker:
             self._stale = None
 
     def _pause(self) -> None:
+        if self._stopping:  # the server is going away: the running job ends here, not after its pauses
+            raise Superseded
         if self._gate is not None and self._paused < JOB_PAUSES:
             self._paused += self._gate.wait()
         stale = self._stale
@@ -226,7 +228,8 @@ class Worker:
         return not self._running and not self._jobs
 
     def stop(self, timeout: float = 1.0) -> None:
-        """Cancel the jobs not started and wait (up to `timeout`) for the running one to end."""
+        """Cancel the jobs not started and wait (up to `timeout`) for the running one to end: at its next pause
+        point, with `Superseded` (a lint held there while the loop shut down waited out its pauses: 1 s)."""
         with self._ready:
             self._stopping = True
             while self._jobs:
@@ -248,7 +251,11 @@ class Worker:
                 self._running = True
             self._paused = 0.0
             try:
-                self._pause()  # the message loop first: a request read with the edit is answered before its lint
+                try:
+                    self._pause()  # the message loop first: a request read with the edit is answered before its lint
+                except Superseded:  # stopped meanwhile
+                    future.cancel()
+                    continue
                 if not future.set_running_or_notify_cancel():
                     continue
                 try:
