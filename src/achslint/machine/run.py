@@ -50,6 +50,7 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
+from ..catalogue.units import unit_label
 from ..dryrun import DryRunRefused, finish, refusal
 from ..homing import VELOCITY, HomingStrategy, classify
 from ..homing.motion import Segment, Simulator, Trace, trapezoid
@@ -998,7 +999,7 @@ class _Runner:
                         word.at,
                         name,
                         f"the target {name}{_num(value)} lies outside the software limits "
-                        f"[{_num(low)}, {_num(high)}] {prepared.unit}: the CNC does not run the block",
+                        f"[{_num(low)}, {_num(high)}] {unit_label(prepared.unit)}: the CNC does not run the block",
                         t,
                         "target outside the software limits",
                     )
