@@ -19,7 +19,8 @@ does the reader, without evaluating any of it:
 * calls the reader does not follow: `L name` (a global subroutine), `LL name` (a local one), `"NAME"` (a
   macro); `%L name` … `M17`/`M29` defines a local subroutine, whose blocks run only where they are called;
 * `$IF`, `$FOR`, `$GOTO` and the other control statements: the reader does not follow the program's course
-  from there; `#` commands are passed over (`#COMMENT BEGIN` … `#COMMENT END` is a comment).
+  from there; `#` commands are passed over (`#COMMENT BEGIN` … `#COMMENT END` is a comment, `#VAR` …
+  `#ENDVAR` declares variables).
 
 After a block it does not follow, the reader says so on the block (`SkippedBlock.unfollowed`) and forgets
 the modal state (G00/G01, G90/G91, F), which the part it did not follow may have changed.
@@ -92,6 +93,9 @@ _NAME_END = frozenset(_BLANKS + '(;"],#$')
 _LOCAL_SUBROUTINE = re.compile(r"%[Ll][ \t]+([^ \t(;]+)")
 _COMMENT_BEGIN = re.compile(r"#COMMENT[ \t]+BEGIN\b", re.IGNORECASE)
 _COMMENT_END = re.compile(r"#COMMENT[ \t]+END\b", re.IGNORECASE)
+# `#VAR` … `#ENDVAR` declares variables, one a line (`V.P.NAME`, `V.L.NAME : UNS32 = 200`).
+_VAR_BEGIN = re.compile(r"#VAR\b", re.IGNORECASE)
+_VAR_END = re.compile(r"#ENDVAR\b", re.IGNORECASE)
 _STATEMENT = re.compile(r"\$[A-Za-z]*")
 _GOTO = re.compile(r"\$GOTO\b[ \t]*(?:[Nn]\+?([0-9]+)\b)?", re.IGNORECASE)
 
@@ -319,6 +323,7 @@ class _Reader:
     flowed: bool = False  # a block was passed that branches, loops or jumps ($IF, $GOTO, …)
     subroutine: tuple[str, int] | None = None  # the local subroutine being defined: name, line of `%L`
     comment_lines: bool = False  # between #COMMENT BEGIN and #COMMENT END
+    declaring: bool = False  # between #VAR and #ENDVAR
 
     def __post_init__(self) -> None:
         self.program = Program(self.name)
@@ -448,6 +453,8 @@ class _Reader:
         together = len(head) > 1 and head[0] != "P" and head[1:] == "P" * (len(head) - 1)
         if together and letters < n and (part[letters].isdigit() or part[letters] == "["):
             address, address_end = head[0], position + 1
+        elif len(head) > 1 and head[-1] == "V" and _VARIABLE.match(part, letters - 1):
+            address, address_end = head[:-1], letters - 1  # `XV.P.POS`: an address and a variable together
         value_start = _skip(part, address_end)
         value_end = _expression_end(part, value_start)
         if value_end is None:
@@ -512,6 +519,14 @@ class _Reader:
             if _COMMENT_END.match(rest):
                 self.comment_lines = False
             return
+        if self.declaring:  # between #VAR and #ENDVAR: declarations, which the reader passes over
+            if _VAR_END.match(rest):
+                self.declaring = False
+            if self.subroutine is not None:
+                self.subroutine_line(number, text, indent, "#")  # passed over, as one of its blocks
+            else:
+                self.skip(number, indent + 1, text, "a declaration of variables (`#VAR`): not simulated")
+            return
         if body.startswith("%"):
             local = _LOCAL_SUBROUTINE.match(body)
             if local is not None:
@@ -547,8 +562,7 @@ class _Reader:
             return
         # A control command may follow a block number (`N10 #MSG[...]`); it is passed over all the same.
         if rest.startswith("#"):
-            if _COMMENT_BEGIN.match(rest):
-                self.comment_lines = True
+            self.command(rest)
             self.skip(number, indent + 1, text, "a control command or statement: not simulated")
             return
         if rest.startswith("$"):
@@ -573,11 +587,20 @@ class _Reader:
             return  # a comment line
         self.block(number, text, found)
 
+    def command(self, rest: str) -> None:
+        """A `#` command; `#COMMENT BEGIN` and `#VAR` open lines that are no blocks of their own."""
+        if _COMMENT_BEGIN.match(rest):
+            self.comment_lines = True
+        elif _VAR_BEGIN.match(rest):
+            self.declaring = True
+
     def subroutine_line(self, number: int, text: str, indent: int, rest: str) -> None:
         """A line of a local subroutine: its text is checked, its block runs only where it is called."""
         name, begins = self.subroutine or ("", 0)
         found = _Line()
-        if not rest.startswith(("#", "$")):
+        if rest.startswith("#"):
+            self.command(rest)
+        elif not rest.startswith("$"):
             found = self.words(number, text)
             for column, end_column, piece, why in found.junk:
                 self.problem(number, column, end_column, _junk_message(piece, why))

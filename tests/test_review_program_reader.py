@@ -1,0 +1,69 @@
+"""A fresh look at the homing-program reader's ISG syntax: forms of the TF5200 programming manual that were
+still read as defects (a false LIS601 error), and places where a finding, `explain` and the dry-run told
+different stories. Each test failed before its fix."""
+
+from __future__ import annotations
+
+from achslint.linting.program import check_program
+from achslint.machine.build import build_machine
+from achslint.machine.model import HomingBlock, SkippedBlock
+from achslint.machine.program import read_program
+
+from .conftest import FIXTURES
+
+PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
+
+
+def read(text: str):
+    return read_program(text.encode(), "p.nc")
+
+
+def codes(text: str) -> list[tuple[int, str]]:
+    return [(d.line, d.code) for d in check_program(read(text), build_machine(PORTAL))]
+
+
+# -- #VAR … #ENDVAR: declarations of variables ("Global, not valid after part program end (V.P.)" and
+# "Local, valid throughout subroutine (V.L.)": a name alone, or with a type and an initial value) ----------
+
+
+def test_variable_declarations_are_no_defect():
+    program = read(
+        "#VAR\nV.P.VAR_5\nV.L.LOC_VAR2 : UNS32 = 200\nV.L.LOC_VAR4 : BOOLEAN\n#ENDVAR\nN10 G74 X1\nN20 M30\n"
+    )
+    assert program.problems == [], [p.message for p in program.problems]
+    assert [type(b).__name__ for b in program.blocks].count("HomingBlock") == 1
+    assert program.end is not None and program.end.line == 7
+
+
+def test_after_endvar_the_lines_are_blocks_again():
+    program = read("#VAR\nV.P.A = 1\n#ENDVAR\nN10 G74 X1\nN20 G74 Q\n")
+    assert [p.at.line for p in program.problems] == [5]  # `Q` without a number is still a defect
+
+
+def test_declarations_and_a_comment_section_inside_a_local_subroutine():
+    text = (
+        "%L UP1\n#VAR\nV.L.A : REAL = 2\n#ENDVAR\nN1 #COMMENT BEGIN\nthis is free text, not code!\n"
+        "#COMMENT END\nN2 G74 X1\nN9 M17\n%MAIN\nN10 LL UP1\nN20 M30\n"
+    )
+    program = read(text)
+    assert program.problems == [], [p.message for p in program.problems]
+    assert codes(text) == []
+    # the subroutine's blocks run only where it is called: none of them homes at the start
+    assert not any(isinstance(b, HomingBlock) for b in program.blocks)
+
+
+# -- an address with a variable written right after it (`N20 XV.P.VAR_5`, the manual's own example) -------
+
+
+def test_an_address_followed_by_a_variable():
+    program = read("N10 G74 X1\nN20 G01 G90 XV.P.VAR_5 F100\nN30 M30\n")
+    assert program.problems == [], [p.message for p in program.problems]
+    block = program.blocks[1]
+    assert isinstance(block, SkippedBlock) and "computed position" in block.reason
+    assert [w.name for w in block.moves] == ["X"]
+
+
+def test_an_address_followed_by_a_variable_in_lower_case():
+    program = read("n10 g74 x1\nn20 g01 g90 xv.l.pos f100\n")
+    assert program.problems == [], [p.message for p in program.problems]
+    assert [w.name for w in program.blocks[1].moves] == ["X"]  # type: ignore[union-attr]
