@@ -67,3 +67,22 @@ def test_an_address_followed_by_a_variable_in_lower_case():
     program = read("n10 g74 x1\nn20 g01 g90 xv.l.pos f100\n")
     assert program.problems == [], [p.message for p in program.problems]
     assert [w.name for w in program.blocks[1].moves] == ["X"]  # type: ignore[union-attr]
+
+
+# -- a G74 naming an axis the channel does not have: nothing of the block runs ---------------------------
+
+
+def test_the_dry_run_homes_nothing_of_a_g74_that_names_an_unknown_axis():
+    from achslint.machine.explain import explain_machine
+    from achslint.machine.run import run_machine
+    from achslint.machine.scenario import parse_machine_scenario
+
+    machine = build_machine(PORTAL)
+    program = read("N10 G74 Z1 Q2\nN20 M30\n")
+    assert codes("N10 G74 Z1 Q2\nN20 M30\n") == [(1, "LIS602")]  # "the CNC stops the program at this block"
+    rows = {row["name"]: row["homed"] for row in explain_machine(machine, program)["axes"]}
+    assert rows["Z"].startswith("not: the CNC stops the program at line 1")
+    run = run_machine(machine, program, parse_machine_scenario({}, "scenario"))
+    assert run.failure is not None and "Q, which is not an axis" in run.failure.reason
+    assert run.axes["Z"].outcome != "homed"  # it homed Z in step 1 before failing at step 2
+    assert [g.outcome for g in run.blocks[0].groups] == ["not_run", "failed"]
