@@ -86,3 +86,22 @@ def test_the_dry_run_homes_nothing_of_a_g74_that_names_an_unknown_axis():
     assert run.failure is not None and "Q, which is not an axis" in run.failure.reason
     assert run.axes["Z"].outcome != "homed"  # it homed Z in step 1 before failing at step 2
     assert [g.outcome for g in run.blocks[0].groups] == ["not_run", "failed"]
+
+
+def test_a_gantry_slave_is_not_said_to_be_not_commanded_when_its_masters_block_is_not_simulated():
+    from achslint.machine.explain import explain_machine
+    from achslint.machine.run import run_machine
+    from achslint.machine.scenario import parse_machine_scenario
+
+    machine = build_machine(PORTAL)
+    for text, outcome in [
+        ("N10 G74 Z[P1]\nN20 G74 Y1\nM30\n", "not_simulated"),
+        ("N10 G74 Q1\nN20 G74 Y1\n", "not_run"),
+    ]:
+        program = read(text)
+        report = explain_machine(machine, program)
+        rows = {row["name"]: row.get("homed", "") for row in report["axes"] + report["other_axes"]}
+        run = run_machine(machine, program, parse_machine_scenario({}, "scenario"))
+        # the slave Y2 is commanded with its master Y (explain: "with its master Y" or "not")
+        assert "master Y" in rows["Y2"] or rows["Y2"].startswith("not:"), rows["Y2"]
+        assert (run.axes["Y"].outcome, run.axes["Y2"].outcome) == (outcome, outcome), text

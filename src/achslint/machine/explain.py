@@ -185,7 +185,7 @@ def explain_machine(machine: ChannelView, program: Program | None = None, gear: 
                 row["homed"] = homed_by[axis.name]
             elif homed_from_start(axis):
                 row["homed"] = "not needed: absolute position from power-up"
-            elif stopped is not None and axis.name in named:
+            elif stopped is not None and (axis.name in named or axis.gantry_master in named):
                 row["homed"] = f"not: the CNC stops the program at {stopped} first"
             elif unfollowed is not None and (anything or axis.name in named or axis.gantry_master in named):
                 row["homed"] = f"not known: the program is not followed past {_shown(unfollowed)}"

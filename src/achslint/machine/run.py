@@ -599,7 +599,8 @@ class _Runner:
             record.outcome = "done"
         for record in result.blocks:
             if record.outcome != "done":
-                for name in record.axes:
+                # a gantry slave moves with its master: what stays of the master's block stays of the slave's
+                for name in [*record.axes, *(s for n in record.axes for s in self.plan.slaves.get(n, []))]:
                     axis = result.axes.get(name)
                     if axis is not None and axis.outcome == "not_commanded":
                         axis.outcome = "not_simulated" if record.outcome == "not_simulated" else "not_run"
