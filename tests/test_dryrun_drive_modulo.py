@@ -57,4 +57,4 @@ def test_a_search_starting_on_the_cam_reverses_and_leaves_it_on_a_modulo_axis():
 def test_a_search_shorter_than_the_way_round_still_fails_with_its_distance():
     # 300° of SignedMaxDistance does not reach the next cam 340° away: the drive reports no cam within 300°.
     trace = drive(60.0, {**STANDARD, "first_search": {"trigger": "cam", "signed_max_distance": 300.0}})
-    assert trace.outcome == "failed" and trace.failure == "first search: no cam within 300 deg"
+    assert trace.outcome == "failed" and trace.failure == "first search: no cam within 300 °"

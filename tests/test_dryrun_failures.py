@@ -70,8 +70,8 @@ def test_path_monitoring_failure_names_the_limit():
     )
     trace = dry_run(rotary.encode(), "r.lis", scene).trace
     assert trace.failure == (
-        "to the reference cam: homing_max_movement_dist (300 deg from the start at 0 deg) was exceeded "
-        "(P-ERR-70394) before the cam at -325 deg"
+        "to the reference cam: homing_max_movement_dist (300 ° from the start at 0 °) was exceeded "
+        "(P-ERR-70394) before the cam at -325 °"
     )
 
 

@@ -119,8 +119,8 @@ def test_flying_homing_arming_event_and_lis405_on_a_spindle():
         for w in spindle(start_position=0.0, zero_pulse_phase=280.02, cam_jitter=0.05).warnings
         if w["code"] == "LIS405"
     )
-    assert "0.012 deg after" in message and "to about 1800120" in message
-    assert "whole revolutions only, to the same position within [0, 360) deg" in message
+    assert "0.012 ° after" in message and "to about 1800120" in message
+    assert "whole revolutions only, to the same position within [0, 360) °" in message
 
 
 def test_spindle_against_its_preferred_direction_is_refused_like_lint():

@@ -80,8 +80,8 @@ def test_flying_spindle_offset_counts_from_where_the_cam_is_left():
     console = Console(file=io.StringIO(), width=200, color_system=None)
     render(run, console)
     text = console.file.getvalue()
-    assert "Zero-pulse logic armed at 280.008 deg; reference cam - zero pulse offset 19.992 deg" in text
-    assert "becomes 0 deg, at 8.383 s" in text
+    assert "Zero-pulse logic armed at 280.008 °; reference cam - zero pulse offset 19.992 °" in text
+    assert "becomes 0 °, at 8.383 s" in text
 
 
 def test_a_fixed_stop_reference_time_is_when_the_stop_is_detected():

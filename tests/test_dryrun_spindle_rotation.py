@@ -60,8 +60,8 @@ def test_decelerating_from_720_deg_per_s():
     assert approx(trace.reference["speed"], 36.0)  # it keeps turning at vb_reflow
     assert approx(trace.cam_zero_pulse_offset, 19.992, 1e-9)  # 1020 - 1000.008
     kinds = [e.kind for e in trace.events]
-    assert kinds[0] == "turning positive at 720 deg/s (endless rotation): decelerates to vb_reflow"
-    assert kinds[1] == "vb_reflow (36 deg/s) reached: the referencing starts"
+    assert kinds[0] == "turning positive at 720 °/s (endless rotation): decelerates to vb_reflow"
+    assert kinds[1] == "vb_reflow (36 °/s) reached: the referencing starts"
 
 
 def test_accelerating_from_30_deg_per_s_in_the_rotation_direction():
@@ -87,7 +87,7 @@ def test_turning_at_vb_reflow_already_references_without_a_speed_change():
     # since 36 °/s is vb_reflow. The pulse at 300° is 300° ahead: t = 300/36 = 8.3333 s, one phase only.
     trace = spin("kenngr.ref_ohne_nocken 1\n", start_velocity=36.0).trace
     assert [p.name for p in trace.phases] == ["reference on the fly"]
-    assert trace.events[0].kind == "turning positive at 36 deg/s = vb_reflow: the referencing starts"
+    assert trace.events[0].kind == "turning positive at 36 °/s = vb_reflow: the referencing starts"
     assert approx(trace.reference["time"], 300 / 36) and approx(trace.arming.armed, 0.0)
 
 
@@ -104,7 +104,7 @@ def test_standstill_is_unchanged_and_the_scenario_says_which():
     console = Console(file=io.StringIO(), width=200, color_system=None)
     render(spin(start_velocity=720.0), console)
     assert (
-        "Scenario: start 0 deg turning at +720 deg/s (endless rotation), cam [260, 280]"
+        "Scenario: start 0 ° turning at +720 °/s (endless rotation), cam [260, 280]"
         in console.file.getvalue()
     )
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -86,16 +87,23 @@ def test_lis309_spindle_sum_has_its_unit(tmp_path: Path) -> None:
     assert "7200000 [0.0001°] (= 720 °)" in message
 
 
-# -- dry-run (not this review's files: kept as a strict xfail) -----------------------------------------
+# -- dry-run: its text writes degrees as lint does -----------------------------------------------------
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="dry-run's text writes degrees as `deg` (header, phase table, reference line) where lint, explain "
-    "and diff write `°`; the fix is in dryrun.py / homing/setup.py's display unit, not in units.py",
-)
 def test_dry_run_writes_degrees_as_lint_does(cli, tmp_path: Path) -> None:
     path = _as_axis_type("LIS403", 2, tmp_path)
     text = cli("dry-run", str(path)).stdout.decode()
     assert "83.333" in text  # the same speed lint and explain show (83.333 °/s)
     assert " deg" not in text and "°" in text
+    assert "500 °/s²" in text and "at °" in text  # the acceleration and the events' position column
+
+
+def test_dry_run_json_keeps_deg_as_its_machine_readable_unit(cli, tmp_path: Path) -> None:
+    path = _as_axis_type("LIS403", 2, tmp_path)
+    document = json.loads(cli("dry-run", str(path), "--format", "json").stdout)
+    assert document["units"] == {
+        "position": "deg",
+        "velocity": "deg/s",
+        "time": "s",
+        "acceleration": "deg/s^2",
+    }

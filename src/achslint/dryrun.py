@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .axis.resolved import ResolvedAxis, plain, resolve_bytes
+from .catalogue.units import unit_label
 from .core.diagnostics import Severity
 from .homing import classify
 from .homing.motion import Fact, Simulator, SoftLimitOvershoot, StartOnCam, Trace, TraceWarning
@@ -192,7 +193,7 @@ def annotate(simulator: Simulator, trace: Trace) -> None:
             None,
             (
                 "antr.encoder_bit_range is 0, so the distance between encoder overflows is unknown; the dry-run uses "
-                f"the scenario's zero_pulse_period ({trace.scenario.zero_pulse_period:g} {trace.unit}"
+                f"the scenario's zero_pulse_period ({trace.scenario.zero_pulse_period:g} {unit_label(trace.unit)}"
                 f"{'' if given else ', assumed'}) instead. Set encoder_bit_range to the encoder's bits per revolution"
             ),
         )

@@ -33,6 +33,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Protocol, TypedDict
 
+from ..catalogue.units import unit_label
 from .setup import POSITION, VELOCITY
 
 if TYPE_CHECKING:
@@ -452,7 +453,11 @@ class Simulator:
             bounds.append((max(extra, 0.0), ZERO_SEARCH_EXCEEDED))
         if not bounds:
             span = self.revolution * self.HORIZON_REVOLUTIONS if self.modulo else 1e7
-            turns = f"{self.HORIZON_REVOLUTIONS} revolutions" if self.modulo else f"{span:g} {self.unit}"
+            turns = (
+                f"{self.HORIZON_REVOLUTIONS} revolutions"
+                if self.modulo
+                else f"{span:g} {unit_label(self.unit)}"
+            )
             bounds.append((span, f"nothing found within {turns} and nothing else bounds the search"))
         return min(bounds)
 
@@ -506,10 +511,10 @@ class Simulator:
                 PhaseRecord(name, direction_word(s), speed, x, x_end, t, t_end, LIMIT_SWITCH, segments)
             )
             trace.outcome = "failed"
+            unit = unit_label(self.unit)
             trace.failure = (
-                f"{name}: {ended_by} at {number(x_detect)} {self.unit}, then the limit switch at {number(switch)} "
-                f"{self.unit} was reached while braking (braking distance {number(abs(x_end - x_detect))} "
-                f"{self.unit})"
+                f"{name}: {ended_by} at {number(x_detect)} {unit}, then the limit switch at {number(switch)} "
+                f"{unit} was reached while braking (braking distance {number(abs(x_end - x_detect))} {unit})"
             )
             return x_end, t_end, None
         trace.phases.append(
@@ -567,14 +572,14 @@ class Simulator:
         if math.isfinite(distance):
             where = x + s * distance
             trace.searched = (target, where)
-            what = f"{target} at {number(where)} {self.unit}"
+            what = f"{target} at {number(where)} {unit_label(self.unit)}"
         else:
             what = f"{target}, which lies nowhere ahead in the {direction_word(s)} direction"
         trace.outcome, trace.failure = "failed", f"{name}: {self.why(reason, s)}{when} before {what}"
 
     def why(self, reason: str, s: int) -> str:
         """A bound that stopped a move, with its value: which limit switch, which parameter and how far."""
-        unit = self.unit
+        unit = unit_label(self.unit)
         switches = self.scenario.limit_switches
         if reason == LIMIT_SWITCH and switches is not None:
             return f"the limit switch at {number(switches[1] if s > 0 else switches[0])} {unit} was reached"
@@ -627,7 +632,7 @@ class Simulator:
                 return self._from_rotation(trace, turning)
             return self.strategy.simulate(self, trace, x, cam_shift)
         except NoMotion as stuck:
-            unit = f"{self.unit}/s"
+            unit = f"{unit_label(self.unit)}/s"
             return self.stand_still(
                 trace,
                 "failed",
@@ -640,7 +645,7 @@ class Simulator:
         """A spindle turning endlessly whose homing is not flying homing (§2.3.2: from endless rotation homing
         "can only be executed if ref_ohne_rev is set to TRUE. Otherwise, an error message is output"; LIS320).
         Drive-controlled homing from rotation is the drive's affair and not simulated."""
-        speed = f"{turning:g} {self.unit}/s"
+        speed = f"{turning:g} {unit_label(self.unit)}/s"
         if self.strategy.controlled_by != "cnc":
             return self.stand_still(
                 trace,

@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypedDict, TypeVar
 
+from ..catalogue.units import unit_label
 from .bounds import CYCLE_TIME_US, POSITION_BOUND
 
 if TYPE_CHECKING:
@@ -291,7 +292,7 @@ def complete(
     if jitter and jitter >= period:
         raise ScenarioError(
             f"scenario: `cam_jitter` ({jitter:g}) must be smaller than the zero-pulse period "
-            f"({period:g} {unit})"
+            f"({period:g} {unit_label(unit)})"
         )
     if "cam" not in needs and getattr(given, "cam", None) is None:
         cam = None  # the run reads no cam: none is assumed (the default one only placed the pulses)
@@ -356,7 +357,7 @@ def _check_bounds(given: ScenarioInput | None, unit: str) -> None:
             and abs(value) > bound
             and not prefix.endswith(("velocity", "acceleration", "velocity_sync"))
         ):
-            found.append(f"`{prefix}` = {value:g} is beyond ±{bound:g} {unit}")
+            found.append(f"`{prefix}` = {value:g} is beyond ±{bound:g} {unit_label(unit)}")
 
     walk("", data)
     if found:

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from ..axis.resolved import plain
+from ..catalogue.units import unit_label
 from ..dryrun import finite_document
 from . import Screen, write_json
 from .plot import write_plot
@@ -157,7 +158,7 @@ def header_lines(run: DryRun) -> list[str]:
     """The scenario as far as the run reads it (an absolute axis: its valid position instead), what was
     assumed, and the homing acceleration of an axis that moves."""
     trace = run.trace
-    unit = trace.unit
+    unit = unit_label(trace.unit)
     scenario = trace.scenario
     uses = scenario.uses
     parts = [f"start {number_text(scenario.start_position)} {unit}"]
@@ -211,7 +212,7 @@ def render(run: DryRun, console: Console) -> None:
     from rich.text import Text
 
     trace = run.trace
-    unit = trace.unit
+    unit = unit_label(trace.unit)
     console.print(Text(f"Homing: {trace.strategy.title}", style="bold"))
     for line in header_lines(run):
         console.print(Text(line))
@@ -297,7 +298,7 @@ def render(run: DryRun, console: Console) -> None:
 
 def sweep_words(summary: dict[str, Any]) -> str:
     """The sweep in words: counts per outcome with the reasons, the spread, and a loud note on assumed geometry."""
-    unit = summary["unit"]
+    unit = unit_label(summary["unit"])
     lines = []
     if summary["assumed_geometry"]:
         lines.append(

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from ..catalogue.units import unit_label
 from ..homing.motion import Event, PhaseRecord, Trace
 
 if TYPE_CHECKING:
@@ -160,7 +161,7 @@ class Zoom:
 class TraceFigure:
     """A single-axis trace's figure: position over time above velocity over time, and the legend beside."""
 
-    unit: str
+    unit: str  # as shown on the figure (`°`, `mm`)
     times: list[float]
     positions: list[float]
     velocities: list[float]
@@ -180,7 +181,7 @@ class TraceFigure:
 def trace_figure(trace: Trace) -> TraceFigure:
     """What the figure of a single-axis trace shows (`dry-run --plot`, the report's per-axis figures)."""
     times, positions, velocities = samples(trace)
-    unit = trace.unit
+    unit = unit_label(trace.unit)
     keys: list[Key] = []
     phases = []
     for number, phase in enumerate(trace.phases, 1):
@@ -343,7 +344,7 @@ class Panel:
     """One moving axis's position over the program's time (a modulo axis's broken by NaN where it wraps)."""
 
     name: str
-    unit: str
+    unit: str  # as shown on the figure (`°`, `mm`)
     times: list[float]
     positions: list[float]
     reference: tuple[float, float] | None
@@ -474,7 +475,7 @@ def machine_figure(run: MachineRun) -> MachineFigure:
                 else axis.shown(position_at(axis, at))
             )
             reference = (at, shown)
-        panels.append(Panel(axis.name, axis.unit, times, positions, reference))
+        panels.append(Panel(axis.name, unit_label(axis.unit), times, positions, reference))
 
     keys = [Key(wrap(n, 40), c, "patch", edge="black") for n, c in colours.items()]
     keys.append(Key("move block (G00/G01)", MOVE_COLOUR, "patch", edge="black"))

@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from ..catalogue.units import unit_label
 from ..dryrun import finite_document as _finite
 from . import Screen, write_json
 from .dryrun import json_number as _round
@@ -277,7 +278,7 @@ def render_machine(run: MachineRun, console: Console) -> None:
 def _render_axis(axis: AxisRun, console: Console) -> None:
     from rich.text import Text
 
-    unit = axis.unit
+    unit = unit_label(axis.unit)
     style = {"homed": "green", "failed": "red", "aborted": "red"}.get(axis.outcome, "yellow")
     role = f", gantry {axis.gantry[0]} of {axis.gantry[1]}" if axis.gantry else ""
     head = Text(f"{axis.name}", style="bold") + Text(

@@ -62,6 +62,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
+from ..catalogue.units import unit_label
+
 if TYPE_CHECKING:
     from ..core.diagnostics import Diagnostic
     from ..homing.motion import SoftLimitOvershoot
@@ -87,7 +89,7 @@ SUMMARY = "Homing ends outside the software limits (braking or retraction)"
 def message(fact: SoftLimitOvershoot) -> str:
     """The finding in words, for lint and the dry-run alike."""
     low, high = fact.limits
-    unit = "°" if fact.unit == "deg" else fact.unit  # degrees as every other message writes them
+    unit = unit_label(fact.unit)  # degrees as every other message writes them
     if fact.reference_outside:
         return f"the reference value {fact.value:g} {unit} lies outside the software limits [{low:g}, {high:g}] {unit}"
     what = "after retracting from the stop" if fact.retracted else "after braking"
@@ -126,7 +128,7 @@ def check(ctx: Context) -> Iterator[Diagnostic]:
 def unchecked(scenario: Scenario, failure: str, unit: str) -> str:
     """No assumed cam lets homing complete on this axis, so the check could not run: said, not passed."""
     low, high = scenario.cam or (0.0, 0.0)
-    unit = "°" if unit == "deg" else unit
+    unit = unit_label(unit)
     return (
         f"not checked: homing with the assumed cam at [{low:g}, {high:g}] {unit} fails ({failure}), and no "
         f"closer, narrower cam between the start {scenario.start_position:g} {unit} and the software limit "

@@ -80,6 +80,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..catalogue.units import unit_label
 from ..homing.setup import POSITION
 
 if TYPE_CHECKING:
@@ -96,7 +97,7 @@ PRODUCED_BY = "dry-run"
 
 
 def message(fact: PulseMargin) -> str:
-    unit = fact.unit
+    unit = unit_label(fact.unit)
     side = (
         f"{fact.ahead:.4g} {unit} after" if fact.ahead < fact.margin else f"{fact.behind:.4g} {unit} before"
     )
@@ -111,7 +112,7 @@ def message(fact: PulseMargin) -> str:
 
 def _reference_moves(fact: PulseMargin) -> str:
     """What that shift does to the reference, and the pos_refpkt that keeps the axis's coordinates."""
-    unit = fact.unit
+    unit = unit_label(fact.unit)
     if not fact.periods:
         return "the reference stays on the same zero pulse, so pos_refpkt keeps its value"
     if fact.modulo and abs(fact.moved) < 1e-9 * fact.period:

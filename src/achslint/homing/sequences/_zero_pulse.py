@@ -3,6 +3,7 @@ where it is armed (events) and how close the pulse it takes lies to that point (
 
 from __future__ import annotations
 
+from ...catalogue.units import unit_label
 from ..motion import Event, PulseMargin, Simulator, Trace
 
 
@@ -58,5 +59,7 @@ def arming_events(sim: Simulator, trace: Trace, cam_kind: str, t_cam: float, x_c
     armed = x_cam + s * sim.shift
     t_armed = sim.passing_time(trace, armed, s, t_cam)
     if t_armed is not None:
-        kind = f"zero-pulse logic armed ({sim.shift:g} {sim.unit} after the cam edge, P-AXIS-00494)"
+        kind = (
+            f"zero-pulse logic armed ({sim.shift:g} {unit_label(sim.unit)} after the cam edge, P-AXIS-00494)"
+        )
         trace.events.append(Event(t_armed, armed, kind))

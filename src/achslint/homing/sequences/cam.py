@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from ...catalogue.units import unit_label
 from ..motion import (
     INF,
     ZERO_SEARCH_EXCEEDED,
@@ -139,7 +140,7 @@ def three_phases(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Tr
             trace.outcome = "failed"
             trace.failure = (
                 f"the axis braked through the cam (braking distance "
-                f"{fast * fast / (2 * sim.ramp_acceleration):.4g} {sim.unit} is longer than the cam)"
+                f"{fast * fast / (2 * sim.ramp_acceleration):.4g} {unit_label(sim.unit)} is longer than the cam)"
             )
             return trace
     speed = fast if sim.fast_from_cam else slow

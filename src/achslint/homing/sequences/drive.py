@@ -7,6 +7,7 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from ...catalogue.units import unit_label
 from ..motion import (
     INF,
     NOT_SIMULATED,
@@ -248,7 +249,10 @@ def _search(
 
     if distance > limit:
         x_end, t_end = stop_at(ramp.time_to(limit), "SignedMaxDistance travelled without a trigger")
-        trace.outcome, trace.failure = "failed", f"{name}: no {trigger} within {limit:g} {sim.unit}"
+        trace.outcome, trace.failure = (
+            "failed",
+            f"{name}: no {trigger} within {limit:g} {unit_label(sim.unit)}",
+        )
         return x_end, t_end, None
     t_event = ramp.time_to(distance)
     if t_event < EARLY_TRIGGER:

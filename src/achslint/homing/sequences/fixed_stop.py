@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ...catalogue.units import unit_label
 from ..motion import (
     POSITION,
     VELOCITY,
@@ -56,7 +57,7 @@ def run(sim: Simulator, trace: Trace, x: float, cam_shift: float) -> Trace:
                 segments,
             )
         )
-        unit = sim.unit
+        unit = unit_label(sim.unit)
         if stop is not None and reach > 0:
             trace.searched = ("the fixed stop", stop)
             beyond = f"the fixed stop at {number(stop)} {unit} lies {number(reach)} {unit} away"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ...catalogue.units import unit_label
 from ..motion import INF, Arming, Event, PhaseRecord, Ramp, Segment, Simulator, Trace, direction_word
 from . import _zero_pulse
 
@@ -111,7 +112,7 @@ def _rotation_events(
     sim: Simulator, trace: Trace, x: float, start: float, t_start: float, turning: float, ramp: Ramp
 ) -> None:
     """Where the spindle turned endlessly at the start, and where it runs at vb_reflow."""
-    rate = f"{sim.unit}/s"
+    rate = f"{unit_label(sim.unit)}/s"
     way = direction_word(ramp.s)
     if not ramp.t_acc:
         trace.events.append(

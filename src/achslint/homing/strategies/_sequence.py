@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ...catalogue.units import unit_label
 from ..base import NEGATIVE, POSITIVE
 
 if TYPE_CHECKING:
@@ -39,7 +40,7 @@ def variants(setup: HomingSetup) -> list[str]:
         )
     if setup.zero_pulse and setup.with_cam and setup.shift:
         found.append(
-            f"zero-pulse detection switched on only {setup.shift:g} {setup.unit} after the cam edge "
+            f"zero-pulse detection switched on only {setup.shift:g} {unit_label(setup.unit)} after the cam edge "
             "(P-AXIS-00494, §2.6)"
         )
     return found

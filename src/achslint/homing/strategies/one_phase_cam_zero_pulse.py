@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ...catalogue.units import unit_label
 from ..base import Phase, StrategyDef, Use
 from ..parameters import CAM, CAM_AND_ZERO_PULSE, SEQUENCE, ZERO_PULSE
 from ..sequences import cam
@@ -22,7 +23,7 @@ _SPEEDS = (
 def _phases(setup: HomingSetup) -> list[Phase]:
     way = _sequence.direction(setup)
     armed = (
-        f"{setup.shift:g} {setup.unit} after the cam edge (shift_offset_zero_pulse_activation, P-AXIS-00494)"
+        f"{setup.shift:g} {unit_label(setup.unit)} after the cam edge (shift_offset_zero_pulse_activation, P-AXIS-00494)"
         if setup.shift
         else "at the cam edge"
     )
