@@ -105,3 +105,22 @@ def test_a_gantry_slave_is_not_said_to_be_not_commanded_when_its_masters_block_i
         # the slave Y2 is commanded with its master Y (explain: "with its master Y" or "not")
         assert "master Y" in rows["Y2"] or rows["Y2"].startswith("not:"), rows["Y2"]
         assert (run.axes["Y"].outcome, run.axes["Y2"].outcome) == (outcome, outcome), text
+
+
+def test_a_g74_naming_an_axis_twice_homes_nothing_in_lint_explain_and_dry_run():
+    # LIS603 is an error: the CNC stops at the block. The dry-run homed X, then Y, then X again when the two
+    # mentions had different orders (it failed only for equal ones), and explain said both were homed.
+    from achslint.machine.explain import explain_machine
+    from achslint.machine.run import run_machine
+    from achslint.machine.scenario import parse_machine_scenario
+
+    machine = build_machine(PORTAL)
+    for text in ("N10 G74 X1 Y2 X3\nN20 M30\n", "N10 G74 X1 Y1 X1\nN20 M30\n"):
+        assert codes(text) == [(1, "LIS603")]
+        program = read(text)
+        rows = {row["name"]: row["homed"] for row in explain_machine(machine, program)["axes"]}
+        assert rows["X"].startswith("not: the CNC stops the program at line 1"), rows["X"]
+        assert rows["Y"].startswith("not: the CNC stops the program at line 1"), rows["Y"]
+        run = run_machine(machine, program, parse_machine_scenario({}, "scenario"))
+        assert run.failure is not None and "names X twice" in run.failure.reason
+        assert run.axes["X"].outcome != "homed" and run.axes["Y"].outcome != "homed", text

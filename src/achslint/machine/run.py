@@ -683,12 +683,20 @@ class _Runner:
     def _homing(self, index: int, block: HomingBlock, t: float) -> float:
         record = self.result.blocks[index]
         record.groups = [GroupRun(n, [w.name.upper() for w in words]) for n, words in block.groups()]
-        # A name the channel does not have stops the block before its first step (LIS602, as `explain`).
+        # A name the channel does not have, or a name the block repeats, stops the block before its first step
+        # (LIS602, LIS603, as `explain`).
+        seen: set[str] = set()
         for group, (_, words) in zip(record.groups, block.groups(), strict=True):
             for word in words:
-                if not self._known(index, word, t, f"G74 names {word.name.upper()}"):
+                name = word.name.upper()
+                if not self._known(index, word, t, f"G74 names {name}"):
                     group.start_time, group.end_time, group.outcome = t, t, "failed"
                     return t
+                if name in seen:
+                    self._fail(index, word.at, name, f"G74 names {name} twice", t, "axis named twice")
+                    group.start_time, group.end_time, group.outcome = t, t, "failed"
+                    return t
+                seen.add(name)
         for group, (_, words) in zip(record.groups, block.groups(), strict=True):
             group.start_time = t
             t = self._group(index, group, words, t)

@@ -6,8 +6,9 @@ One `G74` block names the same axis twice (`G74 X1 Y1 X2`).
 Why
 ---
 An axis is homed once per command; the second mention either repeats the first
-or gives it a second, contradicting place in the homing order. Which one the CNC
-takes is not something to leave to chance on a machine nobody has homed yet.
+or gives it a second, contradicting place in the homing order. The block is an
+error: the program stops there and nothing of it is homed, which is what
+`explain --program` and the machine dry-run show for it as well.
 
 Example
 -------
@@ -87,8 +88,9 @@ def check_program(program: Program, machine: ChannelView) -> Iterator[Diagnostic
                 + (
                     ""
                     if orders is None or orders[0] == orders[1]
-                    else f", with homing order {orders[1]} after {orders[0]}: name it once"
-                ),
+                    else f" (homing order {orders[1]} after {orders[0]})"
+                )
+                + ", so the CNC stops the program at this block: name it once",
                 Severity.ERROR,
                 (Related(earlier.at.path, earlier.at.line, earlier.at.column, None, "first named here"),),
             )
