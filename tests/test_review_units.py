@@ -98,6 +98,17 @@ def test_dry_run_writes_degrees_as_lint_does(cli, tmp_path: Path) -> None:
     assert "500 °/s²" in text and "at °" in text  # the acceleration and the events' position column
 
 
+def test_the_report_writes_degrees_as_lint_does(cli, tmp_path: Path) -> None:
+    import re
+
+    path = _as_axis_type("LIS403", 2, tmp_path)
+    page = tmp_path / "report.html"
+    cli("report", str(path), "-o", str(page))
+    text = re.sub(r"<[^>]+>", " ", page.read_text(encoding="utf-8"))  # the words, without the markup
+    assert "stands at" in text and "°" in text
+    assert not re.search(r"[0-9] deg\b|\bdeg/s|\(deg\)", text)
+
+
 def test_dry_run_json_keeps_deg_as_its_machine_readable_unit(cli, tmp_path: Path) -> None:
     path = _as_axis_type("LIS403", 2, tmp_path)
     document = json.loads(cli("dry-run", str(path), "--format", "json").stdout)

@@ -21,6 +21,7 @@ from collections import defaultdict
 from collections.abc import Callable, Iterable, Sequence
 from typing import TYPE_CHECKING, Any
 
+from ..catalogue.units import unit_label
 from ..core.diagnostics import Severity, rule_url
 from ..core.display import printable
 from ..core.version import __version__
@@ -380,7 +381,7 @@ def _dry_run(section: AxisSection, number: int, in_program: dict[str, Any] | Non
     from .dryrun import trace_json
 
     document = trace_json(section.dry_run)
-    unit = document["units"]["position"]
+    unit = unit_label(document["units"]["position"])  # degrees shown as °, as elsewhere
     trace = section.dry_run.trace
     body = ["<h3>Dry-run of the configured homing</h3>", _scenario(document["scenario"], unit)]
     body.append(_phases(document["phases"], unit))
@@ -396,7 +397,7 @@ def _dry_run(section: AxisSection, number: int, in_program: dict[str, Any] | Non
 def _program_axis(section: AxisSection, number: int, document: dict[str, Any]) -> str:
     run = section.program_run
     assert run is not None
-    unit = document["unit"]
+    unit = unit_label(document["unit"])
     body = ["<h3>In the homing program</h3>", _scenario(document["scenario"], unit)]
     body.append(_phases(document["phases"], unit, machine_time=True))
     body.append(_result(document, unit))
