@@ -68,9 +68,9 @@ def _order(
     stops the program (None when it runs to its end), and the first block the reader does not follow.
 
     The CNC stops at a block naming an axis the channel does not have (LIS602: nothing of that block runs), at a
-    G74 naming an axis twice (LIS603: nothing of it runs either) and at the sequence step of a DISABLED axis (LIS604, P-ERR-50686: the steps before it have run); nothing is
-    homed from there on, as in the dry-run. An IGNORE_ABS_POS axis a G74 names is passed over, not homed
-    (P-AXIS-00299, LIS607). After a block the reader does not follow (a subroutine call, `$IF`, `$GOTO`, …)
+    G74 naming an axis twice (LIS603: nothing of it runs either) and at the sequence step of a DISABLED axis
+    (LIS604, P-ERR-50686: the steps before it have run); nothing is homed from there on, as in the dry-run.
+    An IGNORE_ABS_POS axis a G74 names is passed over, not homed (P-AXIS-00299, LIS607). After a block the reader does not follow (a subroutine call, `$IF`, `$GOTO`, …)
     a later G74 homes its axes only perhaps: whether the program gets there is not known (as in LIS606)."""
     blocks: list[dict[str, Any]] = []
     homed_by: dict[str, str] = {}
@@ -108,15 +108,10 @@ def _order(
         named = named_words(block)
         if any(word.name not in machine.axes for word in named):
             stop(where)
-        homes = (
-            block.words
-            if isinstance(block, HomingBlock)
-            else ()
-            if isinstance(block, MoveBlock)
-            else block.homes
-        )
-        if len({word.name for word in homes}) < len(homes):  # an axis named twice in a G74 (LIS603)
-            stop(where)
+        if isinstance(block, (HomingBlock, SkippedBlock)):  # an axis named twice in a G74 (LIS603)
+            homes = block.words if isinstance(block, HomingBlock) else block.homes
+            if len({word.name for word in homes}) < len(homes):
+                stop(where)
         if isinstance(block, HomingBlock):
             groups = []
             for step, (number, words) in enumerate(block.groups(), 1):
