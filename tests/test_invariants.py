@@ -3,7 +3,7 @@ homing strategy, on every fixture and on the bundled lists."""
 
 from __future__ import annotations
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 import achslint
@@ -125,6 +125,10 @@ def assert_consistent(data: bytes) -> str:
 
 @settings(max_examples=examples(250), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(AXIS_LISTS)
+# An absolute axis of homing type TORQ: LIS315 judged its fixed-stop speed, which LIS401 says has no effect.
+@example(
+    b"kenngr.homing.homing_type TORQ\nkenngr.abs_pos_gueltig 1\ngetriebe[0].homing.torq_move_velocity 500000\nEnde\n"
+)
 def test_generated_lists_never_contradict_themselves(data):
     assert_consistent(data)
 

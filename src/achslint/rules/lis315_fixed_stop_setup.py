@@ -7,7 +7,9 @@ at all (neither a homing-specific one — `torq_detect_time`,
 `torq_detect_torque_limit` — nor a general one under
 `antr.fixed_stop.detect.*`), a simulated drive without
 `kenngr.homing.torq_distance_to_block`, or a move speed / acceleration that is
-not set (0) or above the axis's `vb_max` / `a_max`.
+not set (0) or above the axis's `vb_max` / `a_max`. Not reported for an axis
+with an absolute measuring system: it makes no homing move at power-up, and
+LIS401 says its fixed-stop values have no effect there.
 
 Why
 ---
@@ -95,7 +97,9 @@ def _active(path: str, value: Value | None) -> bool:
 
 def check(ctx: Context) -> Iterator[Diagnostic]:
     values = ctx.values
-    if values.homing_type != "TORQ":
+    # Silent unless fixed-stop homing is what runs: an absolute axis whose homing type is TORQ needs no homing
+    # move at power-up, and LIS401 says its fixed-stop values have no effect there, as for other strategies.
+    if values.homing_type != "TORQ" or not ctx.effective("getriebe[0].homing.torq_move_velocity"):
         return
     stage_criteria = [
         f"getriebe[{g}].homing.torq_detect_torque_limit"
