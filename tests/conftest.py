@@ -34,6 +34,25 @@ os.environ.setdefault("HYPOTHESIS_NO_PLUGINS", "1")
 
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "fixtures"
+# The portal machine of the fixtures, and LIS605's gantry (Z, Y and its slave Y2, no channel list): the machines
+# the program tests check NC programs against, built once per test module that asks for them.
+PORTAL_STARTUP = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
+GANTRY_STARTUP = FIXTURES / "rules" / "LIS605" / "gantry" / "hochlauf.lis"
+
+
+@pytest.fixture(scope="module")
+def portal() -> Any:
+    from achslint.machine.build import build_machine
+
+    return build_machine(PORTAL_STARTUP)
+
+
+@pytest.fixture(scope="module")
+def gantry() -> Any:
+    from achslint.machine.build import build_machine
+
+    return build_machine(GANTRY_STARTUP)
+
 
 # Property tests run a bounded number of examples so the suite stays fast; ACHSLINT_THOROUGH=1 runs each
 # test's full budget (for a nightly job or before a release).

@@ -12,31 +12,17 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from achslint.linting.program import check_program
-from achslint.machine.build import build_machine
 from achslint.machine.explain import explain_machine
 from achslint.machine.model import HomingBlock, MoveBlock, SkippedBlock
 from achslint.machine.program import read_program
 from achslint.machine.run import run_machine
 from achslint.machine.scenario import parse_machine_scenario
 
-from .conftest import FIXTURES, examples, run_cli
-
-PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
-# Z, Y and its gantry slave Y2 (named by its kopf.log_achs_name, homed on its own).
-GANTRY = FIXTURES / "rules" / "LIS605" / "gantry" / "hochlauf.lis"
+from .conftest import PORTAL_STARTUP as PORTAL
+from .conftest import examples, run_cli
 
 # The program of the report: every block is ISG syntax the decoder reads.
 REPORTED = "N10 G74 X1 Y2\nN20 X[P1*2]\nN30 P1 = 2\nN35 P2 = P1 + 1\nN40 G01 X10 F1000\nN45 LL X20\nM30\n"
-
-
-@pytest.fixture(scope="module")
-def portal():
-    return build_machine(PORTAL)
-
-
-@pytest.fixture(scope="module")
-def gantry():
-    return build_machine(GANTRY)
 
 
 def read(text: str):

@@ -15,21 +15,9 @@ from achslint.machine.model import ChannelView, MachineAxis
 from achslint.machine.program import read_program
 
 from .conftest import FIXTURES, run_cli
+from .conftest import PORTAL_STARTUP as PORTAL
 
-PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
 SDK4 = FIXTURES / "machines" / "sdk4" / "listen" / "hochlauf.lis"
-# Z, Y and its gantry slave Y2 without a channel list: each goes by its kopf.log_achs_name, Y2 included.
-GANTRY = FIXTURES / "rules" / "LIS605" / "gantry" / "hochlauf.lis"
-
-
-@pytest.fixture(scope="module")
-def portal():
-    return build_machine(PORTAL)
-
-
-@pytest.fixture(scope="module")
-def gantry():
-    return build_machine(GANTRY)
 
 
 def cli(*args: str):

@@ -6,21 +6,13 @@ from __future__ import annotations
 import pytest
 
 from achslint.linting.program import check_program
-from achslint.machine.build import build_machine
 from achslint.machine.explain import explain_machine
 from achslint.machine.model import HomingBlock, MoveBlock, SkippedBlock
 from achslint.machine.program import read_program
 from achslint.machine.run import run_machine
 from achslint.machine.scenario import parse_machine_scenario
 
-from .conftest import FIXTURES
-
-PORTAL = FIXTURES / "machines" / "portal" / "listen" / "hochlauf.lis"
-
-
-@pytest.fixture(scope="module")
-def portal():
-    return build_machine(PORTAL)
+from .conftest import PORTAL_STARTUP as PORTAL
 
 
 def codes(machine, text: str) -> list[tuple[int, int, str]]:
