@@ -199,18 +199,11 @@ class _IndentedWriter:
         add(self.newline(level) + "}")
 
     def key(self, key: object) -> str:
-        """A key that is no string as JSON names it (the standard library's order of tests)."""
-        if isinstance(key, float):
-            return self.number(key)
-        if key is True:
-            return "true"
-        if key is False:
-            return "false"
-        if key is None:
-            return "null"
-        if isinstance(key, int):
-            return int.__repr__(key)
-        raise _NotPlain  # json.dumps raises its TypeError
+        """A key that is no string as JSON names it: a number, true, false or null, written as that value is."""
+        text = self.scalar(key) if key is None or isinstance(key, (int, float)) else None  # (bool is an int)
+        if text is None:
+            raise _NotPlain  # json.dumps raises its TypeError
+        return text
 
 
 def _unicode_document(value: object) -> object:
