@@ -417,7 +417,7 @@ def _bodies(text: str) -> tuple[list[str], str | list[str]]:
     the pattern of line breaks, several times slower."""
     if "\r" not in text:
         return text.split("\n"), "\n"
-    if not any(other in text for other in _OTHER_BREAKS[: 5 if text.isascii() else None]):
+    if _splitlines_alike(text):
         bodies = text.splitlines()
         if not text or text[-1] in "\r\n":
             bodies.append("")  # the parser reads an empty last line after a final line break
@@ -436,6 +436,11 @@ def _bodies(text: str) -> tuple[list[str], str | list[str]]:
 
 # What `str.splitlines` breaks at besides CR and LF: the five ASCII ones first (an ASCII text holds no other).
 _OTHER_BREAKS = "\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029"
+
+
+def _splitlines_alike(text: str) -> bool:
+    """Whether `str.splitlines` breaks `text` only where the parser does (at CR, LF and CRLF)."""
+    return not any(other in text for other in _OTHER_BREAKS[: 5 if text.isascii() else None])
 
 
 def _parsed_lines(text: str) -> list[Line]:
@@ -464,7 +469,7 @@ def split_lines(text: str, keepends: bool = False) -> list[str]:
     without them is split by it all the same: then it breaks where the parser does, about six times faster
     than the pattern (the language server splits the whole text on every edit).
     """
-    if not any(other in text for other in _OTHER_BREAKS[: 5 if text.isascii() else None]):
+    if _splitlines_alike(text):
         return text.splitlines(keepends)
     lines = _LINE.findall(text)
     return lines if keepends else [line.rstrip("\r\n") for line in lines]
